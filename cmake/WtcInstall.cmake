@@ -1,0 +1,19 @@
+# Installs the library and a relocatable CMake package:
+#   find_package(wtc CONFIG REQUIRED)  ->  wtc::core
+include(CMakePackageConfigHelpers)
+
+install(TARGETS wtc_core EXPORT wtcTargets
+  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
+  INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(DIRECTORY include/wtc DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+
+set(WTC_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/wtc)
+install(EXPORT wtcTargets NAMESPACE wtc:: DESTINATION ${WTC_CMAKE_DIR})
+configure_package_config_file(cmake/wtcConfig.cmake.in
+  ${CMAKE_CURRENT_BINARY_DIR}/wtcConfig.cmake INSTALL_DESTINATION ${WTC_CMAKE_DIR})
+write_basic_package_version_file(${CMAKE_CURRENT_BINARY_DIR}/wtcConfigVersion.cmake
+  COMPATIBILITY SameMinorVersion)
+install(FILES ${CMAKE_CURRENT_BINARY_DIR}/wtcConfig.cmake
+  ${CMAKE_CURRENT_BINARY_DIR}/wtcConfigVersion.cmake DESTINATION ${WTC_CMAKE_DIR})

@@ -1,0 +1,42 @@
+#pragma once
+// Every geometric tolerance of WTC, named, with its unit, in one place.
+//
+// Lengths are relative to a piece's size (the diagonal of its bounding box)
+// wherever the algorithm is scale-free, so that a 1 mm bolt head and a 100 m
+// slab behave the same. kRoundoff is the base value; the others are multiples
+// of it, chosen with the reason written beside them.
+namespace wtc::tolerance {
+
+/// Unit roundoff of double (dimensionless): 2^-52.
+inline constexpr double kRoundoff = 2.220446049250313e-16;
+
+/// Default relative gap at which the point query stops (dimensionless): the
+/// upper and lower distance bounds agree to this fraction of the distance.
+/// Polyhedra make GJK terminate exactly in a few iterations, so the default
+/// is set near roundoff: a tighter one buys nothing, a looser one little.
+inline constexpr double kQueryRelativeGap = 1e3 * kRoundoff;
+
+/// Distance below which a point counts as on the surface (relative to piece
+/// size): there the direction p -> closest point is noise, so the face normal
+/// is reported instead.
+inline constexpr double kTouchingRelative = 1e2 * kRoundoff;
+
+/// Points of a hull closer than this are merged; vertices farther than this
+/// from a face's plane make a trusted face list non-planar (relative to piece
+/// size). 1e-9 keeps 1 mm features distinct on a 1 km piece.
+inline constexpr double kHullMergeRelative = 1e-9;
+
+/// Thickness below which a point set is a flat piece (relative to size).
+inline constexpr double kFlatRelative = 1e-9;
+
+/// Default iteration cap of the point query. GJK on a polyhedron with V
+/// vertices needs at most a handful more iterations than simplex changes;
+/// 64 is never reached on valid pieces (see the characterisation tests).
+inline constexpr int kDefaultMaxIterations = 64;
+
+/// Pieces with more vertices than this find support points by hill climbing
+/// over the vertex adjacency instead of a linear scan (count of vertices;
+/// measured crossover, see bench/point_query_bench.cpp).
+inline constexpr int kHillClimbMinVertices = 48;
+
+}  // namespace wtc::tolerance
