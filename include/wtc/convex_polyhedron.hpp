@@ -27,6 +27,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include "wtc/aabb.hpp"
 

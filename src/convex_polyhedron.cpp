@@ -1,0 +1,266 @@
+#include "wtc/convex_polyhedron.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "wtc/error.hpp"
+#include "wtc/tolerances.hpp"
+
+namespace wtc {
+namespace {
+
+[[noreturn]] void fail(const std::string& what) {
+  throw InvalidInputError("wtc::ConvexPolyhedron::fromMesh: " + what);
+}
+
+Aabb boundsOf(const std::vector<Eigen::Vector3d>& vertices) {
+  Aabb box{vertices.front(), vertices.front()};
+  for (const auto& v : vertices) {
+    box.min = box.min.cwiseMin(v);
+    box.max = box.max.cwiseMax(v);
+  }
+  return box;
+}
+
+// Newell's method: the area-weighted normal of a polygon, robust for
+// polygons that are planar only to roundoff (merged hull facets).
+Eigen::Vector3d newellNormal(const std::vector<Eigen::Vector3d>& local,
+                             const std::vector<int>& face) {
+  Eigen::Vector3d n = Eigen::Vector3d::Zero();
+  for (std::size_t k = 0; k < face.size(); ++k) {
+    const Eigen::Vector3d& a = local[face[k]];
+    const Eigen::Vector3d& b = local[face[(k + 1) % face.size()]];
+    n += a.cross(b);
+  }
+  return n;
+}
+
+}  // namespace
+
+std::string formatVector(const Eigen::Vector3d& v) {
+  std::ostringstream out;
+  out.precision(17);
+  out << '(' << v.x() << ", " << v.y() << ", " << v.z() << ')';
+  return out.str();
+}
+
+ConvexPolyhedron ConvexPolyhedron::fromMesh(const std::vector<Eigen::Vector3d>& vertices,
+                                            const std::vector<std::vector<int>>& faces) {
+  if (vertices.size() < 3) {
+    fail("needs at least 3 vertices, got " + std::to_string(vertices.size()));
+  }
+  if (vertices.size() > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max() / 4)) {
+    fail("too many vertices: " + std::to_string(vertices.size()));
+  }
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    if (!isFinite(vertices[i])) {
+      fail("vertex " + std::to_string(i) + " = " + formatVector(vertices[i]) + " is not finite");
+    }
+  }
+  if (faces.size() < 2) fail("needs at least 2 faces, got " + std::to_string(faces.size()));
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    if (faces[f].size() < 3) {
+      fail("face " + std::to_string(f) + " has " + std::to_string(faces[f].size()) +
+           " vertices; a face needs at least 3");
+    }
+    for (int i : faces[f]) {
+      if (i < 0 || static_cast<std::size_t>(i) >= vertices.size()) {
+        fail("face " + std::to_string(f) + " refers to vertex " + std::to_string(i) + ", but there are " +
+             std::to_string(vertices.size()) + " vertices");
+      }
+    }
+  }
+  // A two-faced mesh is a flat polygon given from both sides.
+  const bool flat = faces.size() == 2;
+  return assemble(vertices, faces, flat);
+}
+
+ConvexPolyhedron ConvexPolyhedron::box(const Eigen::Vector3d& min, const Eigen::Vector3d& max) {
+  if (!isFinite(min) || !isFinite(max) || !(min.array() < max.array()).all()) {
+    throw InvalidInputError("wtc::ConvexPolyhedron::box: needs finite min < max on every axis, got min = " +
+                            formatVector(min) + ", max = " + formatVector(max));
+  }
+  std::vector<Eigen::Vector3d> v(8);
+  for (int i = 0; i < 8; ++i) {
+    v[i] = {(i & 1) ? max.x() : min.x(), (i & 2) ? max.y() : min.y(), (i & 4) ? max.z() : min.z()};
+  }
+  // Counter-clockwise seen from outside: -x, +x, -y, +y, -z, +z.
+  const std::vector<std::vector<int>> faces = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4},
+                                               {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
+  return assemble(v, faces, false);
+}
+
+ConvexPolyhedron ConvexPolyhedron::assemble(const std::vector<Eigen::Vector3d>& vertices,
+                                            const std::vector<std::vector<int>>& faces, bool flat) {
+  ConvexPolyhedron poly;
+  poly.bounds_ = boundsOf(vertices);
+  poly.origin_ = poly.bounds_.center();
+  poly.size_ = poly.bounds_.extent().norm();
+  if (!(poly.size_ > 0.0) || !std::isfinite(poly.size_)) {
+    fail("all vertices coincide at " + formatVector(vertices.front()));
+  }
+  const int nv = static_cast<int>(vertices.size());
+  const int nf = static_cast<int>(faces.size());
+  poly.vertex_count_ = nv;
+  poly.face_count_ = nf;
+  poly.flat_ = flat;
+
+  std::vector<Eigen::Vector3d> local(nv);
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (int i = 0; i < nv; ++i) {
+    local[i] = vertices[i] - poly.origin_;
+    sum += local[i];
+  }
+  poly.centroid_local_ = sum / nv;
+
+  poly.numbers_.resize(3 * static_cast<std::size_t>(nv) + 4 * static_cast<std::size_t>(nf));
+  double* num = poly.numbers_.data();
+  for (int i = 0; i < nv; ++i) {
+    num[i] = local[i].x();
+    num[nv + i] = local[i].y();
+    num[2 * nv + i] = local[i].z();
+  }
+  const double planar_tol = tolerance::kHullMergeRelative * poly.size_;
+  double* n_out = num + 3 * nv;
+  for (int f = 0; f < nf; ++f) {
+    const Eigen::Vector3d area = newellNormal(local, faces[f]);
+    const double twice_area = area.norm();
+    if (!(twice_area > planar_tol * planar_tol)) {
+      fail("face " + std::to_string(f) + " has zero area (its vertices are collinear or coincide)");
+    }
+    const Eigen::Vector3d n = area / twice_area;
+    // d = max over ALL vertices keeps every vertex inside every plane, so the
+    // plane bound stays a true lower bound (see the header's design note).
+    double d = -std::numeric_limits<double>::infinity();
+    double face_min = std::numeric_limits<double>::infinity();
+    for (int i : faces[f]) face_min = std::min(face_min, n.dot(local[i]));
+    for (int i = 0; i < nv; ++i) d = std::max(d, n.dot(local[i]));
+    if (d - face_min > planar_tol) {
+      fail("face " + std::to_string(f) + " is not planar, or the mesh is not convex or not oriented " +
+           "outward: a vertex lies " + std::to_string(d - face_min) + " m above the face's plane (tolerance " +
+           std::to_string(planar_tol) + " m)");
+    }
+    n_out[f] = n.x();
+    n_out[nf + f] = n.y();
+    n_out[2 * nf + f] = n.z();
+    n_out[3 * nf + f] = d;
+  }
+  if (!flat && poly.planeBoundLocal(poly.centroid_local_, nullptr) >= -planar_tol) {
+    fail("the faces do not enclose a volume (the centroid is not strictly inside every face plane)");
+  }
+
+  // Topology: face lists, then (large pieces only) vertex adjacency.
+  auto& topo = poly.topology_;
+  topo.push_back(0);
+  std::size_t total = 0;
+  for (const auto& face : faces) topo.push_back(static_cast<std::int32_t>(total += face.size()));
+  for (const auto& face : faces) topo.insert(topo.end(), face.begin(), face.end());
+  poly.has_adjacency_ = nv >= tolerance::kHillClimbMinVertices;
+  if (poly.has_adjacency_) {
+    std::vector<std::set<int>> neighbors(nv);
+    for (const auto& face : faces) {
+      for (std::size_t k = 0; k < face.size(); ++k) {
+        const int a = face[k];
+        const int b = face[(k + 1) % face.size()];
+        neighbors[a].insert(b);
+        neighbors[b].insert(a);
+      }
+    }
+    std::int32_t count = 0;
+    topo.push_back(0);
+    for (const auto& n : neighbors) topo.push_back(count += static_cast<std::int32_t>(n.size()));
+    for (const auto& n : neighbors) topo.insert(topo.end(), n.begin(), n.end());
+  }
+  topo.shrink_to_fit();
+  poly.numbers_.shrink_to_fit();
+  return poly;
+}
+
+std::span<const std::int32_t> ConvexPolyhedron::faceVertices(int f) const {
+  const std::int32_t* start = topology_.data();
+  const std::int32_t* list = start + face_count_ + 1;
+  return {list + start[f], list + start[f + 1]};
+}
+
+std::span<const std::int32_t> ConvexPolyhedron::vertexNeighbors(int i) const {
+  const std::int32_t* start = topology_.data() + face_count_ + 1 + topology_[face_count_];
+  const std::int32_t* list = start + vertex_count_ + 1;
+  return {list + start[i], list + start[i + 1]};
+}
+
+int ConvexPolyhedron::support(const Eigen::Vector3d& dir, int hint) const {
+  return supportLocal(dir, hint);
+}
+
+int ConvexPolyhedron::supportLocal(const Eigen::Vector3d& dir, int hint) const {
+  if (has_adjacency_) return hillClimb(dir, hint < 0 ? 0 : hint);
+  const double* x = vx();
+  const double* y = vy();
+  const double* z = vz();
+  int best = 0;
+  double best_dot = dir.x() * x[0] + dir.y() * y[0] + dir.z() * z[0];
+  for (int i = 1; i < vertex_count_; ++i) {
+    const double d = dir.x() * x[i] + dir.y() * y[i] + dir.z() * z[i];
+    if (d > best_dot) {
+      best_dot = d;
+      best = i;
+    }
+  }
+  return best;
+}
+
+// On a convex polytope a linear function has no local maximum on the vertex
+// graph that is not global, so a greedy walk along edges finds the support
+// vertex; from a warm start it takes one or two steps.
+int ConvexPolyhedron::hillClimb(const Eigen::Vector3d& dir, int start) const {
+  const double* x = vx();
+  const double* y = vy();
+  const double* z = vz();
+  int current = start;
+  double current_dot = dir.x() * x[current] + dir.y() * y[current] + dir.z() * z[current];
+  for (bool moved = true; moved;) {
+    moved = false;
+    for (std::int32_t next : vertexNeighbors(current)) {
+      const double d = dir.x() * x[next] + dir.y() * y[next] + dir.z() * z[next];
+      if (d > current_dot) {
+        current_dot = d;
+        current = next;
+        moved = true;
+      }
+    }
+  }
+  return current;
+}
+
+double ConvexPolyhedron::planeBound(const Eigen::Vector3d& p, int* face) const {
+  return planeBoundLocal(p - origin_, face);
+}
+
+double ConvexPolyhedron::planeBoundLocal(const Eigen::Vector3d& q, int* face) const {
+  const double* a = nx();
+  const double* b = ny();
+  const double* c = nz();
+  const double* d = pd();
+  int best = 0;
+  double best_value = a[0] * q.x() + b[0] * q.y() + c[0] * q.z() - d[0];
+  for (int f = 1; f < face_count_; ++f) {
+    const double value = a[f] * q.x() + b[f] * q.y() + c[f] * q.z() - d[f];
+    if (value > best_value) {
+      best_value = value;
+      best = f;
+    }
+  }
+  if (face != nullptr) *face = best;
+  return best_value;
+}
+
+std::size_t ConvexPolyhedron::memoryBytes() const {
+  return sizeof(*this) + numbers_.capacity() * sizeof(double) +
+         topology_.capacity() * sizeof(std::int32_t);
+}
+
+}  // namespace wtc

@@ -1,0 +1,185 @@
+// The modified GJK point query. Reads top to bottom:
+//   validate -> bounding-box bound -> face-plane bound -> GJK.
+// See include/wtc/point_query.hpp for the conventions and docs/point-query.md
+// for the design and its measurements.
+#include "wtc/point_query.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "signed_volumes.hpp"
+#include "wtc/error.hpp"
+
+namespace wtc {
+namespace {
+
+using Eigen::Vector3d;
+
+// Beyond this the squared norms GJK forms would overflow double (m).
+constexpr double kMaxCoordinateM = 1e150;
+
+void validate(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOptions& o) {
+  if (!isFinite(p)) {
+    throw InvalidInputError("wtc::queryPoint: query point p = " + formatVector(p) + " is not finite");
+  }
+  if ((p - poly.origin()).lpNorm<Eigen::Infinity>() > kMaxCoordinateM) {
+    throw InvalidInputError("wtc::queryPoint: query point p = " + formatVector(p) +
+                            " is more than 1e150 m from the piece; its squared distance overflows double");
+  }
+  if (!(o.relative_tolerance > 0.0 && o.relative_tolerance < 1.0)) {
+    throw InvalidInputError("wtc::queryPoint: options.relative_tolerance = " +
+                            std::to_string(o.relative_tolerance) + " is not in (0, 1)");
+  }
+  if (o.max_iterations < 1) {
+    throw InvalidInputError("wtc::queryPoint: options.max_iterations = " + std::to_string(o.max_iterations) +
+                            " must be at least 1");
+  }
+  if (std::isnan(o.max_distance)) throw InvalidInputError("wtc::queryPoint: options.max_distance is NaN");
+}
+
+// Result on or inside face `face` of the plane bound: exact, since inside a
+// convex polyhedron the nearest surface point lies on the nearest face plane.
+PointQuery fromPlane(const ConvexPolyhedron& poly, const Vector3d& p, double bound, int face,
+                     QueryStatus status) {
+  PointQuery r;
+  r.signed_distance = bound;
+  r.normal = poly.faceNormal(face);
+  r.closest_point = p - bound * r.normal;
+  r.direction = status == QueryStatus::kInside ? r.normal : Vector3d(-r.normal);
+  r.status = status;
+  return r;
+}
+
+PointQuery beyondBox(const ConvexPolyhedron& poly, const Vector3d& p, double distance) {
+  PointQuery r;
+  r.signed_distance = distance;
+  r.closest_point = p.cwiseMax(poly.bounds().min).cwiseMin(poly.bounds().max);
+  r.direction = (r.closest_point - p) / distance;
+  r.normal = -r.direction;
+  r.status = QueryStatus::kBeyond;
+  return r;
+}
+
+void seedFromFace(const ConvexPolyhedron& poly, const Vector3d& q, int face, detail::Simplex& s) {
+  const auto vertices = poly.faceVertices(face);
+  s.count = 3;
+  for (int m = 0; m < 3; ++m) {
+    s.vertex[m] = vertices[m];
+    s.point[m] = poly.vertexLocal(vertices[m]) - q;
+  }
+}
+
+bool seedFromCache(const ConvexPolyhedron& poly, const Vector3d& q, const QueryCache& cache, detail::Simplex& s) {
+  if (cache.count < 1 || cache.count > 3) return false;
+  for (int m = 0; m < cache.count; ++m) {
+    if (cache.vertex[m] < 0 || cache.vertex[m] >= poly.vertexCount()) return false;
+    s.vertex[m] = cache.vertex[m];
+    s.point[m] = poly.vertexLocal(cache.vertex[m]) - q;
+  }
+  s.count = cache.count;
+  return true;
+}
+
+void store(const detail::Simplex& s, QueryCache* cache) {
+  if (cache == nullptr) return;
+  cache->count = s.count <= 3 ? s.count : 0;
+  for (int m = 0; m < cache->count; ++m) cache->vertex[m] = s.vertex[m];
+}
+
+PointQuery query(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOptions& options,
+                 QueryCache* cache) {
+  validate(poly, p, options);
+  const double max_distance = options.max_distance;
+
+  // 1. Bounding box: the cheapest lower bound, for the wheel's early exit.
+  if (max_distance < std::numeric_limits<double>::infinity()) {
+    const double box2 = poly.bounds().squaredDistance(p);
+    if (box2 > max_distance * max_distance) return beyondBox(poly, p, std::sqrt(box2));
+  }
+
+  // 2. Face planes: exact inside, a lower bound outside.
+  const Vector3d q = p - poly.origin();
+  int face = 0;
+  const double plane = poly.planeBoundLocal(q, &face);
+  if (plane <= 0.0 && !poly.isFlat()) {
+    if (cache != nullptr) cache->count = 0;
+    return fromPlane(poly, p, plane, face, QueryStatus::kInside);
+  }
+  if (plane > max_distance) return fromPlane(poly, p, plane, face, QueryStatus::kBeyond);
+
+  // 3. GJK on poly - p, from the cached simplex or the nearest face.
+  detail::Simplex s;
+  if (cache == nullptr || !seedFromCache(poly, q, *cache, s)) seedFromFace(poly, q, face, s);
+  const double touching = tolerance::kTouchingRelative * poly.size();
+  double lower = std::max(plane, 0.0);
+  PointQuery r;
+  r.status = QueryStatus::kIterationLimit;
+  Vector3d v;
+  double dist = 0.0;
+  for (;;) {
+    v = detail::closestToOrigin(s);
+    dist = v.norm();
+    if (s.count == 4 || dist <= touching) {
+      // On the surface to roundoff: the face normal is the only stable direction.
+      store(s, cache);
+      PointQuery on = fromPlane(poly, p, std::max(plane, 0.0), face, QueryStatus::kOutside);
+      on.iterations = r.iterations;
+      return on;
+    }
+    if (dist - lower <= options.relative_tolerance * dist) {
+      r.status = QueryStatus::kOutside;
+      break;
+    }
+    if (r.iterations == options.max_iterations) break;
+    const int next = poly.supportLocal(-v, s.vertex[0]);
+    ++r.iterations;
+    const Vector3d w = poly.vertexLocal(next) - q;
+    lower = std::max(lower, v.dot(w) / dist);  // v . x >= v . w for all x in poly - p
+    if (lower > max_distance) {
+      r.status = QueryStatus::kBeyond;
+      break;
+    }
+    bool known = false;
+    for (int m = 0; m < s.count; ++m) known |= s.vertex[m] == next;
+    if (known || dist - lower <= options.relative_tolerance * dist) {
+      r.status = QueryStatus::kOutside;  // no progress possible: v is the answer
+      break;
+    }
+    s.point[s.count] = w;
+    s.vertex[s.count] = next;
+    ++s.count;
+  }
+  store(s, cache);
+  r.signed_distance = r.status == QueryStatus::kBeyond ? lower : dist;
+  r.closest_point = p + v;
+  r.direction = v / dist;
+  r.normal = -r.direction;
+  return r;
+}
+
+}  // namespace
+
+const char* toString(QueryStatus status) {
+  switch (status) {
+    case QueryStatus::kOutside:
+      return "outside";
+    case QueryStatus::kInside:
+      return "inside";
+    case QueryStatus::kBeyond:
+      return "beyond";
+    case QueryStatus::kIterationLimit:
+      return "iteration-limit";
+  }
+  return "unknown";
+}
+
+PointQuery queryPoint(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOptions& options) {
+  return query(poly, p, options, nullptr);
+}
+
+PointQuery queryPoint(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOptions& options,
+                      QueryCache& cache) {
+  return query(poly, p, options, &cache);
+}
+
+}  // namespace wtc

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Installs, from Debian 12 packages, whatever WTC needs and the machine lacks.
+# Idempotent and quiet when everything is present (no apt-get update then).
+set -euo pipefail
+packages=(
+  g++ cmake make pkg-config
+  libeigen3-dev libqhull-dev                     # core: linear algebra, hulls
+  libbullet-dev libbullet-extras-dev libode-dev  # engines (double precision)
+  libfcl-dev libccd-dev                          # independent distance checks
+  libassimp-dev assimp-testmodels                # mesh import and its test files
+  libyaml-cpp-dev nlohmann-json3-dev libcli11-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  python3
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "install-deps: installing ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
