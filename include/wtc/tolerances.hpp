@@ -40,3 +40,18 @@ inline constexpr int kDefaultMaxIterations = 64;
 inline constexpr int kHillClimbMinVertices = 48;
 
 }  // namespace wtc::tolerance
+
+namespace wtc::tolerance {
+
+/// Two ground pieces closer than this are one surface at a seam (relative to
+/// the wheel's free radius): a contact point this close to (or inside)
+/// another touching piece that is nearer to the wheel centre is an internal
+/// seam, not ground (docs/wheel-contact.md). 1e-6 x 0.19 m = 0.19 um: far
+/// above the roundoff of shared heightfield vertices, far below any real gap.
+inline constexpr double kSeamGapRelative = 1e-6;
+
+/// Smallest acceptable |axle| before normalising (dimensionless; the axle
+/// is a direction, its length is discarded).
+inline constexpr double kMinAxleNorm = 1e-9;
+
+}  // namespace wtc::tolerance

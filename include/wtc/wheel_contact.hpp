@@ -1,0 +1,84 @@
+#pragma once
+// Wheel-terrain contact generation (wheel-terrain model, sections 1-2):
+// every piece near the wheel gives at most one contact, where the distance
+// from the wheel centre O to the piece is below the free radius r_f.
+//
+// One call reads top to bottom:
+//   candidate pieces (terrain index, box O +- r_f)
+//   -> point queries (modified GJK, max_distance = r_f, warm-started)
+//   -> seam rule (drop contacts that are internal seams of the ground)
+//   -> tread filter (drop contacts on the cut caps of the truncated sphere)
+//   -> optionally keep only the deepest.
+//
+// Seam rule. The ground is the union of its pieces. A contact from piece B
+// whose ground point lies on or inside (within tolerance::kSeamGapRelative
+// x r_f) another touching piece A nearer to O is not a local minimum of the
+// distance to the union: it is an internal seam (two prisms of one flat
+// ground) and is dropped. "Nearer" is the strict order on (distance, piece
+// id), so the nearest contact always survives and ties keep one. Contacts at
+// distinct places (a ledge's vertical face and the ground in front of it)
+// are all kept. See docs/wheel-contact.md for why this is exact on convex
+// and concave seams.
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "wtc/point_query.hpp"
+#include "wtc/terrain.hpp"
+
+namespace wtc {
+
+struct WheelGeometry {
+  double free_radius = 0.19;  ///< r_f (m), > 0.
+  double tread_width = 0.12;  ///< w (m), > 0; w >= 2 r_f makes a full sphere.
+};
+
+/// Throws InvalidInputError naming the field, its value and `where`.
+void validate(const WheelGeometry& wheel, const std::string& where);
+
+struct WheelPose {
+  Eigen::Vector3d center{Eigen::Vector3d::Zero()};  ///< O (world, m).
+  Eigen::Vector3d axle{Eigen::Vector3d::UnitY()};   ///< Axle direction a (world; normalised here).
+};
+
+struct ContactOptions {
+  bool multiple_contacts = true;  ///< Off: only the deepest contact is kept.
+  bool tread_truncation = true;   ///< Off: the wheel is a full sphere.
+  bool seam_rule = true;          ///< Off: every touching piece gives a contact.
+};
+
+struct WheelContact {
+  Eigen::Vector3d point{Eigen::Vector3d::Zero()};         ///< P = O + r_f e, on the undeformed tread (world, m).
+  Eigen::Vector3d ground_point{Eigen::Vector3d::Zero()};  ///< Closest point of the piece (world, m).
+  Eigen::Vector3d e{Eigen::Vector3d::UnitZ()};            ///< Unit, from O toward the ground.
+  double deflection = 0.0;                                ///< Z = r_f - signed distance (m), > 0.
+  double signed_distance = 0.0;                           ///< From O to the piece (m); < 0 inside.
+  PieceId piece = -1;
+  MaterialId material = -1;
+};
+
+/// Per-wheel state: scratch memory and warm-start caches, reused across
+/// steps so that a step allocates nothing once warmed up.
+class WheelContactFinder {
+ public:
+  /// The contacts of `wheel` at `pose`, valid until the next call. Throws
+  /// InvalidInputError for a non-finite pose, a zero axle or invalid
+  /// geometry.
+  std::span<const WheelContact> find(const Terrain& terrain, const WheelGeometry& wheel, const WheelPose& pose,
+                                     const ContactOptions& options = {});
+
+  /// Candidate pieces of the last call (for diagnostics and benchmarks).
+  std::span<const PieceId> candidates() const { return candidates_; }
+
+ private:
+  void applySeamRule(const Terrain& terrain, double gap);
+  std::vector<PieceId> candidates_;
+  std::vector<WheelContact> contacts_;
+  std::vector<std::pair<PieceId, QueryCache>> caches_, next_caches_;
+  std::vector<unsigned char> drop_;
+};
+
+}  // namespace wtc

@@ -1,0 +1,103 @@
+#include "wtc/wheel_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "wtc/error.hpp"
+
+namespace wtc {
+
+void validate(const WheelGeometry& wheel, const std::string& where) {
+  auto check = [&](const char* field, double value) {
+    if (!std::isfinite(value) || !(value > 0.0)) {
+      throw InvalidInputError(where + ": wheel " + field + " = " + std::to_string(value) +
+                              " m must be finite and positive");
+    }
+  };
+  check("free_radius", wheel.free_radius);
+  check("tread_width", wheel.tread_width);
+}
+
+std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, const WheelGeometry& wheel,
+                                                       const WheelPose& pose, const ContactOptions& options) {
+  static constexpr const char* kWhere = "wtc::WheelContactFinder::find";
+  validate(wheel, kWhere);
+  const double axle_norm = pose.axle.norm();
+  if (!isFinite(pose.center) || !std::isfinite(axle_norm) || axle_norm < tolerance::kMinAxleNorm) {
+    throw InvalidInputError(std::string(kWhere) + ": wheel pose centre = " + formatVector(pose.center) +
+                            ", axle = " + formatVector(pose.axle) + " is not finite or has a zero axle");
+  }
+  const double r = wheel.free_radius;
+  const Eigen::Vector3d& o = pose.center;
+
+  // 1. Candidate pieces.
+  candidates_.clear();
+  terrain.overlapping({o.array() - r, o.array() + r}, candidates_);
+
+  // 2. Point queries, warm-started from the previous call's simplices.
+  QueryOptions query;
+  query.max_distance = r;
+  contacts_.clear();
+  next_caches_.clear();
+  for (const PieceId id : candidates_) {
+    QueryCache cache;
+    for (const auto& [piece, previous] : caches_) {
+      if (piece == id) cache = previous;
+    }
+    const PointQuery q = queryPoint(terrain.piece(id), o, query, cache);
+    next_caches_.emplace_back(id, cache);
+    if (q.status == QueryStatus::kBeyond || !(q.signed_distance < r)) continue;
+    WheelContact c;
+    c.e = -q.normal;
+    c.point = o + r * c.e;
+    c.ground_point = q.closest_point;
+    c.signed_distance = q.signed_distance;
+    c.deflection = r - q.signed_distance;
+    c.piece = id;
+    c.material = terrain.materialId(id);
+    contacts_.push_back(c);
+  }
+  std::swap(caches_, next_caches_);
+
+  // 3. Seam rule.
+  if (options.seam_rule && contacts_.size() > 1) applySeamRule(terrain, tolerance::kSeamGapRelative * r);
+
+  // 4. Tread filter: keep contacts with |OP . a| <= w / 2.
+  if (options.tread_truncation) {
+    const Eigen::Vector3d a = pose.axle / axle_norm;
+    const double half_width = 0.5 * wheel.tread_width;
+    std::erase_if(contacts_, [&](const WheelContact& c) { return std::abs(r * c.e.dot(a)) > half_width; });
+  }
+
+  // 5. Deepest only.
+  if (!options.multiple_contacts && contacts_.size() > 1) {
+    auto deepest = std::max_element(contacts_.begin(), contacts_.end(),
+                                    [](const auto& x, const auto& y) { return x.deflection < y.deflection; });
+    std::swap(contacts_.front(), *deepest);
+    contacts_.resize(1);
+  }
+  return contacts_;
+}
+
+void WheelContactFinder::applySeamRule(const Terrain& terrain, double gap) {
+  // Contacts are ranked strictly by (distance, piece id): the nearest one is
+  // never dropped, and no two contacts can drop each other.
+  auto shadowed = [&](const WheelContact& b) {
+    for (const WheelContact& a : contacts_) {
+      const bool nearer = a.signed_distance < b.signed_distance ||
+                          (a.signed_distance == b.signed_distance && a.piece < b.piece);
+      if (nearer && terrain.piece(a.piece).planeBound(b.ground_point) <= gap) return true;
+    }
+    return false;
+  };
+  // Decide on the unfiltered set, then erase: the rule is symmetric in order.
+  drop_.assign(contacts_.size(), 0);
+  for (std::size_t k = 0; k < contacts_.size(); ++k) drop_[k] = shadowed(contacts_[k]) ? 1 : 0;
+  std::size_t out = 0;
+  for (std::size_t k = 0; k < contacts_.size(); ++k) {
+    if (drop_[k] == 0) contacts_[out++] = contacts_[k];
+  }
+  contacts_.resize(out);
+}
+
+}  // namespace wtc

@@ -1,0 +1,198 @@
+// Wheel contact generation: the seam rule, the ledge corner, tread
+// truncation and the options (wheel-terrain model, sections 1-2 and 6).
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include <wtc/error.hpp>
+#include <wtc/wheel_contact.hpp>
+
+namespace {
+
+using Eigen::Vector3d;
+
+constexpr double kRadius = 0.19;        // r_f of the spec's robot (m)
+constexpr double kDeflection = 0.002;   // about the static deflection (m)
+constexpr double kLoadTolerance = 0.01;  // the 1 % on normal load
+constexpr double kGeometryTolerance = 1e-12;  // m, exact geometry here
+
+// Flat ground z <= 0 tessellated into 2 x cells^2 triangular prisms, each
+// cell split along its diagonal, as a heightfield makes it.
+wtc::Terrain tessellatedFlat(int cells, double cell_size) {
+  wtc::TerrainBuilder builder;
+  const auto material = builder.addMaterial({});
+  for (int i = 0; i < cells; ++i) {
+    for (int j = 0; j < cells; ++j) {
+      const double x0 = i * cell_size, y0 = j * cell_size, x1 = x0 + cell_size, y1 = y0 + cell_size;
+      for (const auto& tri : {std::vector<Vector3d>{{x0, y0, 0}, {x1, y0, 0}, {x1, y1, 0}},
+                              std::vector<Vector3d>{{x0, y0, 0}, {x1, y1, 0}, {x0, y1, 0}}}) {
+        std::vector<Vector3d> points = tri;
+        for (const auto& p : tri) points.emplace_back(p.x(), p.y(), -1.0);
+        builder.addPiece(wtc::ConvexPolyhedron::fromPoints(points), material);
+      }
+    }
+  }
+  return std::move(builder).build();
+}
+
+wtc::Terrain singleSlab(double extent) {
+  wtc::TerrainBuilder builder;
+  builder.addPiece(wtc::ConvexPolyhedron::box({0, 0, -1}, {extent, extent, 0}), builder.addMaterial({}));
+  return std::move(builder).build();
+}
+
+double totalDeflection(std::span<const wtc::WheelContact> contacts) {
+  double z = 0.0;
+  for (const auto& c : contacts) z += c.deflection;
+  return z;
+}
+
+TEST(WheelContactTest, RollingAcrossTessellatedFlatGroundFeelsLikeOneSlab) {
+  // Case: a wheel rolled along a line that crosses cell edges, diagonals and
+  // vertices; the load (sum of deflections, c Z) must equal the slab's.
+  const wtc::Terrain tessellated = tessellatedFlat(8, 0.25);
+  const wtc::Terrain slab = singleSlab(2.0);
+  wtc::WheelContactFinder on_tessellated;
+  wtc::WheelContactFinder on_slab;
+  const wtc::WheelGeometry wheel{kRadius, 0.12};
+  int seams_crossed = 0;
+  for (int k = 0; k <= 2000; ++k) {
+    const double x = 0.3 + 1.4 * k / 2000.0;
+    for (const double y : {0.5, 0.5 + 0.3 * (x - 0.3), 0.75}) {  // along y = const, diagonal, on an edge
+      const wtc::WheelPose pose{{x, y, kRadius - kDeflection}, Vector3d::UnitY()};
+      const double reference = totalDeflection(on_slab.find(slab, wheel, pose));
+      const auto contacts = on_tessellated.find(tessellated, wheel, pose);
+      seams_crossed += on_tessellated.candidates().size() > 1;
+      ASSERT_NEAR(totalDeflection(contacts), reference, kLoadTolerance * reference) << "x = " << x << ", y = " << y;
+      ASSERT_EQ(contacts.size(), 1u) << "x = " << x << ", y = " << y;
+      EXPECT_NEAR(contacts[0].e.z(), -1.0, kGeometryTolerance);
+    }
+  }
+  EXPECT_GT(seams_crossed, 1000);  // the sweep really is over seams
+}
+
+TEST(WheelContactTest, WithoutTheSeamRuleSeamsDoubleTheLoad) {
+  // Case: the same ground with the rule off shows the spike the rule
+  // removes, so the test above can fail.
+  const wtc::Terrain tessellated = tessellatedFlat(4, 0.25);
+  wtc::WheelContactFinder finder;
+  wtc::ContactOptions no_rule;
+  no_rule.seam_rule = false;
+  const wtc::WheelPose on_vertex{{0.5, 0.5, kRadius - kDeflection}, Vector3d::UnitY()};
+  const auto contacts = finder.find(tessellated, {kRadius, 0.12}, on_vertex, no_rule);
+  EXPECT_GE(contacts.size(), 4u);
+  EXPECT_GT(totalDeflection(contacts), 3.0 * kDeflection);
+}
+
+wtc::Terrain ledge(double height, int top_tiles) {
+  // Ground z <= 0 for x < 0; the ledge block 0 <= x, its top at `height`,
+  // its top tessellated into `top_tiles` boxes along x.
+  wtc::TerrainBuilder builder;
+  const auto material = builder.addMaterial({});
+  builder.addPiece(wtc::ConvexPolyhedron::box({-3, -1, -0.5}, {0, 1, 0}), material);
+  const double tile = 2.0 / top_tiles;
+  for (int k = 0; k < top_tiles; ++k) {
+    builder.addPiece(wtc::ConvexPolyhedron::box({k * tile, -1, -0.5}, {(k + 1) * tile, 1, height}), material);
+  }
+  return std::move(builder).build();
+}
+
+TEST(WheelContactTest, LedgeFootGivesGroundAndFaceContacts) {
+  // Case: the wheel on the ground pressed against the ledge's vertical face:
+  // two genuine contacts, one pushing up, one pushing back.
+  const wtc::Terrain terrain = ledge(0.65, 4);
+  wtc::WheelContactFinder finder;
+  const auto contacts = finder.find(terrain, {kRadius, 0.12}, {{-kRadius + 0.003, 0, kRadius - 0.002}, Vector3d::UnitY()});
+  ASSERT_EQ(contacts.size(), 2u);
+  std::vector<Vector3d> directions{contacts[0].e, contacts[1].e};
+  EXPECT_THAT(directions, testing::UnorderedElementsAre(Vector3d(1, 0, 0), Vector3d(0, 0, -1)));
+}
+
+TEST(WheelContactTest, LedgeTopEdgeAndFaceOfTessellatedLedgeGiveOneContactEach) {
+  // Case: the wheel on the top edge: one contact, whether the ledge is one
+  // block or tiles (the edge is shared by no other piece); a wheel touching
+  // both the face and the edge region gives one contact per genuine place.
+  for (const int tiles : {1, 8}) {
+    const wtc::Terrain terrain = ledge(0.65, tiles);
+    wtc::WheelContactFinder finder;
+    const Vector3d centre(-0.1, 0, 0.65 + 0.1);
+    const auto contacts = finder.find(terrain, {kRadius, 0.12}, {centre, Vector3d::UnitY()});
+    ASSERT_EQ(contacts.size(), 1u) << tiles << " tiles";
+    EXPECT_NEAR((contacts[0].ground_point - Vector3d(0, 0, 0.65)).norm(), 0.0, kGeometryTolerance);
+    EXPECT_NEAR(contacts[0].deflection, kRadius - std::hypot(0.1, 0.1), kGeometryTolerance);
+  }
+}
+
+TEST(WheelContactTest, ConcaveValleyOfOneSurfaceKeepsBothSides) {
+  // Case: two slabs meeting in a V (a ditch); a wheel resting in it touches
+  // both sides at distinct points: both are genuine, none is a seam.
+  wtc::TerrainBuilder builder;
+  const auto material = builder.addMaterial({});
+  builder.addPiece(wtc::ConvexPolyhedron::fromPoints({{-1, -1, 1}, {0, -1, 0}, {-1, 1, 1}, {0, 1, 0},
+                                                      {-1, -1, -1}, {0, -1, -1}, {-1, 1, -1}, {0, 1, -1}}),
+                   material);
+  builder.addPiece(wtc::ConvexPolyhedron::fromPoints({{1, -1, 1}, {0, -1, 0}, {1, 1, 1}, {0, 1, 0},
+                                                      {1, -1, -1}, {0, -1, -1}, {1, 1, -1}, {0, 1, -1}}),
+                   material);
+  const wtc::Terrain terrain = std::move(builder).build();
+  wtc::WheelContactFinder finder;
+  const double h = (kRadius - kDeflection) * std::sqrt(2.0);  // centre height for deflection kDeflection
+  const auto contacts = finder.find(terrain, {kRadius, 0.12}, {{0, 0, h}, Vector3d::UnitY()});
+  ASSERT_EQ(contacts.size(), 2u);
+  EXPECT_NEAR(contacts[0].deflection, kDeflection, 1e-12);
+  EXPECT_NEAR(contacts[1].deflection, kDeflection, 1e-12);
+}
+
+TEST(WheelContactTest, TreadTruncationDropsContactsOnTheCaps) {
+  // Case: a wheel lying on its side (axle vertical): the ground is below the
+  // cap, not the tread. Full-sphere mode keeps the contact.
+  const wtc::Terrain terrain = singleSlab(2.0);
+  wtc::WheelContactFinder finder;
+  const wtc::WheelPose on_side{{1, 1, kRadius - kDeflection}, Vector3d::UnitZ()};
+  EXPECT_TRUE(finder.find(terrain, {kRadius, 0.12}, on_side).empty());
+  wtc::ContactOptions sphere;
+  sphere.tread_truncation = false;
+  EXPECT_EQ(finder.find(terrain, {kRadius, 0.12}, on_side, sphere).size(), 1u);
+  // Case: a tread as wide as the wheel is a full sphere (a ball caster).
+  EXPECT_EQ(finder.find(terrain, {kRadius, 2 * kRadius}, on_side).size(), 1u);
+  // Case: tilted by 30 degrees, |e . a| = 0.5: within a 0.2 m tread (0.19 x 0.5 < 0.1).
+  const wtc::WheelPose tilted{{1, 1, kRadius - kDeflection}, Vector3d(0, std::cos(M_PI / 6), std::sin(M_PI / 6))};
+  EXPECT_EQ(finder.find(terrain, {kRadius, 0.2}, tilted).size(), 1u);
+  EXPECT_TRUE(finder.find(terrain, {kRadius, 0.18}, tilted).empty());
+}
+
+TEST(WheelContactTest, DeepestOnlyOptionKeepsOneContact) {
+  const wtc::Terrain terrain = ledge(0.65, 1);
+  wtc::WheelContactFinder finder;
+  wtc::ContactOptions one;
+  one.multiple_contacts = false;
+  const auto contacts = finder.find(terrain, {kRadius, 0.12}, {{-kRadius + 0.003, 0, kRadius - 0.002}, Vector3d::UnitY()}, one);
+  ASSERT_EQ(contacts.size(), 1u);
+  EXPECT_NEAR(contacts[0].deflection, 0.003, kGeometryTolerance);
+}
+
+TEST(WheelContactTest, CentreInsideAPieceGivesBoundedDeflectionAndOutwardPush) {
+  // Case: deep penetration, the centre 5 cm inside the slab: the contact
+  // pushes the centre up, out of the piece, with a finite deflection.
+  const wtc::Terrain terrain = singleSlab(2.0);
+  wtc::WheelContactFinder finder;
+  const auto contacts = finder.find(terrain, {kRadius, 0.12}, {{1, 1, -0.05}, Vector3d::UnitY()});
+  ASSERT_EQ(contacts.size(), 1u);
+  EXPECT_NEAR(contacts[0].deflection, kRadius + 0.05, kGeometryTolerance);
+  EXPECT_NEAR(contacts[0].e.z(), -1.0, kGeometryTolerance);  // force along -e: up
+}
+
+TEST(WheelContactTest, BadInputIsNamed) {
+  const wtc::Terrain terrain = singleSlab(2.0);
+  wtc::WheelContactFinder finder;
+  using testing::HasSubstr;
+  EXPECT_THAT([&] { finder.find(terrain, {-0.19, 0.12}, {}); },
+              testing::ThrowsMessage<wtc::InvalidInputError>(HasSubstr("free_radius = -0.19")));
+  EXPECT_THAT([&] { finder.find(terrain, {0.19, 0.12}, {{NAN, 0, 0}, Vector3d::UnitY()}); },
+              testing::ThrowsMessage<wtc::InvalidInputError>(HasSubstr("not finite")));
+  EXPECT_THAT([&] { finder.find(terrain, {0.19, 0.12}, {{0, 0, 0}, Vector3d::Zero()}); },
+              testing::ThrowsMessage<wtc::InvalidInputError>(HasSubstr("zero axle")));
+}
+
+}  // namespace
