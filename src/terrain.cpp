@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numeric>
 #include <string>
@@ -11,8 +12,8 @@
 namespace wtc {
 namespace {
 
-// Pieces per leaf: a leaf's boxes are tested in one short loop; deeper trees
-// cost more node visits. 4 measured best on heightfields (docs/terrain.md).
+// Pieces per leaf: 2 and 4 measure within noise of each other on
+// heightfields (bench/wheel_query_bench.cpp); 4 halves the node memory.
 constexpr int kLeafPieces = 4;
 
 // Single-precision box rounded outward: never smaller than the double box,
@@ -21,6 +22,20 @@ void storeOutward(const Aabb& box, float min[3], float max[3]) {
   for (int k = 0; k < 3; ++k) {
     min[k] = std::nextafter(static_cast<float>(box.min[k]), -std::numeric_limits<float>::infinity());
     max[k] = std::nextafter(static_cast<float>(box.max[k]), std::numeric_limits<float>::infinity());
+  }
+}
+
+// The query box in single precision, widened by at least one ulp without a
+// libm call (this runs once per wheel query): 2^-22 relative plus the
+// smallest normal float covers the rounding of the cast.
+void widenQuery(const Aabb& box, float lo[3], float hi[3]) {
+  constexpr float kUlps = 2.384185791015625e-07f;  // 2^-22
+  constexpr float kTiny = std::numeric_limits<float>::min();
+  for (int k = 0; k < 3; ++k) {
+    const float a = static_cast<float>(box.min[k]);
+    const float b = static_cast<float>(box.max[k]);
+    lo[k] = a - (std::abs(a) * kUlps + kTiny);
+    hi[k] = b + (std::abs(b) * kUlps + kTiny);
   }
 }
 
@@ -57,9 +72,9 @@ Terrain TerrainBuilder::build() && {
   return terrain;
 }
 
-// Top-down build over piece centroids: split at the median along the widest
-// axis (nth_element: O(n log n) overall). Nodes are stored depth-first, the
-// left child right after its parent, so a query walks memory forward.
+// Top-down build over piece centroids. A node's range is split at the
+// median along the widest centroid axis, and each half once more, giving up
+// to four children; a child of at most kLeafPieces pieces is a leaf. O(n log n).
 void Terrain::buildIndex() {
   const auto n = static_cast<PieceId>(pieces_.size());
   order_.resize(n);
@@ -71,67 +86,123 @@ void Terrain::buildIndex() {
     bounds_.min = bounds_.min.cwiseMin(pieces_[i].bounds().min);
     bounds_.max = bounds_.max.cwiseMax(pieces_[i].bounds().max);
   }
-  nodes_.clear();
-  nodes_.reserve(2 * static_cast<std::size_t>(n) / (kLeafPieces / 2) + 1);
-
-  // Depth is about log2(n / kLeafPieces): 18 for a million pieces.
-  auto build = [&](auto& self, std::int32_t begin, std::int32_t end) -> std::int32_t {
+  auto rangeBox = [&](std::int32_t begin, std::int32_t end) {
     Aabb box = pieces_[order_[begin]].bounds();
-    Eigen::Vector3d lo = centre[order_[begin]];
-    Eigen::Vector3d hi = lo;
     for (std::int32_t k = begin + 1; k < end; ++k) {
       box.min = box.min.cwiseMin(pieces_[order_[k]].bounds().min);
       box.max = box.max.cwiseMax(pieces_[order_[k]].bounds().max);
+    }
+    return box;
+  };
+  auto split = [&](std::int32_t begin, std::int32_t end) {
+    Eigen::Vector3d lo = centre[order_[begin]];
+    Eigen::Vector3d hi = lo;
+    for (std::int32_t k = begin + 1; k < end; ++k) {
       lo = lo.cwiseMin(centre[order_[k]]);
       hi = hi.cwiseMax(centre[order_[k]]);
-    }
-    const auto index = static_cast<std::int32_t>(nodes_.size());
-    nodes_.emplace_back();
-    storeOutward(box, nodes_[index].min, nodes_[index].max);
-    if (end - begin <= kLeafPieces) {
-      nodes_[index].first_or_right = begin;
-      nodes_[index].count = end - begin;
-      return index;
     }
     int axis = 0;
     (hi - lo).maxCoeff(&axis);
     const std::int32_t mid = begin + (end - begin) / 2;
     std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
                      [&](PieceId a, PieceId b) { return centre[a][axis] < centre[b][axis]; });
-    self(self, begin, mid);
-    const std::int32_t right = self(self, mid, end);
-    nodes_[index].first_or_right = right;
-    nodes_[index].count = 0;
+    return mid;
+  };
+  nodes_.clear();
+  nodes_.reserve(static_cast<std::size_t>(n) / kLeafPieces + 1);
+  // Returns the node index; called only for ranges larger than a leaf.
+  auto build = [&](auto& self, std::int32_t begin, std::int32_t end) -> std::int32_t {
+    std::int32_t bounds[5];
+    int parts = 0;
+    const std::int32_t mid = split(begin, end);
+    for (const auto [b, e] : {std::pair{begin, mid}, std::pair{mid, end}}) {
+      bounds[parts++] = b;
+      if (e - b > kLeafPieces) bounds[parts++] = split(b, e);
+    }
+    bounds[parts] = end;
+    const auto index = static_cast<std::int32_t>(nodes_.size());
+    nodes_.emplace_back();
+    float min[3][4], max[3][4];
+    for (int c = 0; c < 4; ++c) {
+      constexpr float kInf = std::numeric_limits<float>::infinity();
+      float lo[3] = {kInf, kInf, kInf}, hi[3] = {-kInf, -kInf, -kInf};  // empty slot: overlaps nothing
+      std::int32_t child = -1, count = 0;
+      if (c < parts) {
+        const std::int32_t b = bounds[c], e = bounds[c + 1];
+        storeOutward(rangeBox(b, e), lo, hi);
+        if (e - b <= kLeafPieces) {
+          child = ~b;
+          count = e - b;
+        } else {
+          child = self(self, b, e);
+        }
+      }
+      for (int k = 0; k < 3; ++k) {
+        min[k][c] = lo[k];
+        max[k][c] = hi[k];
+      }
+      nodes_[index].child[c] = child;
+      nodes_[index].count[c] = count;
+    }
+    Node& node = nodes_[index];
+    std::memcpy(&node.min_x, min[0], sizeof(Float4));
+    std::memcpy(&node.min_y, min[1], sizeof(Float4));
+    std::memcpy(&node.min_z, min[2], sizeof(Float4));
+    std::memcpy(&node.max_x, max[0], sizeof(Float4));
+    std::memcpy(&node.max_y, max[1], sizeof(Float4));
+    std::memcpy(&node.max_z, max[2], sizeof(Float4));
     return index;
   };
-  build(build, 0, n);
+  if (n > kLeafPieces) {
+    build(build, 0, n);
+  } else {
+    // A root with a single leaf child keeps one query path for all sizes.
+    Node root{};
+    float lo[3], hi[3];
+    storeOutward(bounds_, lo, hi);
+    constexpr float kInf = std::numeric_limits<float>::infinity();
+    root.min_x = Float4{lo[0], kInf, kInf, kInf};
+    root.min_y = Float4{lo[1], kInf, kInf, kInf};
+    root.min_z = Float4{lo[2], kInf, kInf, kInf};
+    root.max_x = Float4{hi[0], -kInf, -kInf, -kInf};
+    root.max_y = Float4{hi[1], -kInf, -kInf, -kInf};
+    root.max_z = Float4{hi[2], -kInf, -kInf, -kInf};
+    root.child[0] = ~0;
+    root.count[0] = n;
+    for (int c = 1; c < 4; ++c) root.child[c] = -1;
+    nodes_.push_back(root);
+  }
   nodes_.shrink_to_fit();
+  // Leaf boxes in tree order, exact (double): a leaf test reads one
+  // contiguous run of memory instead of dereferencing each piece.
+  leaf_boxes_.resize(n);
+  for (PieceId k = 0; k < n; ++k) leaf_boxes_[k] = pieces_[order_[k]].bounds();
 }
 
 void Terrain::overlapping(const Aabb& box, std::vector<PieceId>& out) const {
-  float lo[3];
-  float hi[3];
-  storeOutward(box, lo, hi);
-  auto overlaps = [&](const Node& node) {
-    return lo[0] <= node.max[0] && node.min[0] <= hi[0] && lo[1] <= node.max[1] && node.min[1] <= hi[1] &&
-           lo[2] <= node.max[2] && node.min[2] <= hi[2];
-  };
-  // Depth-first walk; 64 entries bound a tree of 2^64 leaves.
-  std::int32_t stack[64];
+  float lo[3], hi[3];
+  widenQuery(box, lo, hi);
+  const Float4 lx{lo[0], lo[0], lo[0], lo[0]}, ly{lo[1], lo[1], lo[1], lo[1]}, lz{lo[2], lo[2], lo[2], lo[2]};
+  const Float4 hx{hi[0], hi[0], hi[0], hi[0]}, hy{hi[1], hi[1], hi[1], hi[1]}, hz{hi[2], hi[2], hi[2], hi[2]};
+  // Depth-first; a 4-wide tree of depth 32 would hold 2^64 leaves.
+  std::int32_t stack[3 * 32 + 1];
   int top = 0;
   stack[top++] = 0;
   while (top > 0) {
     const Node& node = nodes_[stack[--top]];
-    if (!overlaps(node)) continue;
-    if (node.count > 0) {
-      for (std::int32_t k = node.first_or_right; k < node.first_or_right + node.count; ++k) {
-        if (pieces_[order_[k]].bounds().overlaps(box)) out.push_back(order_[k]);
+    const auto hit = (lx <= node.max_x) & (node.min_x <= hx) & (ly <= node.max_y) & (node.min_y <= hy) &
+                     (lz <= node.max_z) & (node.min_z <= hz);
+    for (int c = 0; c < 4; ++c) {
+      if (hit[c] == 0) continue;
+      const std::int32_t child = node.child[c];
+      if (child >= 0) {
+        stack[top++] = child;
+        continue;
       }
-      continue;
+      for (std::int32_t k = ~child; k < ~child + node.count[c]; ++k) {
+        if (leaf_boxes_[k].overlaps(box)) out.push_back(order_[k]);
+      }
     }
-    const auto self = static_cast<std::int32_t>(&node - nodes_.data());
-    stack[top++] = node.first_or_right;
-    stack[top++] = self + 1;
   }
 }
 
@@ -142,7 +213,8 @@ std::size_t Terrain::pieceMemoryBytes() const {
 }
 
 std::size_t Terrain::indexMemoryBytes() const {
-  return nodes_.capacity() * sizeof(Node) + order_.capacity() * sizeof(PieceId);
+  return nodes_.capacity() * sizeof(Node) + order_.capacity() * sizeof(PieceId) +
+         leaf_boxes_.capacity() * sizeof(Aabb);
 }
 
 }  // namespace wtc

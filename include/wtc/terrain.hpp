@@ -3,10 +3,10 @@
 // spatial index that answers "which pieces can touch this box" (a wheel's
 // bounding box). Immutable once built; build it with TerrainBuilder.
 //
-// Index: a static bounding-volume hierarchy over the pieces' boxes, built
-// once (median split along the widest axis of the centroids), stored
-// depth-first in one array with single-precision boxes rounded outward
-// (docs/terrain.md). Chosen over FCL's DynamicAABBTreeCollisionManager and
+// Index: a static 4-wide bounding-volume hierarchy over the pieces' boxes,
+// built once (median splits along the widest axis of the centroids), its
+// child boxes in single precision rounded outward and tested four at a time;
+// leaves end with an exact test on the double boxes (docs/terrain.md). Chosen over FCL's DynamicAABBTreeCollisionManager and
 // Bullet's btDbvt by the benchmark bench/wheel_query_bench.cpp.
 #include <cstdint>
 #include <span>
@@ -64,13 +64,15 @@ class Terrain {
 
  private:
   friend class TerrainBuilder;
-  struct Node {
-    float min[3];
-    float max[3];
-    // Leaf: first piece slot in order_ and count (> 0). Inner: index of the
-    // right child (the left one follows this node) and count = 0.
-    std::int32_t first_or_right;
-    std::int32_t count;
+  // A 4-wide node: the boxes of its four children in single precision,
+  // structure-of-arrays so one vector compare tests all four. child >= 0 is
+  // an inner node; child < 0 is a leaf holding pieces order_[~child ..
+  // ~child + count). Unused slots have empty boxes (min > max).
+  using Float4 = float __attribute__((vector_size(16)));
+  struct alignas(16) Node {
+    Float4 min_x, min_y, min_z, max_x, max_y, max_z;
+    std::int32_t child[4];
+    std::int32_t count[4];
   };
   void buildIndex();
 
@@ -79,6 +81,7 @@ class Terrain {
   std::vector<Material> materials_;
   std::vector<Node> nodes_;
   std::vector<PieceId> order_;
+  std::vector<Aabb> leaf_boxes_;  // piece boxes in tree (order_) order
   Aabb bounds_;
 };
 
