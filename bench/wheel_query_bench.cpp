@@ -12,8 +12,11 @@
 //       contact step (warm starts, seam rule, tread filter).
 //   TerrainBuild/<terrain>/<pieces>        building pieces and index, once.
 // <terrain>: heightfield (0.5 m cells, two prisms each) or mesh (a jittered
-// triangulation extruded 0.3 m along -normal). The wheel (r_f = 0.19 m)
-// rolls along an ellipse over the ground, 2 mm deep, touching a few cells.
+// triangulation extruded 0.3 m along -normal). The wheel (r_f = 0.19 m) is
+// 2 mm deep in the ground, touching a few cells, and either rolls along an
+// ellipse at 1 mm per query (a wheel at 1 m/s, 1 ms steps: what a
+// simulation asks) or, with the suffix /cold, jumps to a random place every
+// query (every access on cold memory: the worst case).
 #include <benchmark/benchmark.h>
 
 #include <btBulletCollisionCommon.h>
@@ -21,6 +24,7 @@
 #include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
 #include <fcl/geometry/shape/box.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -40,7 +44,9 @@ using Eigen::Vector3d;
 constexpr double kRadius = 0.19;     // r_f (m)
 constexpr double kCellM = 0.5;       // cell size (m)
 constexpr double kDepthM = 0.002;    // wheel sinkage (m)
-constexpr int kPathPoints = 4096;
+constexpr double kStepM = 0.001;     // rolling: 1 m/s at a 1 ms step (m)
+constexpr double kMaxLoopM = 5.0;    // rolling: semi-axis cap of the loop (m)
+constexpr int kColdPoints = 4096;    // cold: random positions
 
 double relief(double x, double y) { return 0.05 * std::sin(0.7 * x) * std::cos(0.9 * y) + 0.02 * std::sin(2.3 * x + 1.1 * y); }
 
@@ -99,7 +105,9 @@ struct Fixture {
   long pieces = 0;
   double build_seconds = 0.0;
   std::unique_ptr<wtc::Terrain> terrain;
-  std::vector<Vector3d> path;
+  std::vector<Vector3d> rolling;
+  std::vector<Vector3d> cold;
+  const std::vector<Vector3d>& path(const std::string& motion) const { return motion == "cold" ? cold : rolling; }
   std::vector<std::unique_ptr<fcl::CollisionObjectd>> fcl_objects;
   std::unique_ptr<fcl::DynamicAABBTreeCollisionManagerd> fcl_manager;
   btDbvt bullet_tree;
@@ -116,14 +124,21 @@ Fixture& fixture(const std::string& kind, long pieces) {
   f->terrain = std::make_unique<wtc::Terrain>(makeTerrain(kind, pieces));
   f->build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
+  // Rolling: an ellipse at 1 mm steps (what consecutive steps of one wheel
+  // see). Cold: random positions anywhere (every query on cold memory).
   const wtc::Aabb& b = f->terrain->bounds();
   const Vector3d centre = b.center();
-  const Vector3d half = 0.4 * b.extent();
-  for (int k = 0; k < kPathPoints; ++k) {
-    const double t = 2.0 * M_PI * k / kPathPoints;
-    const double x = centre.x() + half.x() * std::cos(t), y = centre.y() + half.y() * std::sin(t);
-    f->path.emplace_back(x, y, relief(x, y) + kRadius - kDepthM);
+  const double ax = std::min(0.4 * b.extent().x(), kMaxLoopM), ay = std::min(0.4 * b.extent().y(), kMaxLoopM);
+  const int rolling = static_cast<int>(2.0 * M_PI * std::sqrt(0.5 * (ax * ax + ay * ay)) / kStepM);
+  auto onGround = [](double x, double y) { return Vector3d(x, y, relief(x, y) + kRadius - kDepthM); };
+  for (int k = 0; k < rolling; ++k) {
+    const double t = 2.0 * M_PI * k / rolling;
+    f->rolling.push_back(onGround(centre.x() + ax * std::cos(t), centre.y() + ay * std::sin(t)));
   }
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> ux(b.min.x() + kRadius, b.max.x() - kRadius);
+  std::uniform_real_distribution<double> uy(b.min.y() + kRadius, b.max.y() - kRadius);
+  for (int k = 0; k < kColdPoints; ++k) f->cold.push_back(onGround(ux(rng), uy(rng)));
 
   std::vector<fcl::CollisionObjectd*> raw;
   for (wtc::PieceId id = 0; id < static_cast<wtc::PieceId>(f->terrain->pieceCount()); ++id) {
@@ -192,15 +207,17 @@ void addCounters(benchmark::State& state, const Fixture& f, double candidates, d
   state.counters["index_bytes"] = static_cast<double>(f.terrain->indexMemoryBytes()) / f.pieces;
 }
 
-void wheelQuery(benchmark::State& state, std::string index, std::string kind, long pieces, bool queries) {
+void wheelQuery(benchmark::State& state, std::string index, std::string kind, long pieces, bool queries,
+                std::string motion) {
   Fixture& f = fixture(kind, pieces);
+  const std::vector<Vector3d>& path = f.path(motion);
   Gather gather{f};
   wtc::QueryOptions options;
   options.max_distance = kRadius;
   double candidates = 0, contacts = 0;
   std::size_t k = 0;
   for (auto _ : state) {
-    const Vector3d& o = f.path[k++ % f.path.size()];
+    const Vector3d& o = path[k++ % path.size()];
     gather.run(index, o);
     candidates += gather.out.size();
     if (queries) {
@@ -214,14 +231,15 @@ void wheelQuery(benchmark::State& state, std::string index, std::string kind, lo
   addCounters(state, f, candidates, contacts);
 }
 
-void wheelContacts(benchmark::State& state, std::string kind, long pieces) {
+void wheelContacts(benchmark::State& state, std::string kind, long pieces, std::string motion) {
   Fixture& f = fixture(kind, pieces);
+  const std::vector<Vector3d>& path = f.path(motion);
   wtc::WheelContactFinder finder;
   const wtc::WheelGeometry wheel{kRadius, 0.12};
   double candidates = 0, contacts = 0;
   std::size_t k = 0;
   for (auto _ : state) {
-    const auto found = finder.find(*f.terrain, wheel, {f.path[k++ % f.path.size()], Vector3d::UnitY()});
+    const auto found = finder.find(*f.terrain, wheel, {path[k++ % path.size()], Vector3d::UnitY()});
     contacts += found.size();
     candidates += finder.candidates().size();
     benchmark::DoNotOptimize(found.data());
@@ -242,11 +260,16 @@ const bool kRegistered = [] {
   for (const std::string kind : {"heightfield", "mesh"}) {
     for (const long pieces : {100L, 1000L, 10000L, 100000L, 1000000L}) {
       const std::string suffix = "/" + kind + "/" + std::to_string(pieces);
-      for (const std::string index : {"wtc", "fcl", "bullet"}) {
-        benchmark::RegisterBenchmark(("WheelQuery/" + index + suffix).c_str(), wheelQuery, index, kind, pieces, true);
-        benchmark::RegisterBenchmark(("WheelIndex/" + index + suffix).c_str(), wheelQuery, index, kind, pieces, false);
+      for (const std::string motion : {"rolling", "cold"}) {
+        const std::string tail = suffix + (motion == "rolling" ? "" : "/cold");
+        for (const std::string index : {"wtc", "fcl", "bullet"}) {
+          benchmark::RegisterBenchmark(("WheelQuery/" + index + tail).c_str(), wheelQuery, index, kind, pieces, true,
+                                       motion);
+          benchmark::RegisterBenchmark(("WheelIndex/" + index + tail).c_str(), wheelQuery, index, kind, pieces, false,
+                                       motion);
+        }
+        benchmark::RegisterBenchmark(("WheelContacts" + tail).c_str(), wheelContacts, kind, pieces, motion);
       }
-      benchmark::RegisterBenchmark(("WheelContacts" + suffix).c_str(), wheelContacts, kind, pieces);
       benchmark::RegisterBenchmark(("TerrainBuild" + suffix).c_str(), terrainBuild, kind, pieces)
           ->UseManualTime()->Iterations(1)->Unit(benchmark::kMillisecond);
     }

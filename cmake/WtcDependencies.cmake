@@ -22,3 +22,9 @@ endif()
 if(WTC_BUILD_BENCHMARKS)
   find_package(benchmark REQUIRED CONFIG)
 endif()
+
+# wtc::io reads terrain files. Debian's assimp 5.2.5 package reports 5.2.4 in
+# its CMake config: no version request. yaml-cpp's config defines the target
+# `yaml-cpp` (no namespace) in 0.7.
+find_package(assimp CONFIG REQUIRED)
+find_package(yaml-cpp CONFIG REQUIRED)

@@ -1,8 +1,14 @@
 # Installs the library and a relocatable CMake package:
-#   find_package(wtc CONFIG REQUIRED)  ->  wtc::core
+#   find_package(wtc CONFIG REQUIRED)  ->  wtc::core, wtc::io
 include(CMakePackageConfigHelpers)
 
 install(TARGETS wtc_core EXPORT wtcTargets
+  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
+  INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+# wtc::io, the terrain file readers.
+install(TARGETS wtc_io EXPORT wtcTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}

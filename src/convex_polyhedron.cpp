@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 #include <set>
-#include <sstream>
 #include <string>
 
 #include "wtc/error.hpp"
@@ -30,23 +29,46 @@ Aabb boundsOf(const std::vector<Eigen::Vector3d>& vertices) {
 // polygons that are planar only to roundoff (merged hull facets).
 Eigen::Vector3d newellNormal(const std::vector<Eigen::Vector3d>& local,
                              const std::vector<int>& face) {
+  // Edge vectors from the first vertex: no cancellation from large
+  // coordinates.
   Eigen::Vector3d n = Eigen::Vector3d::Zero();
-  for (std::size_t k = 0; k < face.size(); ++k) {
-    const Eigen::Vector3d& a = local[face[k]];
-    const Eigen::Vector3d& b = local[face[(k + 1) % face.size()]];
-    n += a.cross(b);
+  const Eigen::Vector3d& first = local[face[0]];
+  for (std::size_t k = 1; k + 1 < face.size(); ++k) {
+    n += (local[face[k]] - first).cross(local[face[k + 1]] - first);
   }
   return n;
 }
 
-}  // namespace
-
-std::string formatVector(const Eigen::Vector3d& v) {
-  std::ostringstream out;
-  out.precision(17);
-  out << '(' << v.x() << ", " << v.y() << ", " << v.z() << ')';
-  return out.str();
+// A closed, consistently oriented surface uses every directed edge (a, b)
+// exactly once and its reverse (b, a) exactly once.
+void checkClosed(const std::vector<std::vector<int>>& faces) {
+  struct Edge {
+    int a, b, face;
+  };
+  std::vector<Edge> edges;
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    for (std::size_t k = 0; k < faces[f].size(); ++k) {
+      edges.push_back({faces[f][k], faces[f][(k + 1) % faces[f].size()], static_cast<int>(f)});
+    }
+  }
+  auto key = [](const Edge& e) { return std::pair{e.a, e.b}; };
+  std::sort(edges.begin(), edges.end(), [&](const Edge& x, const Edge& y) { return key(x) < key(y); });
+  auto name = [](const Edge& e) {
+    return "edge (" + std::to_string(e.a) + ", " + std::to_string(e.b) + ") of face " + std::to_string(e.face);
+  };
+  for (std::size_t k = 0; k < edges.size(); ++k) {
+    if (k + 1 < edges.size() && key(edges[k]) == key(edges[k + 1])) {
+      fail(name(edges[k]) + " is used twice in the same direction: faces overlap or are inconsistently oriented");
+    }
+    const Edge reverse{edges[k].b, edges[k].a, 0};
+    if (!std::binary_search(edges.begin(), edges.end(), reverse,
+                            [&](const Edge& x, const Edge& y) { return key(x) < key(y); })) {
+      fail(name(edges[k]) + " has no opposite edge: the mesh is not closed");
+    }
+  }
 }
+
+}  // namespace
 
 ConvexPolyhedron ConvexPolyhedron::fromMesh(const std::vector<Eigen::Vector3d>& vertices,
                                             const std::vector<std::vector<int>>& faces) {
@@ -74,9 +96,10 @@ ConvexPolyhedron ConvexPolyhedron::fromMesh(const std::vector<Eigen::Vector3d>& 
       }
     }
   }
+  checkClosed(faces);
   // A two-faced mesh is a flat polygon given from both sides.
   const bool flat = faces.size() == 2;
-  return assemble(vertices, faces, flat);
+  return assemble(vertices, faces, flat, nullptr);
 }
 
 ConvexPolyhedron ConvexPolyhedron::box(const Eigen::Vector3d& min, const Eigen::Vector3d& max) {
@@ -91,11 +114,12 @@ ConvexPolyhedron ConvexPolyhedron::box(const Eigen::Vector3d& min, const Eigen::
   // Counter-clockwise seen from outside: -x, +x, -y, +y, -z, +z.
   const std::vector<std::vector<int>> faces = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4},
                                                {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
-  return assemble(v, faces, false);
+  return assemble(v, faces, false, nullptr);
 }
 
 ConvexPolyhedron ConvexPolyhedron::assemble(const std::vector<Eigen::Vector3d>& vertices,
-                                            const std::vector<std::vector<int>>& faces, bool flat) {
+                                            const std::vector<std::vector<int>>& faces, bool flat,
+                                            const std::vector<Eigen::Vector3d>* hull_normals) {
   ConvexPolyhedron poly;
   poly.bounds_ = boundsOf(vertices);
   poly.origin_ = poly.bounds_.center();
@@ -127,22 +151,28 @@ ConvexPolyhedron ConvexPolyhedron::assemble(const std::vector<Eigen::Vector3d>& 
   const double planar_tol = tolerance::kHullMergeRelative * poly.size_;
   double* n_out = num + 3 * nv;
   for (int f = 0; f < nf; ++f) {
-    const Eigen::Vector3d area = newellNormal(local, faces[f]);
-    const double twice_area = area.norm();
-    if (!(twice_area > planar_tol * planar_tol)) {
-      fail("face " + std::to_string(f) + " has zero area (its vertices are collinear or coincide)");
+    Eigen::Vector3d n;
+    if (hull_normals != nullptr) {
+      // Qhull's hyperplane: robust where a sliver facet's vertices are not.
+      n = (*hull_normals)[f].normalized();
+    } else {
+      const Eigen::Vector3d area = newellNormal(local, faces[f]);
+      const double twice_area = area.norm();
+      if (!(twice_area > planar_tol * planar_tol)) {
+        fail("face " + std::to_string(f) + " has zero area (its vertices are collinear or coincide)");
+      }
+      n = area / twice_area;
     }
-    const Eigen::Vector3d n = area / twice_area;
     // d = max over ALL vertices keeps every vertex inside every plane, so the
     // plane bound stays a true lower bound (see the header's design note).
     double d = -std::numeric_limits<double>::infinity();
     double face_min = std::numeric_limits<double>::infinity();
     for (int i : faces[f]) face_min = std::min(face_min, n.dot(local[i]));
     for (int i = 0; i < nv; ++i) d = std::max(d, n.dot(local[i]));
-    if (d - face_min > planar_tol) {
+    if (hull_normals == nullptr && d - face_min > planar_tol) {
       fail("face " + std::to_string(f) + " is not planar, or the mesh is not convex or not oriented " +
-           "outward: a vertex lies " + std::to_string(d - face_min) + " m above the face's plane (tolerance " +
-           std::to_string(planar_tol) + " m)");
+           "outward: a vertex lies " + formatNumber(d - face_min) + " m above the face's plane (tolerance " +
+           formatNumber(planar_tol) + " m)");
     }
     n_out[f] = n.x();
     n_out[nf + f] = n.y();

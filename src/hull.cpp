@@ -106,21 +106,27 @@ ConvexPolyhedron flatHull(const std::vector<Eigen::Vector3d>& pts, const Eigen::
   return ConvexPolyhedron::fromMesh(vertices, {top, bottom});
 }
 
-ConvexPolyhedron solidHull(const std::vector<Eigen::Vector3d>& pts, const Eigen::Vector3d& origin) {
+struct HullMesh {
+  std::vector<Eigen::Vector3d> vertices;
+  std::vector<std::vector<int>> faces;
+  std::vector<Eigen::Vector3d> normals;
+};
+
+HullMesh solidHull(const std::vector<Eigen::Vector3d>& pts, const Eigen::Vector3d& origin) {
   std::vector<double> coords;
   for (const auto& p : pts) coords.insert(coords.end(), {p.x(), p.y(), p.z()});
   QhullRun hull;
   hull.run(3, coords);
   qhT* qh = hull.get();
   std::vector<int> index_of(pts.size(), -1);
-  std::vector<Eigen::Vector3d> vertices;
+  HullMesh out;
+  std::vector<Eigen::Vector3d>& vertices = out.vertices;
   vertexT* vertex;
   FORALLvertices {
     const int id = qh_pointid(qh, vertex->point);
     index_of[id] = static_cast<int>(vertices.size());
     vertices.push_back(pts[id] + origin);
   }
-  std::vector<std::vector<int>> faces;
   facetT* facet;
   FORALLfacets {
     setT* ordered = qh_facet3vertex(qh, facet);
@@ -136,9 +142,10 @@ ConvexPolyhedron solidHull(const std::vector<Eigen::Vector3d>& pts, const Eigen:
     }
     const Eigen::Vector3d normal(facet->normal[0], facet->normal[1], facet->normal[2]);
     if (area.dot(normal) < 0.0) std::reverse(face.begin(), face.end());
-    faces.push_back(std::move(face));
+    out.faces.push_back(std::move(face));
+    out.normals.push_back(normal);
   }
-  return ConvexPolyhedron::fromMesh(vertices, faces);
+  return out;
 }
 
 }  // namespace
@@ -191,7 +198,8 @@ ConvexPolyhedron ConvexPolyhedron::fromPoints(const std::vector<Eigen::Vector3d>
   double thickness = 0.0;
   for (const auto& p : local) thickness = std::max(thickness, std::abs(n.dot(p - a)));
   if (thickness <= tolerance::kFlatRelative * size) return flatHull(local, n, origin);
-  return solidHull(local, origin);
+  const HullMesh hull = solidHull(local, origin);
+  return assemble(hull.vertices, hull.faces, false, &hull.normals);
 }
 
 }  // namespace wtc

@@ -28,7 +28,7 @@ void validate(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOption
   }
   if (!(o.relative_tolerance > 0.0 && o.relative_tolerance < 1.0)) {
     throw InvalidInputError("wtc::queryPoint: options.relative_tolerance = " +
-                            std::to_string(o.relative_tolerance) + " is not in (0, 1)");
+                            formatNumber(o.relative_tolerance) + " is not in (0, 1)");
   }
   if (o.max_iterations < 1) {
     throw InvalidInputError("wtc::queryPoint: options.max_iterations = " + std::to_string(o.max_iterations) +
@@ -45,7 +45,9 @@ PointQuery fromPlane(const ConvexPolyhedron& poly, const Vector3d& p, double bou
   r.signed_distance = bound;
   r.normal = poly.faceNormal(face);
   r.closest_point = p - bound * r.normal;
-  r.direction = status == QueryStatus::kInside ? r.normal : Vector3d(-r.normal);
+  // On the surface (to roundoff) the direction is the limit from outside.
+  const bool on_surface = std::abs(bound) <= tolerance::kTouchingRelative * poly.size();
+  r.direction = status == QueryStatus::kInside && !on_surface ? r.normal : Vector3d(-r.normal);
   r.status = status;
   return r;
 }
@@ -107,18 +109,44 @@ PointQuery query(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOpt
   }
   if (plane > max_distance) return fromPlane(poly, p, plane, face, QueryStatus::kBeyond);
 
-  // 3. GJK on poly - p, from the cached simplex or the nearest face.
+  // 3. GJK on poly - p, from the nearest face's first triangle, or from the
+  // cached simplex when that starts nearer.
   detail::Simplex s;
-  if (cache == nullptr || !seedFromCache(poly, q, *cache, s)) seedFromFace(poly, q, face, s);
+  seedFromFace(poly, q, face, s);
+  Vector3d v = detail::closestToOrigin(s);
+  if (cache != nullptr) {
+    detail::Simplex warm;
+    if (seedFromCache(poly, q, *cache, warm)) {
+      const Vector3d v_warm = detail::closestToOrigin(warm);
+      if (v_warm.squaredNorm() < v.squaredNorm()) {
+        s = warm;
+        v = v_warm;
+      }
+    }
+  }
+  double dist = v.norm();
   const double touching = tolerance::kTouchingRelative * poly.size();
+  const double plane_slack = tolerance::kPlaneSlackRelative * (poly.size() + dist);
+  const double tol = options.relative_tolerance;
   double lower = std::max(plane, 0.0);
+  // |v - x*|^2 <= |v|^2 - |x*|^2 <= |v|^2 - lower^2 for the true closest
+  // point x* of a convex set, so this bounds the closest point's error by
+  // tol |v| (and the distance's by tol^2 |v| / 2).
+  auto certified = [&] { return dist * dist - lower * lower <= (tol * dist) * (tol * dist); };
+  // A triangle on the nearest face's plane whose closest point is interior:
+  // v is the foot of the perpendicular on that face, exactly.
+  auto onNearestFace = [&] {
+    if (s.count != 3 || dist - plane > plane_slack) return false;
+    const Vector3d n = poly.faceNormal(face);
+    const double d = poly.pd()[face];
+    for (int m = 0; m < 3; ++m) {
+      if (n.dot(poly.vertexLocal(s.vertex[m])) < d - plane_slack) return false;
+    }
+    return true;
+  };
   PointQuery r;
   r.status = QueryStatus::kIterationLimit;
-  Vector3d v;
-  double dist = 0.0;
   for (;;) {
-    v = detail::closestToOrigin(s);
-    dist = v.norm();
     if (s.count == 4 || dist <= touching) {
       // On the surface to roundoff: the face normal is the only stable direction.
       store(s, cache);
@@ -126,7 +154,7 @@ PointQuery query(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOpt
       on.iterations = r.iterations;
       return on;
     }
-    if (dist - lower <= options.relative_tolerance * dist) {
+    if (onNearestFace() || certified()) {
       r.status = QueryStatus::kOutside;
       break;
     }
@@ -141,13 +169,25 @@ PointQuery query(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOpt
     }
     bool known = false;
     for (int m = 0; m < s.count; ++m) known |= s.vertex[m] == next;
-    if (known || dist - lower <= options.relative_tolerance * dist) {
-      r.status = QueryStatus::kOutside;  // no progress possible: v is the answer
+    if (known || certified()) {
+      r.status = QueryStatus::kOutside;  // no new vertex: exact on a polytope
       break;
     }
-    s.point[s.count] = w;
-    s.vertex[s.count] = next;
-    ++s.count;
+    detail::Simplex grown = s;
+    grown.point[grown.count] = w;
+    grown.vertex[grown.count] = next;
+    ++grown.count;
+    const Vector3d v_next = detail::closestToOrigin(grown);
+    const double dist_next = v_next.norm();
+    if (!(dist_next < dist) && grown.count != 4) {
+      // GJK decreases |v| strictly in exact arithmetic; no decrease means
+      // roundoff has taken over (two coplanar triangles taking turns).
+      r.status = QueryStatus::kOutside;
+      break;
+    }
+    s = grown;
+    v = v_next;
+    dist = dist_next;
   }
   store(s, cache);
   r.signed_distance = r.status == QueryStatus::kBeyond ? lower : dist;

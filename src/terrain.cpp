@@ -58,8 +58,13 @@ PieceId TerrainBuilder::addPiece(ConvexPolyhedron piece, MaterialId material) {
 }
 
 void TerrainBuilder::reserve(std::size_t count) {
-  pieces_.reserve(pieces_.size() + count);
-  piece_material_.reserve(piece_material_.size() + count);
+  // Grow geometrically: many small reservations must not make building
+  // quadratic.
+  const std::size_t wanted = pieces_.size() + count;
+  if (wanted <= pieces_.capacity()) return;
+  const std::size_t grown = std::max(wanted, 2 * pieces_.capacity());
+  pieces_.reserve(grown);
+  piece_material_.reserve(grown);
 }
 
 Terrain TerrainBuilder::build() && {
@@ -115,7 +120,7 @@ void Terrain::buildIndex() {
     std::int32_t bounds[5];
     int parts = 0;
     const std::int32_t mid = split(begin, end);
-    for (const auto [b, e] : {std::pair{begin, mid}, std::pair{mid, end}}) {
+    for (const auto& [b, e] : {std::pair{begin, mid}, std::pair{mid, end}}) {
       bounds[parts++] = b;
       if (e - b > kLeafPieces) bounds[parts++] = split(b, e);
     }

@@ -10,7 +10,7 @@ namespace wtc {
 void validate(const WheelGeometry& wheel, const std::string& where) {
   auto check = [&](const char* field, double value) {
     if (!std::isfinite(value) || !(value > 0.0)) {
-      throw InvalidInputError(where + ": wheel " + field + " = " + std::to_string(value) +
+      throw InvalidInputError(where + ": wheel " + field + " = " + formatNumber(value) +
                               " m must be finite and positive");
     }
   };

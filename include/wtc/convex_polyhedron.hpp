@@ -46,8 +46,9 @@ class ConvexPolyhedron {
   /// A trusted vertex and face list: each face lists its vertex indices
   /// counter-clockwise seen from outside. No hull is computed (this is the
   /// fast path the terrain builders use), but the input is still checked:
-  /// finite vertices, valid indices, faces of >= 3 vertices, outward planar
-  /// faces and convexity (every vertex on or below every face plane, within
+  /// finite vertices, valid indices, faces of >= 3 vertices, a closed
+  /// surface (every edge shared by two faces in opposite directions),
+  /// outward planar faces and convexity (every vertex on or below every face plane, within
   /// tolerance::kHullMergeRelative x size). Violations throw
   /// InvalidInputError naming the face or vertex.
   static ConvexPolyhedron fromMesh(const std::vector<Eigen::Vector3d>& vertices,
@@ -108,8 +109,11 @@ class ConvexPolyhedron {
  private:
   ConvexPolyhedron() = default;
   // Builds the stored layout from a validated, outward-oriented face list.
+  // `hull_normals` (from Qhull) replace the face normals computed from the
+  // vertices, and the planarity check, for hull output.
   static ConvexPolyhedron assemble(const std::vector<Eigen::Vector3d>& vertices,
-                                   const std::vector<std::vector<int>>& faces, bool flat);
+                                   const std::vector<std::vector<int>>& faces, bool flat,
+                                   const std::vector<Eigen::Vector3d>* hull_normals);
   int hillClimb(const Eigen::Vector3d& dir, int start) const;
   std::span<const std::int32_t> vertexNeighbors(int i) const;
 

@@ -17,6 +17,10 @@ class InvalidInputError : public std::invalid_argument {
 /// "(x, y, z)" with full precision, for error messages.
 std::string formatVector(const Eigen::Vector3d& v);
 
+/// A number for an error message: 9 significant digits, never "0.000000"
+/// for a small value (std::to_string's trap).
+std::string formatNumber(double value);
+
 /// True when all three coordinates are finite.
 inline bool isFinite(const Eigen::Vector3d& v) { return v.allFinite(); }
 

@@ -34,9 +34,11 @@ enum class QueryStatus : std::uint8_t {
 const char* toString(QueryStatus status);
 
 struct QueryOptions {
-  /// Stop when the GJK upper and lower bounds agree to this fraction of the
-  /// distance (dimensionless, in (0, 1)).
-  double relative_tolerance = tolerance::kQueryRelativeGap;
+  /// Stop when the GJK bounds prove the closest point to within this
+  /// fraction of the distance (dimensionless, in (0, 1)); the distance is
+  /// then within tol^2 / 2 of it. The exact stop (no new support vertex)
+  /// usually comes first.
+  double relative_tolerance = tolerance::kQueryRelativeTolerance;
   /// Iteration cap (>= 1): the query never loops beyond it.
   int max_iterations = tolerance::kDefaultMaxIterations;
   /// Distances above this need not be exact (m): the query returns kBeyond
@@ -46,7 +48,9 @@ struct QueryOptions {
 
 /// Warm start for a point that moves a little between queries (a wheel
 /// centre between steps). Owned by the caller, one per (point, piece) pair;
-/// a default-constructed cache means a cold start.
+/// a default-constructed cache means a cold start. The cached simplex is
+/// used when it starts nearer than the nearest-face seed; indices out of
+/// range (a cache from another piece) are ignored.
 struct QueryCache {
   std::int32_t count = 0;          ///< Vertices in the last simplex (0..3).
   std::int32_t vertex[3] = {0, 0, 0};

@@ -10,16 +10,21 @@ namespace wtc::tolerance {
 /// Unit roundoff of double (dimensionless): 2^-52.
 inline constexpr double kRoundoff = 2.220446049250313e-16;
 
-/// Default relative gap at which the point query stops (dimensionless): the
-/// upper and lower distance bounds agree to this fraction of the distance.
-/// Polyhedra make GJK terminate exactly in a few iterations, so the default
-/// is set near roundoff: a tighter one buys nothing, a looser one little.
-inline constexpr double kQueryRelativeGap = 1e3 * kRoundoff;
+/// Default relative tolerance of the point query (dimensionless): GJK stops
+/// when its bounds prove the closest point to within this fraction of the
+/// distance (the distance itself then to tol^2 / 2). On polyhedra GJK ends
+/// exactly (no new support vertex) in a few iterations, so the default sits
+/// near roundoff: the exact stop decides, not the tolerance.
+inline constexpr double kQueryRelativeTolerance = 1e3 * kRoundoff;
 
 /// Distance below which a point counts as on the surface (relative to piece
 /// size): there the direction p -> closest point is noise, so the face normal
 /// is reported instead.
 inline constexpr double kTouchingRelative = 1e2 * kRoundoff;
+
+/// Roundoff slack when comparing two computations of the distance to one
+/// face plane (relative to piece size + distance): 64 ulps.
+inline constexpr double kPlaneSlackRelative = 64 * kRoundoff;
 
 /// Points of a hull closer than this are merged; vertices farther than this
 /// from a face's plane make a trusted face list non-planar (relative to piece

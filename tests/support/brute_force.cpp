@@ -56,28 +56,6 @@ struct Face {
   Real offset = 0;            // max over the face's vertices of normal . v
 };
 
-// The faces of `poly` relative to `reference`, with their own planes.
-std::vector<Face> facesRelativeTo(const ConvexPolyhedron& poly, const Vec& reference) {
-  std::vector<Face> faces(poly.faceCount());
-  for (int f = 0; f < poly.faceCount(); ++f) {
-    Face& face = faces[f];
-    for (const std::int32_t i : poly.faceVertices(f)) {
-      face.vertices.push_back(poly.vertex(i).cast<Real>() - reference);
-    }
-    // Newell's method: the area vector of a planar polygon is the sum of its
-    // fan triangles' cross products; robust for nearly collinear vertices.
-    Vec area = Vec::Zero();
-    const Vec& v0 = face.vertices.front();
-    for (std::size_t k = 1; k + 1 < face.vertices.size(); ++k) {
-      area += (face.vertices[k] - v0).cross(face.vertices[k + 1] - v0);
-    }
-    face.normal = area.normalized();
-    face.offset = -std::numeric_limits<Real>::infinity();
-    for (const Vec& v : face.vertices) face.offset = std::max(face.offset, face.normal.dot(v));
-  }
-  return faces;
-}
-
 struct Nearest {
   Vec point = Vec::Zero();
   Real distance2 = std::numeric_limits<Real>::infinity();
@@ -100,19 +78,48 @@ Nearest nearestOnSurface(const std::vector<Face>& faces, const Vec& q) {
   return nearest;
 }
 
-// Any point of the piece serves: in long double the subtraction loses
-// nothing. Vertex 0 depends on the least of the piece's own machinery.
-Vec referencePoint(const ConvexPolyhedron& poly) { return poly.vertex(0).cast<Real>(); }
-
 }  // namespace
 
-BruteForceResult bruteForceQuery(const ConvexPolyhedron& poly, const Eigen::Vector3d& p) {
-  const Vec reference = referencePoint(poly);
-  const std::vector<Face> faces = facesRelativeTo(poly, reference);
-  const Vec q = p.cast<Real>() - reference;
+struct BruteForceOracle::Faces {
+  // Any point of the piece serves as the reference: in long double the
+  // subtraction loses nothing that matters. Vertex 0 depends on the least of
+  // the piece's own machinery.
+  Vec reference;
+  bool flat = false;
+  std::vector<Face> faces;
+};
 
+BruteForceOracle::BruteForceOracle(const ConvexPolyhedron& poly) : faces_(std::make_unique<Faces>()) {
+  faces_->reference = poly.vertex(0).cast<Real>();
+  faces_->flat = poly.isFlat();
+  faces_->faces.resize(poly.faceCount());
+  for (int f = 0; f < poly.faceCount(); ++f) {
+    Face& face = faces_->faces[f];
+    for (const std::int32_t i : poly.faceVertices(f)) {
+      face.vertices.push_back(poly.vertex(i).cast<Real>() - faces_->reference);
+    }
+    // Newell's method: the area vector of a planar polygon is the sum of its
+    // fan triangles' cross products; robust for nearly collinear vertices.
+    Vec area = Vec::Zero();
+    const Vec& v0 = face.vertices.front();
+    for (std::size_t k = 1; k + 1 < face.vertices.size(); ++k) {
+      area += (face.vertices[k] - v0).cross(face.vertices[k + 1] - v0);
+    }
+    face.normal = area.normalized();
+    face.offset = -std::numeric_limits<Real>::infinity();
+    for (const Vec& v : face.vertices) face.offset = std::max(face.offset, face.normal.dot(v));
+  }
+}
+
+BruteForceOracle::~BruteForceOracle() = default;
+BruteForceOracle::BruteForceOracle(BruteForceOracle&&) noexcept = default;
+BruteForceOracle& BruteForceOracle::operator=(BruteForceOracle&&) noexcept = default;
+
+BruteForceResult BruteForceOracle::query(const Eigen::Vector3d& p) const {
+  const std::vector<Face>& faces = faces_->faces;
+  const Vec q = p.cast<Real>() - faces_->reference;
   BruteForceResult result;
-  if (!poly.isFlat()) {
+  if (!faces_->flat) {
     Real max_height = -std::numeric_limits<Real>::infinity();
     int max_face = -1;
     for (std::size_t f = 0; f < faces.size(); ++f) {
@@ -125,7 +132,7 @@ BruteForceResult bruteForceQuery(const ConvexPolyhedron& poly, const Eigen::Vect
     if (max_height < 0) {
       const Vec projected = q - max_height * faces[max_face].normal;
       result.signed_distance = static_cast<double>(max_height);
-      result.closest_point = (projected + reference).cast<double>();
+      result.closest_point = (projected + faces_->reference).cast<double>();
       result.face = max_face;
       result.inside = true;
       return result;
@@ -133,16 +140,18 @@ BruteForceResult bruteForceQuery(const ConvexPolyhedron& poly, const Eigen::Vect
   }
   const Nearest nearest = nearestOnSurface(faces, q);
   result.signed_distance = static_cast<double>(std::sqrt(nearest.distance2));
-  result.closest_point = (nearest.point + reference).cast<double>();
+  result.closest_point = (nearest.point + faces_->reference).cast<double>();
   result.face = nearest.face;
   return result;
 }
 
-double bruteForceSurfaceDistance(const ConvexPolyhedron& poly, const Eigen::Vector3d& p) {
-  const Vec reference = referencePoint(poly);
-  const Nearest nearest = nearestOnSurface(facesRelativeTo(poly, reference),
-                                           p.cast<Real>() - reference);
+double BruteForceOracle::surfaceDistance(const Eigen::Vector3d& p) const {
+  const Nearest nearest = nearestOnSurface(faces_->faces, p.cast<Real>() - faces_->reference);
   return static_cast<double>(std::sqrt(nearest.distance2));
+}
+
+BruteForceResult bruteForceQuery(const ConvexPolyhedron& poly, const Eigen::Vector3d& p) {
+  return BruteForceOracle(poly).query(p);
 }
 
 }  // namespace wtc::testing

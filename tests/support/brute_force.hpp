@@ -23,6 +23,7 @@
 // digits that matter at double precision. Only the results are rounded to
 // double.
 #include <Eigen/Core>
+#include <memory>
 
 #include "wtc/convex_polyhedron.hpp"
 
@@ -40,12 +41,27 @@ struct BruteForceResult {
   bool inside = false;
 };
 
-/// The exact closest point and signed distance from p to `poly`, over all
-/// faces. O(number of face vertices) per call.
-BruteForceResult bruteForceQuery(const ConvexPolyhedron& poly, const Eigen::Vector3d& p);
+/// The oracle for one piece: the faces and their planes are prepared once,
+/// in extended precision, so that many queries of one piece stay cheap.
+class BruteForceOracle {
+ public:
+  explicit BruteForceOracle(const ConvexPolyhedron& poly);
+  ~BruteForceOracle();
+  BruteForceOracle(BruteForceOracle&&) noexcept;
+  BruteForceOracle& operator=(BruteForceOracle&&) noexcept;
 
-/// Unsigned distance from p to the surface of `poly` (m): a check that a
-/// reported closest point lies on the surface.
-double bruteForceSurfaceDistance(const ConvexPolyhedron& poly, const Eigen::Vector3d& p);
+  /// The exact closest point and signed distance from p (world, m).
+  BruteForceResult query(const Eigen::Vector3d& p) const;
+  /// Unsigned distance from p to the surface (m): checks that a reported
+  /// closest point lies on the surface.
+  double surfaceDistance(const Eigen::Vector3d& p) const;
+
+ private:
+  struct Faces;
+  std::unique_ptr<Faces> faces_;
+};
+
+/// One-off form of BruteForceOracle(poly).query(p).
+BruteForceResult bruteForceQuery(const ConvexPolyhedron& poly, const Eigen::Vector3d& p);
 
 }  // namespace wtc::testing

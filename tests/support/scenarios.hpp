@@ -47,11 +47,9 @@ enum class QuerySetId {
   kFar,     ///< kFarMinRelative..kFarMaxRelative x size from the centroid.
 };
 
-inline constexpr std::array kAllShapes = {ShapeId::kBox, ShapeId::kPrism, ShapeId::kHull20,
-                                          ShapeId::kHull64};
-inline constexpr std::array kAllQuerySets = {QuerySetId::kMixed, QuerySetId::kInside,
-                                             QuerySetId::kFace,  QuerySetId::kEdge,
-                                             QuerySetId::kNear,  QuerySetId::kFar};
+inline constexpr std::array kAllShapes = {ShapeId::kBox, ShapeId::kPrism, ShapeId::kHull20, ShapeId::kHull64};
+inline constexpr std::array kAllQuerySets = {QuerySetId::kMixed, QuerySetId::kInside, QuerySetId::kFace,
+                                             QuerySetId::kEdge,  QuerySetId::kNear,   QuerySetId::kFar};
 
 /// Seed of the sets the benchmark and the characterisation tests use.
 inline constexpr std::uint64_t kDefaultSeed = 20240611;

@@ -1,0 +1,87 @@
+#pragma once
+// Heightfield ground: a regular grid of surface heights, each cell split into
+// two triangles and each triangle extruded straight down to one flat base, so
+// the union of the pieces is a solid block whose top is the triangulated
+// surface.
+//
+// Grid and frames. Sample (r, c) (row r, column c) sits at world point
+//   p_W(r, c) = origin + (c spacing_x, r spacing_y, heights[r cols + c]):
+// columns run along +x, rows along +y, heights are added to origin.z().
+//
+// Cell diagonal. Cell (r, c) has corners p00 = p(r, c), p01 = p(r, c+1),
+// p10 = p(r+1, c), p11 = p(r+1, c+1); every cell is split along the same
+// diagonal p00-p11 into the triangles (p00, p01, p11) and (p00, p11, p10),
+// counter-clockwise seen from above. One fixed diagonal keeps the surface a
+// pure function of the data (no data-dependent flips that would change under
+// a tiny height edit) and makes piece ids computable: see cellPiece().
+//
+// Base. base_depth is measured below the lowest height of the whole field:
+// base_z = origin.z() + min(heights) - base_depth. One flat base for all
+// cells makes the pieces' side walls exactly shared and the union a closed
+// solid with a flat bottom; every prism has volume because base_depth > 0.
+// The price is tall pieces where the relief is large, which only the depth
+// of their bounding boxes sees (the wheel queries approach from above).
+//
+// Prisms. Each triangle becomes a ConvexPolyhedron of 6 vertices and 5
+// faces (top triangle, bottom triangle, three vertical quads), built with
+// the trusted fromMesh path: with vertical sides and a base below every
+// vertex the prism is convex and outward-oriented for any heights.
+#include <Eigen/Core>
+#include <optional>
+#include <vector>
+
+#include "wtc/terrain_primitives.hpp"
+
+namespace wtc {
+
+struct Heightfield {
+  int rows = 0;                                     ///< Samples along y (count, >= 2).
+  int cols = 0;                                     ///< Samples along x (count, >= 2).
+  double spacing_x = 1.0;                           ///< Distance between columns (m, > 0).
+  double spacing_y = 1.0;                           ///< Distance between rows (m, > 0).
+  Eigen::Vector3d origin{Eigen::Vector3d::Zero()};  ///< World position of sample (0, 0) at height 0 (m).
+  std::vector<double> heights;                      ///< rows x cols, row-major: heights[r cols + c] (m).
+  double base_depth = 1.0;                          ///< Depth of the flat base below the lowest height (m, > 0).
+
+  /// Height of sample (r, c) (m, relative to origin.z()).
+  double height(int r, int c) const { return heights[static_cast<std::size_t>(r) * cols + c]; }
+  /// World position of sample (r, c) (m).
+  Eigen::Vector3d sample(int r, int c) const {
+    return origin + Eigen::Vector3d(c * spacing_x, r * spacing_y, height(r, c));
+  }
+  /// Number of pieces addHeightfield makes: 2 (rows - 1)(cols - 1).
+  std::size_t pieceCount() const {
+    return rows < 2 || cols < 2 ? 0 : 2 * static_cast<std::size_t>(rows - 1) * static_cast<std::size_t>(cols - 1);
+  }
+  /// World z of the flat base (m).
+  double baseZ() const;
+};
+
+/// Throws InvalidInputError if the grid is malformed: rows or cols < 2, a
+/// spacing or base_depth not finite and > 0, a non-finite origin, a heights
+/// array of the wrong size, or a non-finite height (named by row and
+/// column), or more pieces than a PieceId can number.
+void validate(const Heightfield& field);
+
+/// Adds the field's 2 (rows - 1)(cols - 1) prisms (validated first). Piece
+/// order: cell by cell, row-major, the triangle (p00, p01, p11) first.
+PieceRange addHeightfield(TerrainBuilder& builder, const Heightfield& field, MaterialId material);
+
+/// The id of triangle `k` (0: (p00, p01, p11), 1: (p00, p11, p10)) of cell
+/// (r, c) in the range addHeightfield returned.
+inline PieceId cellPiece(const PieceRange& range, const Heightfield& field, int r, int c, int k) {
+  return range.first + 2 * (r * (field.cols - 1) + c) + k;
+}
+
+/// World z of the triangulated surface above (x, y) (m), or nullopt outside
+/// the grid. The same triangles as the pieces.
+std::optional<double> surfaceHeight(const Heightfield& field, double x, double y);
+
+/// The prism under the triangle (a, b, c), counter-clockwise seen from above,
+/// reaching down to the plane z = base_z (m). Precondition: the triangle is
+/// not vertical and base_z is below all three vertices. Throws
+/// InvalidInputError (from fromMesh) if the result is degenerate.
+ConvexPolyhedron makeTriangularPrism(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                                     double base_z);
+
+}  // namespace wtc

@@ -1,0 +1,97 @@
+// Heightfield cells as triangular prisms down to a flat base (design note in
+// include/wtc/heightfield.hpp).
+#include "wtc/heightfield.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+
+#include "builder_support.hpp"
+#include "wtc/error.hpp"
+
+namespace wtc {
+namespace {
+
+constexpr const char* kWhere = "wtc::Heightfield";
+
+}  // namespace
+
+double Heightfield::baseZ() const {
+  const double lowest = heights.empty() ? 0.0 : *std::min_element(heights.begin(), heights.end());
+  return origin.z() + lowest - base_depth;
+}
+
+void validate(const Heightfield& f) {
+  detail::requireAtLeast(f.rows, 2, kWhere, "rows");
+  detail::requireAtLeast(f.cols, 2, kWhere, "cols");
+  detail::requirePositive(f.spacing_x, kWhere, "spacing_x", "m");
+  detail::requirePositive(f.spacing_y, kWhere, "spacing_y", "m");
+  detail::requirePositive(f.base_depth, kWhere, "base_depth", "m");
+  if (!f.origin.allFinite()) {
+    throw InvalidInputError(std::string(kWhere) + ": origin = " + formatVector(f.origin) + " is not finite");
+  }
+  const auto samples = static_cast<std::uint64_t>(f.rows) * static_cast<std::uint64_t>(f.cols);
+  if (f.heights.size() != samples) {
+    throw InvalidInputError(std::string(kWhere) + ": heights has " + std::to_string(f.heights.size()) +
+                            " values, but rows x cols = " + std::to_string(f.rows) + " x " + std::to_string(f.cols) +
+                            " = " + std::to_string(samples));
+  }
+  if (f.pieceCount() > static_cast<std::size_t>(std::numeric_limits<PieceId>::max())) {
+    throw InvalidInputError(std::string(kWhere) + ": " + std::to_string(f.rows) + " x " + std::to_string(f.cols) +
+                            " samples make " + std::to_string(f.pieceCount()) +
+                            " pieces, more than a PieceId can number");
+  }
+  for (int r = 0; r < f.rows; ++r) {
+    for (int c = 0; c < f.cols; ++c) {
+      if (!std::isfinite(f.height(r, c))) {
+        throw InvalidInputError(std::string(kWhere) + ": height at (row " + std::to_string(r) + ", col " +
+                                std::to_string(c) + ") = " + formatNumber(f.height(r, c)) + " is not finite");
+      }
+    }
+  }
+}
+
+ConvexPolyhedron makeTriangularPrism(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                                     double base_z) {
+  return detail::makePrism({a, b, c}, {Eigen::Vector3d(a.x(), a.y(), base_z), Eigen::Vector3d(b.x(), b.y(), base_z),
+                                       Eigen::Vector3d(c.x(), c.y(), base_z)});
+}
+
+PieceRange addHeightfield(TerrainBuilder& builder, const Heightfield& f, MaterialId material) {
+  validate(f);
+  const double base_z = f.baseZ();
+  PieceRange range{static_cast<PieceId>(builder.pieceCount()), 0};
+  builder.reserve(f.pieceCount());
+  for (int r = 0; r + 1 < f.rows; ++r) {
+    for (int c = 0; c + 1 < f.cols; ++c) {
+      const Eigen::Vector3d p00 = f.sample(r, c);
+      const Eigen::Vector3d p01 = f.sample(r, c + 1);
+      const Eigen::Vector3d p10 = f.sample(r + 1, c);
+      const Eigen::Vector3d p11 = f.sample(r + 1, c + 1);
+      builder.addPiece(makeTriangularPrism(p00, p01, p11, base_z), material);
+      builder.addPiece(makeTriangularPrism(p00, p11, p10, base_z), material);
+      range.count += 2;
+    }
+  }
+  return range;
+}
+
+std::optional<double> surfaceHeight(const Heightfield& f, double x, double y) {
+  const double u = (x - f.origin.x()) / f.spacing_x;  // column coordinate
+  const double v = (y - f.origin.y()) / f.spacing_y;  // row coordinate
+  if (!(u >= 0.0 && v >= 0.0 && u <= f.cols - 1 && v <= f.rows - 1)) return std::nullopt;
+  const int c = std::min(static_cast<int>(u), f.cols - 2);
+  const int r = std::min(static_cast<int>(v), f.rows - 2);
+  const double s = u - c;  // in [0, 1] across the cell along x
+  const double t = v - r;  // along y
+  const double h00 = f.height(r, c), h01 = f.height(r, c + 1);
+  const double h10 = f.height(r + 1, c), h11 = f.height(r + 1, c + 1);
+  // Below the diagonal (s >= t) lies triangle (p00, p01, p11), above it
+  // (p00, p11, p10); barycentric interpolation on the one that holds (s, t).
+  const double h = s >= t ? h00 + s * (h01 - h00) + t * (h11 - h01) : h00 + t * (h10 - h00) + s * (h11 - h10);
+  return f.origin.z() + h;
+}
+
+}  // namespace wtc

@@ -1,0 +1,261 @@
+// Terrain description files: materials by name, then pieces dispatched to
+// the builders of wtc::core (format in include/wtc/io/terrain_file.hpp and
+// terrains/README.md).
+#include "wtc/io/terrain_file.hpp"
+
+#include <cmath>
+#include <map>
+#include <numbers>
+
+#include "file_support.hpp"
+#include "wtc/error.hpp"
+#include "wtc/heightfield.hpp"
+#include "wtc/io/heightfield_file.hpp"
+#include "wtc/io/mesh_file.hpp"
+#include "wtc/triangle_mesh.hpp"
+#include "yaml_reader.hpp"
+
+namespace wtc::io {
+namespace {
+
+using detail::YamlError;
+using detail::YamlReader;
+
+// Keys every piece may have, besides its own.
+constexpr std::initializer_list<const char*> kCommonKeys = {"type", "material", "translation", "rotation"};
+
+int toInt(const YamlReader& in, const YAML::Node& map, const char* key, long long fallback) {
+  const long long value = in.integer(map, key, fallback);
+  if (value < 0 || value > (1LL << 30)) {
+    in.fail(YamlReader::get(map, key).value_or(map),
+            std::string(key) + " = " + std::to_string(value) + " is out of range");
+  }
+  return static_cast<int>(value);
+}
+
+Heightfield readHeightfield(const YamlReader& in, const YAML::Node& p) {
+  in.checkKeys(p, kCommonKeys, {"heights", "file", "spacing", "base_depth", "height_scale"});
+  if (YamlReader::get(p, "rotation")) {
+    in.fail(p["rotation"], "a heightfield takes no rotation (its grid is aligned with x and y)");
+  }
+  HeightfieldLayout layout;
+  const YAML::Node spacing = in.require(p, "spacing");
+  if (spacing.IsSequence()) {
+    const Eigen::Vector2d s = in.vector<2>(spacing, "spacing");
+    layout.spacing_x = s.x();
+    layout.spacing_y = s.y();
+  } else {
+    layout.spacing_x = layout.spacing_y = in.number(spacing, "spacing");
+  }
+  layout.origin = in.pose(p).translation();
+  layout.base_depth = in.number(p, "base_depth", layout.base_depth);
+  layout.height_scale = in.number(p, "height_scale", layout.height_scale);
+  const auto file = YamlReader::get(p, "file");
+  const auto heights = YamlReader::get(p, "heights");
+  if (file.has_value() == heights.has_value()) in.fail(p, "give exactly one of 'heights' and 'file'");
+  if (file) {
+    const std::filesystem::path path = in.path().parent_path() / in.string(*file, "file");
+    try {
+      return readHeightfieldFile(path, layout);
+    } catch (const InvalidInputError& e) {
+      in.fail(*file, e.what());
+    }
+  }
+  // Inline rows, north (largest y) first, as in a CSV file.
+  if (!heights->IsSequence() || heights->size() < 2) in.fail(*heights, "heights: expected a list of at least 2 rows");
+  Heightfield field;
+  field.rows = static_cast<int>(heights->size());
+  field.spacing_x = layout.spacing_x;
+  field.spacing_y = layout.spacing_y;
+  field.origin = layout.origin;
+  field.base_depth = layout.base_depth;
+  for (std::size_t k = 0; k < heights->size(); ++k) {
+    const YAML::Node row = (*heights)[k];
+    if (!row.IsSequence()) in.fail(row, "heights[" + std::to_string(k) + "]: expected a list of numbers");
+    if (k == 0) field.cols = static_cast<int>(row.size());
+    if (static_cast<int>(row.size()) != field.cols) {
+      in.fail(row, "heights[" + std::to_string(k) + "] has " + std::to_string(row.size()) +
+                       " values, but heights[0] has " + std::to_string(field.cols));
+    }
+  }
+  field.heights.resize(static_cast<std::size_t>(field.rows) * field.cols);
+  for (int k = 0; k < field.rows; ++k) {
+    for (int c = 0; c < field.cols; ++c) {
+      const YAML::Node value = (*heights)[k][c];
+      const std::string name = "heights[" + std::to_string(k) + "][" + std::to_string(c) + "]";
+      const double h = layout.height_scale * in.number(value, name);
+      if (!std::isfinite(h)) in.fail(value, name + " is not finite");
+      field.heights[static_cast<std::size_t>(field.rows - 1 - k) * field.cols + c] = h;
+    }
+  }
+  return field;
+}
+
+// Adds one piece; returns the degenerate triangles a mesh skipped.
+std::int64_t addPiece(TerrainBuilder& builder, const YamlReader& in, const YAML::Node& p, const std::string& type,
+                      MaterialId material) {
+  if (type == "box") {
+    in.checkKeys(p, kCommonKeys, {"size"});
+    addBox(builder, {in.vector<3>(in.require(p, "size"), "size"), in.pose(p)}, material);
+  } else if (type == "slab") {
+    in.checkKeys(p, kCommonKeys, {"size", "thickness", "tiles"});
+    SlabParams s;
+    const Eigen::Vector2d size = in.vector<2>(in.require(p, "size"), "size");
+    s.size_x = size.x();
+    s.size_y = size.y();
+    s.thickness = in.number(p, "thickness", s.thickness);
+    if (const auto tiles = YamlReader::get(p, "tiles")) {
+      const Eigen::Vector2d t = in.vector<2>(*tiles, "tiles");
+      if (t != t.array().round().matrix() || !(t.array() >= 1.0).all() || !(t.array() <= 1e6).all()) {
+        in.fail(*tiles, "tiles: expected two whole numbers in [1, 1e6]");
+      }
+      s.tiles_x = static_cast<int>(t.x());
+      s.tiles_y = static_cast<int>(t.y());
+    }
+    s.pose_WL = in.pose(p);
+    addSlab(builder, s, material);
+  } else if (type == "incline") {
+    in.checkKeys(p, kCommonKeys, {"degrees", "radians", "length", "width", "thickness", "top_length"});
+    InclineParams s;
+    const auto degrees = YamlReader::get(p, "degrees");
+    const auto radians = YamlReader::get(p, "radians");
+    if (degrees.has_value() == radians.has_value())
+      in.fail(p, "give exactly one of 'degrees' and 'radians' (the slope)");
+    s.angle = degrees ? in.number(*degrees, "degrees") * std::numbers::pi / 180.0 : in.number(*radians, "radians");
+    s.length = in.number(p, "length", s.length);
+    s.width = in.number(p, "width", s.width);
+    s.thickness = in.number(p, "thickness", s.thickness);
+    s.top_length = in.number(p, "top_length", s.top_length);
+    s.pose_WL = in.pose(p);
+    addIncline(builder, s, material);
+  } else if (type == "ledge") {
+    in.checkKeys(p, kCommonKeys, {"height", "approach_length", "top_length", "width", "thickness", "approach_tiles"});
+    LedgeParams s;
+    s.height = in.number(in.require(p, "height"), "height");
+    s.approach_length = in.number(p, "approach_length", s.approach_length);
+    s.top_length = in.number(p, "top_length", s.top_length);
+    s.width = in.number(p, "width", s.width);
+    s.thickness = in.number(p, "thickness", s.thickness);
+    s.approach_tiles = toInt(in, p, "approach_tiles", s.approach_tiles);
+    s.pose_WL = in.pose(p);
+    addLedge(builder, s, material);
+  } else if (type == "stairs") {
+    in.checkKeys(p, kCommonKeys, {"steps", "rise", "run", "width", "thickness", "top_length"});
+    StairsParams s;
+    in.require(p, "steps");
+    s.steps = toInt(in, p, "steps", s.steps);
+    s.rise = in.number(in.require(p, "rise"), "rise");
+    s.run = in.number(in.require(p, "run"), "run");
+    s.width = in.number(p, "width", s.width);
+    s.thickness = in.number(p, "thickness", s.thickness);
+    s.top_length = in.number(p, "top_length", s.top_length);
+    s.pose_WL = in.pose(p);
+    addStairs(builder, s, material);
+  } else if (type == "heightfield") {
+    addHeightfield(builder, readHeightfield(in, p), material);
+  } else if (type == "mesh") {
+    in.checkKeys(p, kCommonKeys, {"file", "scale", "thickness", "keep_convex_parts"});
+    MeshFileOptions options;
+    options.scale = in.number(p, "scale", options.scale);
+    options.pose_WM = in.pose(p);
+    options.extrusion.thickness = in.number(p, "thickness", options.extrusion.thickness);
+    options.extrusion.keep_convex_parts = in.boolean(p, "keep_convex_parts", false);
+    const YAML::Node file = in.require(p, "file");
+    const std::filesystem::path path = in.path().parent_path() / in.string(file, "file");
+    try {
+      return addMeshFile(builder, path, material, options).degenerate_skipped;
+    } catch (const InvalidInputError& e) {
+      in.fail(file, e.what());
+    }
+  } else if (type == "hull") {
+    in.checkKeys(p, kCommonKeys, {"points"});
+    const YAML::Node points = in.require(p, "points");
+    if (!points.IsSequence()) in.fail(points, "points: expected a list of [x, y, z]");
+    const Eigen::Isometry3d pose = in.pose(p);
+    std::vector<Eigen::Vector3d> world;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      world.push_back(pose * in.vector<3>(points[i], "points[" + std::to_string(i) + "]"));
+    }
+    builder.addPiece(ConvexPolyhedron::fromPoints(world), material);
+  } else {
+    in.fail(p["type"], "unknown piece type '" + type +
+                           "' (expected box, slab, incline, ledge, stairs, heightfield, mesh or hull)");
+  }
+  return 0;
+}
+
+}  // namespace
+
+TerrainFileReport addTerrainFile(TerrainBuilder& builder, const std::filesystem::path& path) {
+  const std::string text = detail::readWholeFile(path);
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    throw InvalidInputError(detail::where(path, e.mark.line + 1, e.mark.column + 1) + "YAML syntax error: " + e.msg);
+  }
+  const YamlReader in(path);
+  if (!root.IsMap()) in.fail(root, "expected a mapping with 'materials' and 'pieces'");
+  in.checkKeys(root, {"description", "materials", "pieces"});
+
+  TerrainFileReport report;
+  std::map<std::string, MaterialId> materials;
+  const YAML::Node material_map = in.require(root, "materials");
+  in.requireMap(material_map, "materials");
+  for (const auto& entry : material_map) {
+    const std::string name = entry.first.Scalar();
+    const YamlReader m = in.with("material '" + name + "': ");
+    m.requireMap(entry.second, "a material");
+    m.checkKeys(entry.second, {"mu_max", "s1", "s2", "rolling_resistance"});
+    Material material;
+    material.name = name;
+    material.mu_max = m.number(entry.second, "mu_max", material.mu_max);
+    material.s1 = m.number(entry.second, "s1", material.s1);
+    material.s2 = m.number(entry.second, "s2", material.s2);
+    material.rolling_resistance = m.number(entry.second, "rolling_resistance", material.rolling_resistance);
+    try {
+      materials[name] = builder.addMaterial(material);
+    } catch (const InvalidInputError& e) {
+      m.fail(entry.second, e.what());
+    }
+    ++report.materials;
+  }
+  if (materials.empty()) in.fail(material_map, "materials: define at least one material");
+
+  const YAML::Node pieces = in.require(root, "pieces");
+  if (!pieces.IsSequence()) in.fail(pieces, "pieces must be a list (lines starting with '- ')");
+  report.pieces.first = static_cast<PieceId>(builder.pieceCount());
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    const YAML::Node p = pieces[i];
+    const YamlReader bare = in.with("pieces[" + std::to_string(i) + "]: ");
+    bare.requireMap(p, "a piece");
+    const std::string type = bare.string(bare.require(p, "type"), "type");
+    const YamlReader piece = in.with("pieces[" + std::to_string(i) + "] (" + type + "): ");
+    MaterialId material = materials.begin()->second;
+    if (const auto name = YamlReader::get(p, "material")) {
+      const auto found = materials.find(piece.string(*name, "material"));
+      if (found == materials.end()) piece.fail(*name, "unknown material '" + name->Scalar() + "'");
+      material = found->second;
+    } else if (materials.size() > 1) {
+      piece.fail(p, "missing key 'material' (the file defines " + std::to_string(materials.size()) + " materials)");
+    }
+    try {
+      report.degenerate_triangles_skipped += addPiece(builder, piece, p, type, material);
+    } catch (const YamlError&) {
+      throw;
+    } catch (const InvalidInputError& e) {
+      piece.fail(p, e.what());  // a builder's complaint, named at its piece
+    }
+  }
+  report.pieces.count = static_cast<PieceId>(builder.pieceCount()) - report.pieces.first;
+  return report;
+}
+
+Terrain loadTerrain(const std::filesystem::path& path) {
+  TerrainBuilder builder;
+  addTerrainFile(builder, path);
+  if (builder.pieceCount() == 0) throw InvalidInputError(detail::where(path) + "the terrain has no pieces");
+  return std::move(builder).build();
+}
+
+}  // namespace wtc::io

@@ -1,0 +1,127 @@
+#include "yaml_reader.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace wtc::io::detail {
+
+void YamlReader::fail(const YAML::Node& node, const std::string& message) const {
+  const YAML::Mark mark = node.Mark();
+  std::string where = path_.string() + ":";
+  // yaml-cpp marks are 0-based; a node made up by the reader has none.
+  if (mark.line >= 0) where += std::to_string(mark.line + 1) + ":" + std::to_string(mark.column + 1) + ":";
+  throw YamlError(where + " " + context_ + message);
+}
+
+void YamlReader::requireMap(const YAML::Node& map, const char* what) const {
+  if (!map.IsMap()) fail(map, std::string(what) + " must be a mapping (key: value lines)");
+}
+
+void YamlReader::checkKeys(const YAML::Node& map, std::initializer_list<const char*> allowed,
+                           std::initializer_list<const char*> also) const {
+  for (const auto& entry : map) {
+    const std::string key = entry.first.Scalar();
+    bool known = false;
+    for (const auto& list : {allowed, also}) {
+      for (const char* a : list) known = known || key == a;
+    }
+    if (!known) {
+      std::string list;
+      for (const auto& keys : {allowed, also}) {
+        for (const char* a : keys) list += (list.empty() ? "" : ", ") + std::string(a);
+      }
+      fail(entry.first, "unknown key '" + key + "' (allowed: " + list + ")");
+    }
+  }
+}
+
+std::optional<YAML::Node> YamlReader::get(const YAML::Node& map, const char* key) {
+  const YAML::Node node = map[key];
+  if (!node.IsDefined() || node.IsNull()) return std::nullopt;
+  return node;
+}
+
+YAML::Node YamlReader::require(const YAML::Node& map, const char* key) const {
+  const auto node = get(map, key);
+  if (!node) fail(map, std::string("missing key '") + key + "'");
+  return *node;
+}
+
+double YamlReader::number(const YAML::Node& node, const std::string& what) const {
+  if (!node.IsScalar()) fail(node, what + ": expected a number");
+  try {
+    return node.as<double>();
+  } catch (const YAML::Exception&) {
+    fail(node, what + ": '" + node.Scalar() + "' is not a number");
+  }
+}
+
+long long YamlReader::integer(const YAML::Node& node, const std::string& what) const {
+  if (!node.IsScalar()) fail(node, what + ": expected an integer");
+  try {
+    return node.as<long long>();
+  } catch (const YAML::Exception&) {
+    fail(node, what + ": '" + node.Scalar() + "' is not an integer");
+  }
+}
+
+bool YamlReader::boolean(const YAML::Node& node, const std::string& what) const {
+  if (!node.IsScalar()) fail(node, what + ": expected true or false");
+  try {
+    return node.as<bool>();
+  } catch (const YAML::Exception&) {
+    fail(node, what + ": '" + node.Scalar() + "' is not true or false");
+  }
+}
+
+std::string YamlReader::string(const YAML::Node& node, const std::string& what) const {
+  if (!node.IsScalar()) fail(node, what + ": expected a string");
+  return node.Scalar();
+}
+
+double YamlReader::number(const YAML::Node& map, const char* key, double fallback) const {
+  const auto node = get(map, key);
+  return node ? number(*node, key) : fallback;
+}
+
+long long YamlReader::integer(const YAML::Node& map, const char* key, long long fallback) const {
+  const auto node = get(map, key);
+  return node ? integer(*node, key) : fallback;
+}
+
+bool YamlReader::boolean(const YAML::Node& map, const char* key, bool fallback) const {
+  const auto node = get(map, key);
+  return node ? boolean(*node, key) : fallback;
+}
+
+Eigen::Matrix3d YamlReader::rotation(const YAML::Node& node) const {
+  if (node.IsSequence()) {
+    // Listed in the order they apply: R = R_n ... R_2 R_1.
+    Eigen::Matrix3d r = Eigen::Matrix3d::Identity();
+    for (const auto& step : node) r = rotation(step) * r;
+    return r;
+  }
+  if (!node.IsMap()) fail(node, "rotation: expected {axis: [x, y, z], degrees: angle} or a list of such");
+  checkKeys(node, {"axis", "degrees", "radians"});
+  const YAML::Node axis_node = require(node, "axis");
+  const Eigen::Vector3d axis = vector<3>(axis_node, "rotation axis");
+  if (!(axis.norm() > 0.0)) fail(axis_node, "rotation axis " + formatVector(axis) + " has zero length");
+  const auto degrees = get(node, "degrees");
+  const auto radians = get(node, "radians");
+  if (degrees.has_value() == radians.has_value()) fail(node, "rotation: give exactly one of 'degrees' and 'radians'");
+  const double angle = degrees ? number(*degrees, "degrees") * std::numbers::pi / 180.0 : number(*radians, "radians");
+  if (!std::isfinite(angle)) fail(degrees ? *degrees : *radians, "rotation angle is not finite");
+  return Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
+}
+
+Eigen::Isometry3d YamlReader::pose(const YAML::Node& map) const {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  if (const auto t = get(map, "translation")) {
+    pose.translation() = vector<3>(*t, "translation");
+    if (!pose.translation().allFinite()) fail(*t, "translation is not finite");
+  }
+  if (const auto r = get(map, "rotation")) pose.linear() = rotation(*r);
+  return pose;
+}
+
+}  // namespace wtc::io::detail

@@ -1,0 +1,17 @@
+// Builds a box with the installed WTC and queries one point: returns 0 only
+// when the answer is right, so the install test fails on a broken package.
+#include <cmath>
+#include <cstdio>
+#include <wtc/convex_polyhedron.hpp>
+#include <wtc/point_query.hpp>
+
+int main() {
+  const wtc::ConvexPolyhedron box = wtc::ConvexPolyhedron::box(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(2, 1, 1));
+  // 0.5 m above the middle of the top face.
+  const wtc::PointQuery q = wtc::queryPoint(box, Eigen::Vector3d(1.0, 0.5, 1.5));
+  const bool ok = q.status == wtc::QueryStatus::kOutside && std::abs(q.signed_distance - 0.5) < 1e-12 &&
+                  (q.closest_point - Eigen::Vector3d(1.0, 0.5, 1.0)).norm() < 1e-12;
+  std::printf("signed distance %.17g m, status %s: %s\n", q.signed_distance, wtc::toString(q.status),
+              ok ? "ok" : "WRONG");
+  return ok ? 0 : 1;
+}

@@ -1,0 +1,190 @@
+#include "wtc/io/terrain_file.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "temp_dir.hpp"
+#include "wtc/error.hpp"
+#include "wtc/heightfield.hpp"
+#include "wtc/point_query.hpp"
+#include "wtc/terrain_primitives.hpp"
+
+namespace wtc::io {
+namespace {
+
+using ::testing::AllOf;
+using testing::errorOf;
+using ::testing::HasSubstr;
+using testing::sourceDir;
+
+// Coordinates in the files are short decimals; rotations by degrees round
+// to ~1e-16 relative.
+constexpr double kTolerance = 1e-12;
+
+class TerrainFileTest : public testing::TempDirTest {
+ protected:
+  // The message of loading `yaml` written as dir/name.
+  std::string loadError(const std::string& yaml, const std::string& name = "terrain.yaml") {
+    const auto path = write(name, yaml);
+    return errorOf([&] { loadTerrain(path); });
+  }
+  std::string at(int line, int column, const std::string& name = "terrain.yaml") const {
+    return (dir() / name).string() + ":" + std::to_string(line) + ":" + std::to_string(column) + ": ";
+  }
+};
+
+const char* const kMaterials = "materials:\n  ground: {mu_max: 0.7}\n";
+
+TEST_F(TerrainFileTest, EveryShippedTerrainLoads) {
+  std::vector<std::filesystem::path> files;
+  for (const auto& dir : {sourceDir() / "terrains", sourceDir() / "terrains" / "samples"}) {
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+      if (entry.path().extension() == ".yaml") files.push_back(entry.path());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  ASSERT_GE(files.size(), 3u);
+  for (const auto& path : files) {
+    SCOPED_TRACE(path.string());
+    EXPECT_NO_THROW({
+      const Terrain terrain = loadTerrain(path);
+      EXPECT_GT(terrain.pieceCount(), 0u);
+    });
+  }
+}
+
+TEST_F(TerrainFileTest, LedgeIsTheSpecLedgeOfAsphaltConcrete) {
+  const Terrain terrain = loadTerrain(sourceDir() / "terrains" / "ledge.yaml");
+  ASSERT_EQ(terrain.pieceCount(), 2u);
+  const Material& asphalt = terrain.material(1);
+  EXPECT_EQ(asphalt.name, "asphalt_concrete");
+  EXPECT_EQ(asphalt.mu_max, 0.8);
+  EXPECT_EQ(asphalt.rolling_resistance, 0.018);
+  EXPECT_EQ(asphalt.s1, 0.1);
+  EXPECT_EQ(asphalt.s2, 0.0);
+  // The step: vertical face at x = 0, 0.65 m high, 4 m of approach and top.
+  EXPECT_EQ(terrain.piece(1).bounds().max.z(), 0.65);
+  EXPECT_EQ(terrain.piece(1).bounds().min.x(), 0.0);
+  EXPECT_EQ(terrain.piece(0).bounds().min.x(), -4.0);
+  EXPECT_EQ(terrain.piece(1).bounds().max.x(), 4.0);
+  EXPECT_NEAR(queryPoint(terrain.piece(1), {-0.19, 0.0, 0.3}).signed_distance, 0.19, kTolerance);
+}
+
+TEST_F(TerrainFileTest, RoughGroundIsAThirtyMetreHeightfieldWithRocks) {
+  TerrainBuilder builder;
+  const TerrainFileReport report = addTerrainFile(builder, sourceDir() / "terrains" / "rough_ground.yaml");
+  EXPECT_EQ(report.materials, 2);
+  EXPECT_EQ(report.pieces.count, 2 * 60 * 60 + 4 + 2);  // prisms, boxes, two convex rocks
+  const Terrain terrain = std::move(builder).build();
+  EXPECT_NEAR(terrain.bounds().min.x(), -15.0, kTolerance);
+  EXPECT_NEAR(terrain.bounds().max.y(), 15.0, kTolerance);
+  EXPECT_LT(terrain.bounds().max.z(), 0.15);  // bumps and rocks of a few cm
+  EXPECT_EQ(terrain.material(0).name, "compacted_soil");
+  EXPECT_EQ(terrain.material(static_cast<PieceId>(terrain.pieceCount() - 1)).name, "rock");
+}
+
+TEST_F(TerrainFileTest, AllPieceTypesSampleHasTheDocumentedCounts) {
+  TerrainBuilder builder;
+  const TerrainFileReport report = addTerrainFile(builder, sourceDir() / "terrains" / "samples" / "all_pieces.yaml");
+  EXPECT_EQ(report.pieces.count, 1 + 6 + 2 + 3 + 4 + 8 + 24 + 70 + 6 + 1 + 1);
+  EXPECT_EQ(report.degenerate_triangles_skipped, 0);
+}
+
+TEST_F(TerrainFileTest, PlacementMatchesTheBuilderCall) {
+  const auto path =
+      write("box.yaml", std::string(kMaterials) +
+                            "pieces:\n"
+                            "  - type: box\n"
+                            "    size: [1, 2, 0.5]\n"
+                            "    translation: [3, -1, 0.25]\n"
+                            "    rotation: [{axis: [1, 0, 0], degrees: 30}, {axis: [0, 0, 2], radians: 0.5}]\n");
+  const Terrain from_file = loadTerrain(path);
+  TerrainBuilder builder;
+  BoxParams box;
+  box.size = {1, 2, 0.5};
+  box.pose_WL = Eigen::Translation3d(3, -1, 0.25) * Eigen::AngleAxisd(0.5, Eigen::Vector3d::UnitZ()) *
+                Eigen::AngleAxisd(std::numbers::pi / 6, Eigen::Vector3d::UnitX());
+  addBox(builder, box, builder.addMaterial({}));
+  const Terrain direct = std::move(builder).build();
+  EXPECT_LT((from_file.piece(0).bounds().min - direct.piece(0).bounds().min).norm(), kTolerance);
+  EXPECT_LT((from_file.piece(0).bounds().max - direct.piece(0).bounds().max).norm(), kTolerance);
+}
+
+TEST_F(TerrainFileTest, InlineHeightsAreAMapWithTheNorthRowFirst) {
+  const auto path = write("hf.yaml", std::string(kMaterials) +
+                                         "pieces:\n"
+                                         "  - type: heightfield\n"
+                                         "    spacing: [1, 2]\n"
+                                         "    translation: [10, 20, 1]\n"
+                                         "    heights: [[0.5, 0.6], [0.0, 0.1]]\n");
+  const Terrain terrain = loadTerrain(path);
+  ASSERT_EQ(terrain.pieceCount(), 2u);
+  // The first row [0.5, 0.6] is the north edge y = 22, the second the south
+  // edge y = 20; heights are added to the translation's z = 1.
+  EXPECT_NEAR(terrain.bounds().max.z(), 1.6, kTolerance);
+  const Eigen::Vector3d corners[] = {{10, 22, 1.5}, {11, 22, 1.6}, {10, 20, 1.0}, {11, 20, 1.1}};
+  for (const auto& corner : corners) {
+    const double d = std::min(queryPoint(terrain.piece(0), corner).signed_distance,
+                              queryPoint(terrain.piece(1), corner).signed_distance);
+    EXPECT_NEAR(d, 0.0, kTolerance) << formatVector(corner);
+  }
+}
+
+TEST_F(TerrainFileTest, ErrorsNameTheFileLineAndColumn) {
+  // Case: YAML syntax.
+  EXPECT_THAT(loadError(std::string(kMaterials) + "pieces:\n  - {type: box, size: [1, 2\n"),
+              AllOf(HasSubstr((dir() / "terrain.yaml").string() + ":"), HasSubstr("YAML syntax error")));
+  // Case: a misspelt key, at the key.
+  EXPECT_THAT(loadError(std::string(kMaterials) + "pieces:\n  - type: ledge\n    heigth: 0.65\n"),
+              HasSubstr(at(5, 5) + "pieces[0] (ledge): unknown key 'heigth'"));
+  // Case: a value that is not a number, at the value.
+  EXPECT_THAT(loadError(std::string(kMaterials) + "pieces:\n  - type: ledge\n    height: tall\n"),
+              HasSubstr(at(5, 13) + "pieces[0] (ledge): height: 'tall' is not a number"));
+  // Case: a builder's complaint, at the piece.
+  EXPECT_THAT(loadError(std::string(kMaterials) + "pieces:\n  - type: ledge\n    height: -1\n"),
+              HasSubstr(at(4, 5) + "pieces[0] (ledge): wtc::addLedge: height = -1 must be finite and >= 0 (m)"));
+  EXPECT_THAT(loadError(std::string(kMaterials) + "pieces:\n  - {type: hull, points: [[0, 0, 0], [1, 0, 0]]}\n"),
+              HasSubstr(at(4, 5) + "pieces[0] (hull): wtc::ConvexPolyhedron"));
+  // Case: names that do not resolve.
+  EXPECT_THAT(loadError(std::string(kMaterials) + "pieces:\n  - {type: box, material: grass, size: [1, 1, 1]}\n"),
+              HasSubstr(at(4, 27) + "pieces[0] (box): unknown material 'grass'"));
+  EXPECT_THAT(loadError(std::string(kMaterials) + "pieces:\n  - {type: cylinder}\n"),
+              HasSubstr(at(4, 12) + "pieces[0] (cylinder): unknown piece type 'cylinder'"));
+  EXPECT_THAT(loadError("materials:\n  a: {}\n  b: {}\npieces:\n  - {type: box, size: [1, 1, 1]}\n"),
+              HasSubstr(at(5, 5) + "pieces[0] (box): missing key 'material' (the file defines 2 materials)"));
+  // Case: a bad material, at the material.
+  EXPECT_THAT(loadError("materials:\n  mud: {mu_max: 0.4, s1: -0.1}\npieces: []\n"),
+              HasSubstr(at(2, 8) + "material 'mud': wtc::Material 'mud'"));
+  // Case: structure.
+  EXPECT_THAT(loadError("pieces: []\n"), HasSubstr(at(1, 1) + "missing key 'materials'"));
+  EXPECT_THAT(loadError(std::string(kMaterials) + "pieces:\n  - {type: box, size: [1, 1, 1],\n"
+                                                  "     rotation: {axis: [0, 0, 1], degrees: 5, radians: 1}}\n"),
+              HasSubstr(at(5, 16) + "pieces[0] (box): rotation: give exactly one of 'degrees' and 'radians'"));
+  EXPECT_THAT(loadError(std::string(kMaterials) + "pieces: []\n"), HasSubstr("the terrain has no pieces"));
+  EXPECT_THAT(errorOf([&] { loadTerrain(dir() / "nowhere.yaml"); }),
+              HasSubstr((dir() / "nowhere.yaml").string() + ": file not found"));
+}
+
+TEST_F(TerrainFileTest, ErrorsInReferencedFilesNameBothFiles) {
+  // Case: a CSV with a bad value, referenced relative to the YAML file.
+  write("data/ground.csv", "0, 0\n0, x\n");
+  EXPECT_THAT(
+      loadError(std::string(kMaterials) + "pieces:\n  - {type: heightfield, spacing: 1, file: data/ground.csv}\n"),
+      AllOf(HasSubstr(at(4, 43) + "pieces[0] (heightfield): "),
+            HasSubstr((dir() / "data" / "ground.csv").string() + ":2:4: 'x' is not a number")));
+  // Case: a mesh that is not there, and one that is broken.
+  EXPECT_THAT(loadError(std::string(kMaterials) + "pieces:\n  - {type: mesh, file: rock.obj}\n"),
+              AllOf(HasSubstr(at(4, 24) + "pieces[0] (mesh): "),
+                    HasSubstr((dir() / "rock.obj").string() + ": file not found")));
+  write("flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\n");
+  EXPECT_THAT(loadError(std::string(kMaterials) + "pieces:\n  - {type: mesh, file: flat.obj}\n"),
+              AllOf(HasSubstr(at(4, 24)), HasSubstr((dir() / "flat.obj").string() + ": point cloud: 3 vertices")));
+}
+
+}  // namespace
+}  // namespace wtc::io

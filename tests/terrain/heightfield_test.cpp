@@ -1,0 +1,196 @@
+#include "wtc/heightfield.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <iostream>
+#include <limits>
+#include <random>
+
+#include "wtc/error.hpp"
+#include "wtc/point_query.hpp"
+#include "wtc/terrain.hpp"
+
+namespace wtc {
+namespace {
+
+using ::testing::HasSubstr;
+
+// Distances here are of order 1e-3 m on pieces of a few metres; the query is
+// exact to ~1e-15 relative, so 1e-12 m is loose and still meaningful.
+constexpr double kTolerance = 1e-12;
+
+// Heights uniform in [-amplitude, amplitude], from the raw mt19937 stream
+// (fully specified by the standard, unlike its distributions).
+Heightfield randomField(int rows, int cols, double amplitude, std::uint32_t seed) {
+  std::mt19937 gen(seed);
+  Heightfield f;
+  f.rows = rows;
+  f.cols = cols;
+  f.spacing_x = 0.5;
+  f.spacing_y = 0.75;
+  f.origin = {-3.0, 2.0, 10.0};
+  f.base_depth = 0.4;
+  for (int i = 0; i < rows * cols; ++i) f.heights.push_back(amplitude * (2.0 * (gen() / 4294967296.0) - 1.0));
+  return f;
+}
+
+std::string messageOf(const Heightfield& f) {
+  try {
+    validate(f);
+  } catch (const InvalidInputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(HeightfieldTest, EachCellBecomesTwoPrismsInRowMajorOrder) {
+  const Heightfield f = randomField(4, 5, 0.1, 1);
+  TerrainBuilder builder;
+  const MaterialId m = builder.addMaterial(Material{});
+  builder.addPiece(ConvexPolyhedron::box({0, 0, -1}, {1, 1, 0}), m);  // ids need not start at 0
+  const PieceRange range = addHeightfield(builder, f, m);
+  EXPECT_EQ(range.first, 1);
+  EXPECT_EQ(range.count, 24);
+  EXPECT_EQ(f.pieceCount(), 24u);
+  const Terrain terrain = std::move(builder).build();
+  for (int r = 0; r + 1 < f.rows; ++r) {
+    for (int c = 0; c + 1 < f.cols; ++c) {
+      for (int k = 0; k < 2; ++k) {
+        const ConvexPolyhedron& prism = terrain.piece(cellPiece(range, f, r, c, k));
+        EXPECT_EQ(prism.vertexCount(), 6);
+        EXPECT_EQ(prism.faceCount(), 5);
+        // Case: the prism covers its cell in x and y and reaches the base.
+        EXPECT_NEAR(prism.bounds().min.x(), f.origin.x() + c * f.spacing_x, kTolerance);
+        EXPECT_NEAR(prism.bounds().max.x(), f.origin.x() + (c + 1) * f.spacing_x, kTolerance);
+        EXPECT_NEAR(prism.bounds().min.y(), f.origin.y() + r * f.spacing_y, kTolerance);
+        EXPECT_NEAR(prism.bounds().max.y(), f.origin.y() + (r + 1) * f.spacing_y, kTolerance);
+        EXPECT_EQ(prism.bounds().min.z(), f.baseZ());
+      }
+      // Case: triangle 0 holds p01 (below the diagonal), triangle 1 holds p10.
+      const Eigen::Vector3d p01 = f.sample(r, c + 1);
+      const Eigen::Vector3d p10 = f.sample(r + 1, c);
+      EXPECT_NEAR(queryPoint(terrain.piece(cellPiece(range, f, r, c, 0)), p01).signed_distance, 0.0, kTolerance);
+      EXPECT_GT(queryPoint(terrain.piece(cellPiece(range, f, r, c, 0)), p10).signed_distance, 0.0);
+      EXPECT_NEAR(queryPoint(terrain.piece(cellPiece(range, f, r, c, 1)), p10).signed_distance, 0.0, kTolerance);
+    }
+  }
+}
+
+TEST(HeightfieldTest, PrismFacesPointOutwardForAnyHeights) {
+  // Case: steep random relief (slopes up to ~4:1) over 3 seeds. fromMesh
+  // validates every prism (all vertices below every face plane, outward
+  // normals); here the surface itself is checked from both sides.
+  const double offset = 1e-3;  // m above / below the surface
+  for (std::uint32_t seed = 1; seed <= 3; ++seed) {
+    const Heightfield f = randomField(9, 7, 1.5, seed);
+    TerrainBuilder builder;
+    const PieceRange range = addHeightfield(builder, f, builder.addMaterial(Material{}));
+    const Terrain terrain = std::move(builder).build();
+    for (int r = 0; r + 1 < f.rows; ++r) {
+      for (int c = 0; c + 1 < f.cols; ++c) {
+        for (int k = 0; k < 2; ++k) {
+          // The centroid of triangle k in cell coordinates (s along x, t along y).
+          const double s = k == 0 ? 2.0 / 3.0 : 1.0 / 3.0;
+          const double t = k == 0 ? 1.0 / 3.0 : 2.0 / 3.0;
+          const double x = f.origin.x() + (c + s) * f.spacing_x;
+          const double y = f.origin.y() + (r + t) * f.spacing_y;
+          const double z = surfaceHeight(f, x, y).value();
+          const ConvexPolyhedron& prism = terrain.piece(cellPiece(range, f, r, c, k));
+          const Eigen::Vector3d normal = prism.faceNormal(0);  // the top triangle
+          EXPECT_GT(normal.z(), 0.0);
+          const PointQuery above = queryPoint(prism, {x, y, z + offset});
+          const PointQuery below = queryPoint(prism, {x, y, z - offset});
+          // Vertically offset by h from a plane with normal n: distance h n_z.
+          EXPECT_NEAR(above.signed_distance, offset * normal.z(), kTolerance) << "cell " << r << "," << c;
+          EXPECT_NEAR(below.signed_distance, -offset * normal.z(), kTolerance) << "cell " << r << "," << c;
+          EXPECT_EQ(below.status, QueryStatus::kInside);
+        }
+      }
+    }
+  }
+}
+
+TEST(HeightfieldTest, SurfaceHeightInterpolatesTheSamePlanes) {
+  const Heightfield f = randomField(5, 6, 0.3, 7);
+  for (int r = 0; r < f.rows; ++r) {
+    for (int c = 0; c < f.cols; ++c) {
+      const Eigen::Vector3d p = f.sample(r, c);
+      EXPECT_NEAR(surfaceHeight(f, p.x(), p.y()).value(), p.z(), kTolerance);
+    }
+  }
+  EXPECT_FALSE(surfaceHeight(f, f.origin.x() - 0.01, f.origin.y()).has_value());
+  EXPECT_FALSE(surfaceHeight(f, f.origin.x(), f.origin.y() + 5 * f.spacing_y + 0.01).has_value());
+}
+
+TEST(HeightfieldTest, BaseIsBaseDepthBelowTheLowestHeight) {
+  Heightfield f;
+  f.rows = 2;
+  f.cols = 2;
+  f.heights = {0.3, -0.2, 0.1, 0.0};
+  f.origin = {0.0, 0.0, 5.0};
+  f.base_depth = 0.5;
+  EXPECT_DOUBLE_EQ(f.baseZ(), 5.0 - 0.2 - 0.5);
+}
+
+TEST(HeightfieldTest, MalformedGridsAreNamedInTheMessage) {
+  Heightfield good = randomField(3, 4, 0.1, 3);
+  EXPECT_EQ(messageOf(good), "(no error)");
+  // Case: a non-finite height is named by row and column.
+  Heightfield f = good;
+  f.heights[2 * 4 + 3] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THAT(messageOf(f), HasSubstr("height at (row 2, col 3) = nan is not finite"));
+  f = good;
+  f.heights.pop_back();
+  EXPECT_THAT(messageOf(f), HasSubstr("heights has 11 values, but rows x cols = 3 x 4 = 12"));
+  f = good;
+  f.rows = 1;
+  EXPECT_THAT(messageOf(f), HasSubstr("rows = 1 must be >= 2"));
+  f = good;
+  f.spacing_y = -0.5;
+  EXPECT_THAT(messageOf(f), HasSubstr("spacing_y = -0.5 must be finite and > 0 (m)"));
+  f = good;
+  f.base_depth = 0.0;
+  EXPECT_THAT(messageOf(f), HasSubstr("base_depth = 0 must be finite and > 0 (m)"));
+  f = good;
+  f.origin.x() = std::numeric_limits<double>::infinity();
+  EXPECT_THAT(messageOf(f), HasSubstr("origin = (inf, 2, 10) is not finite"));
+  // Case: addHeightfield validates before adding anything.
+  TerrainBuilder builder;
+  f = good;
+  f.heights[0] = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(addHeightfield(builder, f, builder.addMaterial(Material{})), InvalidInputError);
+  EXPECT_EQ(builder.pieceCount(), 0u);
+}
+
+TEST(HeightfieldTest, TriangularPrismRejectsABaseAboveTheTriangle) {
+  EXPECT_NO_THROW(makeTriangularPrism({0, 0, 1}, {1, 0, 1.2}, {0, 1, 0.9}, 0.0));
+  EXPECT_THROW(makeTriangularPrism({0, 0, 1}, {1, 0, 1.2}, {0, 1, 0.9}, 2.0), InvalidInputError);
+}
+
+// The build-time figure of the README (10^6 pieces in a few seconds):
+//   wtc_terrain_tests --gtest_also_run_disabled_tests --gtest_filter='*MillionPieces*'
+// Needs about 0.6 GB. The benchmark (bench/) times it properly.
+TEST(HeightfieldTest, DISABLED_BuildsAMillionPiecesInAFewSeconds) {
+  const int n = 708;  // 707 x 707 cells x 2 = 999,698 prisms
+  Heightfield f = randomField(n, n, 0.05, 11);
+  const auto start = std::chrono::steady_clock::now();
+  TerrainBuilder builder;
+  const PieceRange range = addHeightfield(builder, f, builder.addMaterial(Material{}));
+  const auto pieces_done = std::chrono::steady_clock::now();
+  const Terrain terrain = std::move(builder).build();
+  const auto index_done = std::chrono::steady_clock::now();
+  const double pieces_s = std::chrono::duration<double>(pieces_done - start).count();
+  const double index_s = std::chrono::duration<double>(index_done - pieces_done).count();
+  std::cout << range.count << " prisms: addHeightfield " << pieces_s << " s, build (index) " << index_s << " s, pieces "
+            << terrain.pieceMemoryBytes() / double(range.count) << " B/piece, index "
+            << terrain.indexMemoryBytes() / double(range.count) << " B/piece\n";
+  EXPECT_EQ(terrain.pieceCount(), 999698u);
+  EXPECT_LT(pieces_s + index_s, 10.0);
+}
+
+}  // namespace
+}  // namespace wtc

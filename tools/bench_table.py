@@ -1,0 +1,123 @@
+#!/usr/bin/env python3
+"""Markdown tables from `wtc_bench_query --benchmark_format=json` output.
+
+    build/bench/wtc_bench_query --benchmark_repetitions=5 \
+        --benchmark_report_aggregates_only=true --benchmark_format=json > bench.json
+    python3 tools/bench_table.py bench.json
+
+Prints two tables for the README:
+  1. PointQuery: one row per shape/set; median ns/query of wtc (and wtc with
+     max_distance), bullet, fcl, brute; the speed-ups bullet/wtc and fcl/wtc;
+     the max signed-distance error against brute force (x piece size) and the
+     failure counts wtc/bullet/fcl.
+  2. PointQueryTolerance: ns/query, max distance error and max closest-point
+     error per relative tolerance.
+Times are medians over repetitions (the `median` aggregate when present,
+otherwise the median of the individual runs). Standard library only.
+"""
+import argparse
+import json
+import statistics
+import sys
+from collections import defaultdict
+
+METHODS = ["wtc", "wtc_maxdist", "bullet", "fcl", "brute"]
+SCALE_TO_NS = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}
+
+
+def load_runs(data, time_key):
+    """{run name: (median ns, counters of the run)}."""
+    samples = defaultdict(list)
+    medians = {}
+    for b in data["benchmarks"]:
+        name = b.get("run_name", b["name"])
+        ns = b[time_key] * SCALE_TO_NS[b.get("time_unit", "ns")]
+        if b.get("run_type") == "aggregate":
+            if b.get("aggregate_name") == "median":
+                medians[name] = (ns, b)
+        else:
+            samples[name].append((ns, b))
+    runs = {name: (statistics.median(ns for ns, _ in s), s[0][1]) for name, s in samples.items()}
+    runs.update(medians)  # the library's own median wins
+    return runs
+
+
+def fmt_ns(ns):
+    return "–" if ns is None else (f"{ns:.1f}" if ns < 100 else f"{ns:.0f}")
+
+
+def fmt_err(x):
+    return "–" if x is None else ("0" if x == 0 else f"{x:.1e}")
+
+
+def point_query_table(runs):
+    rows = defaultdict(dict)  # (shape, set) -> method -> (ns, counters)
+    order = []
+    for name, value in runs.items():
+        parts = name.split("/")
+        if len(parts) == 4 and parts[0] == "PointQuery" and parts[1] in METHODS:
+            key = (parts[2], parts[3])
+            if key not in rows:
+                order.append(key)
+            rows[key][parts[1]] = value
+    lines = [
+        "| shape/set | wtc ns | wtc max_distance ns | bullet ns | fcl ns | brute ns "
+        "| bullet/wtc | fcl/wtc | wtc error | bullet error | fcl error | failures wtc/bullet/fcl |",
+        "|---|" + "---:|" * 11,
+    ]
+    for shape, qset in order:
+        r = rows[(shape, qset)]
+        ns = {m: r[m][0] if m in r else None for m in METHODS}
+        err = {m: r[m][1].get("max_error") if m in r else None for m in METHODS}
+        fails = "/".join(str(int(r[m][1].get("failures", 0))) if m in r else "–"
+                         for m in ("wtc", "bullet", "fcl"))
+        ratio = lambda m: f"{ns[m] / ns['wtc']:.1f}×" if ns[m] and ns["wtc"] else "–"
+        lines.append(
+            f"| {shape}/{qset} | {fmt_ns(ns['wtc'])} | {fmt_ns(ns['wtc_maxdist'])} "
+            f"| {fmt_ns(ns['bullet'])} | {fmt_ns(ns['fcl'])} | {fmt_ns(ns['brute'])} "
+            f"| {ratio('bullet')} | {ratio('fcl')} | {fmt_err(err['wtc'])} "
+            f"| {fmt_err(err['bullet'])} | {fmt_err(err['fcl'])} | {fails} |")
+    return lines
+
+
+def tolerance_table(runs):
+    cells = defaultdict(dict)  # tolerance -> shape -> (ns, counters)
+    shapes = []
+    for name, value in runs.items():
+        parts = name.split("/")
+        if len(parts) == 3 and parts[0] == "PointQueryTolerance":
+            if parts[1] not in shapes:
+                shapes.append(parts[1])
+            cells[parts[2]][parts[1]] = value
+    if not cells:
+        return []
+    header = "| relative tolerance | " + " | ".join(f"{s} ns | {s} error | {s} point error" for s in shapes) + " |"
+    lines = [header, "|---|" + "---:|" * (3 * len(shapes))]
+    for tol in sorted(cells, key=float, reverse=True):
+        row = []
+        for s in shapes:
+            ns, counters = cells[tol].get(s, (None, {}))
+            row += [fmt_ns(ns), fmt_err(counters.get("max_error")), fmt_err(counters.get("max_point_error"))]
+        lines.append(f"| {tol} | " + " | ".join(row) + " |")
+    return lines
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("json", nargs="?", help="benchmark JSON (default: stdin)")
+    parser.add_argument("--time", choices=["cpu", "real"], default="cpu",
+                        help="time column to report (default: cpu)")
+    args = parser.parse_args()
+    with (open(args.json) if args.json else sys.stdin) as f:
+        data = json.load(f)
+    runs = load_runs(data, f"{args.time}_time")
+    print("\n".join(point_query_table(runs)))
+    tolerance = tolerance_table(runs)
+    if tolerance:
+        print("\nwtc on the mixed set by relative tolerance; errors x piece size, "
+              "error: signed distance, point error: closest point (outside points)\n")
+        print("\n".join(tolerance))
+
+
+if __name__ == "__main__":
+    main()
