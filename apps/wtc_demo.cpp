@@ -1,12 +1,18 @@
 // The main demo, for now: build a few pieces of ground and query points,
-// printing what the wheel contact will use (signed distance, closest point,
-// direction) and what each query cost (GJK iterations).
+// printing what the wheel contact uses (signed distance, closest point,
+// direction) and what each query cost (GJK iterations); then load the
+// spec's ledge terrain and move a 0.19 m wheel up its face and over its top
+// edge, printing every contact.
+//
+//   build/apps/wtc_demo [terrains/ledge.yaml]
 #include <cmath>
 #include <cstdio>
 #include <vector>
 
 #include <wtc/convex_polyhedron.hpp>
+#include <wtc/io/terrain_file.hpp>
 #include <wtc/point_query.hpp>
+#include <wtc/wheel_contact.hpp>
 
 namespace {
 
@@ -23,9 +29,31 @@ void show(const char* name, const wtc::ConvexPolyhedron& poly, const std::vector
   }
 }
 
+// The wheel's centre climbs the ledge face (x = 0, 0.65 m high) and rolls
+// onto the top, 2 mm into the ground where it touches.
+void climbLedge(const char* path) {
+  const wtc::Terrain ledge = wtc::io::loadTerrain(path);
+  std::printf("\n%s: %zu pieces; a wheel r_f = 0.19 m, tread 0.12 m climbs the face and rolls over the edge\n",
+              path, ledge.pieceCount());
+  const wtc::WheelGeometry wheel{0.19, 0.12};
+  wtc::WheelContactFinder finder;
+  const std::vector<Eigen::Vector3d> centres = {{-0.40, 0, 0.188}, {-0.188, 0, 0.188}, {-0.188, 0, 0.40},
+                                                {-0.188, 0, 0.65}, {-0.10, 0, 0.80},  {-0.02, 0, 0.838},
+                                                {0.20, 0, 0.838}};
+  std::printf("  %-24s %s\n", "wheel centre (m)", "contacts: piece, deflection (mm), e (toward the ground)");
+  for (const auto& o : centres) {
+    const auto contacts = finder.find(ledge, wheel, {o, Eigen::Vector3d::UnitY()});
+    std::printf("  (%6.3f, %5.2f, %6.3f)   %zu:", o.x(), o.y(), o.z(), contacts.size());
+    for (const auto& c : contacts) {
+      std::printf("  [%d, %5.2f, (%5.2f, %5.2f, %5.2f)]", c.piece, 1e3 * c.deflection, c.e.x(), c.e.y(), c.e.z());
+    }
+    std::printf("\n");
+  }
+}
+
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
   // The spec's ledge: a 0.65 m step, its top edge at x = 0. A 0.19 m wheel
   // against its face and its edge.
   const auto ledge = wtc::ConvexPolyhedron::box({0.0, -2.0, -0.5}, {3.0, 2.0, 0.65});
@@ -47,5 +75,12 @@ int main() {
   }
   show("rock (hull of 40 points)", wtc::ConvexPolyhedron::fromPoints(rock),
        {{0.0, 0.0, 0.5}, {0.5, 0.5, 0.0}, {0.0, 0.0, 0.0}});
+
+  try {
+    climbLedge(argc > 1 ? argv[1] : WTC_SOURCE_DIR "/terrains/ledge.yaml");
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "wtc_demo: %s\n", error.what());
+    return 1;
+  }
   return 0;
 }
