@@ -121,7 +121,11 @@ class BulletMethod {
   btConvexHullShape hull_;
 };
 
-// fcl::distance with the libccd solver, the point as a tiny sphere.
+// fcl::distance with the libccd solver (default tolerances), the point as a
+// tiny sphere. FCL's error grows with the radius (about r on every set), and
+// radii from 1e-9 to 1e-6 m give the same rare GJK misses on the hulls; at
+// 1e-5 m Debian's libfcl (built with assertions) aborts in its EPA on
+// hull20/near. Hence 1e-9 m.
 class FclMethod {
  public:
   explicit FclMethod(const wtc::ConvexPolyhedron& poly) {

@@ -141,7 +141,9 @@ ConvexPolyhedron ConvexPolyhedron::assemble(const std::vector<Eigen::Vector3d>& 
   }
   poly.centroid_local_ = sum / nv;
 
-  poly.numbers_.resize(3 * static_cast<std::size_t>(nv) + 4 * static_cast<std::size_t>(nf));
+  std::size_t face_edges = 0;
+  for (const auto& face : faces) face_edges += face.size();
+  poly.numbers_.resize(3 * static_cast<std::size_t>(nv) + 4 * static_cast<std::size_t>(nf) + 4 * face_edges);
   double* num = poly.numbers_.data();
   for (int i = 0; i < nv; ++i) {
     num[i] = local[i].x();
@@ -179,6 +181,23 @@ ConvexPolyhedron ConvexPolyhedron::assemble(const std::vector<Eigen::Vector3d>& 
     n_out[2 * nf + f] = n.z();
     n_out[3 * nf + f] = d;
   }
+  // Side planes of the face edges, in face order: edge k of face f runs from
+  // vertex k - 1 (cyclically) to vertex k; s = n x (b - a) points into the
+  // face, so s . q >= s . a when q projects onto the face's side of the edge.
+  double* side = n_out + 4 * nf;
+  for (int f = 0; f < nf; ++f) {
+    const Eigen::Vector3d n(n_out[f], n_out[nf + f], n_out[2 * nf + f]);
+    const auto& face = faces[f];
+    for (std::size_t k = 0; k < face.size(); ++k) {
+      const Eigen::Vector3d& a = local[face[(k + face.size() - 1) % face.size()]];
+      const Eigen::Vector3d s_in = n.cross(local[face[k]] - a);
+      side[0] = s_in.x();
+      side[1] = s_in.y();
+      side[2] = s_in.z();
+      side[3] = s_in.dot(a);
+      side += 4;
+    }
+  }
   if (!flat && poly.planeBoundLocal(poly.centroid_local_, nullptr) >= -planar_tol) {
     fail("the faces do not enclose a volume (the centroid is not strictly inside every face plane)");
   }
@@ -189,6 +208,33 @@ ConvexPolyhedron ConvexPolyhedron::assemble(const std::vector<Eigen::Vector3d>& 
   std::size_t total = 0;
   for (const auto& face : faces) topo.push_back(static_cast<std::int32_t>(total += face.size()));
   for (const auto& face : faces) topo.insert(topo.end(), face.begin(), face.end());
+  // Twin of each face-edge: the same edge in the neighbouring face, run the
+  // other way (the surface is closed, so every edge has one).
+  {
+    struct Directed {
+      std::int32_t from, to, index;
+    };
+    std::vector<Directed> directed;
+    directed.reserve(total);
+    std::int32_t index = 0;
+    for (const auto& face : faces) {
+      for (std::size_t k = 0; k < face.size(); ++k, ++index) {
+        directed.push_back({face[(k + face.size() - 1) % face.size()], face[k], index});
+      }
+    }
+    auto less = [](const Directed& x, const Directed& y) { return std::pair{x.from, x.to} < std::pair{y.from, y.to}; };
+    std::vector<Directed> sorted = directed;
+    std::sort(sorted.begin(), sorted.end(), less);
+    const std::size_t twins_at = topo.size();
+    topo.resize(topo.size() + total, -1);
+    for (const Directed& e : directed) {
+      const auto twin = std::lower_bound(sorted.begin(), sorted.end(), Directed{e.to, e.from, 0}, less);
+      if (twin == sorted.end() || twin->from != e.to || twin->to != e.from) {
+        fail("edge (" + std::to_string(e.from) + ", " + std::to_string(e.to) + ") has no opposite edge: the mesh is not closed");
+      }
+      topo[twins_at + e.index] = twin->index;
+    }
+  }
   poly.has_adjacency_ = nv >= tolerance::kHillClimbMinVertices;
   if (poly.has_adjacency_) {
     std::vector<std::set<int>> neighbors(nv);
@@ -216,8 +262,17 @@ std::span<const std::int32_t> ConvexPolyhedron::faceVertices(int f) const {
   return {list + start[f], list + start[f + 1]};
 }
 
+std::int32_t ConvexPolyhedron::faceEdgeNext(std::int32_t face_edge) const {
+  // The face holding it: face starts are ascending (a short scan for the
+  // small pieces of ground, which have 5 to 8 faces).
+  const std::int32_t* start = topology_.data();
+  int f = 0;
+  while (start[f + 1] <= face_edge) ++f;
+  return face_edge + 1 < start[f + 1] ? face_edge + 1 : start[f];
+}
+
 std::span<const std::int32_t> ConvexPolyhedron::vertexNeighbors(int i) const {
-  const std::int32_t* start = topology_.data() + face_count_ + 1 + topology_[face_count_];
+  const std::int32_t* start = topology_.data() + face_count_ + 1 + 2 * topology_[face_count_];
   const std::int32_t* list = start + vertex_count_ + 1;
   return {list + start[i], list + start[i + 1]};
 }
@@ -231,14 +286,14 @@ int ConvexPolyhedron::supportLocal(const Eigen::Vector3d& dir, int hint) const {
   const double* x = vx();
   const double* y = vy();
   const double* z = vz();
+  // Branch-free argmax: the winner is data-dependent, a branch mispredicts.
   int best = 0;
   double best_dot = dir.x() * x[0] + dir.y() * y[0] + dir.z() * z[0];
   for (int i = 1; i < vertex_count_; ++i) {
     const double d = dir.x() * x[i] + dir.y() * y[i] + dir.z() * z[i];
-    if (d > best_dot) {
-      best_dot = d;
-      best = i;
-    }
+    const bool better = d > best_dot;
+    best = better ? i : best;
+    best_dot = better ? d : best_dot;
   }
   return best;
 }
@@ -279,10 +334,9 @@ double ConvexPolyhedron::planeBoundLocal(const Eigen::Vector3d& q, int* face) co
   double best_value = a[0] * q.x() + b[0] * q.y() + c[0] * q.z() - d[0];
   for (int f = 1; f < face_count_; ++f) {
     const double value = a[f] * q.x() + b[f] * q.y() + c[f] * q.z() - d[f];
-    if (value > best_value) {
-      best_value = value;
-      best = f;
-    }
+    const bool better = value > best_value;  // branch-free, as in supportLocal
+    best = better ? f : best;
+    best_value = better ? value : best_value;
   }
   if (face != nullptr) *face = best;
   return best_value;

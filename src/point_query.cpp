@@ -1,5 +1,6 @@
 // The modified GJK point query. Reads top to bottom:
-//   validate -> bounding-box bound -> face-plane bound -> GJK.
+//   validate -> bounding-box bound -> face-plane bound (exact inside)
+//   -> nearest face's region (exact) -> crossed edge's region (exact) -> GJK.
 // See include/wtc/point_query.hpp for the conventions and docs/point-query.md
 // for the design and its measurements.
 #include "wtc/point_query.hpp"
@@ -7,6 +8,7 @@
 #include <cmath>
 #include <string>
 
+#include "feature_regions.hpp"
 #include "signed_volumes.hpp"
 #include "wtc/error.hpp"
 
@@ -14,6 +16,7 @@ namespace wtc {
 namespace {
 
 using Eigen::Vector3d;
+using detail::FaceRegion;
 
 // Beyond this the squared norms GJK forms would overflow double (m).
 constexpr double kMaxCoordinateM = 1e150;
@@ -62,12 +65,11 @@ PointQuery beyondBox(const ConvexPolyhedron& poly, const Vector3d& p, double dis
   return r;
 }
 
-void seedFromFace(const ConvexPolyhedron& poly, const Vector3d& q, int face, detail::Simplex& s) {
-  const auto vertices = poly.faceVertices(face);
-  s.count = 3;
-  for (int m = 0; m < 3; ++m) {
-    s.vertex[m] = vertices[m];
-    s.point[m] = poly.vertexLocal(vertices[m]) - q;
+void seed(const ConvexPolyhedron& poly, const Vector3d& q, const FaceRegion& region, detail::Simplex& s) {
+  s.count = region.count;
+  for (int m = 0; m < region.count; ++m) {
+    s.vertex[m] = region.seed[m];
+    s.point[m] = poly.vertexLocal(region.seed[m]) - q;
   }
 }
 
@@ -88,31 +90,11 @@ void store(const detail::Simplex& s, QueryCache* cache) {
   for (int m = 0; m < cache->count; ++m) cache->vertex[m] = s.vertex[m];
 }
 
-PointQuery query(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOptions& options,
-                 QueryCache* cache) {
-  validate(poly, p, options);
+// GJK on poly - p from the seed simplex `s`, or from the cached simplex
+// when that starts nearer; `plane` and `face` are the plane bound's.
+PointQuery gjk(const ConvexPolyhedron& poly, const Vector3d& p, const Vector3d& q, double plane, int face,
+               const QueryOptions& options, detail::Simplex& s, QueryCache* cache) {
   const double max_distance = options.max_distance;
-
-  // 1. Bounding box: the cheapest lower bound, for the wheel's early exit.
-  if (max_distance < std::numeric_limits<double>::infinity()) {
-    const double box2 = poly.bounds().squaredDistance(p);
-    if (box2 > max_distance * max_distance) return beyondBox(poly, p, std::sqrt(box2));
-  }
-
-  // 2. Face planes: exact inside, a lower bound outside.
-  const Vector3d q = p - poly.origin();
-  int face = 0;
-  const double plane = poly.planeBoundLocal(q, &face);
-  if (plane <= 0.0 && !poly.isFlat()) {
-    if (cache != nullptr) cache->count = 0;
-    return fromPlane(poly, p, plane, face, QueryStatus::kInside);
-  }
-  if (plane > max_distance) return fromPlane(poly, p, plane, face, QueryStatus::kBeyond);
-
-  // 3. GJK on poly - p, from the nearest face's first triangle, or from the
-  // cached simplex when that starts nearer.
-  detail::Simplex s;
-  seedFromFace(poly, q, face, s);
   Vector3d v = detail::closestToOrigin(s);
   if (cache != nullptr) {
     detail::Simplex warm;
@@ -195,6 +177,75 @@ PointQuery query(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOpt
   r.direction = v / dist;
   r.normal = -r.direction;
   return r;
+}
+
+PointQuery query(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOptions& options,
+                 QueryCache* cache) {
+  validate(poly, p, options);
+  const double max_distance = options.max_distance;
+
+  // 1. Bounding box: the cheapest lower bound, for the wheel's early exit.
+  if (max_distance < std::numeric_limits<double>::infinity()) {
+    const double box2 = poly.bounds().squaredDistance(p);
+    if (box2 > max_distance * max_distance) return beyondBox(poly, p, std::sqrt(box2));
+  }
+
+  // 2. Face planes: exact inside, a lower bound outside.
+  const Vector3d q = p - poly.origin();
+  int face = 0;
+  const double plane = poly.planeBoundLocal(q, &face);
+  if (plane <= 0.0 && !poly.isFlat()) {
+    if (cache != nullptr) cache->count = 0;
+    return fromPlane(poly, p, plane, face, QueryStatus::kInside);
+  }
+  if (plane > max_distance) return fromPlane(poly, p, plane, face, QueryStatus::kBeyond);
+
+  if (!options.feature_regions) {
+    // Plain GJK from the nearest face's first three vertices.
+    detail::Simplex s;
+    const auto vertices = poly.faceVertices(face);
+    s.count = 3;
+    for (int m = 0; m < 3; ++m) {
+      s.vertex[m] = vertices[m];
+      s.point[m] = poly.vertexLocal(vertices[m]) - q;
+    }
+    return gjk(poly, p, q, plane, face, options, s, cache);
+  }
+
+  // 3. The nearest face's region: inside it, the projection is exact.
+  const FaceRegion region = detail::classify(poly, q, face);
+  if (region.inside) {
+    if (cache != nullptr) cache->count = 0;
+    // max: on a flat piece both faces can read -roundoff on the polygon.
+    return fromPlane(poly, p, std::max(plane, 0.0), face, QueryStatus::kOutside);
+  }
+
+  // 4. The crossed edge's or vertex's region: its closest point is exact.
+  Vector3d on_feature;
+  if (detail::edgeRegion(poly, q, region, &on_feature) || detail::vertexRegion(poly, q, region, &on_feature)) {
+    const Vector3d v = on_feature - q;
+    const double dist = v.norm();
+    if (dist <= tolerance::kTouchingRelative * poly.size()) {
+      return fromPlane(poly, p, std::max(plane, 0.0), face, QueryStatus::kOutside);
+    }
+    if (cache != nullptr) {
+      cache->count = region.count;
+      cache->vertex[0] = region.seed[0];
+      cache->vertex[1] = region.seed[1];
+    }
+    PointQuery r;
+    r.signed_distance = dist;
+    r.closest_point = p + v;
+    r.direction = v / dist;
+    r.normal = -r.direction;
+    r.status = QueryStatus::kOutside;
+    return r;
+  }
+
+  // 5. GJK on poly - p, from the crossed edge or vertex.
+  detail::Simplex s;
+  seed(poly, q, region, s);
+  return gjk(poly, p, q, plane, face, options, s, cache);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "signed_volumes.hpp"
 
+#include <cmath>
 #include <limits>
 
 namespace wtc::detail {
@@ -31,11 +32,20 @@ Candidate better(const Candidate& a, const Candidate& b) {
   return b.v.squaredNorm() < a.v.squaredNorm() ? b : a;
 }
 
+// A signed measure below this fraction of the sum of its parts' magnitudes
+// has no reliable sign (dimensionless): a flat tetrahedron (four coplanar
+// vertices of one face) or a sliver triangle. Then every sub-simplex is
+// searched, which is always correct (each candidate is a point of the
+// simplex), only slower.
+constexpr double kDegenerateRelative = 1e3 * 2.220446049250313e-16;
+
 // Triangle p[i], p[j], p[k].
 Candidate triangle(const Vector3d* p, int i, int j, int k) {
-  const Vector3d n = (p[j] - p[i]).cross(p[k] - p[i]);
+  const Vector3d e1 = p[j] - p[i];
+  const Vector3d e2 = p[k] - p[i];
+  const Vector3d n = e1.cross(e2);
   const double nn = n.squaredNorm();
-  if (nn > 0.0) {
+  if (nn > kDegenerateRelative * e1.squaredNorm() * e2.squaredNorm()) {
     // Projection of the origin on the plane; signed areas of the three
     // sub-triangles against n are its barycentric weights times |n|^2.
     const Vector3d p0 = (n.dot(p[i]) / nn) * n;
@@ -63,7 +73,10 @@ Candidate tetrahedron(const Vector3d* p, bool* enclosed) {
   // tetrahedron's volume (Montanari's cofactor expansion of det M).
   const double w[4] = {volume(o, p[1], p[2], p[3]), volume(p[0], o, p[2], p[3]),
                        volume(p[0], p[1], o, p[3]), volume(p[0], p[1], p[2], o)};
-  const double total = w[0] + w[1] + w[2] + w[3];
+  double total = w[0] + w[1] + w[2] + w[3];
+  if (std::abs(total) <= kDegenerateRelative * (std::abs(w[0]) + std::abs(w[1]) + std::abs(w[2]) + std::abs(w[3]))) {
+    total = 0.0;  // flat: no sign matches, all four faces are searched
+  }
   auto same_sign = [total](double x) { return total > 0.0 ? x > 0.0 : (total < 0.0 && x < 0.0); };
   if (same_sign(w[0]) && same_sign(w[1]) && same_sign(w[2]) && same_sign(w[3])) {
     *enclosed = true;
@@ -96,13 +109,20 @@ Vector3d closestToOrigin(Simplex& s) {
       if (enclosed) return Vector3d::Zero();
       break;
   }
-  Simplex reduced{};
-  reduced.count = c.count;
+  if (c.count == s.count) return c.v;  // nothing dropped; keep the order
+  // Compact the kept vertices (at most 3) through temporaries: keep[] need
+  // not be ascending.
+  Vector3d point[3];
+  std::int32_t vertex[3];
   for (int m = 0; m < c.count; ++m) {
-    reduced.point[m] = s.point[c.keep[m]];
-    reduced.vertex[m] = s.vertex[c.keep[m]];
+    point[m] = s.point[c.keep[m]];
+    vertex[m] = s.vertex[c.keep[m]];
   }
-  s = reduced;
+  for (int m = 0; m < c.count; ++m) {
+    s.point[m] = point[m];
+    s.vertex[m] = vertex[m];
+  }
+  s.count = c.count;
   return c.v;
 }
 

@@ -102,6 +102,22 @@ class ConvexPolyhedron {
   const double* ny() const { return nx() + face_count_; }
   const double* nz() const { return ny() + face_count_; }
   const double* pd() const { return nz() + face_count_; }
+  /// Side planes of face f's edges, 4 doubles each (s, s . a), in the order
+  /// of faceVertices(f): edge k runs from vertex k - 1 (cyclically) to k.
+  const double* faceEdgePlanes(int f) const { return pd() + face_count_ + 4 * topology_[f]; }
+  /// Index of the first face-edge of face f among all face-edges (edge k of
+  /// f is faceEdgeStart(f) + k); side planes are at 4 x that index.
+  std::int32_t faceEdgeStart(int f) const { return topology_[f]; }
+  /// The same edge in the neighbouring face, as a face-edge index.
+  std::int32_t faceEdgeTwin(std::int32_t face_edge) const {
+    return topology_[face_count_ + 1 + topology_[face_count_] + face_edge];
+  }
+  /// The next face-edge of the same face (it starts where `face_edge` ends).
+  std::int32_t faceEdgeNext(std::int32_t face_edge) const;
+  /// The vertex a face-edge ends at.
+  std::int32_t faceEdgeEnd(std::int32_t face_edge) const { return topology_[face_count_ + 1 + face_edge]; }
+  /// Side plane of a face-edge by index (4 doubles: s, s . a).
+  const double* faceEdgePlane(std::int32_t face_edge) const { return pd() + face_count_ + 4 * face_edge; }
   Eigen::Vector3d vertexLocal(int i) const { return {vx()[i], vy()[i], vz()[i]}; }
   int supportLocal(const Eigen::Vector3d& dir, int hint) const;
   double planeBoundLocal(const Eigen::Vector3d& q, int* face) const;
@@ -125,10 +141,11 @@ class ConvexPolyhedron {
   std::int32_t face_count_ = 0;
   bool flat_ = false;
   bool has_adjacency_ = false;
-  // [vx vy vz | nx ny nz d], local frame.
+  // [vx vy vz | nx ny nz d | face-edge side planes (sx sy sz s.a)...],
+  // local frame.
   std::vector<double> numbers_;
-  // [face_start (F+1) | face vertices | adjacency start (V+1) | neighbours];
-  // adjacency only for pieces that hill-climb.
+  // [face_start (F+1) | face vertices | face-edge twins | adjacency start
+  // (V+1) | neighbours]; adjacency only for pieces that hill-climb.
   std::vector<std::int32_t> topology_;
 };
 

@@ -7,12 +7,14 @@
 // own. The simplex sub-algorithm is the signed-volumes method (Montanari,
 // Petrinic, Barbieri, "Improving the GJK algorithm for faster and more
 // reliable distance queries between convex objects", ACM TOG 36(3), 2017).
-// Around it, three exact accelerations:
+// Around it, exact accelerations:
 //   1. the bounding box gives a lower bound for the `max_distance` early exit;
 //   2. the face-plane bound max_i(n_i . p - d_i) is the exact signed distance
-//      when p is inside (no GJK at all) and a lower bound outside, so GJK
-//      stops as soon as its upper bound meets it (face regions);
-//   3. a caller-owned QueryCache warm-starts GJK from the previous simplex.
+//      when p is inside (no GJK at all) and a lower bound outside;
+//   3. Voronoi-region tests on the nearest face, the one edge or vertex of it
+//      that p lies beyond: where they hold, the closest point is a
+//      projection, exact; otherwise they seed GJK with that edge or vertex;
+//   4. a caller-owned QueryCache warm-starts GJK from the previous simplex.
 #include <cstdint>
 #include <limits>
 
@@ -44,6 +46,10 @@ struct QueryOptions {
   /// Distances above this need not be exact (m): the query returns kBeyond
   /// as soon as a lower bound exceeds it. +inf disables the early exit.
   double max_distance = std::numeric_limits<double>::infinity();
+  /// Resolve the nearest face's, edge's and vertex's Voronoi regions exactly
+  /// before GJK (docs/point-query.md). Off: the plain modified GJK after the
+  /// plane bound, for comparison and for testing GJK alone.
+  bool feature_regions = true;
 };
 
 /// Warm start for a point that moves a little between queries (a wheel

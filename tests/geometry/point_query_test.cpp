@@ -86,6 +86,23 @@ TEST(PointQueryTest, RandomFlatPolygonsMatchBruteForce) {
   runRandomCases(4, 100, 200, [](RandomPieces& r) { return r.flatPolygon(r.uniformInt(3, 20)); });
 }
 
+testing::AssertionResult plainGjkAgrees(const RandomPiece& piece, const BruteForceOracle& oracle, const Vector3d& p,
+                                        RandomPieces&) {
+  wtc::QueryOptions options;
+  options.feature_regions = false;
+  const PointQuery got = wtc::queryPoint(piece.poly, p, options);
+  return wtc::test::agreesWithOracle(piece.poly, oracle, p, got, kTolerance * piece.poly.size());
+}
+
+TEST(PointQueryTest, PlainGjkWithoutFeatureRegionsMatchesBruteForce) {
+  // Case: the region tests resolve most queries on small pieces, so GJK is
+  // checked alone too, on every kind of piece: hulls, boxes, prisms, flat.
+  runRandomCases(11, 100, 200, [](RandomPieces& r) { return r.hull(r.uniformInt(4, 100)); }, plainGjkAgrees);
+  runRandomCases(12, 50, 200, [](RandomPieces& r) { return r.box(); }, plainGjkAgrees);
+  runRandomCases(13, 50, 200, [](RandomPieces& r) { return r.prism(); }, plainGjkAgrees);
+  runRandomCases(14, 50, 200, [](RandomPieces& r) { return r.flatPolygon(r.uniformInt(3, 20)); }, plainGjkAgrees);
+}
+
 TEST(PointQueryTest, BenchmarkInputsMatchBruteForce) {
   // Case: the benchmark's own inputs (tests/support/scenarios.hpp): every
   // catalogue shape x every query set, 1,000 points each at the default
