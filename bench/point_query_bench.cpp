@@ -4,7 +4,10 @@
 // Runs:
 //   PointQuery/<method>/<shape>/<set>      method: wtc, bullet, fcl, brute
 //   PointQuery/wtc_maxdist/<shape>/<set>   max_distance = kWheelRadius, as the wheel queries
-//   PointQueryTolerance/<shape>/<tol>      wtc on the mixed set, relative_tolerance = tol
+//   PointQuery/wtc_gjk/<shape>/<set>       feature_regions off: the plain modified GJK
+//   PointQueryTolerance/<shape>/<tol>      plain GJK on the mixed set, relative_tolerance = tol
+//                                          (with the region tests on, most queries never
+//                                          reach GJK and the tolerance cannot act)
 // Each run cycles through kPointsPerRun pre-generated points, one query per
 // iteration, so the time per iteration is the time per query (throughput:
 // consecutive queries are independent). Counters, measured once per run on
@@ -250,13 +253,16 @@ void registerAll() {
       registerRun<BruteMethod>("PointQuery/brute" + suffix, shape, set, kNoLimit);
       registerRun<WtcMethod>("PointQuery/wtc_maxdist" + suffix, shape, set, kWheelRadius,
                              wtc::QueryOptions{.max_distance = kWheelRadius});
+      registerRun<WtcMethod>("PointQuery/wtc_gjk" + suffix, shape, set, kNoLimit,
+                             wtc::QueryOptions{.feature_regions = false});
     }
   }
   for (ShapeId shape : wtc::testing::kAllShapes) {
     for (int exponent = 3; exponent <= 12; ++exponent) {
       const double tolerance = std::pow(10.0, -exponent);
       registerRun<WtcMethod>("PointQueryTolerance/" + std::string(toString(shape)) + "/1e-" + std::to_string(exponent),
-                             shape, QuerySetId::kMixed, kNoLimit, wtc::QueryOptions{.relative_tolerance = tolerance});
+                             shape, QuerySetId::kMixed, kNoLimit,
+                             wtc::QueryOptions{.relative_tolerance = tolerance, .feature_regions = false});
     }
   }
 }

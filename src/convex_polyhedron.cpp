@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <set>
 #include <string>
 
@@ -39,32 +40,64 @@ Eigen::Vector3d newellNormal(const std::vector<Eigen::Vector3d>& local,
   return n;
 }
 
-// A closed, consistently oriented surface uses every directed edge (a, b)
-// exactly once and its reverse (b, a) exactly once.
-void checkClosed(const std::vector<std::vector<int>>& faces) {
-  struct Edge {
-    int a, b, face;
+// Twin of each face-edge (edge k of a face runs from its vertex k - 1 to
+// vertex k): the same edge run the other way in the neighbouring face. A
+// closed, consistently oriented surface has exactly one twin for every
+// edge and no edge twice in one direction; anything else is named. Small
+// pieces (terrain prisms: 18 face-edges) are matched by a direct scan in a
+// stack buffer, larger ones by sorting.
+void matchTwins(const std::vector<std::vector<int>>& faces, std::int32_t* twins) {
+  struct Directed {
+    std::int32_t from, to, face;
   };
-  std::vector<Edge> edges;
+  constexpr std::size_t kScanEdges = 64;
+  std::size_t total = 0;
+  for (const auto& face : faces) total += face.size();
+  Directed small[kScanEdges];
+  std::vector<Directed> large;
+  Directed* edges = small;
+  if (total > kScanEdges) {
+    large.resize(total);
+    edges = large.data();
+  }
+  std::size_t index = 0;
   for (std::size_t f = 0; f < faces.size(); ++f) {
-    for (std::size_t k = 0; k < faces[f].size(); ++k) {
-      edges.push_back({faces[f][k], faces[f][(k + 1) % faces[f].size()], static_cast<int>(f)});
+    const auto& face = faces[f];
+    for (std::size_t k = 0; k < face.size(); ++k) {
+      edges[index++] = {face[(k + face.size() - 1) % face.size()], face[k], static_cast<std::int32_t>(f)};
     }
   }
-  auto key = [](const Edge& e) { return std::pair{e.a, e.b}; };
-  std::sort(edges.begin(), edges.end(), [&](const Edge& x, const Edge& y) { return key(x) < key(y); });
-  auto name = [](const Edge& e) {
-    return "edge (" + std::to_string(e.a) + ", " + std::to_string(e.b) + ") of face " + std::to_string(e.face);
+  auto name = [](const Directed& e) {
+    return "edge (" + std::to_string(e.from) + ", " + std::to_string(e.to) + ") of face " + std::to_string(e.face);
   };
-  for (std::size_t k = 0; k < edges.size(); ++k) {
-    if (k + 1 < edges.size() && key(edges[k]) == key(edges[k + 1])) {
-      fail(name(edges[k]) + " is used twice in the same direction: faces overlap or are inconsistently oriented");
+  auto key = [](const Directed& e) { return std::pair{e.from, e.to}; };
+  std::vector<std::int32_t> order;  // large pieces: edge indices sorted by (from, to)
+  if (total > kScanEdges) {
+    order.resize(total);
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](std::int32_t x, std::int32_t y) { return key(edges[x]) < key(edges[y]); });
+  }
+  auto find = [&](std::int32_t from, std::int32_t to, std::size_t skip) -> std::int64_t {
+    if (total <= kScanEdges) {
+      for (std::size_t j = 0; j < total; ++j) {
+        if (j != skip && edges[j].from == from && edges[j].to == to) return static_cast<std::int64_t>(j);
+      }
+      return -1;
     }
-    const Edge reverse{edges[k].b, edges[k].a, 0};
-    if (!std::binary_search(edges.begin(), edges.end(), reverse,
-                            [&](const Edge& x, const Edge& y) { return key(x) < key(y); })) {
-      fail(name(edges[k]) + " has no opposite edge: the mesh is not closed");
+    auto it = std::lower_bound(order.begin(), order.end(), std::pair{from, to},
+                               [&](std::int32_t x, const std::pair<std::int32_t, std::int32_t>& k) { return key(edges[x]) < k; });
+    for (; it != order.end() && key(edges[*it]) == std::pair{from, to}; ++it) {
+      if (static_cast<std::size_t>(*it) != skip) return *it;
     }
+    return -1;
+  };
+  for (std::size_t i = 0; i < total; ++i) {
+    if (find(edges[i].from, edges[i].to, i) >= 0) {
+      fail(name(edges[i]) + " is used twice in the same direction: faces overlap or are inconsistently oriented");
+    }
+    const std::int64_t twin = find(edges[i].to, edges[i].from, total);
+    if (twin < 0) fail(name(edges[i]) + " has no opposite edge: the mesh is not closed");
+    twins[i] = static_cast<std::int32_t>(twin);
   }
 }
 
@@ -96,7 +129,6 @@ ConvexPolyhedron ConvexPolyhedron::fromMesh(const std::vector<Eigen::Vector3d>& 
       }
     }
   }
-  checkClosed(faces);
   // A two-faced mesh is a flat polygon given from both sides.
   const bool flat = faces.size() == 2;
   return assemble(vertices, faces, flat, nullptr);
@@ -208,33 +240,9 @@ ConvexPolyhedron ConvexPolyhedron::assemble(const std::vector<Eigen::Vector3d>& 
   std::size_t total = 0;
   for (const auto& face : faces) topo.push_back(static_cast<std::int32_t>(total += face.size()));
   for (const auto& face : faces) topo.insert(topo.end(), face.begin(), face.end());
-  // Twin of each face-edge: the same edge in the neighbouring face, run the
-  // other way (the surface is closed, so every edge has one).
-  {
-    struct Directed {
-      std::int32_t from, to, index;
-    };
-    std::vector<Directed> directed;
-    directed.reserve(total);
-    std::int32_t index = 0;
-    for (const auto& face : faces) {
-      for (std::size_t k = 0; k < face.size(); ++k, ++index) {
-        directed.push_back({face[(k + face.size() - 1) % face.size()], face[k], index});
-      }
-    }
-    auto less = [](const Directed& x, const Directed& y) { return std::pair{x.from, x.to} < std::pair{y.from, y.to}; };
-    std::vector<Directed> sorted = directed;
-    std::sort(sorted.begin(), sorted.end(), less);
-    const std::size_t twins_at = topo.size();
-    topo.resize(topo.size() + total, -1);
-    for (const Directed& e : directed) {
-      const auto twin = std::lower_bound(sorted.begin(), sorted.end(), Directed{e.to, e.from, 0}, less);
-      if (twin == sorted.end() || twin->from != e.to || twin->to != e.from) {
-        fail("edge (" + std::to_string(e.from) + ", " + std::to_string(e.to) + ") has no opposite edge: the mesh is not closed");
-      }
-      topo[twins_at + e.index] = twin->index;
-    }
-  }
+  const std::size_t twins_at = topo.size();
+  topo.resize(twins_at + total);
+  matchTwins(faces, topo.data() + twins_at);
   poly.has_adjacency_ = nv >= tolerance::kHillClimbMinVertices;
   if (poly.has_adjacency_) {
     std::vector<std::set<int>> neighbors(nv);

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Markdown tables from `wtc_bench_query --benchmark_format=json` output.
+"""Markdown tables from `wtc_bench_query` or `wtc_bench_wheel` JSON output.
 
     build/bench/wtc_bench_query --benchmark_repetitions=5 \
         --benchmark_report_aggregates_only=true --benchmark_format=json > bench.json
@@ -21,7 +21,7 @@ import statistics
 import sys
 from collections import defaultdict
 
-METHODS = ["wtc", "wtc_maxdist", "bullet", "fcl", "brute"]
+METHODS = ["wtc", "wtc_maxdist", "wtc_gjk", "bullet", "fcl", "brute"]
 SCALE_TO_NS = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}
 
 
@@ -61,9 +61,9 @@ def point_query_table(runs):
                 order.append(key)
             rows[key][parts[1]] = value
     lines = [
-        "| shape/set | wtc ns | wtc max_distance ns | bullet ns | fcl ns | brute ns "
+        "| shape/set | wtc ns | wtc max_distance ns | plain GJK ns | bullet ns | fcl ns | brute ns "
         "| bullet/wtc | fcl/wtc | wtc error | bullet error | fcl error | failures wtc/bullet/fcl |",
-        "|---|" + "---:|" * 11,
+        "|---|" + "---:|" * 12,
     ]
     for shape, qset in order:
         r = rows[(shape, qset)]
@@ -73,7 +73,7 @@ def point_query_table(runs):
                          for m in ("wtc", "bullet", "fcl"))
         ratio = lambda m: f"{ns[m] / ns['wtc']:.1f}×" if ns[m] and ns["wtc"] else "–"
         lines.append(
-            f"| {shape}/{qset} | {fmt_ns(ns['wtc'])} | {fmt_ns(ns['wtc_maxdist'])} "
+            f"| {shape}/{qset} | {fmt_ns(ns['wtc'])} | {fmt_ns(ns['wtc_maxdist'])} | {fmt_ns(ns['wtc_gjk'])} "
             f"| {fmt_ns(ns['bullet'])} | {fmt_ns(ns['fcl'])} | {fmt_ns(ns['brute'])} "
             f"| {ratio('bullet')} | {ratio('fcl')} | {fmt_err(err['wtc'])} "
             f"| {fmt_err(err['bullet'])} | {fmt_err(err['fcl'])} | {fails} |")
@@ -102,6 +102,45 @@ def tolerance_table(runs):
     return lines
 
 
+def wheel_table(runs):
+    """WheelQuery/WheelIndex/WheelContacts/TerrainBuild of wtc_bench_wheel."""
+    rows = defaultdict(dict)  # (terrain, pieces, motion) -> column -> (ns, counters)
+    order = []
+    for name, value in runs.items():
+        parts = name.split("/")
+        if parts[0] in ("WheelQuery", "WheelIndex") and len(parts) >= 4:
+            key, column = (parts[2], int(parts[3]), parts[4] if len(parts) > 4 else "rolling"), f"{parts[0]}/{parts[1]}"
+        elif parts[0] == "WheelContacts" and len(parts) >= 3:
+            key, column = (parts[1], int(parts[2]), parts[3] if len(parts) > 3 else "rolling"), "contacts"
+        elif parts[0] == "TerrainBuild" and len(parts) >= 3:  # .../iterations:1/manual_time
+            for motion in ("rolling", "cold"):
+                rows[(parts[1], int(parts[2]), motion)]["build"] = value
+            continue
+        else:
+            continue
+        if key not in order:
+            order.append(key)
+        rows[key][column] = value
+    if not order:
+        return []
+    lines = ["| terrain | pieces | wheel | contact step ns | query wtc / fcl / bullet ns | index wtc / fcl / bullet ns "
+             "| index fcl/wtc | index bullet/wtc | bytes/piece (pieces + index) | build ms |",
+             "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|"]
+    for key in sorted(order, key=lambda k: (k[0], k[2] != "rolling", k[1])):
+        r = rows[key]
+        ns = lambda c: r[c][0] if c in r else None
+        trio = lambda family: " / ".join(fmt_ns(ns(f"{family}/{i}")) for i in ("wtc", "fcl", "bullet"))
+        ratio = lambda i: (f"{ns(f'WheelIndex/{i}') / ns('WheelIndex/wtc'):.1f}×"
+                           if ns(f"WheelIndex/{i}") and ns("WheelIndex/wtc") else "–")
+        any_run = next((v for c, v in r.items() if c != "build"), None)
+        memory = (f"{any_run[1]['piece_bytes']:.0f} + {any_run[1]['index_bytes']:.0f}"
+                  if any_run and "piece_bytes" in any_run[1] else "–")
+        build = f"{r['build'][0] / 1e6:.0f}" if "build" in r else "–"
+        lines.append(f"| {key[0]} | {key[1]:,} | {key[2]} | {fmt_ns(ns('contacts'))} | {trio('WheelQuery')} "
+                     f"| {trio('WheelIndex')} | {ratio('fcl')} | {ratio('bullet')} | {memory} | {build} |")
+    return lines
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("json", nargs="?", help="benchmark JSON (default: stdin)")
@@ -111,10 +150,14 @@ def main():
     with (open(args.json) if args.json else sys.stdin) as f:
         data = json.load(f)
     runs = load_runs(data, f"{args.time}_time")
+    wheel = wheel_table(runs)
+    if wheel:
+        print("\n".join(wheel))
+        return
     print("\n".join(point_query_table(runs)))
     tolerance = tolerance_table(runs)
     if tolerance:
-        print("\nwtc on the mixed set by relative tolerance; errors x piece size, "
+        print("\nplain GJK on the mixed set by relative tolerance; errors x piece size, "
               "error: signed distance, point error: closest point (outside points)\n")
         print("\n".join(tolerance))
 
