@@ -1,8 +1,11 @@
-// Builds a box with the installed WTC and queries one point: returns 0 only
-// when the answer is right, so the install test fails on a broken package.
+// Builds a box with the installed WTC and queries one point, and reads a
+// terrain file through wtc::io: returns 0 only when both answers are right,
+// so the install test fails on a broken package.
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <wtc/convex_polyhedron.hpp>
+#include <wtc/io/terrain_file.hpp>
 #include <wtc/point_query.hpp>
 
 int main() {
@@ -13,5 +16,13 @@ int main() {
                   (q.closest_point - Eigen::Vector3d(1.0, 0.5, 1.0)).norm() < 1e-12;
   std::printf("signed distance %.17g m, status %s: %s\n", q.signed_distance, wtc::toString(q.status),
               ok ? "ok" : "WRONG");
-  return ok ? 0 : 1;
+  if (!ok) return 1;
+  // wtc::io: a terrain file that does not exist is a clear error, not a crash.
+  try {
+    wtc::io::loadTerrain("no/such/terrain.yaml");
+  } catch (const std::exception& error) {
+    std::printf("wtc::io: %s\n", error.what());
+    return 0;
+  }
+  return 1;
 }
