@@ -161,6 +161,7 @@ Fixture& fixture(const std::string& kind, long pieces) {
 
 // Candidate gathering, one adapter per index.
 struct Gather {
+  explicit Gather(Fixture& fixture) : f(fixture) {}
   Fixture& f;
   std::vector<wtc::PieceId> out;
   std::unique_ptr<fcl::CollisionObjectd> fcl_wheel =
@@ -211,7 +212,7 @@ void wheelQuery(benchmark::State& state, std::string index, std::string kind, lo
                 std::string motion) {
   Fixture& f = fixture(kind, pieces);
   const std::vector<Vector3d>& path = f.path(motion);
-  Gather gather{f};
+  Gather gather(f);
   wtc::QueryOptions options;
   options.max_distance = kRadius;
   double candidates = 0, contacts = 0;

@@ -270,13 +270,26 @@ std::span<const std::int32_t> ConvexPolyhedron::faceVertices(int f) const {
   return {list + start[f], list + start[f + 1]};
 }
 
-std::int32_t ConvexPolyhedron::faceEdgeNext(std::int32_t face_edge) const {
-  // The face holding it: face starts are ascending (a short scan for the
-  // small pieces of ground, which have 5 to 8 faces).
+int ConvexPolyhedron::faceOfEdge(std::int32_t face_edge) const {
+  // Face starts are ascending: a short scan for the small pieces of ground
+  // (5 to 8 faces), a binary search for large ones.
   const std::int32_t* start = topology_.data();
-  int f = 0;
-  while (start[f + 1] <= face_edge) ++f;
-  return face_edge + 1 < start[f + 1] ? face_edge + 1 : start[f];
+  if (face_count_ <= 16) {
+    int f = 0;
+    while (start[f + 1] <= face_edge) ++f;
+    return f;
+  }
+  return static_cast<int>(std::upper_bound(start, start + face_count_ + 1, face_edge) - start) - 1;
+}
+
+std::int32_t ConvexPolyhedron::faceEdgeNext(std::int32_t face_edge) const {
+  const int f = faceOfEdge(face_edge);
+  return face_edge + 1 < topology_[f + 1] ? face_edge + 1 : topology_[f];
+}
+
+std::int32_t ConvexPolyhedron::faceEdgePrev(std::int32_t face_edge) const {
+  const int f = faceOfEdge(face_edge);
+  return face_edge > topology_[f] ? face_edge - 1 : topology_[f + 1] - 1;
 }
 
 std::span<const std::int32_t> ConvexPolyhedron::vertexNeighbors(int i) const {

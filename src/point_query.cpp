@@ -22,12 +22,13 @@ using detail::FaceRegion;
 constexpr double kMaxCoordinateM = 1e150;
 
 void validate(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOptions& o) {
-  if (!isFinite(p)) {
-    throw InvalidInputError("wtc::queryPoint: query point p = " + formatVector(p) + " is not finite");
-  }
-  if ((p - poly.origin()).lpNorm<Eigen::Infinity>() > kMaxCoordinateM) {
+  // One comparison catches NaN, infinity and overflow (NaN compares false);
+  // the message tells them apart off the hot path.
+  const Vector3d q = (p - poly.origin()).cwiseAbs();
+  if (!(q.x() <= kMaxCoordinateM && q.y() <= kMaxCoordinateM && q.z() <= kMaxCoordinateM)) {
     throw InvalidInputError("wtc::queryPoint: query point p = " + formatVector(p) +
-                            " is more than 1e150 m from the piece; its squared distance overflows double");
+                            (isFinite(p) ? " is more than 1e150 m from the piece; its squared distance overflows double"
+                                         : " is not finite"));
   }
   if (!(o.relative_tolerance > 0.0 && o.relative_tolerance < 1.0)) {
     throw InvalidInputError("wtc::queryPoint: options.relative_tolerance = " +
@@ -65,22 +66,22 @@ PointQuery beyondBox(const ConvexPolyhedron& poly, const Vector3d& p, double dis
   return r;
 }
 
-void seed(const ConvexPolyhedron& poly, const Vector3d& q, const FaceRegion& region, detail::Simplex& s) {
-  s.count = region.count;
-  for (int m = 0; m < region.count; ++m) {
-    s.vertex[m] = region.seed[m];
-    s.point[m] = poly.vertexLocal(region.seed[m]) - q;
+// A simplex of the given polyhedron vertices, as points of poly - p.
+detail::Simplex simplexOf(const ConvexPolyhedron& poly, const Vector3d& q, const std::int32_t* vertices, int count) {
+  detail::Simplex s;
+  s.count = count;
+  for (int m = 0; m < count; ++m) {
+    s.vertex[m] = vertices[m];
+    s.point[m] = poly.vertexLocal(vertices[m]) - q;
   }
+  return s;
 }
 
-bool seedFromCache(const ConvexPolyhedron& poly, const Vector3d& q, const QueryCache& cache, detail::Simplex& s) {
+bool validCache(const ConvexPolyhedron& poly, const QueryCache& cache) {
   if (cache.count < 1 || cache.count > 3) return false;
   for (int m = 0; m < cache.count; ++m) {
     if (cache.vertex[m] < 0 || cache.vertex[m] >= poly.vertexCount()) return false;
-    s.vertex[m] = cache.vertex[m];
-    s.point[m] = poly.vertexLocal(cache.vertex[m]) - q;
   }
-  s.count = cache.count;
   return true;
 }
 
@@ -90,6 +91,28 @@ void store(const detail::Simplex& s, QueryCache* cache) {
   for (int m = 0; m < cache->count; ++m) cache->vertex[m] = s.vertex[m];
 }
 
+// The exact answer of an edge or vertex region: closest point `on` (local).
+PointQuery fromFeature(const ConvexPolyhedron& poly, const Vector3d& p, const Vector3d& q, const Vector3d& on,
+                       double plane, int face, const FaceRegion& region, QueryCache* cache) {
+  const Vector3d v = on - q;
+  const double dist = v.norm();
+  if (dist <= tolerance::kTouchingRelative * poly.size()) {
+    return fromPlane(poly, p, std::max(plane, 0.0), face, QueryStatus::kOutside);
+  }
+  if (cache != nullptr) {
+    cache->count = region.count;
+    cache->vertex[0] = region.seed[0];
+    cache->vertex[1] = region.seed[1];
+  }
+  PointQuery r;
+  r.signed_distance = dist;
+  r.closest_point = p + v;
+  r.direction = v / dist;
+  r.normal = -r.direction;
+  r.status = QueryStatus::kOutside;
+  return r;
+}
+
 // GJK on poly - p from the seed simplex `s`, or from the cached simplex
 // when that starts nearer; `plane` and `face` are the plane bound's.
 PointQuery gjk(const ConvexPolyhedron& poly, const Vector3d& p, const Vector3d& q, double plane, int face,
@@ -97,8 +120,8 @@ PointQuery gjk(const ConvexPolyhedron& poly, const Vector3d& p, const Vector3d& 
   const double max_distance = options.max_distance;
   Vector3d v = detail::closestToOrigin(s);
   if (cache != nullptr) {
-    detail::Simplex warm;
-    if (seedFromCache(poly, q, *cache, warm)) {
+    if (validCache(poly, *cache)) {
+      detail::Simplex warm = simplexOf(poly, q, cache->vertex, cache->count);
       const Vector3d v_warm = detail::closestToOrigin(warm);
       if (v_warm.squaredNorm() < v.squaredNorm()) {
         s = warm;
@@ -202,49 +225,41 @@ PointQuery query(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOpt
 
   if (!options.feature_regions) {
     // Plain GJK from the nearest face's first three vertices.
-    detail::Simplex s;
-    const auto vertices = poly.faceVertices(face);
-    s.count = 3;
-    for (int m = 0; m < 3; ++m) {
-      s.vertex[m] = vertices[m];
-      s.point[m] = poly.vertexLocal(vertices[m]) - q;
-    }
+    detail::Simplex s = simplexOf(poly, q, poly.faceVertices(face).data(), 3);
     return gjk(poly, p, q, plane, face, options, s, cache);
   }
 
-  // 3. The nearest face's region: inside it, the projection is exact.
-  const FaceRegion region = detail::classify(poly, q, face);
-  if (region.inside) {
-    if (cache != nullptr) cache->count = 0;
-    // max: on a flat piece both faces can read -roundoff on the polygon.
-    return fromPlane(poly, p, std::max(plane, 0.0), face, QueryStatus::kOutside);
+  // 3-4. Exact Voronoi-region tests: the nearest face, then the edge or
+  // vertex of it that p lies beyond, then (once) the neighbouring face across
+  // that edge. Each either answers exactly or hands on a better guess.
+  int at = face;  // the face the walk is on
+  FaceRegion region = detail::classify(poly, q, at);
+  for (int hop = 0;; ++hop) {
+    const double face_value = hop == 0 ? plane : poly.faceNormal(at).dot(q) - poly.pd()[at];
+    if (region.inside && face_value >= 0.0) {
+      if (cache != nullptr) cache->count = 0;
+      // max: on a flat piece both faces can read -roundoff on the polygon.
+      return fromPlane(poly, p, std::max(face_value, 0.0), at, QueryStatus::kOutside);
+    }
+    if (region.inside) break;
+    Vector3d on_feature;
+    const detail::EdgeOutcome edge = detail::edgeRegion(poly, q, region, &on_feature);
+    if (edge == detail::EdgeOutcome::kClosest) return fromFeature(poly, p, q, on_feature, plane, face, region, cache);
+    FaceRegion vertex = region;
+    if (edge == detail::EdgeOutcome::kPastStart) vertex = detail::vertexAt(poly, poly.faceEdgePrev(region.only_edge));
+    if (edge == detail::EdgeOutcome::kPastEnd) vertex = detail::vertexAt(poly, region.only_edge);
+    if (detail::vertexRegion(poly, q, vertex, &on_feature)) {
+      return fromFeature(poly, p, q, on_feature, plane, face, vertex, cache);
+    }
+    if (edge != detail::EdgeOutcome::kTwinFace || hop > 0) break;
+    at = poly.faceOfEdge(poly.faceEdgeTwin(region.only_edge));
+    region = detail::classify(poly, q, at);
   }
 
-  // 4. The crossed edge's or vertex's region: its closest point is exact.
-  Vector3d on_feature;
-  if (detail::edgeRegion(poly, q, region, &on_feature) || detail::vertexRegion(poly, q, region, &on_feature)) {
-    const Vector3d v = on_feature - q;
-    const double dist = v.norm();
-    if (dist <= tolerance::kTouchingRelative * poly.size()) {
-      return fromPlane(poly, p, std::max(plane, 0.0), face, QueryStatus::kOutside);
-    }
-    if (cache != nullptr) {
-      cache->count = region.count;
-      cache->vertex[0] = region.seed[0];
-      cache->vertex[1] = region.seed[1];
-    }
-    PointQuery r;
-    r.signed_distance = dist;
-    r.closest_point = p + v;
-    r.direction = v / dist;
-    r.normal = -r.direction;
-    r.status = QueryStatus::kOutside;
-    return r;
-  }
-
-  // 5. GJK on poly - p, from the crossed edge or vertex.
-  detail::Simplex s;
-  seed(poly, q, region, s);
+  // 5. GJK on poly - p, from the last crossed edge or vertex (the first
+  // triangle of the face the walk ended on, if it ended inside one).
+  detail::Simplex s = region.inside ? simplexOf(poly, q, poly.faceVertices(at).data(), 3)
+                                    : simplexOf(poly, q, region.seed, region.count);
   return gjk(poly, p, q, plane, face, options, s, cache);
 }
 
