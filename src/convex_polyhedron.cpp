@@ -287,11 +287,6 @@ std::int32_t ConvexPolyhedron::faceEdgeNext(std::int32_t face_edge) const {
   return face_edge + 1 < topology_[f + 1] ? face_edge + 1 : topology_[f];
 }
 
-std::int32_t ConvexPolyhedron::faceEdgePrev(std::int32_t face_edge) const {
-  const int f = faceOfEdge(face_edge);
-  return face_edge > topology_[f] ? face_edge - 1 : topology_[f + 1] - 1;
-}
-
 std::span<const std::int32_t> ConvexPolyhedron::vertexNeighbors(int i) const {
   const std::int32_t* start = topology_.data() + face_count_ + 1 + 2 * topology_[face_count_];
   const std::int32_t* list = start + vertex_count_ + 1;

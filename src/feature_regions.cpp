@@ -49,27 +49,17 @@ FaceRegion classify(const ConvexPolyhedron& poly, const Vector3d& q, int face) {
 // the edge. Inside it the closest point is q's projection on the edge,
 // exactly. `region` crossed only this edge of f, so f's side is known; the
 // twin face-edge gives g's. Returns false when q is not in the region.
-EdgeOutcome edgeRegion(const ConvexPolyhedron& poly, const Vector3d& q, const FaceRegion& region, Vector3d* closest) {
-  if (region.only_edge < 0) return EdgeOutcome::kNone;
+bool edgeRegion(const ConvexPolyhedron& poly, const Vector3d& q, const FaceRegion& region, Vector3d* closest) {
+  if (region.only_edge < 0) return false;
   const double* twin = poly.faceEdgePlane(poly.faceEdgeTwin(region.only_edge));
-  if (twin[0] * q.x() + twin[1] * q.y() + twin[2] * q.z() > twin[3]) return EdgeOutcome::kTwinFace;
+  if (twin[0] * q.x() + twin[1] * q.y() + twin[2] * q.z() > twin[3]) return false;
   const Vector3d a = poly.vertexLocal(region.seed[0]);
   const Vector3d ab = poly.vertexLocal(region.seed[1]) - a;
   const double along = (q - a).dot(ab);
   const double length2 = ab.squaredNorm();
-  if (along < 0.0) return EdgeOutcome::kPastStart;
-  if (along > length2) return EdgeOutcome::kPastEnd;
+  if (along < 0.0 || along > length2) return false;
   *closest = a + (along / length2) * ab;
-  return EdgeOutcome::kClosest;
-}
-
-FaceRegion vertexAt(const ConvexPolyhedron& poly, std::int32_t into) {
-  FaceRegion region;
-  region.inside = false;
-  region.count = 1;
-  region.seed[0] = poly.faceEdgeEnd(into);
-  region.into_vertex = into;
-  return region;
+  return true;
 }
 
 // The Voronoi region of vertex a: (q - a) . (c - a) <= 0 for every edge

@@ -22,22 +22,10 @@ struct FaceRegion {
 /// Classifies q (local frame) against face `face`'s edges.
 FaceRegion classify(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, int face);
 
-/// Where q lies against the one edge (a, b) `region` crossed.
-enum class EdgeOutcome {
-  kNone,       // no single crossed edge
-  kClosest,    // in the edge's Voronoi region: *closest is exact
-  kPastStart,  // beyond the plane through a normal to the edge: try vertex a
-  kPastEnd,    // beyond the plane through b: try vertex b
-  kTwinFace,   // on the neighbouring face's side of the edge: try that face
-};
-
-/// Tests q (local) against the Voronoi region of the one edge `region`
-/// crossed.
-EdgeOutcome edgeRegion(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, const FaceRegion& region,
-                       Eigen::Vector3d* closest);
-
-/// The region of the vertex that face-edge `into` ends at.
-FaceRegion vertexAt(const ConvexPolyhedron& poly, std::int32_t into);
+/// True, with the closest point (local), when q is in the Voronoi region of
+/// the one edge `region` crossed.
+bool edgeRegion(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, const FaceRegion& region,
+                Eigen::Vector3d* closest);
 
 /// True, with the closest point (local), when q is in the Voronoi region of
 /// the vertex `region` points to.

@@ -229,37 +229,22 @@ PointQuery query(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOpt
     return gjk(poly, p, q, plane, face, options, s, cache);
   }
 
-  // 3-4. Exact Voronoi-region tests: the nearest face, then the edge or
-  // vertex of it that p lies beyond, then (once) the neighbouring face across
-  // that edge. Each either answers exactly or hands on a better guess.
-  int at = face;  // the face the walk is on
-  FaceRegion region = detail::classify(poly, q, at);
-  for (int hop = 0;; ++hop) {
-    const double face_value = hop == 0 ? plane : poly.faceNormal(at).dot(q) - poly.pd()[at];
-    if (region.inside && face_value >= 0.0) {
-      if (cache != nullptr) cache->count = 0;
-      // max: on a flat piece both faces can read -roundoff on the polygon.
-      return fromPlane(poly, p, std::max(face_value, 0.0), at, QueryStatus::kOutside);
-    }
-    if (region.inside) break;
-    Vector3d on_feature;
-    const detail::EdgeOutcome edge = detail::edgeRegion(poly, q, region, &on_feature);
-    if (edge == detail::EdgeOutcome::kClosest) return fromFeature(poly, p, q, on_feature, plane, face, region, cache);
-    FaceRegion vertex = region;
-    if (edge == detail::EdgeOutcome::kPastStart) vertex = detail::vertexAt(poly, poly.faceEdgePrev(region.only_edge));
-    if (edge == detail::EdgeOutcome::kPastEnd) vertex = detail::vertexAt(poly, region.only_edge);
-    if (detail::vertexRegion(poly, q, vertex, &on_feature)) {
-      return fromFeature(poly, p, q, on_feature, plane, face, vertex, cache);
-    }
-    if (edge != detail::EdgeOutcome::kTwinFace || hop > 0) break;
-    at = poly.faceOfEdge(poly.faceEdgeTwin(region.only_edge));
-    region = detail::classify(poly, q, at);
+  // 3. The nearest face's region: inside it, the projection is exact.
+  const FaceRegion region = detail::classify(poly, q, face);
+  if (region.inside) {
+    if (cache != nullptr) cache->count = 0;
+    // max: on a flat piece both faces can read -roundoff on the polygon.
+    return fromPlane(poly, p, std::max(plane, 0.0), face, QueryStatus::kOutside);
   }
 
-  // 5. GJK on poly - p, from the last crossed edge or vertex (the first
-  // triangle of the face the walk ended on, if it ended inside one).
-  detail::Simplex s = region.inside ? simplexOf(poly, q, poly.faceVertices(at).data(), 3)
-                                    : simplexOf(poly, q, region.seed, region.count);
+  // 4. The crossed edge's or vertex's region: its closest point is exact.
+  Vector3d on_feature;
+  if (detail::edgeRegion(poly, q, region, &on_feature) || detail::vertexRegion(poly, q, region, &on_feature)) {
+    return fromFeature(poly, p, q, on_feature, plane, face, region, cache);
+  }
+
+  // 5. GJK on poly - p, from the crossed edge or vertex.
+  detail::Simplex s = simplexOf(poly, q, region.seed, region.count);
   return gjk(poly, p, q, plane, face, options, s, cache);
 }
 

@@ -116,8 +116,6 @@ class ConvexPolyhedron {
   int faceOfEdge(std::int32_t face_edge) const;
   /// The next face-edge of the same face (it starts where `face_edge` ends).
   std::int32_t faceEdgeNext(std::int32_t face_edge) const;
-  /// The previous face-edge of the same face (it ends where `face_edge` starts).
-  std::int32_t faceEdgePrev(std::int32_t face_edge) const;
   /// The vertex a face-edge ends at.
   std::int32_t faceEdgeEnd(std::int32_t face_edge) const { return topology_[face_count_ + 1 + face_edge]; }
   /// Side plane of a face-edge by index (4 doubles: s, s . a).
