@@ -17,15 +17,6 @@ namespace {
   throw InvalidInputError("wtc::ConvexPolyhedron::fromMesh: " + what);
 }
 
-Aabb boundsOf(const std::vector<Eigen::Vector3d>& vertices) {
-  Aabb box{vertices.front(), vertices.front()};
-  for (const auto& v : vertices) {
-    box.min = box.min.cwiseMin(v);
-    box.max = box.max.cwiseMax(v);
-  }
-  return box;
-}
-
 // Newell's method: the area-weighted normal of a polygon, robust for
 // polygons that are planar only to roundoff (merged hull facets).
 Eigen::Vector3d newellNormal(const std::vector<Eigen::Vector3d>& local,
@@ -153,7 +144,7 @@ ConvexPolyhedron ConvexPolyhedron::assemble(const std::vector<Eigen::Vector3d>& 
                                             const std::vector<std::vector<int>>& faces, bool flat,
                                             const std::vector<Eigen::Vector3d>* hull_normals) {
   ConvexPolyhedron poly;
-  poly.bounds_ = boundsOf(vertices);
+  poly.bounds_ = Aabb::of(vertices);
   poly.origin_ = poly.bounds_.center();
   poly.size_ = poly.bounds_.extent().norm();
   if (!(poly.size_ > 0.0) || !std::isfinite(poly.size_)) {

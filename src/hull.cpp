@@ -159,11 +159,7 @@ ConvexPolyhedron ConvexPolyhedron::fromPoints(const std::vector<Eigen::Vector3d>
                               " is not finite");
     }
   }
-  Aabb box{points.front(), points.front()};
-  for (const auto& p : points) {
-    box.min = box.min.cwiseMin(p);
-    box.max = box.max.cwiseMax(p);
-  }
+  const Aabb box = Aabb::of(points);
   const Eigen::Vector3d origin = box.center();
   const double size = box.extent().norm();
   std::vector<Eigen::Vector3d> local;

@@ -5,37 +5,22 @@
 // below zero at small slip) and f_r >= 0 (resistance never drives the wheel).
 #include "wtc/material.hpp"
 
-#include <cmath>
-#include <sstream>
 #include <string>
 
+#include "builder_support.hpp"
 #include "wtc/error.hpp"
 
 namespace wtc {
-namespace {
-
-enum class Bound { kPositive, kNonNegative };
-
-void check(const Material& material, const std::string& where, const char* field, double value, Bound bound) {
-  const bool ok = std::isfinite(value) && (bound == Bound::kPositive ? value > 0.0 : value >= 0.0);
-  if (ok) return;
-  std::ostringstream out;
-  out.precision(17);
-  out << "wtc::Material '" << material.name << "' (" << where << "): " << field << " = " << value
-      << " must be finite and " << (bound == Bound::kPositive ? "> 0" : ">= 0") << " (dimensionless)";
-  throw InvalidInputError(out.str());
-}
-
-}  // namespace
 
 void validate(const Material& material, const std::string& where) {
   if (material.name.empty()) {
     throw InvalidInputError("wtc::Material (" + where + "): the name is empty");
   }
-  check(material, where, "mu_max", material.mu_max, Bound::kNonNegative);
-  check(material, where, "s1", material.s1, Bound::kPositive);
-  check(material, where, "s2", material.s2, Bound::kNonNegative);
-  check(material, where, "rolling_resistance", material.rolling_resistance, Bound::kNonNegative);
+  const std::string context = "wtc::Material '" + material.name + "' (" + where + ")";
+  detail::requireNonNegative(material.mu_max, context.c_str(), "mu_max", "dimensionless");
+  detail::requirePositive(material.s1, context.c_str(), "s1", "dimensionless");
+  detail::requireNonNegative(material.s2, context.c_str(), "s2", "dimensionless");
+  detail::requireNonNegative(material.rolling_resistance, context.c_str(), "rolling_resistance", "dimensionless");
 }
 
 }  // namespace wtc

@@ -56,14 +56,22 @@ PointQuery fromPlane(const ConvexPolyhedron& poly, const Vector3d& p, double bou
   return r;
 }
 
-PointQuery beyondBox(const ConvexPolyhedron& poly, const Vector3d& p, double distance) {
+// A result from the vector v = closest point - p, of length dist > 0.
+PointQuery toward(const Vector3d& p, const Vector3d& v, double dist, double signed_distance, QueryStatus status,
+                  int iterations = 0) {
   PointQuery r;
-  r.signed_distance = distance;
-  r.closest_point = p.cwiseMax(poly.bounds().min).cwiseMin(poly.bounds().max);
-  r.direction = (r.closest_point - p) / distance;
+  r.signed_distance = signed_distance;
+  r.closest_point = p + v;
+  r.direction = v / dist;
   r.normal = -r.direction;
-  r.status = QueryStatus::kBeyond;
+  r.iterations = iterations;
+  r.status = status;
   return r;
+}
+
+PointQuery beyondBox(const ConvexPolyhedron& poly, const Vector3d& p, double distance) {
+  const Vector3d v = p.cwiseMax(poly.bounds().min).cwiseMin(poly.bounds().max) - p;
+  return toward(p, v, distance, distance, QueryStatus::kBeyond);
 }
 
 // A simplex of the given polyhedron vertices, as points of poly - p.
@@ -104,13 +112,7 @@ PointQuery fromFeature(const ConvexPolyhedron& poly, const Vector3d& p, const Ve
     cache->vertex[0] = region.seed[0];
     cache->vertex[1] = region.seed[1];
   }
-  PointQuery r;
-  r.signed_distance = dist;
-  r.closest_point = p + v;
-  r.direction = v / dist;
-  r.normal = -r.direction;
-  r.status = QueryStatus::kOutside;
-  return r;
+  return toward(p, v, dist, dist, QueryStatus::kOutside);
 }
 
 // GJK on poly - p from the seed simplex `s`, or from the cached simplex
@@ -149,33 +151,33 @@ PointQuery gjk(const ConvexPolyhedron& poly, const Vector3d& p, const Vector3d& 
     }
     return true;
   };
-  PointQuery r;
-  r.status = QueryStatus::kIterationLimit;
+  QueryStatus status = QueryStatus::kIterationLimit;
+  int iterations = 0;
   for (;;) {
     if (s.count == 4 || dist <= touching) {
       // On the surface to roundoff: the face normal is the only stable direction.
       store(s, cache);
       PointQuery on = fromPlane(poly, p, std::max(plane, 0.0), face, QueryStatus::kOutside);
-      on.iterations = r.iterations;
+      on.iterations = iterations;
       return on;
     }
     if (onNearestFace() || certified()) {
-      r.status = QueryStatus::kOutside;
+      status = QueryStatus::kOutside;
       break;
     }
-    if (r.iterations == options.max_iterations) break;
+    if (iterations == options.max_iterations) break;
     const int next = poly.supportLocal(-v, s.vertex[0]);
-    ++r.iterations;
+    ++iterations;
     const Vector3d w = poly.vertexLocal(next) - q;
     lower = std::max(lower, v.dot(w) / dist);  // v . x >= v . w for all x in poly - p
     if (lower > max_distance) {
-      r.status = QueryStatus::kBeyond;
+      status = QueryStatus::kBeyond;
       break;
     }
     bool known = false;
     for (int m = 0; m < s.count; ++m) known |= s.vertex[m] == next;
     if (known || certified()) {
-      r.status = QueryStatus::kOutside;  // no new vertex: exact on a polytope
+      status = QueryStatus::kOutside;  // no new vertex: exact on a polytope
       break;
     }
     detail::Simplex grown = s;
@@ -187,7 +189,7 @@ PointQuery gjk(const ConvexPolyhedron& poly, const Vector3d& p, const Vector3d& 
     if (!(dist_next < dist) && grown.count != 4) {
       // GJK decreases |v| strictly in exact arithmetic; no decrease means
       // roundoff has taken over (two coplanar triangles taking turns).
-      r.status = QueryStatus::kOutside;
+      status = QueryStatus::kOutside;
       break;
     }
     s = grown;
@@ -195,11 +197,7 @@ PointQuery gjk(const ConvexPolyhedron& poly, const Vector3d& p, const Vector3d& 
     dist = dist_next;
   }
   store(s, cache);
-  r.signed_distance = r.status == QueryStatus::kBeyond ? lower : dist;
-  r.closest_point = p + v;
-  r.direction = v / dist;
-  r.normal = -r.direction;
-  return r;
+  return toward(p, v, dist, status == QueryStatus::kBeyond ? lower : dist, status, iterations);
 }
 
 PointQuery query(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOptions& options,

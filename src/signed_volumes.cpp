@@ -1,5 +1,7 @@
 #include "signed_volumes.hpp"
 
+#include "wtc/tolerances.hpp"
+
 #include <cmath>
 #include <limits>
 
@@ -37,7 +39,7 @@ Candidate better(const Candidate& a, const Candidate& b) {
 // vertices of one face) or a sliver triangle. Then every sub-simplex is
 // searched, which is always correct (each candidate is a point of the
 // simplex), only slower.
-constexpr double kDegenerateRelative = 1e3 * 2.220446049250313e-16;
+constexpr double kDegenerateRelative = 1e3 * tolerance::kRoundoff;
 
 // Triangle p[i], p[j], p[k].
 Candidate triangle(const Vector3d* p, int i, int j, int k) {

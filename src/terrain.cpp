@@ -88,26 +88,20 @@ void Terrain::buildIndex() {
   bounds_ = pieces_[0].bounds();
   for (PieceId i = 0; i < n; ++i) {
     centre[i] = pieces_[i].bounds().center();
-    bounds_.min = bounds_.min.cwiseMin(pieces_[i].bounds().min);
-    bounds_.max = bounds_.max.cwiseMax(pieces_[i].bounds().max);
+    bounds_.include(pieces_[i].bounds());
   }
   auto rangeBox = [&](std::int32_t begin, std::int32_t end) {
     Aabb box = pieces_[order_[begin]].bounds();
     for (std::int32_t k = begin + 1; k < end; ++k) {
-      box.min = box.min.cwiseMin(pieces_[order_[k]].bounds().min);
-      box.max = box.max.cwiseMax(pieces_[order_[k]].bounds().max);
+      box.include(pieces_[order_[k]].bounds());
     }
     return box;
   };
   auto split = [&](std::int32_t begin, std::int32_t end) {
-    Eigen::Vector3d lo = centre[order_[begin]];
-    Eigen::Vector3d hi = lo;
-    for (std::int32_t k = begin + 1; k < end; ++k) {
-      lo = lo.cwiseMin(centre[order_[k]]);
-      hi = hi.cwiseMax(centre[order_[k]]);
-    }
+    Aabb centres{centre[order_[begin]], centre[order_[begin]]};
+    for (std::int32_t k = begin + 1; k < end; ++k) centres.include(centre[order_[k]]);
     int axis = 0;
-    (hi - lo).maxCoeff(&axis);
+    centres.extent().maxCoeff(&axis);
     const std::int32_t mid = begin + (end - begin) / 2;
     std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
                      [&](PieceId a, PieceId b) { return centre[a][axis] < centre[b][axis]; });

@@ -3,19 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "builder_support.hpp"
 #include "wtc/error.hpp"
 
 namespace wtc {
 
 void validate(const WheelGeometry& wheel, const std::string& where) {
-  auto check = [&](const char* field, double value) {
-    if (!std::isfinite(value) || !(value > 0.0)) {
-      throw InvalidInputError(where + ": wheel " + field + " = " + formatNumber(value) +
-                              " m must be finite and positive");
-    }
-  };
-  check("free_radius", wheel.free_radius);
-  check("tread_width", wheel.tread_width);
+  detail::requirePositive(wheel.free_radius, where.c_str(), "wheel free_radius", "m");
+  detail::requirePositive(wheel.tread_width, where.c_str(), "wheel tread_width", "m");
 }
 
 std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, const WheelGeometry& wheel,

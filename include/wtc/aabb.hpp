@@ -1,4 +1,6 @@
 #pragma once
+#include <iterator>
+
 #include <Eigen/Core>
 
 namespace wtc {
@@ -7,6 +9,23 @@ namespace wtc {
 struct Aabb {
   Eigen::Vector3d min{Eigen::Vector3d::Constant(0.0)};
   Eigen::Vector3d max{Eigen::Vector3d::Constant(0.0)};
+
+  /// The box of a non-empty point set.
+  template <typename Points>
+  static Aabb of(const Points& points) {
+    Aabb box{*std::begin(points), *std::begin(points)};
+    for (const Eigen::Vector3d& p : points) box.include(p);
+    return box;
+  }
+
+  void include(const Eigen::Vector3d& p) {
+    min = min.cwiseMin(p);
+    max = max.cwiseMax(p);
+  }
+  void include(const Aabb& box) {
+    min = min.cwiseMin(box.min);
+    max = max.cwiseMax(box.max);
+  }
 
   Eigen::Vector3d center() const { return 0.5 * (min + max); }
   Eigen::Vector3d extent() const { return max - min; }
