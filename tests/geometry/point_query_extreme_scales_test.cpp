@@ -27,31 +27,8 @@ using wtc::testing::BruteForceOracle;
 // (dimensionless): the accuracy target of issue 2.
 constexpr double kTolerance = 1e-9;
 
-// Queries around `poly` checked against the oracle: closest point (and all
-// other checks) within `tolerance_m`, signed distance within
-// `distance_tolerance_m`.
-void expectQueriesMatchOracle(const ConvexPolyhedron& poly, int count, double tolerance_m, double distance_tolerance_m,
-                              std::uint64_t seed = 21) {
-  wtc::test::RandomPieces random(seed);
-  const BruteForceOracle oracle(poly);
-  int failures = 0;
-  for (int i = 0; i < count; ++i) {
-    const Vector3d p = random.query(poly);
-    const PointQuery got = wtc::queryPoint(poly, p);
-    testing::AssertionResult result = wtc::test::agreesWithOracle(poly, oracle, p, got, tolerance_m);
-    const double exact = oracle.query(p).signed_distance;
-    if (result && std::abs(got.signed_distance - exact) > distance_tolerance_m) {
-      result = testing::AssertionFailure()
-               << "signed distance " << got.signed_distance << " at p = " << wtc::formatVector(p)
-               << " is off the oracle's " << exact << " by more than " << distance_tolerance_m << " m";
-    }
-    if (!result && ++failures <= 3) ADD_FAILURE() << "query " << i << ": " << result.message();
-  }
-  EXPECT_EQ(failures, 0) << "failed cases out of " << count;
-}
-
 void expectQueriesMatchOracle(const ConvexPolyhedron& poly, int count) {
-  expectQueriesMatchOracle(poly, count, kTolerance * poly.size(), kTolerance * poly.size());
+  wtc::test::expectRandomQueriesMatchOracle(poly, count, 21, kTolerance * poly.size(), kTolerance * poly.size());
 }
 
 // Hull of `count` random points of a ball of radius `radius` centred at `centre`.
@@ -92,7 +69,7 @@ TEST(PointQueryExtremeTest, MillimetrePieceFarFromOriginKeepsItsPrecision) {
   const ConvexPolyhedron box = ConvexPolyhedron::box(corner, corner + Vector3d(1e-3, 1e-3, 1e-3));
   const ConvexPolyhedron hull = ballHull(40, 0.5e-3, corner, 22);
   for (const ConvexPolyhedron* poly : {&box, &hull}) {
-    expectQueriesMatchOracle(*poly, 3000, kFarFromOriginTolerance, kTolerance * poly->size());
+    wtc::test::expectRandomQueriesMatchOracle(*poly, 3000, 21, kFarFromOriginTolerance, kTolerance * poly->size());
   }
   // Exact expectations: 0.5 mm over the middle of the box's top face.
   const Vector3d top = corner + Vector3d(0.5e-3, 0.5e-3, 1e-3);

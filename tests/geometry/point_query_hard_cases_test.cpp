@@ -42,21 +42,6 @@ testing::AssertionResult isNear(const Vector3d& got, const Vector3d& want, doubl
 
 ConvexPolyhedron cube() { return ConvexPolyhedron::box(Vector3d(-1, -1, -1), Vector3d(1, 1, 1)); }
 
-// `count` random queries around `poly`, each checked against the oracle.
-void expectRandomQueriesMatchOracle(const ConvexPolyhedron& poly, int count, double tolerance_m,
-                                    std::uint64_t seed = 11) {
-  wtc::test::RandomPieces random(seed);
-  const BruteForceOracle oracle(poly);
-  int failures = 0;
-  for (int i = 0; i < count; ++i) {
-    const Vector3d p = random.query(poly);
-    const testing::AssertionResult result =
-        wtc::test::agreesWithOracle(poly, oracle, p, wtc::queryPoint(poly, p), tolerance_m);
-    if (!result && ++failures <= 3) ADD_FAILURE() << "query " << i << ": " << result.message();
-  }
-  EXPECT_EQ(failures, 0) << "failed cases out of " << count;
-}
-
 TEST(PointQueryHardCaseTest, PointOnFaceReturnsZeroDistance) {
   // Case: p on the +x face of the cube: distance 0, the face normal.
   const ConvexPolyhedron poly = cube();
@@ -180,14 +165,14 @@ TEST(PointQueryHardCaseTest, FlatSquareHasNoInside) {
     EXPECT_TRUE(isNear(got.closest_point, e.closest, tolerance)) << wtc::test::describe(got);
     EXPECT_NE(got.status, QueryStatus::kIterationLimit);
   }
-  expectRandomQueriesMatchOracle(poly, 2000, tolerance);
+  wtc::test::expectRandomQueriesMatchOracle(poly, 2000, 11, tolerance, tolerance);
 }
 
 TEST(PointQueryHardCaseTest, FlatTriangleOfThreePointsMatchesBruteForce) {
   // Case: the minimum flat piece, a tilted triangle far from the axes.
   const ConvexPolyhedron poly = ConvexPolyhedron::fromPoints({{10.0, 3.0, 1.0}, {11.0, 3.5, 1.2}, {10.2, 4.1, 2.0}});
   ASSERT_TRUE(poly.isFlat());
-  expectRandomQueriesMatchOracle(poly, 2000, kTolerance * poly.size());
+  wtc::test::expectRandomQueriesMatchOracle(poly, 2000, 11, kTolerance * poly.size(), kTolerance * poly.size());
 }
 
 TEST(PointQueryHardCaseTest, DuplicatedVerticesAreMergedAndQueriesExact) {
@@ -200,7 +185,7 @@ TEST(PointQueryHardCaseTest, DuplicatedVerticesAreMergedAndQueriesExact) {
   const ConvexPolyhedron poly = ConvexPolyhedron::fromPoints(points);
   EXPECT_EQ(poly.vertexCount(), 8);
   EXPECT_EQ(poly.faceCount(), 6);
-  expectRandomQueriesMatchOracle(poly, 2000, kTolerance * poly.size());
+  wtc::test::expectRandomQueriesMatchOracle(poly, 2000, 11, kTolerance * poly.size(), kTolerance * poly.size());
   EXPECT_NEAR(wtc::queryPoint(poly, Vector3d(2, 0, 0)).signed_distance, 1.0, kTolerance * poly.size());
 }
 
@@ -215,7 +200,7 @@ TEST(PointQueryHardCaseTest, NearlyCoincidentVerticesAreMergedAndQueriesExact) {
   }
   const ConvexPolyhedron poly = ConvexPolyhedron::fromPoints(points);
   EXPECT_EQ(poly.vertexCount(), 8);
-  expectRandomQueriesMatchOracle(poly, 2000, kTolerance * poly.size());
+  wtc::test::expectRandomQueriesMatchOracle(poly, 2000, 11, kTolerance * poly.size(), kTolerance * poly.size());
   // The merged piece is the cube to within the moves.
   EXPECT_NEAR(wtc::queryPoint(poly, Vector3d(2, 0.5, 0)).signed_distance, 1.0, kTolerance * poly.size());
 }
@@ -231,7 +216,7 @@ TEST(PointQueryHardCaseTest, NearlyCoincidentVerticesAboveTheMergeToleranceStayE
   }
   const ConvexPolyhedron poly = ConvexPolyhedron::fromPoints(points);
   EXPECT_GT(poly.vertexCount(), 8);
-  expectRandomQueriesMatchOracle(poly, 5000, kTolerance * poly.size());
+  wtc::test::expectRandomQueriesMatchOracle(poly, 5000, 11, kTolerance * poly.size(), kTolerance * poly.size());
 }
 
 }  // namespace

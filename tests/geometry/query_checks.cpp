@@ -119,4 +119,24 @@ std::string describe(const PointQuery& r) {
                                        << describe(poly);
 }
 
+void expectRandomQueriesMatchOracle(const ConvexPolyhedron& poly, int count, std::uint64_t seed, double tolerance_m,
+                                    double distance_tolerance_m) {
+  RandomPieces random(seed);
+  const wtc::testing::BruteForceOracle oracle(poly);
+  int failures = 0;
+  for (int i = 0; i < count; ++i) {
+    const Vector3d p = random.query(poly);
+    const PointQuery got = wtc::queryPoint(poly, p);
+    ::testing::AssertionResult result = agreesWithOracle(poly, oracle, p, got, tolerance_m);
+    const double exact = oracle.query(p).signed_distance;
+    if (result && std::abs(got.signed_distance - exact) > distance_tolerance_m) {
+      result = ::testing::AssertionFailure()
+               << "signed distance " << got.signed_distance << " at p = " << wtc::formatVector(p)
+               << " is off the oracle's " << exact << " by more than " << distance_tolerance_m << " m";
+    }
+    if (!result && ++failures <= 3) ADD_FAILURE() << "query " << i << ": " << result.message();
+  }
+  EXPECT_EQ(failures, 0) << "failed cases out of " << count;
+}
+
 }  // namespace wtc::test

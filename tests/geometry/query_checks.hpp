@@ -19,6 +19,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <string>
 
 #include "brute_force.hpp"
@@ -31,5 +32,11 @@ namespace wtc::test {
 
 /// The result as text, for failure messages.
 std::string describe(const PointQuery& result);
+
+/// `count` random queries around `poly` (seeded), each checked with
+/// agreesWithOracle at `tolerance_m` and its signed distance within
+/// `distance_tolerance_m` of the oracle's; the first 3 failures are printed.
+void expectRandomQueriesMatchOracle(const ConvexPolyhedron& poly, int count, std::uint64_t seed, double tolerance_m,
+                                    double distance_tolerance_m);
 
 }  // namespace wtc::test
