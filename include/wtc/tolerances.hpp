@@ -60,3 +60,20 @@ inline constexpr double kSeamGapRelative = 1e-6;
 inline constexpr double kMinAxleNorm = 1e-9;
 
 }  // namespace wtc::tolerance
+
+namespace wtc::tolerance {
+
+/// The tyre model's tread deflection is capped where mu(s) has reached
+/// mu_max within this fraction (dimensionless): the steady state then
+/// matches the slip law to 1e-4 relative, and a wheel that stops spinning
+/// unwinds at most s1 ln(1e4 (1 + s2)) relaxation lengths of tread.
+inline constexpr double kTractionSaturation = 1e-4;
+
+/// A contact inherits the tread state of the previous step's contact whose
+/// direction e is within this angle (rad): 30 deg keeps a seam crossing (same
+/// e) and a rolling over an edge (e turns by well under a degree per step)
+/// continuous, and keeps the face and ground contacts of a ledge foot
+/// (e 90 deg apart) apart.
+inline constexpr double kTreadStateMatchAngleRad = 0.5235987755982988;
+
+}  // namespace wtc::tolerance

@@ -1,0 +1,51 @@
+#include "wtc/traction_law.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "wtc/error.hpp"
+#include "wtc/tolerances.hpp"
+
+namespace wtc {
+namespace {
+
+// Below this s/s1 the secant uses its Taylor series: (1 - e^-x)/x =
+// 1 - x/2 + x^2/6 - ..., exact to roundoff for x < 1e-8 with two terms.
+constexpr double kSeriesLimit = 1e-8;
+
+// (1 - exp(-x)) / x for x >= 0, without 0/0 and without cancellation.
+double oneMinusExpOverX(double x) { return x < kSeriesLimit ? 1.0 - 0.5 * x : -std::expm1(-x) / x; }
+
+}  // namespace
+
+double tractionCoefficient(const Material& m, double slip_ratio) {
+  const double q = std::exp(-slip_ratio / m.s1);
+  return m.mu_max * (-std::expm1(-slip_ratio / m.s1)) * (1.0 + m.s2 * q);
+}
+
+double tractionSecant(const Material& m, double slip_ratio) {
+  const double x = slip_ratio / m.s1;
+  return m.mu_max / m.s1 * oneMinusExpOverX(x) * (1.0 + m.s2 * std::exp(-x));
+}
+
+double tractionInitialSlope(const Material& m) { return m.mu_max * (1.0 + m.s2) / m.s1; }
+
+double tractionPeak(const Material& m) {
+  return m.s2 <= 1.0 ? m.mu_max : m.mu_max * (1.0 + m.s2) * (1.0 + m.s2) / (4.0 * m.s2);
+}
+
+double tractionSaturationSlip(const Material& m) {
+  // |mu - mu_max| = mu_max q |s2 - 1 - s2 q| <= mu_max q (1 + s2), q = e^(-s/s1).
+  return m.s1 * std::log((1.0 + m.s2) / tolerance::kTractionSaturation);
+}
+
+double adhesionBoostForPeakRatio(double peak_ratio) {
+  if (!(peak_ratio > 1.0) || !std::isfinite(peak_ratio)) {
+    throw InvalidInputError("wtc::adhesionBoostForPeakRatio: peak_ratio = " + formatNumber(peak_ratio) +
+                            " must be finite and > 1 (static over dynamic coefficient)");
+  }
+  const double half_b = 2.0 * peak_ratio - 1.0;
+  return half_b + std::sqrt(half_b * half_b - 1.0);
+}
+
+}  // namespace wtc

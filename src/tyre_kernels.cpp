@@ -1,0 +1,142 @@
+// The per-contact force kernels (wheel-terrain model, sections 3-4, and the
+// standstill treatment of tyre_model.hpp). Each effect is a compile-time
+// switch, so a kernel contains only the code of its effects.
+#include "tyre_kernels.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "wtc/tolerances.hpp"
+#include "wtc/traction_law.hpp"
+
+namespace wtc::detail {
+namespace {
+
+using Eigen::Vector3d;
+using Inputs = TyreModel::KernelInputs;
+
+// Below this lambda h the relaxation integral uses its series (see below).
+constexpr double kSeriesLimit = 1e-8;
+
+// h (1 - exp(-lambda h)) / (lambda h): the weight of V_s in the exact
+// solution of du/dt = V_s - lambda u over a step with V_s constant.
+double relaxationWeight(double step, double lambda_h) {
+  return step * (lambda_h < kSeriesLimit ? 1.0 - 0.5 * lambda_h : -std::expm1(-lambda_h) / lambda_h);
+}
+
+// The tread state of the previous step's contact most aligned with e (within
+// kTreadStateMatchAngleRad), moved into the tangent plane of e; else zero.
+Vector3d inheritTread(std::span<const TreadState> previous, const Vector3d& e) {
+  static const double kMatchCos = std::cos(tolerance::kTreadStateMatchAngleRad);
+  const TreadState* best = nullptr;
+  double best_cos = kMatchCos;
+  for (const TreadState& t : previous) {
+    const double cosine = t.e.dot(e);
+    if (cosine >= best_cos) {
+      best_cos = cosine;
+      best = &t;
+    }
+  }
+  if (best == nullptr) return Vector3d::Zero();
+  return best->u - best->u.dot(e) * e;
+}
+
+void clampNorm(Vector3d& v, double max_norm) {
+  const double norm = v.norm();
+  if (norm > max_norm) v *= max_norm / norm;
+}
+
+// The slip law through the relaxing tread (tyre_model.hpp):
+// du/dt = V_s - (max(V_t, eps)/sigma) u, F = -R_z mu(|x|/sigma) x/|x|.
+void slipLawTraction(const Inputs& in, const Material& m, double normal_force, Vector3d& u, ContactForce& f) {
+  const double sigma = tractionInitialSlope(m) * normal_force / in.tread_stiffness;  // (m)
+  if (!(sigma > 0.0)) {  // unloaded, or a frictionless material
+    u.setZero();
+    return;
+  }
+  const double lambda_h = std::max(in.transport_speed, in.slip_speed_floor) * in.step / sigma;
+  u = std::exp(-lambda_h) * u + relaxationWeight(in.step, lambda_h) * f.slip_velocity;
+  clampNorm(u, sigma * tractionSaturationSlip(m));
+  const Vector3d x = u + in.tread_damping_time * f.slip_velocity;
+  const double slip = x.norm() / sigma;
+  const double secant = tractionSecant(m, slip);  // mu(s)/s, finite at 0
+  f.tangential_force = (-normal_force * secant / sigma) * x;
+  f.mu = secant * slip;
+}
+
+// Coulomb's law through the same tread spring: elastic up to mu_max R_z,
+// then sliding at it.
+void coulombTraction(const Inputs& in, const Material& m, double normal_force, Vector3d& u, ContactForce& f) {
+  const double limit = m.mu_max * normal_force;  // (N)
+  if (!(limit > 0.0)) {
+    u.setZero();
+    return;
+  }
+  u += in.step * f.slip_velocity;
+  clampNorm(u, limit / in.tread_stiffness);
+  f.tangential_force = -in.tread_stiffness * (u + in.tread_damping_time * f.slip_velocity);
+  clampNorm(f.tangential_force, limit);
+  f.mu = f.tangential_force.norm() / normal_force;
+}
+
+template <bool kDamping, Traction kTraction, bool kRolling>
+void contactForces(const Inputs& in, std::span<const WheelContact> contacts, std::span<const TreadState> tread_in,
+                   std::vector<TreadState>& tread_out, ContactForce* out) {
+  const WheelMotion& motion = *in.motion;
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    const WheelContact& c = contacts[k];
+    ContactForce& f = out[k];
+    f.contact = c;
+    // Section 3: V_P = V_O + omega x OP, v_z = V_P . e, V_s = V_P - v_z e.
+    const Vector3d velocity_p = motion.velocity + motion.angular_velocity.cross(in.free_radius * c.e);
+    f.deflection_rate = velocity_p.dot(c.e);
+    f.slip_velocity = velocity_p - f.deflection_rate * c.e;
+    f.slip_ratio = f.slip_velocity.norm() / std::max(in.transport_speed, in.slip_speed_floor);
+    // Section 4: R_z = c Z + b v_z, never pulling.
+    double normal_force = in.stiffness * c.deflection;
+    if constexpr (kDamping) normal_force += in.damping * f.deflection_rate;
+    f.normal_force = std::max(normal_force, 0.0);
+    f.tangential_force.setZero();
+    f.mu = 0.0;
+    if constexpr (kTraction != Traction::kNone) {
+      const Material& m = in.materials[c.material];
+      Vector3d u = inheritTread(tread_in, c.e);
+      if constexpr (kTraction == Traction::kSlipLaw) {
+        slipLawTraction(in, m, f.normal_force, u, f);
+      } else {
+        coulombTraction(in, m, f.normal_force, u, f);
+      }
+      tread_out.push_back({c.e, u});
+    }
+    f.force = f.tangential_force - f.normal_force * c.e;
+    if constexpr (kRolling) {
+      // M_r = -f_r R_z r_0 sign(omega_rel . a) a, sign ramped over a width
+      // that bounds the gain by kappa I / h (and never below spin_floor).
+      const double resisting = in.materials[c.material].rolling_resistance * f.normal_force * in.rolling_radius;
+      const double width = std::max(in.spin_floor, resisting * in.spin_ramp_gain);
+      const double spin = (motion.angular_velocity - motion.hub_angular_velocity).dot(in.axle);
+      f.rolling_moment = (-resisting * std::clamp(spin / width, -1.0, 1.0)) * in.axle;
+    } else {
+      f.rolling_moment.setZero();
+    }
+  }
+}
+
+template <bool kDamping, Traction kTraction>
+constexpr std::array<TyreModel::Kernel, 2> byRolling = {&contactForces<kDamping, kTraction, false>,
+                                                        &contactForces<kDamping, kTraction, true>};
+template <bool kDamping>
+constexpr std::array<std::array<TyreModel::Kernel, 2>, 3> byTraction = {
+    byRolling<kDamping, Traction::kNone>, byRolling<kDamping, Traction::kSlipLaw>,
+    byRolling<kDamping, Traction::kCoulomb>};
+constexpr std::array<std::array<std::array<TyreModel::Kernel, 2>, 3>, 2> kKernels = {byTraction<false>,
+                                                                                    byTraction<true>};
+
+}  // namespace
+
+TyreModel::Kernel selectKernel(bool damping, Traction traction, bool rolling_resistance) {
+  return kKernels[damping ? 1 : 0][static_cast<std::size_t>(traction)][rolling_resistance ? 1 : 0];
+}
+
+}  // namespace wtc::detail

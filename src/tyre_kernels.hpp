@@ -1,0 +1,39 @@
+#pragma once
+// The per-contact force kernels of the tyre model, one compiled per
+// combination of force effects (internal to wtc; see tyre_model.hpp).
+#include <span>
+
+#include <Eigen/Core>
+
+#include "wtc/material.hpp"
+#include "wtc/tyre_model.hpp"
+
+namespace wtc {
+
+/// Everything a kernel reads, prepared once per wheel step.
+struct TyreModel::KernelInputs {
+  std::span<const Material> materials;
+  const WheelMotion* motion = nullptr;
+  Eigen::Vector3d axle{Eigen::Vector3d::UnitY()};  ///< a, unit.
+  double free_radius = 0.0;                        ///< r_f (m).
+  double rolling_radius = 0.0;                     ///< r_0 (m).
+  double stiffness = 0.0;                          ///< c (N/m).
+  double damping = 0.0;                            ///< b (N s/m).
+  double step = 0.0;                               ///< h (s).
+  double transport_speed = 0.0;                    ///< V_t = |V_O| (m/s).
+  double slip_speed_floor = 0.0;                   ///< eps (m/s).
+  double tread_stiffness = 0.0;                    ///< k_t, capped to the step (N/m).
+  double tread_damping_time = 0.0;                 ///< tau (s), faded with V_t.
+  double spin_ramp_gain = 0.0;                     ///< h / (kappa I) (s / (kg m^2)): ramp width per N m.
+  double spin_floor = 0.0;                         ///< Smallest ramp width (rad/s).
+};
+
+namespace detail {
+
+enum class Traction { kNone, kSlipLaw, kCoulomb };
+
+/// The kernel compiled for this combination of force effects.
+TyreModel::Kernel selectKernel(bool damping, Traction traction, bool rolling_resistance);
+
+}  // namespace detail
+}  // namespace wtc

@@ -1,0 +1,118 @@
+// Assembly of the tyre model and the wheel step (design note in
+// include/wtc/tyre_model.hpp).
+#include "wtc/tyre_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "tyre_kernels.hpp"
+#include "wtc/error.hpp"
+#include "wtc/tolerances.hpp"
+
+namespace wtc {
+namespace {
+
+void requireFiniteMotion(const WheelMotion& motion, double step_seconds, const char* where) {
+  if (!isFinite(motion.velocity) || !isFinite(motion.angular_velocity) || !isFinite(motion.hub_angular_velocity)) {
+    throw InvalidInputError(std::string(where) + ": wheel motion is not finite: velocity = " +
+                            formatVector(motion.velocity) + ", angular_velocity = " +
+                            formatVector(motion.angular_velocity) + ", hub_angular_velocity = " +
+                            formatVector(motion.hub_angular_velocity));
+  }
+  if (!(std::isfinite(step_seconds) && step_seconds > 0.0)) {
+    throw InvalidInputError(std::string(where) + ": step_seconds = " + formatNumber(step_seconds) +
+                            " must be finite and > 0 (s)");
+  }
+}
+
+Eigen::Vector3d unitAxle(const Eigen::Vector3d& axle, const char* where) {
+  const double norm = axle.norm();
+  if (!std::isfinite(norm) || norm < tolerance::kMinAxleNorm) {
+    throw InvalidInputError(std::string(where) + ": wheel axle = " + formatVector(axle) +
+                            " is not finite or is zero");
+  }
+  return axle / norm;
+}
+
+}  // namespace
+
+TyreModel::TyreModel(EffectSet effects) : effects_(effects) {
+  const bool slip = effects.has(Effect::kSlipTraction);
+  const bool coulomb = effects.has(Effect::kCoulombFriction);
+  if (slip && coulomb) {
+    throw InvalidInputError("wtc::TyreModel: effects '" + effects.toString() +
+                            "' ask for two traction laws; choose slip_traction or coulomb_friction");
+  }
+  const detail::Traction traction =
+      slip ? detail::Traction::kSlipLaw : (coulomb ? detail::Traction::kCoulomb : detail::Traction::kNone);
+  kernel_ = detail::selectKernel(effects.has(Effect::kNormalDamping), traction,
+                                 effects.has(Effect::kRollingResistance));
+  contact_options_.multiple_contacts = effects.has(Effect::kMultipleContacts);
+  contact_options_.tread_truncation = effects.has(Effect::kTreadTruncation);
+}
+
+const WheelForces& TyreModel::step(const Terrain& terrain, const WheelDescription& wheel, const WheelPose& pose,
+                                   const WheelMotion& motion, double step_seconds, WheelState& state) const {
+  const std::span<const WheelContact> contacts = state.finder_.find(terrain, wheel.geometry, pose, contact_options_);
+  return forces(terrain.materials(), wheel, pose, motion, step_seconds, contacts, state);
+}
+
+const WheelForces& TyreModel::forces(std::span<const Material> materials, const WheelDescription& wheel,
+                                     const WheelPose& pose, const WheelMotion& motion, double step_seconds,
+                                     std::span<const WheelContact> contacts, WheelState& state) const {
+  static constexpr const char* kWhere = "wtc::TyreModel::forces";
+  validate(wheel, kWhere);
+  requireFiniteMotion(motion, step_seconds, kWhere);
+  const TyreParameters& tyre = wheel.tyre;
+  const WheelInertia& inertia = wheel.inertia;
+  const double h = step_seconds;
+
+  KernelInputs in;
+  in.materials = materials;
+  in.motion = &motion;
+  in.axle = unitAxle(pose.axle, kWhere);
+  in.free_radius = wheel.geometry.free_radius;
+  in.rolling_radius = tyre.rolling_radius_ratio * wheel.geometry.free_radius;
+  in.stiffness = tyre.radial_stiffness;
+  in.damping = tyre.radial_damping;
+  in.step = h;
+  in.transport_speed = motion.velocity.norm();
+  in.slip_speed_floor = tyre.slip_speed_floor;
+  // k_t <= (kappa/h)^2 m keeps h sqrt(k_t/m) <= kappa; tau = 2 zeta_t / w_t.
+  const double kappa = tyre.stability_fraction;
+  in.tread_stiffness = std::min(tyre.tangential_stiffness, kappa * kappa * inertia.effective_mass / (h * h));
+  const double fade = std::max(0.0, 1.0 - in.transport_speed / tyre.standstill_speed);
+  in.tread_damping_time =
+      2.0 * tyre.standstill_damping_ratio * std::sqrt(inertia.effective_mass / in.tread_stiffness) * fade;
+  in.spin_ramp_gain = h / (kappa * inertia.axial_inertia);
+  in.spin_floor = tyre.spin_floor;
+
+  state.forces_.resize(contacts.size());
+  state.next_tread_.clear();
+  kernel_(in, contacts, state.tread_, state.next_tread_, state.forces_.data());
+  std::swap(state.tread_, state.next_tread_);
+
+  // Totals about O and the axial/bearing split (wheel_forces.hpp).
+  WheelForces& result = state.result_;
+  result.force.setZero();
+  Eigen::Vector3d contact_moment = Eigen::Vector3d::Zero(), rolling_moment = Eigen::Vector3d::Zero();
+  for (const ContactForce& f : state.forces_) {
+    result.force += f.force;
+    contact_moment += (in.free_radius * f.contact.e).cross(f.force);
+    rolling_moment += f.rolling_moment;
+  }
+  const Eigen::Vector3d axial_contact = in.axle.dot(contact_moment) * in.axle;
+  result.torque = contact_moment + rolling_moment;
+  result.axial_moment = axial_contact + rolling_moment;
+  result.bearing_moment = contact_moment - axial_contact;
+  result.contacts = state.forces_;
+
+  const double damping = effects_.has(Effect::kNormalDamping) ? tyre.radial_damping : 0.0;
+  result.normal_stability = explicitSpringStability(tyre.radial_stiffness, damping, inertia.effective_mass, h);
+  ++state.steps_;
+  if (!result.normal_stability.stable()) ++state.unstable_steps_;
+  return result;
+}
+
+}  // namespace wtc
