@@ -1,5 +1,5 @@
 // The tyre model integrated in time by the semi-implicit Euler loop of
-// wheel_sim.hpp: static deflection, bounce, the parked vehicle on a slope
+// tests/support/wheel_sim.hpp: static deflection, bounce, the parked vehicle on a slope
 // (spec section 6, issue: < 1 cm creep in 10 s, no oscillation, h from
 // 0.1 to 2 ms), sliding above the friction limit, spinning in place, and
 // the stability report.
