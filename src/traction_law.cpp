@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "exp_minus_one.hpp"
 #include "wtc/error.hpp"
 #include "wtc/tolerances.hpp"
 
@@ -13,19 +14,20 @@ namespace {
 // 1 - x/2 + x^2/6 - ..., exact to roundoff for x < 1e-8 with two terms.
 constexpr double kSeriesLimit = 1e-8;
 
-// (1 - exp(-x)) / x for x >= 0, without 0/0 and without cancellation.
-double oneMinusExpOverX(double x) { return x < kSeriesLimit ? 1.0 - 0.5 * x : -std::expm1(-x) / x; }
-
 }  // namespace
 
+// With em = expm1(-s/s1): 1 - q = -em exactly to roundoff for small s, and
+// q = 1 + em, which only feeds 1 + s2 q (absolute accuracy suffices).
 double tractionCoefficient(const Material& m, double slip_ratio) {
-  const double q = std::exp(-slip_ratio / m.s1);
-  return m.mu_max * (-std::expm1(-slip_ratio / m.s1)) * (1.0 + m.s2 * q);
+  const double em = detail::expMinusOne(slip_ratio / m.s1);
+  return m.mu_max * (-em) * (1.0 + m.s2 * (1.0 + em));
 }
 
 double tractionSecant(const Material& m, double slip_ratio) {
   const double x = slip_ratio / m.s1;
-  return m.mu_max / m.s1 * oneMinusExpOverX(x) * (1.0 + m.s2 * std::exp(-x));
+  const double em = detail::expMinusOne(x);
+  const double one_minus_q_over_x = x < kSeriesLimit ? 1.0 - 0.5 * x : -em / x;
+  return m.mu_max / m.s1 * one_minus_q_over_x * (1.0 + m.s2 * (1.0 + em));
 }
 
 double tractionInitialSlope(const Material& m) { return m.mu_max * (1.0 + m.s2) / m.s1; }

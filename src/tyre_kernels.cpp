@@ -3,6 +3,8 @@
 // switch, so a kernel contains only the code of its effects.
 #include "tyre_kernels.hpp"
 
+#include "exp_minus_one.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -18,19 +20,28 @@ using Inputs = TyreModel::KernelInputs;
 
 // Below this lambda h the relaxation integral uses its series (see below).
 constexpr double kSeriesLimit = 1e-8;
+// ln(1 / kTractionSaturation): s_sat >= s1 times this for every s2 >= 0.
+const double kSaturationLog = -std::log(tolerance::kTractionSaturation);
 
-// h (1 - exp(-lambda h)) / (lambda h): the weight of V_s in the exact
-// solution of du/dt = V_s - lambda u over a step with V_s constant.
-double relaxationWeight(double step, double lambda_h) {
-  return step * (lambda_h < kSeriesLimit ? 1.0 - 0.5 * lambda_h : -std::expm1(-lambda_h) / lambda_h);
+double square(double x) { return x * x; }
+
+// The exact solution of du/dt = V_s - lambda u over a step with V_s
+// constant: u <- decay u + weight V_s, decay = exp(-lambda h),
+// weight = h (1 - exp(-lambda h)) / (lambda h). One expm1 gives both.
+struct Relaxation {
+  double decay;
+  double weight;  // (s)
+};
+Relaxation relaxation(double step, double lambda_h) {
+  const double em = expMinusOne(lambda_h);
+  return {1.0 + em, step * (lambda_h < kSeriesLimit ? 1.0 - 0.5 * lambda_h : -em / lambda_h)};
 }
 
 // The tread state of the previous step's contact most aligned with e (within
-// kTreadStateMatchAngleRad), moved into the tangent plane of e; else zero.
+// 30 deg, kTreadStateMatchCos), moved into the tangent plane of e; else zero.
 Vector3d inheritTread(std::span<const TreadState> previous, const Vector3d& e) {
-  static const double kMatchCos = std::cos(tolerance::kTreadStateMatchAngleRad);
   const TreadState* best = nullptr;
-  double best_cos = kMatchCos;
+  double best_cos = tolerance::kTreadStateMatchCos;
   for (const TreadState& t : previous) {
     const double cosine = t.e.dot(e);
     if (cosine >= best_cos) {
@@ -55,9 +66,11 @@ void slipLawTraction(const Inputs& in, const Material& m, double normal_force, V
     u.setZero();
     return;
   }
-  const double lambda_h = std::max(in.transport_speed, in.slip_speed_floor) * in.step / sigma;
-  u = std::exp(-lambda_h) * u + relaxationWeight(in.step, lambda_h) * f.slip_velocity;
-  clampNorm(u, sigma * tractionSaturationSlip(m));
+  const Relaxation r = relaxation(in.step, std::max(in.transport_speed, in.slip_speed_floor) * in.step / sigma);
+  u = r.decay * u + r.weight * f.slip_velocity;
+  // The cap sigma s_sat; s1 ln(1/kTractionSaturation) <= s_sat spares the
+  // logarithm while the tread is below it (nearly always).
+  if (u.squaredNorm() > square(sigma * m.s1 * kSaturationLog)) clampNorm(u, sigma * tractionSaturationSlip(m));
   const Vector3d x = u + in.tread_damping_time * f.slip_velocity;
   const double slip = x.norm() / sigma;
   const double secant = tractionSecant(m, slip);  // mu(s)/s, finite at 0

@@ -8,9 +8,9 @@
 
 namespace wtc {
 
-void validate(const WheelGeometry& wheel, const std::string& where) {
-  detail::requirePositive(wheel.free_radius, where.c_str(), "wheel free_radius", "m");
-  detail::requirePositive(wheel.tread_width, where.c_str(), "wheel tread_width", "m");
+void validate(const WheelGeometry& wheel, const char* where) {
+  detail::requirePositive(wheel.free_radius, where, "wheel free_radius", "m");
+  detail::requirePositive(wheel.tread_width, where, "wheel tread_width", "m");
 }
 
 std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, const WheelGeometry& wheel,

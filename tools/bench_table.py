@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Markdown tables from `wtc_bench_query` or `wtc_bench_wheel` JSON output.
+"""Markdown tables from `wtc_bench_query`, `wtc_bench_wheel` or `wtc_bench_forces` JSON output.
 
     build/bench/wtc_bench_query --benchmark_repetitions=5 \
         --benchmark_report_aggregates_only=true --benchmark_format=json > bench.json
@@ -12,6 +12,11 @@ Prints two tables for the README:
      failure counts wtc/bullet/fcl.
   2. PointQueryTolerance: ns/query, max distance error and max closest-point
      error per relative tolerance.
+For `wtc_bench_wheel`, one table of the contact step, the indexes and the
+build per terrain and size. For `wtc_bench_forces`, one table of the tyre
+model per effect set (minimal, each effect alone, full): median ns/step of
+WheelForces (contacts + forces) and WheelForcesOnly (forces alone), each with
+its difference to minimal, then the contact counts and heap allocations.
 Times are medians over repetitions (the `median` aggregate when present,
 otherwise the median of the individual runs). Standard library only.
 """
@@ -141,6 +146,49 @@ def wheel_table(runs):
     return lines
 
 
+def fmt_delta(ns):
+    return "–" if ns is None else (f"{ns:+.1f}" if abs(ns) < 100 else f"{ns:+.0f}")
+
+
+def forces_table(runs):
+    """WheelForces/WheelForcesOnly of wtc_bench_forces: one row per effect set."""
+    families = ("WheelForces", "WheelForcesOnly")
+    rows = defaultdict(dict)  # effects -> family -> (ns, counters)
+    order = []
+    for name, value in runs.items():
+        parts = name.split("/")
+        if len(parts) == 2 and parts[0] in families:
+            if parts[1] not in order:
+                order.append(parts[1])
+            rows[parts[1]][parts[0]] = value
+    if not order:
+        return []
+    order.sort(key=lambda e: (e == "full", e != "minimal"))  # minimal, single effects in run order, full
+    ns = lambda e, family: rows[e][family][0] if family in rows[e] else None
+    counter = lambda e, family, key: rows[e][family][1].get(key) if family in rows[e] else None
+
+    def delta(e, family):
+        if e == "minimal" or ns(e, family) is None or ns("minimal", family) is None:
+            return "–"
+        return fmt_delta(ns(e, family) - ns("minimal", family))
+
+    def allocs(e):
+        counts = [counter(e, f, "allocs_per_step") for f in families]
+        return " / ".join("–" if c is None else f"{c:.1f}" for c in counts)
+
+    lines = ["| effects | step ns | step − minimal ns | forces only ns | forces only − minimal ns "
+             "| contacts/step | steps with ≥ 2 contacts | heap allocs/step (step / forces only) |",
+             "|---|---:|---:|---:|---:|---:|---:|---:|"]
+    for e in order:
+        contacts = counter(e, "WheelForces", "contacts_per_step")
+        multi = counter(e, "WheelForces", "multi_contact_fraction")
+        lines.append(f"| {e} | {fmt_ns(ns(e, 'WheelForces'))} | {delta(e, 'WheelForces')} "
+                     f"| {fmt_ns(ns(e, 'WheelForcesOnly'))} | {delta(e, 'WheelForcesOnly')} "
+                     f"| {'–' if contacts is None else f'{contacts:.2f}'} "
+                     f"| {'–' if multi is None else f'{multi:.0%}'} | {allocs(e)} |")
+    return lines
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("json", nargs="?", help="benchmark JSON (default: stdin)")
@@ -150,9 +198,9 @@ def main():
     with (open(args.json) if args.json else sys.stdin) as f:
         data = json.load(f)
     runs = load_runs(data, f"{args.time}_time")
-    wheel = wheel_table(runs)
-    if wheel:
-        print("\n".join(wheel))
+    wheel, forces = wheel_table(runs), forces_table(runs)
+    if wheel or forces:
+        print("\n\n".join("\n".join(table) for table in (wheel, forces) if table))
         return
     print("\n".join(point_query_table(runs)))
     tolerance = tolerance_table(runs)

@@ -70,10 +70,10 @@ namespace wtc::tolerance {
 inline constexpr double kTractionSaturation = 1e-4;
 
 /// A contact inherits the tread state of the previous step's contact whose
-/// direction e is within this angle (rad): 30 deg keeps a seam crossing (same
-/// e) and a rolling over an edge (e turns by well under a degree per step)
-/// continuous, and keeps the face and ground contacts of a ledge foot
-/// (e 90 deg apart) apart.
-inline constexpr double kTreadStateMatchAngleRad = 0.5235987755982988;
+/// direction e is within 30 deg; this is cos(30 deg) (dimensionless). 30 deg
+/// keeps a seam crossing (same e) and a rolling over an edge (e turns by
+/// well under a degree per step) continuous, and keeps the face and ground
+/// contacts of a ledge foot (e 90 deg apart) apart.
+inline constexpr double kTreadStateMatchCos = 0.8660254037844387;
 
 }  // namespace wtc::tolerance

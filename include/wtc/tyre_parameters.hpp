@@ -2,8 +2,6 @@
 // The description of one wheel for the tyre model: its geometry, the tyre's
 // own parameters, and the inertia its contacts accelerate. Immutable during
 // a run; shared by every step. Values and their sources: docs/tyre-model.md.
-#include <string>
-
 #include "wtc/wheel_contact.hpp"
 
 namespace wtc {
@@ -45,8 +43,9 @@ struct WheelDescription {
 };
 
 /// Throws InvalidInputError naming the field, its value and `where`.
-void validate(const TyreParameters& tyre, const std::string& where);
-void validate(const WheelInertia& inertia, const std::string& where);
-void validate(const WheelDescription& wheel, const std::string& where);
+/// Allocates nothing unless it throws (the tyre model checks every step).
+void validate(const TyreParameters& tyre, const char* where);
+void validate(const WheelInertia& inertia, const char* where);
+void validate(const WheelDescription& wheel, const char* where);
 
 }  // namespace wtc

@@ -37,7 +37,8 @@ struct WheelGeometry {
 };
 
 /// Throws InvalidInputError naming the field, its value and `where`.
-void validate(const WheelGeometry& wheel, const std::string& where);
+/// Allocates nothing unless it throws (it runs every step).
+void validate(const WheelGeometry& wheel, const char* where);
 
 struct WheelPose {
   Eigen::Vector3d center{Eigen::Vector3d::Zero()};  ///< O (world, m).
