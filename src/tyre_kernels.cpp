@@ -106,10 +106,11 @@ void contactForces(const Inputs& in, std::span<const WheelContact> contacts, std
     f.deflection_rate = velocity_p.dot(c.e);
     f.slip_velocity = velocity_p - f.deflection_rate * c.e;
     f.slip_ratio = f.slip_velocity.norm() / std::max(in.transport_speed, in.slip_speed_floor);
-    // Section 4: R_z = c Z + b v_z, never pulling.
+    // Section 4: R_z = c Z + b v_z, never pulling; scaled by the contact's
+    // load share at a shallow concave crease (wheel_contact.hpp).
     double normal_force = in.stiffness * c.deflection;
     if constexpr (kDamping) normal_force += in.damping * f.deflection_rate;
-    f.normal_force = std::max(normal_force, 0.0);
+    f.normal_force = c.load_share * std::max(normal_force, 0.0);
     f.tangential_force.setZero();
     f.mu = 0.0;
     if constexpr (kTraction != Traction::kNone) {

@@ -55,7 +55,7 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
   std::swap(caches_, next_caches_);
 
   // 3. Seam rule.
-  if (options.seam_rule && contacts_.size() > 1) applySeamRule(terrain, tolerance::kSeamGapRelative * r);
+  if (options.seam_rule && contacts_.size() > 1) applySeamRule(terrain, tolerance::kSeamGapRelative * r, r);
 
   // 4. Tread filter: keep contacts with |OP . a| <= w / 2.
   if (options.tread_truncation) {
@@ -74,23 +74,30 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
   return contacts_;
 }
 
-void WheelContactFinder::applySeamRule(const Terrain& terrain, double gap) {
-  // Contacts are ranked strictly by (distance, piece id): the nearest one is
-  // never dropped, and no two contacts can drop each other.
-  auto shadowed = [&](const WheelContact& b) {
+void WheelContactFinder::applySeamRule(const Terrain& terrain, double gap, double radius) {
+  // Contacts are ranked strictly by (distance, piece id): the nearest one
+  // keeps its whole load, and no two contacts can shadow each other.
+  auto share = [&](const WheelContact& b) {
+    // L = sqrt(2 r Z): half the chord the ground cuts from the undeformed tread.
+    const double patch = std::sqrt(2.0 * radius * b.deflection);
+    double least = 1.0;
     for (const WheelContact& a : contacts_) {
       const bool nearer = a.signed_distance < b.signed_distance ||
                           (a.signed_distance == b.signed_distance && a.piece < b.piece);
-      if (nearer && terrain.piece(a.piece).planeBound(b.ground_point) <= gap) return true;
+      if (!nearer) continue;
+      const double outside = terrain.piece(a.piece).planeBound(b.ground_point) - gap;  // (m)
+      least = std::min(least, outside <= 0.0 ? 0.0 : std::min(1.0, outside / patch));
     }
-    return false;
+    return least;
   };
   // Decide on the unfiltered set, then erase: the rule is symmetric in order.
-  drop_.assign(contacts_.size(), 0);
-  for (std::size_t k = 0; k < contacts_.size(); ++k) drop_[k] = shadowed(contacts_[k]) ? 1 : 0;
+  shares_.resize(contacts_.size());
+  for (std::size_t k = 0; k < contacts_.size(); ++k) shares_[k] = share(contacts_[k]);
   std::size_t out = 0;
   for (std::size_t k = 0; k < contacts_.size(); ++k) {
-    if (drop_[k] == 0) contacts_[out++] = contacts_[k];
+    if (shares_[k] == 0.0) continue;
+    contacts_[out] = contacts_[k];
+    contacts_[out++].load_share = shares_[k];
   }
   contacts_.resize(out);
 }

@@ -17,8 +17,13 @@
 // ground) and is dropped. "Nearer" is the strict order on (distance, piece
 // id), so the nearest contact always survives and ties keep one. Contacts at
 // distinct places (a ledge's vertical face and the ground in front of it)
-// are all kept. See docs/wheel-contact.md for why this is exact on convex
-// and concave seams.
+// are all kept. Between the two, the rule is continuous: B's load share is
+// delta / L, clamped to [0, 1], where delta is how far B's ground point lies
+// outside A and L = sqrt(2 r_f Z_B) the half-length of B's contact patch, so
+// a concave crease between two nearly coplanar pieces (a heightfield's
+// gentle valley) loads the wheel like the flat ground it nearly is, instead
+// of doubling the load as soon as the crease is bent. See
+// docs/wheel-contact.md for why this is exact on flat seams and ridges.
 #include <span>
 #include <string>
 #include <utility>
@@ -57,6 +62,8 @@ struct WheelContact {
   Eigen::Vector3d e{Eigen::Vector3d::UnitZ()};            ///< Unit, from O toward the ground.
   double deflection = 0.0;                                ///< Z = r_f - signed distance (m), > 0.
   double signed_distance = 0.0;                           ///< From O to the piece (m); < 0 inside.
+  double load_share = 1.0;  ///< Fraction of this contact's normal force the wheel feels, (0, 1]: below 1 only
+                            ///< next to a nearer piece at a shallow concave crease (seam rule).
   PieceId piece = -1;
   MaterialId material = -1;
 };
@@ -75,11 +82,11 @@ class WheelContactFinder {
   std::span<const PieceId> candidates() const { return candidates_; }
 
  private:
-  void applySeamRule(const Terrain& terrain, double gap);
+  void applySeamRule(const Terrain& terrain, double gap, double radius);
   std::vector<PieceId> candidates_;
   std::vector<WheelContact> contacts_;
   std::vector<std::pair<PieceId, QueryCache>> caches_, next_caches_;
-  std::vector<unsigned char> drop_;
+  std::vector<double> shares_;
 };
 
 }  // namespace wtc

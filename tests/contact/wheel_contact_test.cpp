@@ -46,9 +46,10 @@ wtc::Terrain singleSlab(double extent) {
   return std::move(builder).build();
 }
 
+// The load the wheel feels, in units of the stiffness: sum of share x Z.
 double totalDeflection(std::span<const wtc::WheelContact> contacts) {
   double z = 0.0;
-  for (const auto& c : contacts) z += c.deflection;
+  for (const auto& c : contacts) z += c.load_share * c.deflection;
   return z;
 }
 
@@ -150,6 +151,41 @@ TEST(WheelContactTest, ConcaveValleyOfOneSurfaceKeepsBothSides) {
   ASSERT_EQ(contacts.size(), 2u);
   EXPECT_NEAR(contacts[0].deflection, kDeflection, 1e-12);
   EXPECT_NEAR(contacts[1].deflection, kDeflection, 1e-12);
+}
+
+// Two prisms meeting in a V whose flanks rise at `slope_rad` on each side.
+wtc::Terrain valley(double slope_rad) {
+  wtc::TerrainBuilder builder;
+  const auto material = builder.addMaterial({});
+  const double rise = std::tan(slope_rad);
+  for (const double side : {-1.0, 1.0}) {
+    builder.addPiece(wtc::ConvexPolyhedron::fromPoints({{side, -1, rise}, {0, -1, 0}, {side, 1, rise}, {0, 1, 0},
+                                                        {side, -1, -1}, {0, -1, -1}, {side, 1, -1}, {0, 1, -1}}),
+                     material);
+  }
+  return std::move(builder).build();
+}
+
+TEST(WheelContactTest, ShallowConcaveCreaseLoadsLikeTheFlatGroundItNearlyIs) {
+  // Case: the centre over the crease, the deepest contact kDeflection deep.
+  // Flat (slope 0) is one contact; as the valley bends, the second side's
+  // share grows like delta / L = r sin(slope) / sqrt(2 r Z), continuously,
+  // up to two full contacts once its ground point is a patch length away.
+  const double patch = std::sqrt(2 * kRadius * kDeflection);  // L (m)
+  double previous = kDeflection;
+  for (const double slope : {0.0, 1e-9, 1e-7, 1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 0.05, 0.1, 0.2, 0.3}) {
+    const wtc::Terrain terrain = valley(slope);
+    const double height = (kRadius - kDeflection) / std::cos(slope);  // centre above the crease
+    wtc::WheelContactFinder finder;
+    const auto contacts = finder.find(terrain, {kRadius, 0.12}, {{0, 0, height}, Vector3d::UnitY()});
+    ASSERT_GE(contacts.size(), 1u) << slope;
+    const double load = totalDeflection(contacts);
+    const double share = std::min(1.0, (kRadius - kDeflection) * std::sin(slope) / patch);
+    EXPECT_NEAR(load, kDeflection * (1 + share), 1e-3 * kDeflection * (1 + share) + 1e-12) << "slope " << slope;
+    EXPECT_GE(load, previous - 1e-15) << "monotone in the bend, slope " << slope;
+    previous = load;
+  }
+  EXPECT_NEAR(previous, 2 * kDeflection, 1e-12) << "a real valley: both sides in full";
 }
 
 TEST(WheelContactTest, TreadTruncationDropsContactsOnTheCaps) {
