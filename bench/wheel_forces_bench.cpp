@@ -55,6 +55,8 @@
 #include <wtc/terrain_primitives.hpp>
 #include <wtc/tyre_model.hpp>
 
+#include "resting_centre.hpp"
+
 namespace {
 
 // The benchmark is single-threaded: a relaxed load and store count exactly
@@ -97,7 +99,6 @@ constexpr double kTroughStartM = 4.0, kTroughEndM = 16.0;  // trough along the p
 constexpr double kTroughRampM = 2.0;                     // depth ramps from 0 to full over this (m)
 constexpr double kTroughFlankRad = 10.0 * M_PI / 180.0;  // flank slope (rad)
 const double kTroughDepthM = kCellM * std::tan(kTroughFlankRad);  // full depth (m): flanks one cell wide
-constexpr int kBisectionSteps = 50;                      // resting height to ~1e-16 m
 
 // The ground of WheelForcesOnly: the spec's ledge (0.65 m, LedgeParams{}).
 constexpr int kForcesOnlyWarmupSteps = 1000;  // tread deflections settle well within this
@@ -126,25 +127,6 @@ struct Scenario {
 // options) is kDepthM deep. Bisection on the height: the deepest deflection
 // falls as the wheel rises; half a radius above the surface is deeper than
 // kDepthM, two radii above is clear of the ground.
-Vector3d restingCentre(const wtc::Terrain& terrain, const wtc::Heightfield& field, const wtc::WheelGeometry& wheel,
-                       const wtc::ContactOptions& options, wtc::WheelContactFinder& finder, double x, double y) {
-  const double surface = *wtc::surfaceHeight(field, x, y);
-  double low = surface + 0.5 * wheel.free_radius, high = surface + 2.0 * wheel.free_radius;
-  for (int k = 0; k < kBisectionSteps; ++k) {
-    const double z = 0.5 * (low + high);
-    double deepest = 0.0;
-    for (const wtc::WheelContact& c : finder.find(terrain, wheel, {{x, y, z}, kAxle}, options)) {
-      deepest = std::max(deepest, c.deflection);
-    }
-    if (deepest > kDepthM) {
-      low = z;
-    } else {
-      high = z;
-    }
-  }
-  return {x, y, high};
-}
-
 // The spin that rolls the wheel at `velocity` with kSlip: the tread point
 // under the centre moves at -kSlip |velocity|, so traction drives forward.
 wtc::WheelMotion drivenMotion(const Vector3d& velocity, double free_radius) {
@@ -172,7 +154,10 @@ Scenario makeScenario() {
   wtc::WheelContactFinder finder;
   std::vector<Vector3d> centres;
   for (std::size_t k = 0; k < steps; ++k) {  // along +x (kForward)
-    centres.push_back(restingCentre(s.terrain, field, wheel, options, finder, kPathStartX + k * kStepM, kPathY));
+    const double x = kPathStartX + k * kStepM;
+    const double guess = *wtc::surfaceHeight(field, x, kPathY) + wheel.free_radius - kDepthM;
+    centres.push_back(
+        wtc::bench::restingCentre(s.terrain, finder, wheel, kAxle, options, x, kPathY, guess, kDepthM).centre);
   }
   // Velocity: the next step's displacement over h (the last one repeats the
   // one before, not the jump back to the start).
