@@ -5,12 +5,13 @@ find_package(Eigen3 3.3 REQUIRED NO_MODULE)
 find_package(Qhull REQUIRED CONFIG)
 
 find_package(PkgConfig REQUIRED)
+# The engine adapters (wtc::bullet, wtc::ode).
+# Bullet ships float and double builds; WTC is double throughout. The .pc
+# file adds -DBT_USE_DOUBLE_PRECISION; never link the float build as well.
+pkg_check_modules(BULLET REQUIRED IMPORTED_TARGET bullet-float64)
+# ODE has no CMake config; Debian builds it with dDOUBLE.
+pkg_check_modules(ODE REQUIRED IMPORTED_TARGET ode)
 if(WTC_BUILD_TESTS OR WTC_BUILD_BENCHMARKS)
-  # Bullet ships float and double builds; WTC is double throughout. The .pc
-  # file adds -DBT_USE_DOUBLE_PRECISION; never link the float build as well.
-  pkg_check_modules(BULLET REQUIRED IMPORTED_TARGET bullet-float64)
-  # ODE has no CMake config; Debian builds it with dDOUBLE.
-  pkg_check_modules(ODE REQUIRED IMPORTED_TARGET ode)
   # libccd's .pc reports 2.0 for the 2.1 package: no version request.
   pkg_check_modules(CCD REQUIRED IMPORTED_TARGET ccd)
   # fcl.pc forces -std=c++11: use the CMake config (target `fcl`).

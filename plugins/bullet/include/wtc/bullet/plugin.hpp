@@ -1,0 +1,107 @@
+#pragma once
+// wtc::bullet: WTC wheels in any Bullet world (btDiscreteDynamicsWorld, or
+// btMultiBodyDynamicsWorld with wheels as btMultiBody links). The adapter
+// does nothing physical itself: it reads poses and velocities from Bullet,
+// asks the core (wtc::TyreModel), and hands the core's contacts and forces
+// back to Bullet. docs/bullet-plugin.md has the details and the validation.
+//
+// How it plugs in:
+//  - The terrain becomes one static collision object (TerrainObject), added
+//    to the world; every pair but wheel-terrain collides with it as usual.
+//  - A registered wheel's shape becomes a WheelShape wrapping its own; the
+//    dispatcher sends wheel-terrain pairs to WTC's collision algorithm, and
+//    every other pair of the wheel to Bullet's algorithm for the original.
+//  - The world's internal pre-tick callback runs every wheel's tyre model
+//    at the start of each internal step (substeps included), with that
+//    step's length.
+// Force mode: the tyre forces go to the bodies as impulses F h in the
+// pre-tick. Bullet applies gravity once per stepSimulation and clears the
+// accumulated forces only after all substeps, so a force added at every
+// substep would pile up; an impulse acts on exactly one substep. Multibody
+// links get addLinkForce/addLinkTorque, which Bullet clears every substep.
+// Constraint mode: the algorithm writes WTC's contacts into the pair's
+// manifold with the tyre's stiffness and damping (Bullet's soft contact, an
+// implicit spring) and the slip law's friction coefficient and direction.
+// Rolling resistance is an explicit moment in both modes.
+//
+// The plugin owns the world's internal pre-tick callback and its world user
+// info; chain your own per-step code through setPreTickCallback. Wheels are
+// kept awake (DISABLE_DEACTIVATION): the tread state needs every step.
+#include <functional>
+#include <memory>
+
+#include <btBulletDynamicsCommon.h>
+
+#include "wtc/effects.hpp"
+#include "wtc/engine_contact.hpp"
+#include "wtc/terrain.hpp"
+#include "wtc/tyre_model.hpp"
+
+class btMultiBody;
+
+namespace wtc::bullet {
+
+using WheelId = int;
+
+/// A wheel that is its own btRigidBody (on a hinge to its carrier, typically).
+struct RigidWheel {
+  btRigidBody* body = nullptr;                        ///< The wheel (not owned).
+  btRigidBody* hub = nullptr;                         ///< The body carrying the axle, or null (for omega_rel).
+  btVector3 axle_local{0, 1, 0};                      ///< Axle direction in the body frame.
+  btVector3 centre_local{0, 0, 0};                    ///< Wheel centre O in the body frame (m).
+  WheelDescription description;                       ///< Geometry, tyre, inertia.
+  EffectSet effects = EffectSet::full();
+};
+
+/// A wheel that is link `link` of a btMultiBody; its hub is the parent link.
+struct MultiBodyWheel {
+  btMultiBody* multibody = nullptr;  ///< Not owned; the link must have a collider.
+  int link = -1;
+  btVector3 axle_local{0, 1, 0};    ///< In the link frame.
+  btVector3 centre_local{0, 0, 0};  ///< In the link frame (m).
+  WheelDescription description;
+  EffectSet effects = EffectSet::full();
+};
+
+/// Called at each internal step, for each wheel, after its tyre model ran
+/// (before Bullet integrates the step). Default: nothing.
+class WheelListener {
+ public:
+  virtual ~WheelListener() = default;
+  virtual void onWheelStep(WheelId wheel, const WheelForces& forces, double step_seconds) {
+    (void)wheel, (void)forces, (void)step_seconds;
+  }
+};
+
+class Plugin {
+ public:
+  /// Adds `terrain` (which must outlive the plugin) to `world` and takes
+  /// over the world's pre-tick callback. The dispatcher must be a
+  /// btCollisionDispatcher (it is, unless replaced).
+  Plugin(btDiscreteDynamicsWorld& world, const Terrain& terrain, ContactMode mode = ContactMode::kForce);
+  ~Plugin();
+  Plugin(const Plugin&) = delete;
+  Plugin& operator=(const Plugin&) = delete;
+
+  /// Registers a wheel (validated: InvalidInputError names the problem).
+  WheelId addWheel(const RigidWheel& wheel);
+  WheelId addWheel(const MultiBodyWheel& wheel);
+
+  /// The last internal step's result and state of a wheel.
+  const WheelForces& forces(WheelId wheel) const;
+  const WheelState& state(WheelId wheel) const;
+  int wheelCount() const;
+
+  ContactMode mode() const;
+  btCollisionObject& terrainObject();
+  void setListener(WheelListener* listener);
+  /// Called at the start of every internal step, before the wheels.
+  void setPreTickCallback(std::function<void(double step_seconds)> callback);
+
+  struct Impl;
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace wtc::bullet

@@ -1,0 +1,36 @@
+#pragma once
+// The WTC terrain as one static Bullet collision object: a compound of
+// convex hulls, one per piece, so that every pair other than wheel-terrain
+// (a chassis scraping the ledge) collides with the same ground through
+// Bullet's own algorithms.
+#include <memory>
+#include <vector>
+
+#include <btBulletCollisionCommon.h>
+
+#include "wtc/terrain.hpp"
+
+namespace wtc::bullet {
+
+/// Collision margin of the pieces' hulls (m): Bullet's GJK wants a margin;
+/// 1 mm moves a chassis contact by 1 mm and never touches WTC's wheels.
+inline constexpr btScalar kTerrainMarginM = 0.001;
+
+class TerrainObject {
+ public:
+  explicit TerrainObject(const Terrain& terrain);
+  TerrainObject(const TerrainObject&) = delete;
+  TerrainObject& operator=(const TerrainObject&) = delete;
+
+  const Terrain& terrain() const { return terrain_; }
+  btCollisionObject& object() { return object_; }
+  const btCollisionObject& object() const { return object_; }
+
+ private:
+  const Terrain& terrain_;
+  std::vector<std::unique_ptr<btConvexHullShape>> hulls_;
+  std::unique_ptr<btCompoundShape> compound_;
+  btCollisionObject object_;
+};
+
+}  // namespace wtc::bullet

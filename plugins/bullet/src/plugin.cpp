@@ -1,0 +1,224 @@
+// wtc::bullet::Plugin: registration, the pre-tick (one tyre-model step per
+// wheel per internal step) and how its results reach the bodies. Design
+// note in include/wtc/bullet/plugin.hpp.
+#include "wtc/bullet/plugin.hpp"
+
+#include <string>
+
+#include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
+
+#include "plugin_impl.hpp"
+#include "wheel_terrain_algorithm.hpp"
+#include "wtc/error.hpp"
+
+namespace wtc::bullet {
+namespace {
+
+[[noreturn]] void fail(const char* where, const std::string& what) {
+  throw InvalidInputError(std::string(where) + ": " + what);
+}
+
+void preTickCallback(btDynamicsWorld* world, btScalar step_seconds) {
+  static_cast<Plugin::Impl*>(world->getWorldUserInfo())->preTick(step_seconds);
+}
+
+// Where the wheel is and how it moves, in the world frame.
+struct Kinematics {
+  btVector3 centre, axle, com;
+  WheelMotion motion;
+};
+
+Kinematics rigidKinematics(const Wheel& w) {
+  const btTransform& t = w.body->getWorldTransform();  // the centre-of-mass frame
+  Kinematics k;
+  k.com = t.getOrigin();
+  k.centre = t * w.centre_local;
+  k.axle = t.getBasis() * w.axle_local;
+  k.motion.velocity = toEigen(w.body->getVelocityInLocalPoint(k.centre - k.com));
+  k.motion.angular_velocity = toEigen(w.body->getAngularVelocity());
+  if (w.hub != nullptr) k.motion.hub_angular_velocity = toEigen(w.hub->getAngularVelocity());
+  return k;
+}
+
+Kinematics multiBodyKinematics(const Wheel& w, btAlignedObjectArray<btVector3>& omega,
+                               btAlignedObjectArray<btVector3>& velocity) {
+  const btMultiBody& mb = *w.multibody;
+  omega.resize(mb.getNumLinks() + 1);
+  velocity.resize(mb.getNumLinks() + 1);
+  mb.compTreeLinkVelocities(&omega[0], &velocity[0]);  // index 0 the base, i + 1 link i; link frames
+  const btTransform& t = w.collider->getWorldTransform();
+  Kinematics k;
+  k.com = t.getOrigin();
+  k.centre = t * w.centre_local;
+  k.axle = t.getBasis() * w.axle_local;
+  const btVector3 spin = mb.localDirToWorld(w.link, omega[w.link + 1]);
+  const btVector3 com_velocity = mb.localDirToWorld(w.link, velocity[w.link + 1]);
+  k.motion.velocity = toEigen(com_velocity + spin.cross(k.centre - k.com));
+  k.motion.angular_velocity = toEigen(spin);
+  const int parent = mb.getParent(w.link);
+  k.motion.hub_angular_velocity = toEigen(mb.localDirToWorld(parent, omega[parent + 1]));
+  return k;
+}
+
+// The wrench (force F through O, torque T about O) on the wheel for one
+// step of length h: impulses on a rigid body (they act on this substep
+// only), link force and torque on a multibody (cleared every substep).
+void applyWrench(Wheel& w, const Kinematics& k, const btVector3& force, const btVector3& torque_about_centre,
+                 double h) {
+  const btVector3 torque = torque_about_centre + (k.centre - k.com).cross(force);
+  if (w.body != nullptr) {
+    w.body->applyCentralImpulse(force * h);
+    w.body->applyTorqueImpulse(torque * h);
+  } else {
+    w.multibody->addLinkForce(w.link, force);
+    w.multibody->addLinkTorque(w.link, torque);
+  }
+}
+
+void requireAxle(const btVector3& axle, const char* where) {
+  const Eigen::Vector3d a = toEigen(axle);
+  if (!a.allFinite() || a.norm() < tolerance::kMinAxleNorm) {
+    fail(where, "axle_local = " + formatVector(a) + " is not finite or is zero");
+  }
+}
+
+}  // namespace
+
+Plugin::Impl::Impl(btDiscreteDynamicsWorld& w, const Terrain& t, ContactMode m)
+    : world(w), dispatcher(dynamic_cast<btCollisionDispatcher*>(w.getDispatcher())), terrain(t), mode(m) {
+  if (dispatcher == nullptr) fail("wtc::bullet::Plugin", "the world's dispatcher is not a btCollisionDispatcher");
+  world.addCollisionObject(&terrain.object(), btBroadphaseProxy::StaticFilter,
+                           btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
+  create = std::make_unique<WheelTerrainAlgorithm::CreateFunc>(*this);
+  for (int type = 0; type < MAX_BROADPHASE_COLLISION_TYPES; ++type) {
+    dispatcher->registerCollisionCreateFunc(CUSTOM_CONVEX_SHAPE_TYPE, type, create.get());
+    dispatcher->registerCollisionCreateFunc(type, CUSTOM_CONVEX_SHAPE_TYPE, create.get());
+  }
+  // Constraint mode sets each WTC contact's first friction direction;
+  // Bullet keeps a contact's directions only with this flag (other contacts
+  // then keep the directions Bullet chose when they appeared).
+  if (mode == ContactMode::kConstraint) world.getSolverInfo().m_solverMode |= SOLVER_ENABLE_FRICTION_DIRECTION_CACHING;
+  world.setInternalTickCallback(&preTickCallback, this, true);
+}
+
+Plugin::Impl::~Impl() {
+  world.setInternalTickCallback(nullptr, nullptr, true);
+  // Free every algorithm that points at this plugin before unregistering.
+  btOverlappingPairCache* pairs = world.getBroadphase()->getOverlappingPairCache();
+  for (const auto& w : wheels) {
+    if (w->collider->getBroadphaseHandle() != nullptr) {
+      pairs->cleanProxyFromPairs(w->collider->getBroadphaseHandle(), dispatcher);
+    }
+  }
+  world.removeCollisionObject(&terrain.object());
+  btCollisionConfiguration* config = dispatcher->getCollisionConfiguration();
+  for (int type = 0; type < MAX_BROADPHASE_COLLISION_TYPES; ++type) {
+    dispatcher->registerCollisionCreateFunc(CUSTOM_CONVEX_SHAPE_TYPE, type,
+                                            config->getCollisionAlgorithmCreateFunc(CUSTOM_CONVEX_SHAPE_TYPE, type));
+    dispatcher->registerCollisionCreateFunc(type, CUSTOM_CONVEX_SHAPE_TYPE,
+                                            config->getCollisionAlgorithmCreateFunc(type, CUSTOM_CONVEX_SHAPE_TYPE));
+  }
+  for (const auto& w : wheels) w->collider->setCollisionShape(w->shape->original());
+}
+
+int Plugin::Impl::wheelOf(const btCollisionObject* object) const {
+  const auto found = wheel_of.find(object);
+  return found == wheel_of.end() ? -1 : found->second;
+}
+
+WheelId Plugin::Impl::add(std::unique_ptr<Wheel> w, const char* where) {
+  validate(w->description, where);
+  requireAxle(w->axle_local, where);
+  if (!toEigen(w->centre_local).allFinite()) {
+    fail(where, "centre_local = " + formatVector(toEigen(w->centre_local)) + " is not finite");
+  }
+  if (wheel_of.count(w->collider) != 0) fail(where, "this body is already a registered wheel");
+  btCollisionShape* original = w->collider->getCollisionShape();
+  if (original == nullptr) fail(where, "the wheel body has no collision shape");
+  w->shape = std::make_unique<WheelShape>(w->description.geometry.free_radius, original);
+  w->collider->setCollisionShape(w->shape.get());
+  w->collider->setActivationState(DISABLE_DEACTIVATION);
+  if (w->collider->getBroadphaseHandle() != nullptr) world.updateSingleAabb(w->collider);
+  const auto id = static_cast<WheelId>(wheels.size());
+  wheel_of.emplace(w->collider, id);
+  wheels.push_back(std::move(w));
+  return id;
+}
+
+void Plugin::Impl::preTick(double h) {
+  if (pre_tick) pre_tick(h);
+  const Terrain& ground = terrain.terrain();
+  for (std::size_t id = 0; id < wheels.size(); ++id) {
+    Wheel& w = *wheels[id];
+    const Kinematics k = w.body != nullptr ? rigidKinematics(w) : multiBodyKinematics(w, omega_scratch, velocity_scratch);
+    const WheelForces& f = w.model.step(ground, w.description, {toEigen(k.centre), toEigen(k.axle)}, k.motion, h, w.state);
+    w.forces = &f;
+    if (mode == ContactMode::kForce) {
+      applyWrench(w, k, toBullet(f.force), toBullet(f.torque), h);
+    } else {
+      // The engine's contacts carry the normal and friction forces; rolling
+      // resistance remains an explicit moment.
+      btVector3 rolling(0, 0, 0);
+      w.engine_contacts.clear();
+      const double damping = w.model.effects().has(Effect::kNormalDamping) ? w.description.tyre.radial_damping : 0.0;
+      for (const ContactForce& c : f.contacts) {
+        rolling += toBullet(c.rolling_moment);
+        w.engine_contacts.push_back(toEngineContact(c, w.description.tyre.radial_stiffness, damping));
+      }
+      applyWrench(w, k, btVector3(0, 0, 0), rolling, h);
+    }
+    if (listener != nullptr) listener->onWheelStep(static_cast<WheelId>(id), f, h);
+  }
+}
+
+Plugin::Plugin(btDiscreteDynamicsWorld& world, const Terrain& terrain, ContactMode mode)
+    : impl_(std::make_unique<Impl>(world, terrain, mode)) {}
+
+Plugin::~Plugin() = default;
+
+WheelId Plugin::addWheel(const RigidWheel& spec) {
+  static constexpr const char* kWhere = "wtc::bullet::Plugin::addWheel (rigid body)";
+  if (spec.body == nullptr) fail(kWhere, "body is null");
+  auto w = std::make_unique<Wheel>(spec.effects);
+  w->body = spec.body;
+  w->hub = spec.hub;
+  w->collider = spec.body;
+  w->axle_local = spec.axle_local;
+  w->centre_local = spec.centre_local;
+  w->description = spec.description;
+  return impl_->add(std::move(w), kWhere);
+}
+
+WheelId Plugin::addWheel(const MultiBodyWheel& spec) {
+  static constexpr const char* kWhere = "wtc::bullet::Plugin::addWheel (multibody link)";
+  if (spec.multibody == nullptr) fail(kWhere, "multibody is null");
+  if (spec.link < 0 || spec.link >= spec.multibody->getNumLinks()) {
+    fail(kWhere, "link = " + std::to_string(spec.link) + " is not a link of the multibody (it has " +
+                     std::to_string(spec.multibody->getNumLinks()) + ")");
+  }
+  btMultiBodyLinkCollider* collider = spec.multibody->getLinkCollider(spec.link);
+  if (collider == nullptr) fail(kWhere, "link " + std::to_string(spec.link) + " has no collider");
+  auto w = std::make_unique<Wheel>(spec.effects);
+  w->multibody = spec.multibody;
+  w->link = spec.link;
+  w->collider = collider;
+  w->axle_local = spec.axle_local;
+  w->centre_local = spec.centre_local;
+  w->description = spec.description;
+  return impl_->add(std::move(w), kWhere);
+}
+
+const WheelForces& Plugin::forces(WheelId wheel) const {
+  static const WheelForces kNone;
+  const Wheel& w = *impl_->wheels.at(static_cast<std::size_t>(wheel));
+  return w.forces != nullptr ? *w.forces : kNone;
+}
+
+const WheelState& Plugin::state(WheelId wheel) const { return impl_->wheels.at(static_cast<std::size_t>(wheel))->state; }
+int Plugin::wheelCount() const { return static_cast<int>(impl_->wheels.size()); }
+ContactMode Plugin::mode() const { return impl_->mode; }
+btCollisionObject& Plugin::terrainObject() { return impl_->terrain.object(); }
+void Plugin::setListener(WheelListener* listener) { impl_->listener = listener; }
+void Plugin::setPreTickCallback(std::function<void(double)> callback) { impl_->pre_tick = std::move(callback); }
+
+}  // namespace wtc::bullet

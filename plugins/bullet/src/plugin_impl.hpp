@@ -1,0 +1,55 @@
+#pragma once
+// The state behind wtc::bullet::Plugin, shared with the collision algorithm
+// (internal to wtc::bullet).
+#include <memory>
+#include <unordered_map>
+#include <vector>
+
+#include <BulletDynamics/Featherstone/btMultiBody.h>
+
+#include "wtc/bullet/plugin.hpp"
+#include "wtc/bullet/terrain_object.hpp"
+#include "wtc/bullet/wheel_shape.hpp"
+
+namespace wtc::bullet {
+
+inline btVector3 toBullet(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+inline Eigen::Vector3d toEigen(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
+
+struct Wheel {
+  explicit Wheel(EffectSet effects) : model(effects) {}
+
+  btRigidBody* body = nullptr;     // a rigid wheel, or
+  btMultiBody* multibody = nullptr;  // a multibody link
+  int link = -1;
+  btRigidBody* hub = nullptr;
+  btCollisionObject* collider = nullptr;
+  btVector3 axle_local, centre_local;
+  WheelDescription description;
+  TyreModel model;
+  WheelState state;
+  std::unique_ptr<WheelShape> shape;  // replaces the collider's shape while registered
+  std::vector<EngineContact> engine_contacts;  // constraint mode: this step's contacts
+  const WheelForces* forces = nullptr;
+};
+
+struct Plugin::Impl {
+  Impl(btDiscreteDynamicsWorld& world, const Terrain& terrain, ContactMode mode);
+  ~Impl();
+  WheelId add(std::unique_ptr<Wheel> wheel, const char* where);
+  void preTick(double step_seconds);
+  int wheelOf(const btCollisionObject* object) const;
+
+  btDiscreteDynamicsWorld& world;
+  btCollisionDispatcher* dispatcher;
+  TerrainObject terrain;
+  ContactMode mode;
+  std::vector<std::unique_ptr<Wheel>> wheels;
+  std::unordered_map<const btCollisionObject*, int> wheel_of;
+  std::unique_ptr<btCollisionAlgorithmCreateFunc> create;
+  WheelListener* listener = nullptr;
+  std::function<void(double)> pre_tick;
+  btAlignedObjectArray<btVector3> omega_scratch, velocity_scratch;  // multibody link velocities
+};
+
+}  // namespace wtc::bullet

@@ -1,0 +1,112 @@
+#include "wheel_terrain_algorithm.hpp"
+
+#include <new>
+
+#include "plugin_impl.hpp"
+
+namespace wtc::bullet {
+
+btCollisionAlgorithm* WheelTerrainAlgorithm::CreateFunc::CreateCollisionAlgorithm(
+    btCollisionAlgorithmConstructionInfo& info, const btCollisionObjectWrapper*, const btCollisionObjectWrapper*) {
+  void* memory = info.m_dispatcher1->allocateCollisionAlgorithm(sizeof(WheelTerrainAlgorithm));
+  return new (memory) WheelTerrainAlgorithm(info, impl_);
+}
+
+WheelTerrainAlgorithm::WheelTerrainAlgorithm(const btCollisionAlgorithmConstructionInfo& info, Plugin::Impl& impl)
+    : btCollisionAlgorithm(info), impl_(impl) {}
+
+WheelTerrainAlgorithm::~WheelTerrainAlgorithm() {
+  if (child_ != nullptr) {
+    child_->~btCollisionAlgorithm();
+    m_dispatcher->freeCollisionAlgorithm(child_);
+  }
+  if (manifold_ != nullptr) m_dispatcher->releaseManifold(manifold_);
+}
+
+void WheelTerrainAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
+                                             const btCollisionObjectWrapper* body1,
+                                             const btDispatcherInfo& dispatch_info, btManifoldResult* result) {
+  const btCollisionObject* terrain = &impl_.terrain.object();
+  const int wheel0 = impl_.wheelOf(body0->getCollisionObject());
+  const int wheel1 = impl_.wheelOf(body1->getCollisionObject());
+  if (wheel0 >= 0 && body1->getCollisionObject() == terrain) {
+    writeWtcContacts(wheel0, true, body0, body1, result);
+  } else if (wheel1 >= 0 && body0->getCollisionObject() == terrain) {
+    writeWtcContacts(wheel1, false, body0, body1, result);
+  } else {
+    delegate(body0, body1, dispatch_info, result);
+  }
+}
+
+void WheelTerrainAlgorithm::writeWtcContacts(int wheel, bool wheel_is_body0, const btCollisionObjectWrapper* body0,
+                                             const btCollisionObjectWrapper* body1, btManifoldResult* result) {
+  if (manifold_ == nullptr) {
+    manifold_ = m_dispatcher->getNewManifold(body0->getCollisionObject(), body1->getCollisionObject());
+  }
+  result->setPersistentManifold(manifold_);
+  // The contacts are WTC's, found afresh each step: nothing carries over.
+  manifold_->clearManifold();
+  if (impl_.mode == ContactMode::kForce) return;
+  for (const EngineContact& c : impl_.wheels[wheel]->engine_contacts) {
+    // Bullet's normal on B points from B to A; the point is on B; a
+    // negative distance is a penetration.
+    const btVector3 normal_on_b = toBullet(wheel_is_body0 ? c.normal : Eigen::Vector3d(-c.normal));
+    const btVector3 point_on_b = toBullet(wheel_is_body0 ? c.ground_point : c.tread_point);
+    result->addContactPoint(normal_on_b, point_on_b, -c.depth);
+    // The point just added (or the one it replaced): nearest to point_on_b.
+    int index = -1;
+    btScalar nearest = BT_LARGE_FLOAT;
+    for (int k = 0; k < manifold_->getNumContacts(); ++k) {
+      const btManifoldPoint& p = manifold_->getContactPoint(k);
+      const btScalar d = ((manifold_->getBody0() == body0->getCollisionObject()) ? p.m_positionWorldOnB
+                                                                                  : p.m_positionWorldOnA)
+                             .distance2(point_on_b);
+      if (d < nearest) nearest = d, index = k;
+    }
+    if (index < 0) continue;
+    btManifoldPoint& p = manifold_->getContactPoint(index);
+    p.m_combinedFriction = c.friction;
+    p.m_combinedRestitution = 0;
+    p.m_combinedRollingFriction = 0;
+    p.m_combinedSpinningFriction = 0;
+    const btVector3 normal = p.m_normalWorldOnB;
+    btVector3 direction = toBullet(c.friction_direction);
+    direction -= normal * normal.dot(direction);  // the manifold's normal may be flipped: stay tangent
+    if (direction.length2() > 0) {
+      p.m_lateralFrictionDir1 = direction.normalized();
+      p.m_lateralFrictionDir2 = normal.cross(p.m_lateralFrictionDir1);
+      p.m_contactPointFlags |= BT_CONTACT_FLAG_LATERAL_FRICTION_INITIALIZED;
+    }
+    p.m_contactPointFlags &= ~(BT_CONTACT_FLAG_HAS_CONTACT_CFM | BT_CONTACT_FLAG_HAS_CONTACT_ERP);
+    p.m_combinedContactStiffness1 = c.stiffness;
+    p.m_combinedContactDamping1 = c.damping;
+    p.m_contactPointFlags |= BT_CONTACT_FLAG_CONTACT_STIFFNESS_DAMPING;
+  }
+}
+
+void WheelTerrainAlgorithm::delegate(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
+                                     const btDispatcherInfo& dispatch_info, btManifoldResult* result) {
+  const btCollisionObjectWrapper original0(body0->m_parent, unwrap(body0->getCollisionShape()),
+                                           body0->getCollisionObject(), body0->getWorldTransform(),
+                                           body0->m_partId, body0->m_index);
+  const btCollisionObjectWrapper original1(body1->m_parent, unwrap(body1->getCollisionShape()),
+                                           body1->getCollisionObject(), body1->getWorldTransform(),
+                                           body1->m_partId, body1->m_index);
+  if (child_ == nullptr) {
+    child_ = m_dispatcher->findAlgorithm(&original0, &original1, nullptr, BT_CONTACT_POINT_ALGORITHMS);
+  }
+  const btCollisionObjectWrapper* saved0 = result->getBody0Wrap();
+  const btCollisionObjectWrapper* saved1 = result->getBody1Wrap();
+  result->setBody0Wrap(&original0);
+  result->setBody1Wrap(&original1);
+  child_->processCollision(&original0, &original1, dispatch_info, result);
+  result->setBody0Wrap(saved0);
+  result->setBody1Wrap(saved1);
+}
+
+void WheelTerrainAlgorithm::getAllContactManifolds(btManifoldArray& manifolds) {
+  if (manifold_ != nullptr) manifolds.push_back(manifold_);
+  if (child_ != nullptr) child_->getAllContactManifolds(manifolds);
+}
+
+}  // namespace wtc::bullet

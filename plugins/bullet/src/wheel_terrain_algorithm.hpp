@@ -1,0 +1,49 @@
+#pragma once
+// The collision algorithm the plugin registers for WheelShape against every
+// shape type (internal to wtc::bullet). Wheel against the WTC terrain: the
+// contacts WTC found in this step's pre-tick go into the pair's manifold
+// (constraint mode), or none at all (force mode: the forces are applied in
+// the pre-tick). Anything else: Bullet's own algorithm for the wheel's
+// original shape.
+#include <btBulletCollisionCommon.h>
+
+#include "wtc/bullet/plugin.hpp"
+
+namespace wtc::bullet {
+
+class WheelTerrainAlgorithm : public btCollisionAlgorithm {
+ public:
+  class CreateFunc : public btCollisionAlgorithmCreateFunc {
+   public:
+    explicit CreateFunc(Plugin::Impl& impl) : impl_(impl) {}
+    btCollisionAlgorithm* CreateCollisionAlgorithm(btCollisionAlgorithmConstructionInfo& info,
+                                                   const btCollisionObjectWrapper* body0,
+                                                   const btCollisionObjectWrapper* body1) override;
+
+   private:
+    Plugin::Impl& impl_;
+  };
+
+  WheelTerrainAlgorithm(const btCollisionAlgorithmConstructionInfo& info, Plugin::Impl& impl);
+  ~WheelTerrainAlgorithm() override;
+
+  void processCollision(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
+                        const btDispatcherInfo& dispatch_info, btManifoldResult* result) override;
+  btScalar calculateTimeOfImpact(btCollisionObject*, btCollisionObject*, const btDispatcherInfo&,
+                                 btManifoldResult*) override {
+    return 1;
+  }
+  void getAllContactManifolds(btManifoldArray& manifolds) override;
+
+ private:
+  void writeWtcContacts(int wheel, bool wheel_is_body0, const btCollisionObjectWrapper* body0,
+                        const btCollisionObjectWrapper* body1, btManifoldResult* result);
+  void delegate(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
+                const btDispatcherInfo& dispatch_info, btManifoldResult* result);
+
+  Plugin::Impl& impl_;
+  btPersistentManifold* manifold_ = nullptr;
+  btCollisionAlgorithm* child_ = nullptr;
+};
+
+}  // namespace wtc::bullet

@@ -1,0 +1,44 @@
+#include "wtc/engine_contact.hpp"
+
+#include <cmath>
+
+namespace wtc {
+namespace {
+
+// A unit vector normal to n (unit): the axis of n's smallest component
+// crossed with n, so it is never ill-conditioned.
+Eigen::Vector3d anyTangent(const Eigen::Vector3d& n) {
+  Eigen::Index smallest = 0;
+  n.cwiseAbs().minCoeff(&smallest);
+  return n.cross(Eigen::Vector3d::Unit(smallest)).normalized();
+}
+
+}  // namespace
+
+EngineContact toEngineContact(const ContactForce& f, double stiffness, double damping) {
+  EngineContact c;
+  c.ground_point = f.contact.ground_point;
+  c.tread_point = f.contact.point;
+  c.normal = -f.contact.e;
+  c.depth = f.contact.deflection;
+  c.stiffness = f.contact.load_share * stiffness;
+  c.damping = f.contact.load_share * damping;
+  c.friction = f.mu;
+  // Along the traction if there is one, else against the slip, else any.
+  const double traction = f.tangential_force.norm(), slip = f.slip_velocity.norm();
+  if (traction > 0.0 && std::isfinite(traction)) {
+    c.friction_direction = f.tangential_force / traction;
+  } else if (slip > 0.0 && std::isfinite(slip)) {
+    c.friction_direction = -f.slip_velocity / slip;
+  } else {
+    c.friction_direction = anyTangent(c.normal);
+  }
+  return c;
+}
+
+SoftConstraint softConstraint(double stiffness, double damping, double h) {
+  const double denominator = h * stiffness + damping;
+  return {h * stiffness / denominator, 1.0 / denominator};
+}
+
+}  // namespace wtc

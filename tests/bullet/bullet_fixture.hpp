@@ -1,0 +1,51 @@
+#pragma once
+// A Bullet world with WTC plugged in, and wheel bodies, for the validation
+// scenes of the Bullet plugin. Gravity -9.81 m/s^2 along z; the wheel is a
+// cylinder (radius r_f, width w) whose axle is its local y axis.
+#include <memory>
+#include <vector>
+
+#include <btBulletDynamicsCommon.h>
+
+#include "wtc/bullet/plugin.hpp"
+#include "wtc/terrain.hpp"
+
+namespace wtc::testing {
+
+inline constexpr double kGravityMps2 = 9.81;
+
+/// A disc-like wheel body: mass (kg), axial inertia m r^2 / 2, at `centre`.
+struct WheelBody {
+  WheelBody(btDiscreteDynamicsWorld& world, double mass, const btVector3& centre, double free_radius = 0.19,
+            double tread_width = 0.12);
+  ~WheelBody();
+  btDiscreteDynamicsWorld& world;
+  btCylinderShape shape;
+  btDefaultMotionState motion;
+  std::unique_ptr<btRigidBody> body;
+};
+
+/// Members in construction order; the plugin goes first, then the bodies
+/// it points at, then the world.
+struct BulletWorld {
+  explicit BulletWorld(const Terrain& terrain, ContactMode mode);
+  /// A wheel body owned by this world.
+  WheelBody& addWheelBody(double mass, const btVector3& centre);
+  btDefaultCollisionConfiguration config;
+  btCollisionDispatcher dispatcher{&config};
+  btDbvtBroadphase broadphase;
+  btSequentialImpulseConstraintSolver solver;
+  btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &config};
+  std::vector<std::unique_ptr<WheelBody>> bodies;
+  std::unique_ptr<bullet::Plugin> plugin;
+};
+
+/// Registers `wheel` with the defaults of the robot's wheel, `mass` as its
+/// effective mass and the disc's axial inertia.
+bullet::WheelId addWheel(BulletWorld& w, WheelBody& wheel, EffectSet effects = EffectSet::full(),
+                         const TyreParameters& tyre = {});
+
+/// A flat slab (top z = 0), 40 x 40 m, optionally tiled.
+Terrain flatGround(int tiles = 1, const Material& material = {});
+
+}  // namespace wtc::testing
