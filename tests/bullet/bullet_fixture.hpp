@@ -8,11 +8,10 @@
 #include <btBulletDynamicsCommon.h>
 
 #include "wtc/bullet/plugin.hpp"
+#include "wheel_sim.hpp"
 #include "wtc/terrain.hpp"
 
 namespace wtc::testing {
-
-inline constexpr double kGravityMps2 = 9.81;
 
 /// A disc-like wheel body: mass (kg), axial inertia m r^2 / 2, at `centre`.
 struct WheelBody {

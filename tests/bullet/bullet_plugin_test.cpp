@@ -1,5 +1,5 @@
-// Validation scenes of the Bullet plugin (issue: Bullet plugin, part 4),
-// each against its analytic or expected value, in both contact modes.
+// Validation scenes of the Bullet plugin, each against its analytic or
+// expected value, in both contact modes (docs/bullet-plugin.md).
 #include "wtc/bullet/plugin.hpp"
 
 #include <cmath>
@@ -8,6 +8,10 @@
 #include <gtest/gtest.h>
 
 #include "bullet_fixture.hpp"
+#include "wheel_sim.hpp"
+#include "wtc/error.hpp"
+#include "wtc/terrain_primitives.hpp"
+#include "wtc/traction_law.hpp"
 
 namespace wtc {
 namespace {
@@ -17,11 +21,14 @@ using testing::flatGround;
 using testing::kGravityMps2;
 using testing::WheelBody;
 
-class BulletModeTest : public ::testing::TestWithParam<ContactMode> {};
+constexpr double kRadius = 0.19;         // r_f (m)
+constexpr double kStiffness = 1e5;       // c (N/m), the default tyre
+constexpr double kDegree = 0.017453292519943295;
+constexpr double kStillMps = 1e-6;       // speeds below this are standing still (m/s)
 
-std::string modeName(const ::testing::TestParamInfo<ContactMode>& info) {
-  return info.param == ContactMode::kForce ? "Force" : "Constraint";
-}
+std::string modeName(ContactMode mode) { return mode == ContactMode::kForce ? "Force" : "Constraint"; }
+
+class BulletModeTest : public ::testing::TestWithParam<ContactMode> {};
 
 // Case: a wheel (and a loaded wheel) dropped on flat ground settles at
 // m g / c within 2 %.
@@ -29,17 +36,267 @@ TEST_P(BulletModeTest, DroppedWheelSettlesAtWeightOverStiffness) {
   const Terrain ground = flatGround();
   for (const double mass : {3.7, 21.0}) {
     BulletWorld w(ground, GetParam());
-    WheelBody& wheel = w.addWheelBody(mass, btVector3(0, 0, 0.19 + 0.01));
+    WheelBody& wheel = w.addWheelBody(mass, btVector3(0, 0, kRadius + 0.01));
     const bullet::WheelId id = testing::addWheel(w, wheel);
     for (int k = 0; k < 3000; ++k) w.world.stepSimulation(1e-3, 1, 1e-3);
-    const double deflection = 0.19 - wheel.body->getCenterOfMassPosition().z();
-    EXPECT_NEAR(deflection, mass * kGravityMps2 / 1e5, 0.02 * mass * kGravityMps2 / 1e5) << "m = " << mass;
+    const double deflection = kRadius - wheel.body->getCenterOfMassPosition().z();
+    EXPECT_NEAR(deflection, mass * kGravityMps2 / kStiffness, 0.02 * mass * kGravityMps2 / kStiffness) << mass;
     EXPECT_EQ(w.plugin->forces(id).contacts.size(), 1u);
   }
 }
 
+// Case: without damping the bounce never rises above the drop height.
+TEST_P(BulletModeTest, UndampedBounceDoesNotGainEnergy) {
+  const Terrain ground = flatGround();
+  BulletWorld w(ground, GetParam());
+  const double drop = 0.05;  // (m)
+  WheelBody& wheel = w.addWheelBody(3.7, btVector3(0, 0, kRadius + drop));
+  testing::addWheel(w, wheel, EffectSet::minimal());
+  double highest_late = 0.0;
+  for (int k = 0; k < 10000; ++k) {
+    w.world.stepSimulation(1e-3, 1, 1e-3);
+    if (k > 5000) highest_late = std::max(highest_late, wheel.body->getCenterOfMassPosition().z());
+  }
+  EXPECT_LE(highest_late, kRadius + drop + 1e-4);
+}
+
+// Case: a wheel rolling at 1 m/s decelerates under rolling resistance alone:
+// a = f_r m g r_0 r / (I + m r^2) = 0.114 m/s^2 for a disc (I = m r^2 / 2).
+TEST_P(BulletModeTest, FreeRollingWheelDeceleratesAsRollingResistancePredicts) {
+  const Terrain ground = flatGround();
+  BulletWorld w(ground, GetParam());
+  const double mass = 21.0, deflection = mass * kGravityMps2 / kStiffness;
+  WheelBody& wheel = w.addWheelBody(mass, btVector3(-5, 0, kRadius - deflection));
+  wheel.body->setAngularFactor(btVector3(0, 1, 0));  // upright: spin about the axle only
+  wheel.body->setLinearFactor(btVector3(1, 0, 1));
+  testing::addWheel(w, wheel);
+  wheel.body->setLinearVelocity(btVector3(1.0, 0, 0));
+  wheel.body->setAngularVelocity(btVector3(0, 1.0 / kRadius, 0));
+  for (int k = 0; k < 500; ++k) w.world.stepSimulation(1e-3, 1, 1e-3);
+  const double v0 = wheel.body->getLinearVelocity().x();
+  for (int k = 0; k < 2000; ++k) w.world.stepSimulation(1e-3, 1, 1e-3);
+  const double deceleration = (v0 - wheel.body->getLinearVelocity().x()) / 2.0;
+  const double inertia = 0.5 * mass * kRadius * kRadius;
+  const double expected = 0.018 * mass * kGravityMps2 * 0.97 * kRadius * kRadius / (inertia + mass * kRadius * kRadius);
+  EXPECT_NEAR(deceleration, expected, 0.05 * expected);
+}
+
+// Case: a driven wheel with a torque far beyond its grip accelerates at
+// mu_max g: the traction saturates at mu R_z.
+TEST_P(BulletModeTest, DrivenWheelTractionSaturatesAtMuTimesNormalForce) {
+  const Terrain ground = flatGround();
+  BulletWorld w(ground, GetParam());
+  const double mass = 21.0;
+  WheelBody& wheel = w.addWheelBody(mass, btVector3(-5, 0, kRadius - mass * kGravityMps2 / kStiffness));
+  wheel.body->setAngularFactor(btVector3(0, 1, 0));
+  wheel.body->setLinearFactor(btVector3(1, 0, 1));
+  testing::addWheel(w, wheel);
+  for (int k = 0; k < 200; ++k) w.world.stepSimulation(1e-3, 1, 1e-3);
+  const double v0 = wheel.body->getLinearVelocity().x();
+  for (int k = 0; k < 1000; ++k) {
+    wheel.body->applyTorque(btVector3(0, 100.0, 0));  // the robot's wheel motor; grip ~31 N m
+    w.world.stepSimulation(1e-3, 1, 1e-3);
+  }
+  const double acceleration = wheel.body->getLinearVelocity().x() - v0;  // over 1 s
+  EXPECT_NEAR(acceleration, 0.8 * kGravityMps2, 0.02 * 0.8 * kGravityMps2);
+}
+
+// Case: the wheel pressed into the foot of the 0.65 m ledge touches the
+// ground and the face: two contacts, both in the engine in constraint mode.
+TEST_P(BulletModeTest, LedgeCornerGivesTwoContacts) {
+  TerrainBuilder builder;
+  addLedge(builder, {}, builder.addMaterial({}));
+  const Terrain ledge = std::move(builder).build();
+  BulletWorld w(ledge, GetParam());
+  WheelBody& wheel = w.addWheelBody(21.0, btVector3(-kRadius - 0.01, 0, kRadius));
+  wheel.body->setAngularFactor(btVector3(0, 1, 0));
+  wheel.body->setLinearFactor(btVector3(1, 0, 1));
+  const bullet::WheelId id = testing::addWheel(w, wheel);
+  for (int k = 0; k < 2000; ++k) {
+    wheel.body->applyCentralForce(btVector3(100.0, 0, 0));  // pushed toward the face
+    w.world.stepSimulation(1e-3, 1, 1e-3);
+  }
+  ASSERT_EQ(w.plugin->forces(id).contacts.size(), 2u);
+  if (GetParam() == ContactMode::kConstraint) {
+    int points = 0;
+    for (int m = 0; m < w.dispatcher.getNumManifolds(); ++m) points += w.dispatcher.getManifoldByIndexInternal(m)->getNumContacts();
+    EXPECT_EQ(points, 2);
+  }
+  // At rest against the face, a few millimetres into it.
+  EXPECT_LT(wheel.body->getLinearVelocity().length(), 1e-3);
+  EXPECT_NEAR(wheel.body->getCenterOfMassPosition().x(), -kRadius, 0.005);
+  // Force mode applies the tyre model's forces: together they hold the push
+  // and the weight (how they share it is statically indeterminate).
+  if (GetParam() == ContactMode::kForce) {
+    const WheelForces& f = w.plugin->forces(id);
+    EXPECT_NEAR(f.force.x(), -100.0, 2.0);
+    EXPECT_NEAR(f.force.z(), 21.0 * kGravityMps2, 2.0);
+  }
+}
+
+// Case: flat ground made of 400 boxes feels like one slab: a driven wheel
+// follows the same path on both, to roundoff.
+TEST_P(BulletModeTest, TessellatedFlatGroundFeelsLikeOneSlab) {
+  std::vector<btVector3> paths[2];
+  const Terrain grounds[2] = {flatGround(1), flatGround(20)};
+  for (int g = 0; g < 2; ++g) {
+    BulletWorld w(grounds[g], GetParam());
+    WheelBody& wheel = w.addWheelBody(21.0, btVector3(-3.3, 0.7, kRadius - 0.002));
+    wheel.body->setAngularFactor(btVector3(0, 1, 0));
+    wheel.body->setLinearFactor(btVector3(1, 0, 1));
+    testing::addWheel(w, wheel);
+    for (int k = 0; k < 2000; ++k) {
+      wheel.body->applyTorque(btVector3(0, 10.0, 0));
+      w.world.stepSimulation(1e-3, 1, 1e-3);
+      paths[g].push_back(wheel.body->getCenterOfMassPosition());
+    }
+  }
+  EXPECT_GT(paths[0].back().x() - paths[0].front().x(), 2.0) << "crosses several 2 m tiles";
+  double worst = 0.0;
+  for (std::size_t k = 0; k < paths[0].size(); ++k) worst = std::max(worst, double((paths[0][k] - paths[1][k]).length()));
+  EXPECT_LT(worst, 1e-9);
+}
+
+// Case: one stepSimulation with 4 substeps moves the wheel exactly as 4
+// single steps: the plugin's forces act on one substep each, they do not
+// pile up (Bullet clears forces only after all substeps).
+TEST_P(BulletModeTest, SubstepsMoveTheWheelAsSingleSteps) {
+  const Terrain ground = flatGround();
+  btVector3 ends[2];
+  for (int substeps : {1, 4}) {
+    BulletWorld w(ground, GetParam());
+    WheelBody& wheel = w.addWheelBody(21.0, btVector3(0, 0, kRadius + 0.005));
+    wheel.body->setAngularFactor(btVector3(0, 1, 0));
+    wheel.body->setLinearFactor(btVector3(1, 0, 1));
+    wheel.body->setAngularVelocity(btVector3(0, 3.0, 0));
+    testing::addWheel(w, wheel);
+    for (int k = 0; k < 2000 / substeps; ++k) w.world.stepSimulation(substeps * 1e-3, substeps, 1e-3);
+    ends[substeps == 1 ? 0 : 1] = wheel.body->getCenterOfMassPosition();
+  }
+  EXPECT_LT((ends[0] - ends[1]).length(), 1e-12);
+  EXPECT_GT(ends[0].x(), 0.1) << "the spinning wheel drove off";
+}
+
 INSTANTIATE_TEST_SUITE_P(Modes, BulletModeTest, ::testing::Values(ContactMode::kForce, ContactMode::kConstraint),
-                         modeName);
+                         [](const auto& info) { return modeName(info.param); });
+
+struct SlopeCase {
+  ContactMode mode;
+  double step_seconds;
+};
+
+class BulletParkedTest : public ::testing::TestWithParam<SlopeCase> {};
+
+// Case: a locked wheel carrying 21 kg on 15 deg, mu_max = 0.8, creeps less
+// than 1 cm in 10 s and does not oscillate, for steps 0.1 to 2 ms.
+TEST_P(BulletParkedTest, CreepsLessThanOneCentimetreInTenSeconds) {
+  const double slope = 15 * kDegree, h = GetParam().step_seconds;
+  const Terrain incline = testing::tiltedSlab(slope);
+  BulletWorld w(incline, GetParam().mode);
+  const double mass = 21.0, deflection = mass * kGravityMps2 * std::cos(slope) / kStiffness;
+  const Eigen::Vector3d centre = (kRadius - deflection) * testing::slabNormal(slope);
+  WheelBody& wheel = w.addWheelBody(mass, btVector3(centre.x(), centre.y(), centre.z()));
+  wheel.body->setAngularFactor(btVector3(0, 0, 0));  // parked: the brake holds the spin
+  testing::addWheel(w, wheel);
+  const btVector3 down(-std::cos(slope), 0, -std::sin(slope));
+  for (long k = 0; k < std::lround(0.5 / h); ++k) w.world.stepSimulation(h, 1, h);
+  const btVector3 start = wheel.body->getCenterOfMassPosition();
+  int reversals = 0;
+  double previous = 0.0;
+  for (long k = 0; k < std::lround(10.0 / h); ++k) {
+    w.world.stepSimulation(h, 1, h);
+    const double v = wheel.body->getLinearVelocity().dot(down);
+    if (std::abs(v) < kStillMps) continue;
+    if (v * previous < 0.0) ++reversals;
+    previous = v;
+  }
+  const double creep = (wheel.body->getCenterOfMassPosition() - start).dot(down);
+  RecordProperty("creep_mm", std::to_string(creep * 1e3));
+  EXPECT_LT(std::abs(creep), 0.01);
+  EXPECT_EQ(reversals, 0);
+}
+
+std::vector<SlopeCase> parkedCases() {
+  std::vector<SlopeCase> cases;
+  for (const ContactMode mode : {ContactMode::kForce, ContactMode::kConstraint}) {
+    for (const double h : {1e-4, 5e-4, 1e-3, 2e-3}) cases.push_back({mode, h});
+  }
+  return cases;
+}
+
+INSTANTIATE_TEST_SUITE_P(ModesAndSteps, BulletParkedTest, ::testing::ValuesIn(parkedCases()), [](const auto& info) {
+  return modeName(info.param.mode) + "_" + std::to_string(std::lround(info.param.step_seconds * 1e4)) + "e4s";
+});
+
+// Case: on 45 deg (tan = 1 > mu_max) the locked wheel slides with
+// a = g (sin - mu(1) cos), within 2 %.
+TEST_P(BulletModeTest, LockedWheelSlidesAboveTheFrictionLimit) {
+  const double slope = 45 * kDegree;
+  const Terrain incline = testing::tiltedSlab(slope);
+  BulletWorld w(incline, GetParam());
+  const double mass = 21.0, deflection = mass * kGravityMps2 * std::cos(slope) / kStiffness;
+  const Eigen::Vector3d centre = (kRadius - deflection) * testing::slabNormal(slope);
+  WheelBody& wheel = w.addWheelBody(mass, btVector3(centre.x(), centre.y(), centre.z()));
+  wheel.body->setAngularFactor(btVector3(0, 0, 0));
+  testing::addWheel(w, wheel);
+  const btVector3 down(-std::cos(slope), 0, -std::sin(slope));
+  for (int k = 0; k < 300; ++k) w.world.stepSimulation(1e-3, 1, 1e-3);
+  const double v0 = wheel.body->getLinearVelocity().dot(down);
+  for (int k = 0; k < 1000; ++k) w.world.stepSimulation(1e-3, 1, 1e-3);
+  const double acceleration = wheel.body->getLinearVelocity().dot(down) - v0;
+  const double expected = kGravityMps2 * (std::sin(slope) - tractionCoefficient(Material{}, 1.0) * std::cos(slope));
+  EXPECT_NEAR(acceleration, expected, 0.02 * expected);
+}
+
+TEST(BulletPluginTest, BadRegistrationIsAnErrorThatNamesIt) {
+  const Terrain ground = flatGround();
+  BulletWorld w(ground, ContactMode::kForce);
+  WheelBody& wheel = w.addWheelBody(3.7, btVector3(0, 0, 1));
+  bullet::RigidWheel spec;
+  EXPECT_THAT([&] { w.plugin->addWheel(spec); }, ::testing::ThrowsMessage<InvalidInputError>(::testing::HasSubstr("body is null")));
+  spec.body = wheel.body.get();
+  spec.axle_local = btVector3(0, 0, 0);
+  EXPECT_THAT([&] { w.plugin->addWheel(spec); }, ::testing::ThrowsMessage<InvalidInputError>(::testing::HasSubstr("axle_local = (0, 0, 0)")));
+  spec.axle_local = btVector3(0, 1, 0);
+  spec.description.tyre.radial_stiffness = -5;
+  EXPECT_THAT([&] { w.plugin->addWheel(spec); }, ::testing::ThrowsMessage<InvalidInputError>(::testing::HasSubstr("radial_stiffness = -5")));
+  spec.description.tyre.radial_stiffness = 1e5;
+  w.plugin->addWheel(spec);
+  EXPECT_THAT([&] { w.plugin->addWheel(spec); }, ::testing::ThrowsMessage<InvalidInputError>(::testing::HasSubstr("already a registered wheel")));
+}
+
+}  // namespace
+}  // namespace wtc
+
+namespace wtc {
+namespace {
+
+// Case: a driven wheel, pushed as its vehicle would push it, rolls over a
+// 6 cm step (a third of its radius) and rests on the top.
+TEST_P(BulletModeTest, DrivenWheelRollsOverAStepLowerThanItsRadius) {
+  TerrainBuilder builder;
+  LedgeParams step;
+  step.height = 0.06;
+  addLedge(builder, step, builder.addMaterial({}));
+  const Terrain ground = std::move(builder).build();
+  BulletWorld w(ground, GetParam());
+  const double mass = 21.0;
+  WheelBody& wheel = w.addWheelBody(mass, btVector3(-1.0, 0, kRadius - 0.002));
+  wheel.body->setAngularFactor(btVector3(0, 1, 0));
+  wheel.body->setLinearFactor(btVector3(1, 0, 1));
+  testing::addWheel(w, wheel);
+  int most_contacts = 0;
+  for (int k = 0; k < 4000; ++k) {
+    wheel.body->applyTorque(btVector3(0, 10.0, 0));
+    wheel.body->applyCentralForce(btVector3(0.3 * mass * kGravityMps2, 0, 0));
+    w.world.stepSimulation(1e-3, 1, 1e-3);
+    most_contacts = std::max(most_contacts, static_cast<int>(w.plugin->forces(0).contacts.size()));
+    if (wheel.body->getCenterOfMassPosition().x() > 1.0) break;
+  }
+  EXPECT_GT(wheel.body->getCenterOfMassPosition().x(), 1.0) << "over the step";
+  EXPECT_NEAR(wheel.body->getCenterOfMassPosition().z(), 0.06 + kRadius - mass * kGravityMps2 / kStiffness, 0.01);
+  EXPECT_EQ(most_contacts, 2) << "the step's edge and the ground at the foot";
+}
 
 }  // namespace
 }  // namespace wtc
