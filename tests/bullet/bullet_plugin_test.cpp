@@ -300,3 +300,53 @@ TEST_P(BulletModeTest, DrivenWheelRollsOverAStepLowerThanItsRadius) {
 
 }  // namespace
 }  // namespace wtc
+
+namespace wtc {
+namespace {
+
+// A stiff tyre (c = 1e6 N/m) on the 3.7 kg wheel, dropped 1 mm above its
+// rest height, for 2 s at step h: stable if it settles within 1 % of m g / c.
+bool settlesAtStep(ContactMode mode, double h) {
+  const Terrain ground = flatGround();
+  BulletWorld w(ground, mode);
+  const double mass = 3.7, stiffness = 1e6, rest = mass * kGravityMps2 / stiffness;
+  WheelBody& wheel = w.addWheelBody(mass, btVector3(0, 0, kRadius - rest + 0.001));
+  wheel.body->setAngularFactor(btVector3(0, 0, 0));
+  TyreParameters tyre;
+  tyre.radial_stiffness = stiffness;
+  testing::addWheel(w, wheel, EffectSet::full(), tyre);
+  for (long k = 0; k < std::lround(2.0 / h); ++k) w.world.stepSimulation(h, 1, h);
+  const double deflection = kRadius - wheel.body->getCenterOfMassPosition().z();
+  return std::isfinite(deflection) && std::abs(deflection - rest) < 0.01 * rest;
+}
+
+// The largest step at which settlesAtStep holds, by bisection on log h in
+// [0.1 ms, 0.1 s] (or the bound itself).
+double largestSettlingStep(ContactMode mode) {
+  double low = 1e-4, high = 0.1;
+  if (settlesAtStep(mode, high)) return high;
+  while (high / low > 1.01) {
+    const double h = std::sqrt(low * high);
+    (settlesAtStep(mode, h) ? low : high) = h;
+  }
+  return low;
+}
+
+// Case: the largest stable step of each mode for a stiff tyre. Force mode is
+// the explicit spring: its measured limit is the analytic one,
+// 2 (sqrt(1 + zeta^2) - zeta) / sqrt(c/m) = 3.05 ms. Constraint mode hands
+// the spring to Bullet's implicit solver: stable far beyond.
+TEST(BulletStabilityTest, LargestStableStepOfEachModeForAStiffTyre) {
+  const double predicted = largestStableStep(1e6, 900.0, 3.7);
+  const double force = largestSettlingStep(ContactMode::kForce);
+  const double constraint = largestSettlingStep(ContactMode::kConstraint);
+  RecordProperty("force_mode_largest_step_ms", std::to_string(force * 1e3));
+  RecordProperty("constraint_mode_largest_step_ms", std::to_string(constraint * 1e3));
+  std::printf("stiff tyre c = 1e6 N/m on 3.7 kg: largest stable step, force mode %.3g ms (analytic %.3g ms), "
+              "constraint mode %.3g ms\n", force * 1e3, predicted * 1e3, constraint * 1e3);
+  EXPECT_NEAR(force, predicted, 0.1 * predicted);
+  EXPECT_GE(constraint, 10 * predicted);
+}
+
+}  // namespace
+}  // namespace wtc

@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 
 #include "plugin_impl.hpp"
@@ -20,6 +21,10 @@ namespace {
 
 void preTickCallback(btDynamicsWorld* world, btScalar step_seconds) {
   static_cast<Plugin::Impl*>(world->getWorldUserInfo())->preTick(step_seconds);
+}
+
+void postTickCallback(btDynamicsWorld* world, btScalar) {
+  static_cast<Plugin::Impl*>(world->getWorldUserInfo())->postTick();
 }
 
 // Where the wheel is and how it moves, in the world frame.
@@ -62,7 +67,8 @@ Kinematics multiBodyKinematics(const Wheel& w, btAlignedObjectArray<btVector3>& 
 
 // The wrench (force F through O, torque T about O) on the wheel for one
 // step of length h: impulses on a rigid body (they act on this substep
-// only), link force and torque on a multibody (cleared every substep).
+// only); link force and torque on a multibody, taken back in the post-tick
+// when Bullet keeps them for the next substep (see postTick).
 void applyWrench(Wheel& w, const Kinematics& k, const btVector3& force, const btVector3& torque_about_centre,
                  double h) {
   const btVector3 torque = torque_about_centre + (k.centre - k.com).cross(force);
@@ -72,6 +78,8 @@ void applyWrench(Wheel& w, const Kinematics& k, const btVector3& force, const bt
   } else {
     w.multibody->addLinkForce(w.link, force);
     w.multibody->addLinkTorque(w.link, torque);
+    w.link_force = force;
+    w.link_torque = torque;
   }
 }
 
@@ -99,10 +107,12 @@ Plugin::Impl::Impl(btDiscreteDynamicsWorld& w, const Terrain& t, ContactMode m)
   // then keep the directions Bullet chose when they appeared).
   if (mode == ContactMode::kConstraint) world.getSolverInfo().m_solverMode |= SOLVER_ENABLE_FRICTION_DIRECTION_CACHING;
   world.setInternalTickCallback(&preTickCallback, this, true);
+  world.setInternalTickCallback(&postTickCallback, this, false);
 }
 
 Plugin::Impl::~Impl() {
   world.setInternalTickCallback(nullptr, nullptr, true);
+  world.setInternalTickCallback(nullptr, nullptr, false);
   // Free every algorithm that points at this plugin before unregistering.
   btOverlappingPairCache* pairs = world.getBroadphase()->getOverlappingPairCache();
   for (const auto& w : wheels) {
@@ -135,6 +145,17 @@ WheelId Plugin::Impl::add(std::unique_ptr<Wheel> w, const char* where) {
   if (wheel_of.count(w->collider) != 0) fail(where, "this body is already a registered wheel");
   btCollisionShape* original = w->collider->getCollisionShape();
   if (original == nullptr) fail(where, "the wheel body has no collision shape");
+  // A wheel whose broadphase filters exclude the (static) terrain never
+  // reaches WTC's algorithm: constraint mode would let it fall through.
+  const btBroadphaseProxy* proxy = w->collider->getBroadphaseHandle();
+  const btBroadphaseProxy* ground = terrain.object().getBroadphaseHandle();
+  if (proxy != nullptr && ((proxy->m_collisionFilterGroup & ground->m_collisionFilterMask) == 0 ||
+                           (ground->m_collisionFilterGroup & proxy->m_collisionFilterMask) == 0)) {
+    fail(where, "the wheel's collision filter (group " + std::to_string(proxy->m_collisionFilterGroup) + ", mask " +
+                    std::to_string(proxy->m_collisionFilterMask) +
+                    ") excludes the static terrain; add the wheel's collider with btBroadphaseProxy::DefaultFilter "
+                    "and AllFilter (btDiscreteDynamicsWorld::addCollisionObject defaults to the static group)");
+  }
   w->shape = std::make_unique<WheelShape>(w->description.geometry.free_radius, original);
   w->collider->setCollisionShape(w->shape.get());
   w->collider->setActivationState(DISABLE_DEACTIVATION);
@@ -169,6 +190,21 @@ void Plugin::Impl::preTick(double h) {
     }
     if (listener != nullptr) listener->onWheelStep(static_cast<WheelId>(id), f, h);
   }
+}
+
+void Plugin::Impl::postTick() {
+#ifdef BT_USE_VIRTUAL_CLEARFORCES_AND_GRAVITY
+  // This Bullet clears multibody forces once per stepSimulation, not per
+  // substep (btMultiBodyDynamicsWorld.h defines the macro, as Debian's does):
+  // take this substep's wrench back so that the next one starts clean.
+  for (const auto& w : wheels) {
+    if (w->multibody == nullptr) continue;
+    w->multibody->addLinkForce(w->link, -w->link_force);
+    w->multibody->addLinkTorque(w->link, -w->link_torque);
+    w->link_force.setZero();
+    w->link_torque.setZero();
+  }
+#endif
 }
 
 Plugin::Plugin(btDiscreteDynamicsWorld& world, const Terrain& terrain, ContactMode mode)

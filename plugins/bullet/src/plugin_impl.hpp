@@ -31,6 +31,7 @@ struct Wheel {
   std::unique_ptr<WheelShape> shape;  // replaces the collider's shape while registered
   std::vector<EngineContact> engine_contacts;  // constraint mode: this step's contacts
   const WheelForces* forces = nullptr;
+  btVector3 link_force{0, 0, 0}, link_torque{0, 0, 0};  // multibody: what this substep added
 };
 
 struct Plugin::Impl {
@@ -38,6 +39,7 @@ struct Plugin::Impl {
   ~Impl();
   WheelId add(std::unique_ptr<Wheel> wheel, const char* where);
   void preTick(double step_seconds);
+  void postTick();
   int wheelOf(const btCollisionObject* object) const;
 
   btDiscreteDynamicsWorld& world;
