@@ -1,5 +1,5 @@
 # Installs the library and a relocatable CMake package:
-#   find_package(wtc CONFIG REQUIRED)  ->  wtc::core, wtc::io
+#   find_package(wtc CONFIG REQUIRED)  ->  wtc::core, wtc::io, wtc::bullet (and wtc::ode once built)
 include(CMakePackageConfigHelpers)
 
 install(TARGETS wtc_core EXPORT wtcTargets
@@ -13,7 +13,21 @@ install(TARGETS wtc_io EXPORT wtcTargets
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+# The engine adapters.
+foreach(adapter IN ITEMS wtc_bullet wtc_ode)
+  if(TARGET ${adapter})
+    install(TARGETS ${adapter} EXPORT wtcTargets
+      ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+      LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+      RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
+      INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+  endif()
+endforeach()
 install(DIRECTORY include/wtc DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(DIRECTORY plugins/bullet/include/wtc DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+if(EXISTS ${PROJECT_SOURCE_DIR}/plugins/ode/include/wtc)
+  install(DIRECTORY plugins/ode/include/wtc DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+endif()
 
 set(WTC_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/wtc)
 install(EXPORT wtcTargets NAMESPACE wtc:: DESTINATION ${WTC_CMAKE_DIR})

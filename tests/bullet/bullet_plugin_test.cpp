@@ -350,3 +350,60 @@ TEST(BulletStabilityTest, LargestStableStepOfEachModeForAStiffTyre) {
 
 }  // namespace
 }  // namespace wtc
+
+namespace wtc {
+namespace {
+
+// Case: every pair but wheel-terrain keeps Bullet's own collision with the
+// same terrain: a box (a chassis) dropped on the ledge rests on its top.
+TEST(BulletPluginTest, ChassisCollidesWithTheTerrainThroughBullet) {
+  TerrainBuilder builder;
+  addLedge(builder, {}, builder.addMaterial({}));
+  const Terrain ledge = std::move(builder).build();
+  BulletWorld w(ledge, ContactMode::kForce);
+  btBoxShape box(btVector3(0.3, 0.2, 0.1));
+  btDefaultMotionState motion(btTransform(btQuaternion::getIdentity(), btVector3(1.0, 0, 0.65 + 0.3)));
+  btRigidBody chassis(btRigidBody::btRigidBodyConstructionInfo(10.0, &motion, &box, btVector3(0.2, 0.4, 0.5)));
+  w.world.addRigidBody(&chassis);
+  for (int k = 0; k < 2000; ++k) w.world.stepSimulation(1e-3, 1, 1e-3);
+  EXPECT_NEAR(chassis.getCenterOfMassPosition().z(), 0.65 + 0.1, 0.005);  // Bullet's margins: a few mm
+  w.world.removeRigidBody(&chassis);
+}
+
+// Case: a wheel against a body that is not the terrain collides as its own
+// shape (a cylinder) through Bullet: it rests on a box at its radius, not at
+// the tyre's spring deflection.
+TEST(BulletPluginTest, WheelAgainstAnotherBodyCollidesAsItsOriginalShape) {
+  const Terrain ground = flatGround();
+  BulletWorld w(ground, ContactMode::kForce);
+  btBoxShape box(btVector3(1.0, 1.0, 0.5));
+  btDefaultMotionState motion(btTransform(btQuaternion::getIdentity(), btVector3(0, 0, 0.5)));
+  btRigidBody block(btRigidBody::btRigidBodyConstructionInfo(0.0, &motion, &box));  // static, on the ground
+  w.world.addRigidBody(&block);
+  WheelBody& wheel = w.addWheelBody(3.7, btVector3(0, 0, 1.0 + kRadius + 0.01));
+  wheel.body->setAngularFactor(btVector3(0, 0, 0));
+  const bullet::WheelId id = testing::addWheel(w, wheel);
+  for (int k = 0; k < 2000; ++k) w.world.stepSimulation(1e-3, 1, 1e-3);
+  EXPECT_NEAR(wheel.body->getCenterOfMassPosition().z(), 1.0 + kRadius, 0.01);
+  EXPECT_EQ(w.plugin->forces(id).contacts.size(), 0u) << "no WTC contact: the block is not terrain";
+  w.world.removeRigidBody(&block);
+}
+
+// Case: a wheel added with the static group (btDiscreteDynamicsWorld's
+// default for collision objects) would never meet the terrain.
+TEST(BulletPluginTest, WheelWhoseFiltersExcludeTheTerrainIsRefused) {
+  const Terrain ground = flatGround();
+  BulletWorld w(ground, ContactMode::kConstraint);
+  btSphereShape sphere(0.19);
+  btDefaultMotionState motion;
+  btRigidBody body(btRigidBody::btRigidBodyConstructionInfo(3.7, &motion, &sphere, btVector3(0.05, 0.05, 0.05)));
+  w.world.addRigidBody(&body, btBroadphaseProxy::StaticFilter, btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
+  bullet::RigidWheel spec;
+  spec.body = &body;
+  EXPECT_THAT([&] { w.plugin->addWheel(spec); },
+              ::testing::ThrowsMessage<InvalidInputError>(::testing::HasSubstr("excludes the static terrain")));
+  w.world.removeRigidBody(&body);
+}
+
+}  // namespace
+}  // namespace wtc

@@ -1,10 +1,14 @@
-// Builds a box with the installed WTC and queries one point, and reads a
-// terrain file through wtc::io: returns 0 only when both answers are right,
-// so the install test fails on a broken package.
+// Builds a box with the installed WTC and queries one point, reads a
+// terrain file through wtc::io, and plugs WTC into a Bullet world through
+// wtc::bullet: returns 0 only when every answer is right, so the install
+// test fails on a broken package.
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <btBulletDynamicsCommon.h>
+#include <wtc/bullet/plugin.hpp>
 #include <wtc/convex_polyhedron.hpp>
+#include <wtc/terrain_primitives.hpp>
 #include <wtc/io/terrain_file.hpp>
 #include <wtc/point_query.hpp>
 
@@ -18,11 +22,39 @@ int main() {
               ok ? "ok" : "WRONG");
   if (!ok) return 1;
   // wtc::io: a terrain file that does not exist is a clear error, not a crash.
+  bool io_ok = false;
   try {
     wtc::io::loadTerrain("no/such/terrain.yaml");
   } catch (const std::exception& error) {
     std::printf("wtc::io: %s\n", error.what());
-    return 0;
+    io_ok = true;
   }
-  return 1;
+  if (!io_ok) return 1;
+  // wtc::bullet: a 3.7 kg wheel settles on a slab at m g / c = 0.36 mm.
+  wtc::TerrainBuilder builder;
+  wtc::addSlab(builder, {}, builder.addMaterial({}));
+  const wtc::Terrain ground = std::move(builder).build();
+  btDefaultCollisionConfiguration config;
+  btCollisionDispatcher dispatcher(&config);
+  btDbvtBroadphase broadphase;
+  btSequentialImpulseConstraintSolver solver;
+  btDiscreteDynamicsWorld world(&dispatcher, &broadphase, &solver, &config);
+  world.setGravity(btVector3(0, 0, -9.81));
+  btSphereShape sphere(0.19);
+  btDefaultMotionState motion(btTransform(btQuaternion::getIdentity(), btVector3(0, 0, 0.2)));
+  btRigidBody wheel(btRigidBody::btRigidBodyConstructionInfo(3.7, &motion, &sphere, btVector3(0.07, 0.07, 0.07)));
+  world.addRigidBody(&wheel);
+  double deflection = 0.0;
+  {
+    wtc::bullet::Plugin plugin(world, ground);
+    wtc::bullet::RigidWheel spec;
+    spec.body = &wheel;
+    plugin.addWheel(spec);
+    for (int k = 0; k < 2000; ++k) world.stepSimulation(1e-3, 1, 1e-3);
+    deflection = 0.19 - wheel.getCenterOfMassPosition().z();
+  }
+  world.removeRigidBody(&wheel);
+  const bool bullet_ok = std::abs(deflection - 3.7 * 9.81 / 1e5) < 0.02 * 3.7 * 9.81 / 1e5;
+  std::printf("wtc::bullet: settled deflection %.4g m: %s\n", deflection, bullet_ok ? "ok" : "WRONG");
+  return bullet_ok ? 0 : 1;
 }
