@@ -407,3 +407,33 @@ TEST(BulletPluginTest, WheelWhoseFiltersExcludeTheTerrainIsRefused) {
 
 }  // namespace
 }  // namespace wtc
+
+namespace wtc {
+namespace {
+
+// Case: a wheel rolling at 1 m/s under a side force of 0.3 m g drifts
+// sideways at the slip law's steady slip, V_y = s V_t with
+// mu(s) R_z = 0.3 m g (s = 0.047): grip across the traction, in both modes.
+TEST_P(BulletModeTest, SideForceGivesTheSlipLawsLateralDrift) {
+  const Terrain ground = flatGround();
+  BulletWorld w(ground, GetParam());
+  const double mass = 21.0, side = 0.3 * mass * kGravityMps2;
+  WheelBody& wheel = w.addWheelBody(mass, btVector3(-8, 0, kRadius - mass * kGravityMps2 / kStiffness));
+  wheel.body->setAngularFactor(btVector3(0, 1, 0));
+  testing::addWheel(w, wheel);
+  wheel.body->setLinearVelocity(btVector3(1.0, 0, 0));
+  wheel.body->setAngularVelocity(btVector3(0, 1.0 / kRadius, 0));
+  double drift = 0.0;
+  for (int k = 0; k < 3000; ++k) {
+    wheel.body->applyCentralForce(btVector3(0, side, 0));
+    wheel.body->applyTorque(btVector3(0, 0.018 * mass * kGravityMps2 * 0.97 * kRadius, 0));  // holds the speed
+    w.world.stepSimulation(1e-3, 1, 1e-3);
+    if (k >= 2000) drift += wheel.body->getLinearVelocity().y() / 1000.0;
+  }
+  const double speed = wheel.body->getLinearVelocity().x();
+  const double slip = -0.1 * std::log(1.0 - side / (0.8 * mass * kGravityMps2));  // mu(s) = 0.8 (1 - e^(-s/0.1))
+  EXPECT_NEAR(drift, slip * speed, 0.05 * slip * speed);
+}
+
+}  // namespace
+}  // namespace wtc

@@ -102,10 +102,21 @@ Plugin::Impl::Impl(btDiscreteDynamicsWorld& w, const Terrain& t, ContactMode m)
     dispatcher->registerCollisionCreateFunc(CUSTOM_CONVEX_SHAPE_TYPE, type, create.get());
     dispatcher->registerCollisionCreateFunc(type, CUSTOM_CONVEX_SHAPE_TYPE, create.get());
   }
-  // Constraint mode sets each WTC contact's first friction direction;
-  // Bullet keeps a contact's directions only with this flag (other contacts
-  // then keep the directions Bullet chose when they appeared).
-  if (mode == ContactMode::kConstraint) world.getSolverInfo().m_solverMode |= SOLVER_ENABLE_FRICTION_DIRECTION_CACHING;
+  // Constraint mode gives each WTC contact one friction direction, along
+  // the traction, capped at mu R_z: a Coulomb cone along the slip law's
+  // force. Bullet keeps that direction only with the caching flag, and a
+  // second direction (SOLVER_USE_2_FRICTION_DIRECTIONS) would make a
+  // pyramid: both capped at mu R_z, a diagonal force gets sqrt(2) mu R_z
+  // (measured: half the slip law's lateral drift). A multibody world keeps
+  // its second direction: its solver applies no friction at all with one
+  // cached direction (measured). Both flags are world-wide
+  // (docs/bullet-plugin.md).
+  if (mode == ContactMode::kConstraint) {
+    world.getSolverInfo().m_solverMode |= SOLVER_ENABLE_FRICTION_DIRECTION_CACHING;
+    if (dynamic_cast<btMultiBodyDynamicsWorld*>(&world) == nullptr) {
+      world.getSolverInfo().m_solverMode &= ~SOLVER_USE_2_FRICTION_DIRECTIONS;
+    }
+  }
   world.setInternalTickCallback(&preTickCallback, this, true);
   world.setInternalTickCallback(&postTickCallback, this, false);
 }

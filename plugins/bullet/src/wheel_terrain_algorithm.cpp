@@ -73,6 +73,8 @@ void WheelTerrainAlgorithm::writeWtcContacts(int wheel, bool wheel_is_body0, con
     btVector3 direction = toBullet(c.friction_direction);
     direction -= normal * normal.dot(direction);  // the manifold's normal may be flipped: stay tangent
     if (direction.length2() > 0) {
+      // The one friction direction Bullet solves (the plugin turns the
+      // second off): along the traction, so the cap mu R_z is a cone's.
       p.m_lateralFrictionDir1 = direction.normalized();
       p.m_lateralFrictionDir2 = normal.cross(p.m_lateralFrictionDir1);
       p.m_contactPointFlags |= BT_CONTACT_FLAG_LATERAL_FRICTION_INITIALIZED;

@@ -1,0 +1,158 @@
+#pragma once
+// wtc::ode: WTC wheels in any ODE world (dWorldStep or dWorldQuickStep).
+// The adapter does nothing physical itself: it reads poses and velocities
+// from ODE, asks the core (wtc::TyreModel, one step per wheel per world
+// step), and hands the core's contacts and forces back to ODE.
+// docs/ode-plugin.md has the details and the validation.
+//
+// How it plugs in:
+//  - The terrain's pieces become static ODE geoms (TerrainGeoms) in their
+//    own quadtree space inside the user's space; every pair but
+//    wheel-terrain collides with them through ODE's own colliders.
+//  - A wheel is the user's body and its collision geom (a cylinder or a
+//    sphere), registered here; the plugin knows it by its geom.
+//  - ODE has no pre-step callback, so the program calls the plugin itself,
+//    once per world step, in this order:
+//
+//      plugin.beginStep(h);                   // 1. every wheel's tyre model
+//      dSpaceCollide(space, data, &near);     // 2. near() calls handlePair first
+//      dWorldStep(world, h);                  // 3. or dWorldQuickStep
+//      dJointGroupEmpty(contacts);            // 4. as every ODE program does
+//
+//    where near(a, b) starts with
+//      if (plugin.handlePair(a, b, contacts)) return;  // wheel-terrain: WTC's
+//    and goes on as before for every other pair (dSpaceCollide2 into
+//    spaces, dCollide, contact joints).
+//
+// Force mode: beginStep applies each wheel's tyre wrench with
+// dBodyAddForceAtPos and dBodyAddTorque. ODE integrates the accumulated
+// forces over the next step and clears them at its end, so they act on
+// exactly that step and never pile up (unlike Bullet's substeps). The
+// pairs handled by handlePair create no joint.
+// Constraint mode: handlePair turns the wheel's contacts (wtc::EngineContact,
+// one per contact the core found, even if ODE reports the wheel against
+// several pieces) into dContact joints: soft ERP and CFM from
+// wtc::softConstraint (the tyre's spring-damper, implicit in ODE's solver),
+// mu the slip law's coefficient (dContactApprox1: a coefficient, not a
+// force) along fdir1, the traction's direction. Rolling resistance is an
+// explicit torque in both modes.
+//
+// Lifetime: the plugin must be destroyed before the user's space (which
+// would otherwise destroy the terrain space first) and before the world.
+// Registered wheels are kept awake (auto-disable off): the tread state needs
+// every step.
+#include <cstdint>
+#include <memory>
+#include <span>
+
+#include <Eigen/Core>
+#include <ode/ode.h>
+
+#include "wtc/effects.hpp"
+#include "wtc/engine_contact.hpp"
+#include "wtc/ode/terrain_geoms.hpp"
+#include "wtc/terrain.hpp"
+#include "wtc/tyre_model.hpp"
+
+namespace wtc::ode {
+
+using WheelId = int;
+
+/// A wheel: an ODE body and its collision geom (on a hinge to its carrier,
+/// typically). ODE bodies have their origin at the centre of mass.
+struct RigidWheel {
+  dBodyID body = nullptr;                                   ///< The wheel (not owned).
+  dGeomID geom = nullptr;                                   ///< Its geom, attached to `body` (not owned).
+  dBodyID hub = nullptr;                                    ///< The body carrying the axle, or null (for omega_rel).
+  Eigen::Vector3d axle_local{Eigen::Vector3d::UnitZ()};     ///< Axle in the body frame: z, ODE's cylinder axis.
+  Eigen::Vector3d centre_local{Eigen::Vector3d::Zero()};    ///< Wheel centre O in the body frame (m).
+  WheelDescription description;                             ///< Geometry, tyre, inertia.
+  EffectSet effects = EffectSet::full();
+};
+
+/// Called by beginStep for each wheel after its tyre model ran (before ODE
+/// integrates the step). Default: nothing.
+class WheelListener {
+ public:
+  virtual ~WheelListener() = default;
+  virtual void onWheelStep(WheelId wheel, const WheelForces& forces, double step_seconds) {
+    (void)wheel, (void)forces, (void)step_seconds;
+  }
+};
+
+/// One WTC contact as ODE solved it (constraint mode). `feedback` is the
+/// contact joint's dJointFeedback: ODE fills it during the world step, so
+/// the forces are those of the last completed step.
+struct SolvedContact {
+  EngineContact contact;        ///< What the plugin gave ODE.
+  dJointFeedback feedback{};    ///< f1, t1: the joint's force and torque on the wheel body.
+  /// The joint's force on the wheel (N, world).
+  Eigen::Vector3d force() const { return {feedback.f1[0], feedback.f1[1], feedback.f1[2]}; }
+  /// Its component along contact.normal (N, >= 0) and the rest (N).
+  double normalForce() const { return force().dot(contact.normal); }
+  Eigen::Vector3d tangentialForce() const { return force() - normalForce() * contact.normal; }
+};
+
+/// Non-fatal conditions, counted per wheel (read them after the near
+/// callback has run for the step).
+struct WheelDiagnostics {
+  /// Constraint-mode steps whose contacts never reached ODE: the wheel had
+  /// contacts but handlePair did not see it against the terrain (a near
+  /// callback without handlePair, a geom disabled or filtered out).
+  std::uint64_t unhandled_steps = 0;
+  /// Constraint-mode contacts whose spring ODE's correcting-velocity cap
+  /// cut: ERP Z / h above dWorldGetContactMaxCorrectingVel (leave the cap at
+  /// its default, infinity, for WTC's wheels).
+  std::uint64_t capped_contacts = 0;
+};
+
+class Plugin {
+ public:
+  /// Mirrors `terrain` (which must outlive the plugin) as geoms of `shape`
+  /// in a new space inside `space`. Contact joints are created in `world`.
+  Plugin(dWorldID world, dSpaceID space, const Terrain& terrain, ContactMode mode = ContactMode::kForce,
+         TerrainShape shape = TerrainShape::kTriMesh);
+  ~Plugin();
+  Plugin(const Plugin&) = delete;
+  Plugin& operator=(const Plugin&) = delete;
+
+  /// Registers a wheel. Throws InvalidInputError naming the problem: null
+  /// body or geom, a geom on another body, a zero axle, invalid parameters,
+  /// a wheel registered twice, and in constraint mode a geom whose bounding
+  /// box does not hold the tread (the near callback would miss ground the
+  /// tread touches).
+  WheelId addWheel(const RigidWheel& wheel);
+
+  /// Step 1 of the call order: runs every wheel's tyre model for a world
+  /// step of `step_seconds` (> 0) from the bodies' current state; force
+  /// mode applies the forces, constraint mode prepares the contacts.
+  void beginStep(double step_seconds);
+
+  /// Step 2, from the near callback: true if (a, b) is a registered wheel's
+  /// geom against the terrain (its space or one of its pieces): the pair is
+  /// WTC's and the callback should return. In constraint mode the wheel's
+  /// contact joints go into `contacts` the first time its pair comes up in
+  /// the step. False for any other pair.
+  bool handlePair(dGeomID a, dGeomID b, dJointGroupID contacts);
+
+  /// The last beginStep's result and state of a wheel.
+  const WheelForces& forces(WheelId wheel) const;
+  const WheelState& state(WheelId wheel) const;
+  /// The wheel's contacts as ODE solved them in the last world step
+  /// (constraint mode; empty in force mode).
+  std::span<const SolvedContact> solvedContacts(WheelId wheel) const;
+  /// Non-fatal conditions met by the wheel since its registration.
+  const WheelDiagnostics& diagnostics(WheelId wheel) const;
+  int wheelCount() const;
+
+  ContactMode mode() const;
+  const TerrainGeoms& terrainGeoms() const;
+  void setListener(WheelListener* listener);
+
+  struct Impl;
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace wtc::ode

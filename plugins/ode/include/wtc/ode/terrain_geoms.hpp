@@ -1,0 +1,76 @@
+#pragma once
+// The WTC terrain as static ODE geoms, so that every pair other than
+// wheel-terrain (a chassis scraping the ledge, a box dropped on the ground)
+// collides with the same ground through ODE's own colliders.
+//
+// One geom per convex piece, placed at the piece's local origin with its
+// vertices relative to it (a piece far from the world origin keeps its
+// digits), in a quadtree space of its own inside the user's space. The
+// quadtree, not a hash space: ODE's dxHashSpace::collide2 tests a geom
+// against every geom of the space, and a chassis colliding into the terrain
+// space goes through collide2; the quadtree descends its blocks. Its plane
+// is ODE's default, x-y: WTC's frames have z up.
+//
+// Two shapes, because Debian's ODE 0.16 (no libccd colliders but
+// convex-cylinder and convex-trimesh) collides them differently:
+//  - kTriMesh (default): the piece's faces as a closed triangle mesh. ODE
+//    returns full manifolds against it (a box resting on a face: 4+
+//    contacts; a cylinder: up to 10) and collides box, sphere, capsule,
+//    cylinder, ray and trimesh with it. The data is preprocessed for
+//    convex-trimesh, which otherwise aborts inside ODE.
+//  - kConvex: dCreateConvex from the piece's planes (outward normal n and
+//    offset d: n . x = d) and faces (counter-clockwise seen from outside,
+//    which ODE checks and warns about otherwise). Exact solid, but ODE's
+//    convex colliders return one contact per pair, so a box resting on it
+//    is held at one point per step.
+// The plugin tells terrain geoms by their space (contains()); their user
+// data stays free for the program.
+#include <cstdint>
+#include <vector>
+
+#include <ode/ode.h>
+
+#include "wtc/terrain.hpp"
+
+namespace wtc::ode {
+
+enum class TerrainShape {
+  kTriMesh,  ///< A closed triangle mesh per piece (default: ODE's best-supported static shape).
+  kConvex,   ///< dCreateConvex per piece (one contact per pair in ODE).
+};
+
+class TerrainGeoms {
+ public:
+  /// Builds the geoms of every piece of `terrain` (which must outlive this)
+  /// in a new space inside `parent` (null: a top-level space).
+  TerrainGeoms(const Terrain& terrain, dSpaceID parent, TerrainShape shape);
+  /// Destroys the space, its geoms and the mesh data. The parent space must
+  /// still exist.
+  ~TerrainGeoms();
+  TerrainGeoms(const TerrainGeoms&) = delete;
+  TerrainGeoms& operator=(const TerrainGeoms&) = delete;
+
+  const Terrain& terrain() const { return terrain_; }
+  TerrainShape shape() const { return shape_; }
+  dSpaceID space() const { return space_; }
+  /// True for the terrain space itself and for each piece's geom.
+  bool contains(dGeomID geom) const;
+  /// The geom of a piece.
+  dGeomID geom(PieceId piece) const { return geoms_[piece]; }
+
+ private:
+  void addConvex(const ConvexPolyhedron& piece);
+  void addTriMesh(const ConvexPolyhedron& piece);
+
+  const Terrain& terrain_;
+  TerrainShape shape_;
+  dSpaceID space_ = nullptr;
+  std::vector<dGeomID> geoms_;
+  std::vector<dTriMeshDataID> meshes_;
+  // ODE keeps pointers into these (it copies nothing): one buffer per piece,
+  // never resized once its geom exists.
+  std::vector<std::vector<dReal>> numbers_;               // points, then planes (convex)
+  std::vector<std::vector<std::uint32_t>> indices_;       // polygons (convex) or triangles
+};
+
+}  // namespace wtc::ode

@@ -1,0 +1,35 @@
+#include "contact_joint.hpp"
+
+namespace wtc::ode {
+
+dContact toOdeContact(const EngineContact& c, double h, double surface_layer, dGeomID wheel, dGeomID ground) {
+  dContact j{};
+  // The tyre's c and b as an implicit spring-damper: ODE's soft ERP/CFM.
+  const SoftConstraint soft = softConstraint(c.stiffness, c.damping, h);
+  // dContactApprox1: mu is a coefficient (|f_t| <= mu f_n per direction),
+  // not a force bound.
+  j.surface.mode = dContactSoftERP | dContactSoftCFM | dContactApprox1;
+  j.surface.soft_erp = soft.erp;
+  j.surface.soft_cfm = soft.cfm;
+  j.surface.mu = c.friction;  // 0 (no slip yet): ODE then adds no friction rows
+  if (c.friction > 0.0) {
+    j.surface.mode |= dContactFDir1;  // along the traction; ODE's second direction is normal x fdir1
+    for (int i = 0; i < 3; ++i) j.fdir1[i] = c.friction_direction[i];
+  }
+  // At P, on the undeformed tread, as force mode applies R: the same lever
+  // arm about the wheel centre in both modes.
+  for (int i = 0; i < 3; ++i) {
+    j.geom.pos[i] = c.tread_point[i];
+    j.geom.normal[i] = c.normal[i];
+  }
+  j.geom.depth = c.depth + surface_layer;
+  j.geom.g1 = wheel;
+  j.geom.g2 = ground;
+  return j;
+}
+
+double correctingVelocity(const EngineContact& c, double h) {
+  return softConstraint(c.stiffness, c.damping, h).erp * c.depth / h;
+}
+
+}  // namespace wtc::ode

@@ -1,0 +1,46 @@
+#pragma once
+// The state behind wtc::ode::Plugin (internal to wtc::ode).
+#include <memory>
+#include <unordered_map>
+#include <vector>
+
+#include "wtc/ode/plugin.hpp"
+
+namespace wtc::ode {
+
+struct Wheel {
+  explicit Wheel(EffectSet effects) : model(effects) {}
+
+  dBodyID body = nullptr;
+  dGeomID geom = nullptr;
+  dBodyID hub = nullptr;
+  Eigen::Vector3d axle_local, centre_local;
+  WheelDescription description;
+  TyreModel model;
+  WheelState state;
+  const WheelForces* forces = nullptr;
+  // Constraint mode: this step's contacts. ODE writes each joint's feedback
+  // here during the world step, so the vector changes only in beginStep
+  // (the previous step's joints are gone by then: dJointGroupEmpty).
+  std::vector<SolvedContact> contacts;
+  bool handled = false;  // handlePair has seen this wheel against the terrain this step
+  WheelDiagnostics diagnostics;
+};
+
+struct Plugin::Impl {
+  Impl(dWorldID world, dSpaceID space, const Terrain& terrain, ContactMode mode, TerrainShape shape);
+  WheelId add(const RigidWheel& spec);
+  void beginStep(double step_seconds);
+  bool handlePair(dGeomID a, dGeomID b, dJointGroupID contacts);
+  const Wheel& wheel(WheelId id) const;
+
+  dWorldID world;
+  TerrainGeoms terrain;
+  ContactMode mode;
+  double step_seconds = 0.0;  // of the current step, for the joints' ERP and CFM
+  std::vector<std::unique_ptr<Wheel>> wheels;
+  std::unordered_map<dGeomID, WheelId> wheel_of;
+  WheelListener* listener = nullptr;
+};
+
+}  // namespace wtc::ode
