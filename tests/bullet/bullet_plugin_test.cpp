@@ -437,3 +437,37 @@ TEST_P(BulletModeTest, SideForceGivesTheSlipLawsLateralDrift) {
 
 }  // namespace
 }  // namespace wtc
+
+namespace wtc {
+namespace {
+
+// Case: the listener hears every wheel at every internal step, with the
+// step's length and the same result forces() returns afterwards.
+TEST(BulletPluginTest, ListenerHearsEveryWheelAtEveryInternalStep) {
+  struct Recorder : bullet::WheelListener {
+    void onWheelStep(bullet::WheelId wheel, const WheelForces& forces, double step_seconds) override {
+      ++calls[wheel];
+      last_step = step_seconds;
+      last_force[wheel] = forces.force.z();
+    }
+    int calls[2] = {0, 0};
+    double last_step = 0.0;
+    double last_force[2] = {0.0, 0.0};
+  } recorder;
+  const Terrain ground = flatGround();
+  BulletWorld w(ground, ContactMode::kForce);
+  WheelBody& a = w.addWheelBody(3.7, btVector3(0, 0, kRadius));
+  WheelBody& b = w.addWheelBody(3.7, btVector3(2, 0, kRadius - 0.001));
+  testing::addWheel(w, a);
+  testing::addWheel(w, b);
+  w.plugin->setListener(&recorder);
+  for (int k = 0; k < 10; ++k) w.world.stepSimulation(3e-3, 3, 1e-3);  // 3 substeps each
+  EXPECT_EQ(recorder.calls[0], 30);
+  EXPECT_EQ(recorder.calls[1], 30);
+  EXPECT_DOUBLE_EQ(recorder.last_step, 1e-3);
+  EXPECT_EQ(recorder.last_force[1], w.plugin->forces(1).force.z());
+  EXPECT_GT(recorder.last_force[1], 0.0);
+}
+
+}  // namespace
+}  // namespace wtc

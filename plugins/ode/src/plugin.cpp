@@ -1,0 +1,194 @@
+// wtc::ode::Plugin: registration, beginStep (one tyre-model step per wheel
+// per world step) and handlePair (the near callback's wheel-terrain pairs).
+// Design note in include/wtc/ode/plugin.hpp.
+#include "wtc/ode/plugin.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "contact_joint.hpp"
+#include "plugin_impl.hpp"
+#include "wtc/error.hpp"
+#include "wtc/tolerances.hpp"
+
+namespace wtc::ode {
+namespace {
+
+// Roundoff allowed when checking that the geom's box holds the tread,
+// relative to r_f (dimensionless): ODE's box of a cylinder lying along an
+// axis equals the tread's box up to the rotation matrix's roundoff.
+constexpr double kBoxSlackRelative = 1e-9;
+
+[[noreturn]] void fail(const char* where, const std::string& what) {
+  throw InvalidInputError(std::string(where) + ": " + what);
+}
+
+Eigen::Vector3d toEigen(const dReal* v) { return {v[0], v[1], v[2]}; }
+
+// Half the tread's extent along a world axis whose cosine with the axle is
+// `c`: the largest p . e over {|p| <= r, |p . a| <= w/2}. Either the
+// sphere's pole r e is on the tread, or the maximum sits on a cut's rim:
+// (w/2) |c| + sqrt(r^2 - w^2/4) sqrt(1 - c^2).
+double treadHalfExtent(const WheelGeometry& g, double c, bool truncated) {
+  const double r = g.free_radius, half_width = 0.5 * g.tread_width;
+  if (!truncated || half_width >= r || r * std::abs(c) <= half_width) return r;
+  return half_width * std::abs(c) + std::sqrt(r * r - half_width * half_width) * std::sqrt(1.0 - c * c);
+}
+
+void requireGeomHoldsTread(const RigidWheel& spec, const Eigen::Vector3d& centre, const Eigen::Vector3d& axle,
+                           const char* where) {
+  dReal box[6];
+  dGeomGetAABB(spec.geom, box);
+  const bool truncated = spec.effects.has(Effect::kTreadTruncation);
+  const double slack = kBoxSlackRelative * spec.description.geometry.free_radius;
+  for (int i = 0; i < 3; ++i) {
+    const double half = treadHalfExtent(spec.description.geometry, axle[i], truncated);
+    if (box[2 * i] > centre[i] - half + slack || box[2 * i + 1] < centre[i] + half - slack) {
+      fail(where, "the geom's bounding box [" + formatNumber(box[2 * i]) + ", " + formatNumber(box[2 * i + 1]) +
+                      "] along axis " + std::to_string(i) + " does not hold the tread (r_f = " +
+                      formatNumber(spec.description.geometry.free_radius) + " m, w = " +
+                      formatNumber(spec.description.geometry.tread_width) +
+                      " m): the near callback would miss ground it touches");
+    }
+  }
+}
+
+}  // namespace
+
+Plugin::Impl::Impl(dWorldID w, dSpaceID space, const Terrain& t, ContactMode m, TerrainShape shape)
+    : world(w), terrain(t, space, shape), mode(m) {}
+
+const Wheel& Plugin::Impl::wheel(WheelId id) const {
+  if (id < 0 || static_cast<std::size_t>(id) >= wheels.size()) {
+    throw std::out_of_range("wtc::ode::Plugin: wheel id " + std::to_string(id) + " is not registered (" +
+                            std::to_string(wheels.size()) + " wheels)");
+  }
+  return *wheels[id];
+}
+
+WheelId Plugin::Impl::add(const RigidWheel& spec) {
+  static constexpr const char* kWhere = "wtc::ode::Plugin::addWheel";
+  if (spec.body == nullptr) fail(kWhere, "body is null");
+  if (spec.geom == nullptr) fail(kWhere, "geom is null (the near callback knows a wheel by its geom)");
+  if (dGeomGetBody(spec.geom) != spec.body) fail(kWhere, "geom is not attached to body (dGeomSetBody)");
+  validate(spec.description, kWhere);
+  if (!spec.axle_local.allFinite() || spec.axle_local.norm() < tolerance::kMinAxleNorm) {
+    fail(kWhere, "axle_local = " + formatVector(spec.axle_local) + " is not finite or is zero");
+  }
+  if (!spec.centre_local.allFinite()) fail(kWhere, "centre_local = " + formatVector(spec.centre_local) + " is not finite");
+  if (wheel_of.count(spec.geom) != 0) fail(kWhere, "this geom is already a registered wheel");
+  if (mode == ContactMode::kConstraint) {
+    dVector3 centre, axle;
+    dBodyGetRelPointPos(spec.body, spec.centre_local.x(), spec.centre_local.y(), spec.centre_local.z(), centre);
+    dBodyVectorToWorld(spec.body, spec.axle_local.x(), spec.axle_local.y(), spec.axle_local.z(), axle);
+    requireGeomHoldsTread(spec, toEigen(centre), toEigen(axle).normalized(), kWhere);
+  }
+  auto w = std::make_unique<Wheel>(spec.effects);
+  w->body = spec.body;
+  w->geom = spec.geom;
+  w->hub = spec.hub;
+  w->axle_local = spec.axle_local;
+  w->centre_local = spec.centre_local;
+  w->description = spec.description;
+  dBodySetAutoDisableFlag(spec.body, 0);  // the tread state needs every step
+  const auto id = static_cast<WheelId>(wheels.size());
+  wheel_of.emplace(spec.geom, id);
+  wheels.push_back(std::move(w));
+  return id;
+}
+
+void Plugin::Impl::beginStep(double h) {
+  if (!(h > 0.0) || !std::isfinite(h)) {
+    fail("wtc::ode::Plugin::beginStep", "step_seconds = " + formatNumber(h) + " is not positive and finite");
+  }
+  step_seconds = h;
+  const Terrain& ground = terrain.terrain();
+  for (std::size_t id = 0; id < wheels.size(); ++id) {
+    Wheel& w = *wheels[id];
+    const Eigen::Vector3d& c = w.centre_local;
+    dVector3 centre, axle, velocity;
+    dBodyGetRelPointPos(w.body, c.x(), c.y(), c.z(), centre);
+    dBodyGetRelPointVel(w.body, c.x(), c.y(), c.z(), velocity);
+    dBodyVectorToWorld(w.body, w.axle_local.x(), w.axle_local.y(), w.axle_local.z(), axle);
+    WheelMotion motion;
+    motion.velocity = toEigen(velocity);
+    motion.angular_velocity = toEigen(dBodyGetAngularVel(w.body));
+    if (w.hub != nullptr) motion.hub_angular_velocity = toEigen(dBodyGetAngularVel(w.hub));
+    const WheelForces& f = w.model.step(ground, w.description, {toEigen(centre), toEigen(axle)}, motion, h, w.state);
+    w.forces = &f;
+    w.handled = false;
+    if (mode == ContactMode::kForce) {
+      // The wrench about O: F through O, then the torque. ODE clears both
+      // after the world step, so they act on exactly this step.
+      dBodyAddForceAtPos(w.body, f.force.x(), f.force.y(), f.force.z(), centre[0], centre[1], centre[2]);
+      dBodyAddTorque(w.body, f.torque.x(), f.torque.y(), f.torque.z());
+    } else {
+      // The contact joints carry the normal and friction forces; rolling
+      // resistance remains an explicit torque.
+      Eigen::Vector3d rolling = Eigen::Vector3d::Zero();
+      const double damping = w.model.effects().has(Effect::kNormalDamping) ? w.description.tyre.radial_damping : 0.0;
+      w.contacts.clear();
+      for (const ContactForce& cf : f.contacts) {
+        rolling += cf.rolling_moment;
+        w.contacts.push_back({toEngineContact(cf, w.description.tyre.radial_stiffness, damping)});
+      }
+      dBodyAddTorque(w.body, rolling.x(), rolling.y(), rolling.z());
+      // Counted now, taken back when handlePair hands the contacts to ODE.
+      if (!w.contacts.empty()) ++w.diagnostics.unhandled_steps;
+    }
+    if (listener != nullptr) listener->onWheelStep(static_cast<WheelId>(id), f, h);
+  }
+}
+
+bool Plugin::Impl::handlePair(dGeomID a, dGeomID b, dJointGroupID group) {
+  auto found = wheel_of.find(a);
+  dGeomID ground = b;
+  if (found == wheel_of.end() || !terrain.contains(b)) {
+    found = wheel_of.find(b);
+    ground = a;
+    if (found == wheel_of.end() || !terrain.contains(a)) return false;
+  }
+  Wheel& w = *wheels[found->second];
+  // The wheel's contacts are the core's, for all pieces at once: they go to
+  // ODE the first time the wheel meets the terrain in this step (against
+  // the terrain space, or against one of its pieces), and never twice.
+  if (mode == ContactMode::kConstraint && !w.handled && !w.contacts.empty()) {
+    const double layer = dWorldGetContactSurfaceLayer(world), cap = dWorldGetContactMaxCorrectingVel(world);
+    for (SolvedContact& s : w.contacts) {
+      const dContact contact = toOdeContact(s.contact, step_seconds, layer, w.geom, ground);
+      const dJointID joint = dJointCreateContact(world, group, &contact);
+      dJointAttach(joint, w.body, nullptr);
+      dJointSetFeedback(joint, &s.feedback);
+      if (correctingVelocity(s.contact, step_seconds) > cap) ++w.diagnostics.capped_contacts;
+    }
+    --w.diagnostics.unhandled_steps;
+  }
+  w.handled = true;
+  return true;
+}
+
+Plugin::Plugin(dWorldID world, dSpaceID space, const Terrain& terrain, ContactMode mode, TerrainShape shape)
+    : impl_(std::make_unique<Impl>(world, space, terrain, mode, shape)) {}
+
+Plugin::~Plugin() = default;
+
+WheelId Plugin::addWheel(const RigidWheel& wheel) { return impl_->add(wheel); }
+void Plugin::beginStep(double step_seconds) { impl_->beginStep(step_seconds); }
+bool Plugin::handlePair(dGeomID a, dGeomID b, dJointGroupID contacts) { return impl_->handlePair(a, b, contacts); }
+
+const WheelForces& Plugin::forces(WheelId wheel) const {
+  static const WheelForces kNone;
+  const Wheel& w = impl_->wheel(wheel);
+  return w.forces != nullptr ? *w.forces : kNone;
+}
+
+const WheelState& Plugin::state(WheelId wheel) const { return impl_->wheel(wheel).state; }
+std::span<const SolvedContact> Plugin::solvedContacts(WheelId wheel) const { return impl_->wheel(wheel).contacts; }
+const WheelDiagnostics& Plugin::diagnostics(WheelId wheel) const { return impl_->wheel(wheel).diagnostics; }
+int Plugin::wheelCount() const { return static_cast<int>(impl_->wheels.size()); }
+ContactMode Plugin::mode() const { return impl_->mode; }
+const TerrainGeoms& Plugin::terrainGeoms() const { return impl_->terrain; }
+void Plugin::setListener(WheelListener* listener) { impl_->listener = listener; }
+
+}  // namespace wtc::ode
