@@ -36,12 +36,14 @@
 #include "wtc/engine_contact.hpp"
 #include "wtc/terrain.hpp"
 #include "wtc/tyre_model.hpp"
+#include "wtc/wheel_listener.hpp"
 
 class btMultiBody;
 
 namespace wtc::bullet {
 
-using WheelId = int;
+using WheelId = wtc::WheelId;
+using WheelListener = wtc::WheelListener;
 
 /// A wheel that is its own btRigidBody (on a hinge to its carrier, typically).
 struct RigidWheel {
@@ -61,16 +63,6 @@ struct MultiBodyWheel {
   btVector3 centre_local{0, 0, 0};  ///< In the link frame (m).
   WheelDescription description;
   EffectSet effects = EffectSet::full();
-};
-
-/// Called at each internal step, for each wheel, after its tyre model ran
-/// (before Bullet integrates the step). Default: nothing.
-class WheelListener {
- public:
-  virtual ~WheelListener() = default;
-  virtual void onWheelStep(WheelId wheel, const WheelForces& forces, double step_seconds) {
-    (void)wheel, (void)forces, (void)step_seconds;
-  }
 };
 
 class Plugin {
@@ -94,6 +86,8 @@ class Plugin {
 
   ContactMode mode() const;
   btCollisionObject& terrainObject();
+  /// Called at each internal step, for each wheel, after its tyre model ran
+  /// (before Bullet integrates the step); null: none.
   void setListener(WheelListener* listener);
   /// Called at the start of every internal step, before the wheels.
   void setPreTickCallback(std::function<void(double step_seconds)> callback);

@@ -1,0 +1,22 @@
+#pragma once
+// The per-step report of an engine adapter (wtc::bullet, wtc::ode): one
+// call per wheel per internal step, after the wheel's tyre model ran and
+// before the engine integrates the step. A listener interface with
+// do-nothing defaults (not a global callback), shared by both adapters.
+#include "wtc/wheel_forces.hpp"
+
+namespace wtc {
+
+/// A wheel registered with an adapter: dense, in registration order.
+using WheelId = int;
+
+class WheelListener {
+ public:
+  virtual ~WheelListener() = default;
+  /// `forces` stays valid until the wheel's next step.
+  virtual void onWheelStep(WheelId wheel, const WheelForces& forces, double step_seconds) {
+    (void)wheel, (void)forces, (void)step_seconds;
+  }
+};
+
+}  // namespace wtc
