@@ -265,11 +265,6 @@ TEST(BulletPluginTest, BadRegistrationIsAnErrorThatNamesIt) {
   EXPECT_THAT([&] { w.plugin->addWheel(spec); }, ::testing::ThrowsMessage<InvalidInputError>(::testing::HasSubstr("already a registered wheel")));
 }
 
-}  // namespace
-}  // namespace wtc
-
-namespace wtc {
-namespace {
 
 // Case: a driven wheel, pushed as its vehicle would push it, rolls over a
 // 6 cm step (a third of its radius) and rests on the top.
@@ -298,11 +293,6 @@ TEST_P(BulletModeTest, DrivenWheelRollsOverAStepLowerThanItsRadius) {
   EXPECT_EQ(most_contacts, 2) << "the step's edge and the ground at the foot";
 }
 
-}  // namespace
-}  // namespace wtc
-
-namespace wtc {
-namespace {
 
 // A stiff tyre (c = 1e6 N/m) on the 3.7 kg wheel, dropped 1 mm above its
 // rest height, for 2 s at step h: stable if it settles within 1 % of m g / c.
@@ -348,11 +338,6 @@ TEST(BulletStabilityTest, LargestStableStepOfEachModeForAStiffTyre) {
   EXPECT_GE(constraint, 10 * predicted);
 }
 
-}  // namespace
-}  // namespace wtc
-
-namespace wtc {
-namespace {
 
 // Case: every pair but wheel-terrain keeps Bullet's own collision with the
 // same terrain: a box (a chassis) dropped on the ledge rests on its top.
@@ -405,11 +390,6 @@ TEST(BulletPluginTest, WheelWhoseFiltersExcludeTheTerrainIsRefused) {
   w.world.removeRigidBody(&body);
 }
 
-}  // namespace
-}  // namespace wtc
-
-namespace wtc {
-namespace {
 
 // Case: a wheel rolling at 1 m/s under a side force of 0.3 m g drifts
 // sideways at the slip law's steady slip, V_y = s V_t with
@@ -435,11 +415,6 @@ TEST_P(BulletModeTest, SideForceGivesTheSlipLawsLateralDrift) {
   EXPECT_NEAR(drift, slip * speed, 0.05 * slip * speed);
 }
 
-}  // namespace
-}  // namespace wtc
-
-namespace wtc {
-namespace {
 
 // Case: the listener hears every wheel at every internal step, with the
 // step's length and the same result forces() returns afterwards.
