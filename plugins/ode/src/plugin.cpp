@@ -29,10 +29,13 @@ Eigen::Vector3d toEigen(const dReal* v) { return {v[0], v[1], v[2]}; }
 // Half the tread's extent along a world axis whose cosine with the axle is
 // `c`: the largest p . e over {|p| <= r, |p . a| <= w/2}. Either the
 // sphere's pole r e is on the tread, or the maximum sits on a cut's rim:
-// (w/2) |c| + sqrt(r^2 - w^2/4) sqrt(1 - c^2).
-double treadHalfExtent(const WheelGeometry& g, double c, bool truncated) {
+// (w/2) |c| + sqrt(r^2 - w^2/4) sqrt(1 - c^2). The tread, not the whole
+// sphere, even without tread truncation: contacts on the cut caps only
+// arise off design (a wheel on its side), and a cylinder geom of radius
+// r_f and width w then still qualifies.
+double treadHalfExtent(const WheelGeometry& g, double c) {
   const double r = g.free_radius, half_width = 0.5 * g.tread_width;
-  if (!truncated || half_width >= r || r * std::abs(c) <= half_width) return r;
+  if (half_width >= r || r * std::abs(c) <= half_width) return r;
   return half_width * std::abs(c) + std::sqrt(r * r - half_width * half_width) * std::sqrt(1.0 - c * c);
 }
 
@@ -40,15 +43,14 @@ void requireGeomHoldsTread(const RigidWheel& spec, const Eigen::Vector3d& centre
                            const char* where) {
   dReal box[6];
   dGeomGetAABB(spec.geom, box);
-  const bool truncated = spec.effects.has(Effect::kTreadTruncation);
   const double slack = kBoxSlackRelative * spec.description.geometry.free_radius;
   for (int i = 0; i < 3; ++i) {
-    const double half = treadHalfExtent(spec.description.geometry, axle[i], truncated);
+    const double half = treadHalfExtent(spec.description.geometry, axle[i]);
     if (box[2 * i] > centre[i] - half + slack || box[2 * i + 1] < centre[i] + half - slack) {
       fail(where, "the geom's bounding box [" + formatNumber(box[2 * i]) + ", " + formatNumber(box[2 * i + 1]) +
-                      "] along axis " + std::to_string(i) + " does not hold the tread (r_f = " +
-                      formatNumber(spec.description.geometry.free_radius) + " m, w = " +
-                      formatNumber(spec.description.geometry.tread_width) +
+                      "] along " + "xyz"[i] +
+                      " does not hold the tread (r_f = " + formatNumber(spec.description.geometry.free_radius) +
+                      " m, w = " + formatNumber(spec.description.geometry.tread_width) +
                       " m): the near callback would miss ground it touches");
     }
   }
@@ -76,7 +78,8 @@ WheelId Plugin::Impl::add(const RigidWheel& spec) {
   if (!spec.axle_local.allFinite() || spec.axle_local.norm() < tolerance::kMinAxleNorm) {
     fail(kWhere, "axle_local = " + formatVector(spec.axle_local) + " is not finite or is zero");
   }
-  if (!spec.centre_local.allFinite()) fail(kWhere, "centre_local = " + formatVector(spec.centre_local) + " is not finite");
+  if (!spec.centre_local.allFinite())
+    fail(kWhere, "centre_local = " + formatVector(spec.centre_local) + " is not finite");
   if (wheel_of.count(spec.geom) != 0) fail(kWhere, "this geom is already a registered wheel");
   if (mode == ContactMode::kConstraint) {
     dVector3 centre, axle;

@@ -34,9 +34,8 @@ TerrainGeoms::TerrainGeoms(const Terrain& terrain, dSpaceID parent, TerrainShape
   indices_.reserve(count);
   for (PieceId id = 0; id < count; ++id) {
     const ConvexPolyhedron& piece = terrain.piece(id);
-    shape == TerrainShape::kConvex ? addConvex(piece) : addTriMesh(piece);
-    const Eigen::Vector3d& o = piece.origin();
-    dGeomSetPosition(geoms_.back(), o.x(), o.y(), o.z());
+    const Eigen::Vector3d origin = shape == TerrainShape::kConvex ? addConvex(piece) : addTriMesh(piece);
+    dGeomSetPosition(geoms_.back(), origin.x(), origin.y(), origin.z());
   }
 }
 
@@ -49,18 +48,22 @@ bool TerrainGeoms::contains(dGeomID geom) const {
   return geom == reinterpret_cast<dGeomID>(space_) || dGeomGetSpace(geom) == space_;
 }
 
-void TerrainGeoms::addConvex(const ConvexPolyhedron& piece) {
-  // [points (3 per vertex) | planes (n, d) (4 per face)], all local.
+Eigen::Vector3d TerrainGeoms::addConvex(const ConvexPolyhedron& piece) {
+  // [points (3 per vertex) | planes (n, d) (4 per face)], relative to the
+  // piece's centroid: ODE wants its convex geom's origin inside (every
+  // d >= 0; it warns "Plane does not contain the origin"), and the
+  // bounding-box centre, WTC's local origin, can lie outside a sliver.
+  const Eigen::Vector3d centroid = piece.centroidLocal();
   std::vector<dReal>& numbers = numbers_.emplace_back();
   std::vector<std::uint32_t>& polygons = indices_.emplace_back();
   numbers.reserve(3 * piece.vertexCount() + 4 * piece.faceCount());
   for (int v = 0; v < piece.vertexCount(); ++v) {
-    const Eigen::Vector3d p = piece.vertexLocal(v);
+    const Eigen::Vector3d p = piece.vertexLocal(v) - centroid;
     numbers.insert(numbers.end(), {p.x(), p.y(), p.z()});
   }
   for (int f = 0; f < piece.faceCount(); ++f) {
     const Eigen::Vector3d n = piece.faceNormal(f);
-    numbers.insert(numbers.end(), {n.x(), n.y(), n.z(), piece.pd()[f]});
+    numbers.insert(numbers.end(), {n.x(), n.y(), n.z(), piece.pd()[f] - n.dot(centroid)});
     // Each polygon: its vertex count, then its vertices counter-clockwise
     // seen from outside (WTC's order is ODE's).
     const auto face = piece.faceVertices(f);
@@ -70,9 +73,10 @@ void TerrainGeoms::addConvex(const ConvexPolyhedron& piece) {
   const dReal* points = numbers.data();
   const dReal* planes = points + 3 * piece.vertexCount();
   geoms_.push_back(dCreateConvex(space_, planes, piece.faceCount(), points, piece.vertexCount(), polygons.data()));
+  return piece.centroid();
 }
 
-void TerrainGeoms::addTriMesh(const ConvexPolyhedron& piece) {
+Eigen::Vector3d TerrainGeoms::addTriMesh(const ConvexPolyhedron& piece) {
   std::vector<dReal>& points = numbers_.emplace_back();
   std::vector<std::uint32_t>& triangles = indices_.emplace_back();
   points.reserve(3 * piece.vertexCount());
@@ -98,6 +102,7 @@ void TerrainGeoms::addTriMesh(const ConvexPolyhedron& piece) {
       mesh, (1U << dTRIDATAPREPROCESS_BUILD_CONCAVE_EDGES) | (1U << dTRIDATAPREPROCESS_BUILD_FACE_ANGLES), nullptr);
   meshes_.push_back(mesh);
   geoms_.push_back(dCreateTriMesh(space_, mesh, nullptr, nullptr, nullptr));
+  return piece.origin();
 }
 
 }  // namespace wtc::ode

@@ -34,58 +34,52 @@
 // several pieces) into dContact joints: soft ERP and CFM from
 // wtc::softConstraint (the tyre's spring-damper, implicit in ODE's solver),
 // mu the slip law's coefficient (dContactApprox1: a coefficient, not a
-// force) along fdir1, the traction's direction. Rolling resistance is an
-// explicit torque in both modes.
+// force) along fdir1, the traction's direction, and no second friction
+// direction (mu2 = 0: a cone's cap, not ODE's pyramid). Rolling resistance
+// is an explicit torque in both modes.
 //
-// Lifetime: the plugin must be destroyed before the user's space (which
-// would otherwise destroy the terrain space first) and before the world.
+// Lifetime: the terrain and the registered bodies and geoms must outlive
+// the plugin, and the plugin must be destroyed before the user's space
+// (which would otherwise destroy the terrain space first) and the world.
 // Registered wheels are kept awake (auto-disable off): the tread state needs
 // every step.
 #include <cstdint>
 #include <memory>
 #include <span>
 
-#include <Eigen/Core>
 #include <ode/ode.h>
+#include <Eigen/Core>
 
 #include "wtc/effects.hpp"
 #include "wtc/engine_contact.hpp"
 #include "wtc/ode/terrain_geoms.hpp"
 #include "wtc/terrain.hpp"
 #include "wtc/tyre_model.hpp"
+#include "wtc/wheel_listener.hpp"
 
 namespace wtc::ode {
 
-using WheelId = int;
+using WheelId = wtc::WheelId;
+using WheelListener = wtc::WheelListener;
 
 /// A wheel: an ODE body and its collision geom (on a hinge to its carrier,
 /// typically). ODE bodies have their origin at the centre of mass.
 struct RigidWheel {
-  dBodyID body = nullptr;                                   ///< The wheel (not owned).
-  dGeomID geom = nullptr;                                   ///< Its geom, attached to `body` (not owned).
-  dBodyID hub = nullptr;                                    ///< The body carrying the axle, or null (for omega_rel).
-  Eigen::Vector3d axle_local{Eigen::Vector3d::UnitZ()};     ///< Axle in the body frame: z, ODE's cylinder axis.
-  Eigen::Vector3d centre_local{Eigen::Vector3d::Zero()};    ///< Wheel centre O in the body frame (m).
-  WheelDescription description;                             ///< Geometry, tyre, inertia.
+  dBodyID body = nullptr;                                 ///< The wheel (not owned).
+  dGeomID geom = nullptr;                                 ///< Its geom, attached to `body` (not owned).
+  dBodyID hub = nullptr;                                  ///< The body carrying the axle, or null (for omega_rel).
+  Eigen::Vector3d axle_local{Eigen::Vector3d::UnitZ()};   ///< Axle in the body frame: z, ODE's cylinder axis.
+  Eigen::Vector3d centre_local{Eigen::Vector3d::Zero()};  ///< Wheel centre O in the body frame (m).
+  WheelDescription description;                           ///< Geometry, tyre, inertia.
   EffectSet effects = EffectSet::full();
-};
-
-/// Called by beginStep for each wheel after its tyre model ran (before ODE
-/// integrates the step). Default: nothing.
-class WheelListener {
- public:
-  virtual ~WheelListener() = default;
-  virtual void onWheelStep(WheelId wheel, const WheelForces& forces, double step_seconds) {
-    (void)wheel, (void)forces, (void)step_seconds;
-  }
 };
 
 /// One WTC contact as ODE solved it (constraint mode). `feedback` is the
 /// contact joint's dJointFeedback: ODE fills it during the world step, so
 /// the forces are those of the last completed step.
 struct SolvedContact {
-  EngineContact contact;        ///< What the plugin gave ODE.
-  dJointFeedback feedback{};    ///< f1, t1: the joint's force and torque on the wheel body.
+  EngineContact contact;      ///< What the plugin gave ODE.
+  dJointFeedback feedback{};  ///< f1, t1: the joint's force and torque on the wheel body.
   /// The joint's force on the wheel (N, world).
   Eigen::Vector3d force() const { return {feedback.f1[0], feedback.f1[1], feedback.f1[2]}; }
   /// Its component along contact.normal (N, >= 0) and the rest (N).
@@ -135,7 +129,8 @@ class Plugin {
   /// the step. False for any other pair.
   bool handlePair(dGeomID a, dGeomID b, dJointGroupID contacts);
 
-  /// The last beginStep's result and state of a wheel.
+  /// The last beginStep's result and state of a wheel (these accessors
+  /// throw std::out_of_range for an id that is not registered).
   const WheelForces& forces(WheelId wheel) const;
   const WheelState& state(WheelId wheel) const;
   /// The wheel's contacts as ODE solved them in the last world step
@@ -147,6 +142,8 @@ class Plugin {
 
   ContactMode mode() const;
   const TerrainGeoms& terrainGeoms() const;
+  /// Called by beginStep for each wheel after its tyre model ran (before
+  /// ODE integrates the step); null: none.
   void setListener(WheelListener* listener);
 
   struct Impl;

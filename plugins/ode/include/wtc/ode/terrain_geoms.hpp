@@ -3,32 +3,34 @@
 // wheel-terrain (a chassis scraping the ledge, a box dropped on the ground)
 // collides with the same ground through ODE's own colliders.
 //
-// One geom per convex piece, placed at the piece's local origin with its
-// vertices relative to it (a piece far from the world origin keeps its
-// digits), in a quadtree space of its own inside the user's space. The
-// quadtree, not a hash space: ODE's dxHashSpace::collide2 tests a geom
-// against every geom of the space, and a chassis colliding into the terrain
-// space goes through collide2; the quadtree descends its blocks. Its plane
-// is ODE's default, x-y: WTC's frames have z up.
+// One geom per convex piece, placed inside the piece (its local origin, or
+// its centroid for a convex geom) with its vertices relative to that point
+// (a piece far from the world origin keeps its digits), in a quadtree space
+// of its own inside the user's space. A quadtree, not a hash space: ODE's
+// dxHashSpace::collide2 tests a geom against every geom of the space, and a
+// chassis colliding into the terrain space goes through collide2; the
+// quadtree descends its blocks. Its plane is ODE's default, x-y: WTC's
+// frames have z up.
 //
-// Two shapes, because Debian's ODE 0.16 (no libccd colliders but
-// convex-cylinder and convex-trimesh) collides them differently:
+// Two shapes, because Debian's ODE 0.16 collides them differently (measured
+// with dCollide, docs/ode-plugin.md):
 //  - kTriMesh (default): the piece's faces as a closed triangle mesh. ODE
-//    returns full manifolds against it (a box resting on a face: 4+
-//    contacts; a cylinder: up to 10) and collides box, sphere, capsule,
+//    returns full manifolds against it (a box resting on a face: 6
+//    contacts; a cylinder: 10) and collides box, sphere, capsule,
 //    cylinder, ray and trimesh with it. The data is preprocessed for
 //    convex-trimesh, which otherwise aborts inside ODE.
 //  - kConvex: dCreateConvex from the piece's planes (outward normal n and
-//    offset d: n . x = d) and faces (counter-clockwise seen from outside,
-//    which ODE checks and warns about otherwise). Exact solid, but ODE's
-//    convex colliders return one contact per pair, so a box resting on it
-//    is held at one point per step.
+//    offset d: n . x = d, d >= 0 from an interior origin) and faces
+//    (counter-clockwise seen from outside); ODE checks both and prints a
+//    warning otherwise. Exact solid, but ODE's convex colliders return one
+//    contact per pair, so a box resting on it is held at one point per step.
 // The plugin tells terrain geoms by their space (contains()); their user
 // data stays free for the program.
 #include <cstdint>
 #include <vector>
 
 #include <ode/ode.h>
+#include <Eigen/Core>
 
 #include "wtc/terrain.hpp"
 
@@ -59,8 +61,9 @@ class TerrainGeoms {
   dGeomID geom(PieceId piece) const { return geoms_[piece]; }
 
  private:
-  void addConvex(const ConvexPolyhedron& piece);
-  void addTriMesh(const ConvexPolyhedron& piece);
+  // Each adds the piece's geom and returns where to place it (world, m).
+  Eigen::Vector3d addConvex(const ConvexPolyhedron& piece);
+  Eigen::Vector3d addTriMesh(const ConvexPolyhedron& piece);
 
   const Terrain& terrain_;
   TerrainShape shape_;
@@ -69,8 +72,8 @@ class TerrainGeoms {
   std::vector<dTriMeshDataID> meshes_;
   // ODE keeps pointers into these (it copies nothing): one buffer per piece,
   // never resized once its geom exists.
-  std::vector<std::vector<dReal>> numbers_;               // points, then planes (convex)
-  std::vector<std::vector<std::uint32_t>> indices_;       // polygons (convex) or triangles
+  std::vector<std::vector<dReal>> numbers_;          // points, then planes (convex)
+  std::vector<std::vector<std::uint32_t>> indices_;  // polygons (convex) or triangles
 };
 
 }  // namespace wtc::ode

@@ -1,0 +1,302 @@
+// The ODE plugin's integration with ODE itself: the terrain mirrored as
+// geoms for every other pair, the near callback's contract, errors that
+// name the problem, diagnostics and the listener.
+#include "wtc/ode/plugin.hpp"
+
+#include <cmath>
+#include <string>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "ode_fixture.hpp"
+#include "wtc/error.hpp"
+#include "wtc/terrain_primitives.hpp"
+
+namespace wtc {
+namespace {
+
+using ::testing::HasSubstr;
+using testing::kGravityMps2;
+using testing::OdeWorld;
+using ::testing::ThrowsMessage;
+using testing::WheelBody;
+
+constexpr double kRadius = 0.19;       // r_f (m)
+constexpr double kStiffness = 1e5;     // c (N/m)
+constexpr double kStepSeconds = 1e-3;  // (s)
+constexpr double kLedgeTop = 0.65;     // the spec's ledge (m)
+
+Terrain ledgeTerrain() {
+  TerrainBuilder builder;
+  addLedge(builder, {}, builder.addMaterial({}));
+  return std::move(builder).build();
+}
+
+std::string shapeName(ode::TerrainShape shape) { return shape == ode::TerrainShape::kTriMesh ? "TriMesh" : "Convex"; }
+
+class OdeTerrainShapeTest : public ::testing::TestWithParam<ode::TerrainShape> {};
+
+// Case: the terrain's geoms are one per piece, in the plugin's space inside
+// the program's, and are told apart from other geoms.
+TEST_P(OdeTerrainShapeTest, EveryPieceIsAGeomOfTheTerrainSpace) {
+  const Terrain ledge = ledgeTerrain();
+  OdeWorld w(ledge, ContactMode::kForce, testing::Stepper::kStep, GetParam());
+  const ode::TerrainGeoms& geoms = w.plugin->terrainGeoms();
+  EXPECT_EQ(dSpaceGetNumGeoms(geoms.space()), static_cast<int>(ledge.pieceCount()));
+  EXPECT_EQ(dGeomGetSpace(reinterpret_cast<dGeomID>(geoms.space())), w.space);
+  for (PieceId id = 0; id < static_cast<PieceId>(ledge.pieceCount()); ++id) EXPECT_TRUE(geoms.contains(geoms.geom(id)));
+  const WheelBody wheel = w.addWheelBody(3.7, {0, 0, 1});
+  EXPECT_FALSE(geoms.contains(wheel.geom));
+}
+
+// Case: a box (a chassis, 0.6 x 0.4 x 0.2 m) dropped on the ledge's top
+// collides with the terrain through ODE's own colliders: it comes to rest
+// on the top, its centre 0.1 m above it, and stays level.
+TEST_P(OdeTerrainShapeTest, ChassisRestsOnTheTerrainThroughOdesColliders) {
+  constexpr double kRestM = 0.005;  // ODE's rigid contact sinks by its ERP/CFM, a few mm at most (m)
+  const Terrain ledge = ledgeTerrain();
+  OdeWorld w(ledge, ContactMode::kForce, testing::Stepper::kStep, GetParam());
+  const dBodyID chassis = dBodyCreate(w.world);
+  dMass m;
+  dMassSetBoxTotal(&m, 10.0, 0.6, 0.4, 0.2);
+  dBodySetMass(chassis, &m);
+  dBodySetPosition(chassis, 1.0, 0, kLedgeTop + 0.3);
+  dGeomSetBody(dCreateBox(w.space, 0.6, 0.4, 0.2), chassis);
+  for (int k = 0; k < 2000; ++k) w.step(kStepSeconds);
+  const Eigen::Vector3d p = testing::position(chassis);
+  RecordProperty("chassis_height_error_mm", std::to_string((p.z() - kLedgeTop - 0.1) * 1e3));
+  EXPECT_NEAR(p.z(), kLedgeTop + 0.1, kRestM);
+  EXPECT_LT(testing::velocity(chassis).norm(), 1e-2);
+  const dReal* rotation = dBodyGetRotation(chassis);
+  EXPECT_GT(rotation[10], std::cos(0.01)) << "level within 10 mrad";
+}
+
+// Case: ODE gets the pieces as it expects them: faces counter-clockwise
+// seen from outside and, for a convex geom, an origin inside (ODE prints a
+// warning otherwise), even for a sliver whose bounding-box centre is
+// outside it. A sphere pressed 1 cm into the sliver's slanted face
+// x + y + 10 z = 1 is pushed out along that face's outward normal.
+TEST_P(OdeTerrainShapeTest, PiecesAreGivenToOdeAsItExpects) {
+  // The hull's face normals come from Qhull, to about 1e-9 (a sign error would be 2).
+  constexpr double kNormalTolerance = 1e-6, kDepthToleranceM = 1e-6;
+  TerrainBuilder builder;
+  const MaterialId material = builder.addMaterial({});
+  // Its box's centre (0.5, 0.5, 0.05) is outside it: 0.5 + 0.5 + 10 x 0.05 > 1.
+  builder.addPiece(ConvexPolyhedron::fromPoints({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 0.1}}), material);
+  addLedge(builder, {}, material);
+  const Terrain terrain = std::move(builder).build();
+  ::testing::internal::CaptureStdout();  // ODE's convex warnings go to stdout
+  const ode::TerrainGeoms geoms(terrain, nullptr, GetParam());
+  EXPECT_THAT(::testing::internal::GetCapturedStdout(), ::testing::Not(HasSubstr("WARNING")));
+  const Eigen::Vector3d normal = Eigen::Vector3d(1, 1, 10).normalized(), on_face(0.3, 0.3, 0.04);
+  const double radius = 0.05, depth = 0.01;
+  const Eigen::Vector3d centre = on_face + (radius - depth) * normal;
+  const dGeomID sphere = dCreateSphere(nullptr, radius);
+  dGeomSetPosition(sphere, centre.x(), centre.y(), centre.z());
+  dContactGeom contact[4];
+  const int n = dCollide(sphere, geoms.geom(0), 4, contact, sizeof(dContactGeom));
+  dGeomDestroy(sphere);
+  ASSERT_GE(n, 1);
+  // ODE's normal points into the first geom: out of the piece.
+  EXPECT_LT((Eigen::Vector3d(contact[0].normal[0], contact[0].normal[1], contact[0].normal[2]) - normal).norm(),
+            kNormalTolerance);
+  EXPECT_NEAR(contact[0].depth, depth, kDepthToleranceM);
+}
+
+INSTANTIATE_TEST_SUITE_P(Shapes, OdeTerrainShapeTest,
+                         ::testing::Values(ode::TerrainShape::kTriMesh, ode::TerrainShape::kConvex),
+                         [](const auto& info) { return shapeName(info.param); });
+
+// Case: a wheel against a geom that is not terrain (a static block)
+// collides as its own geom, a cylinder, through ODE: it rests on the block
+// at its radius, with no WTC contact.
+TEST(OdePluginTest, WheelAgainstAnotherGeomCollidesAsItsOwnShape) {
+  const Terrain ground = testing::flatGround();
+  OdeWorld w(ground, ContactMode::kConstraint);
+  const dGeomID block = dCreateBox(w.space, 2.0, 2.0, 1.0);  // no body: static, top at z = 1
+  dGeomSetPosition(block, 0, 0, 0.5);
+  const WheelBody wheel = w.addWheelBody(3.7, {0, 0, 1.0 + kRadius + 0.01});
+  testing::lockRotation(w, wheel.body);
+  const ode::WheelId id = testing::addWheel(w, wheel);
+  for (int k = 0; k < 2000; ++k) w.step(kStepSeconds);
+  EXPECT_NEAR(testing::position(wheel.body).z(), 1.0 + kRadius, 0.005);
+  EXPECT_TRUE(w.plugin->forces(id).contacts.empty()) << "the block is not terrain";
+}
+
+// Case: force mode hands ODE forces, no joints; constraint mode one joint per
+// contact, whose feedback holds the weight at rest.
+TEST(OdePluginTest, OnlyConstraintModeCreatesContactJoints) {
+  const Terrain ground = testing::flatGround();
+  for (const ContactMode mode : {ContactMode::kForce, ContactMode::kConstraint}) {
+    OdeWorld w(ground, mode);
+    const WheelBody wheel = w.addWheelBody(21.0, {0, 0, kRadius - 21.0 * kGravityMps2 / kStiffness});
+    const ode::WheelId id = testing::addWheel(w, wheel);
+    for (int k = 0; k < 1000; ++k) w.step(kStepSeconds);
+    w.plugin->beginStep(kStepSeconds);
+    w.collide();
+    EXPECT_EQ(dBodyGetNumJoints(wheel.body), mode == ContactMode::kForce ? 0 : 1);
+    dWorldStep(w.world, kStepSeconds);
+    dJointGroupEmpty(w.contacts);
+    if (mode == ContactMode::kForce) {
+      EXPECT_TRUE(w.plugin->solvedContacts(id).empty());
+    } else {
+      ASSERT_EQ(w.plugin->solvedContacts(id).size(), 1u);
+      EXPECT_NEAR(w.plugin->solvedContacts(id)[0].normalForce(), 21.0 * kGravityMps2, 1e-6 * 21.0 * kGravityMps2);
+    }
+    EXPECT_EQ(w.plugin->diagnostics(id).unhandled_steps, 0u);
+  }
+}
+
+// Case: force mode relies on ODE clearing the accumulated forces at the end
+// of each world step (both steppers), so that beginStep's forces act on
+// exactly one step: after a step the wheel carries none.
+TEST(OdePluginTest, ForceModeForcesActOnExactlyOneStep) {
+  const Terrain ground = testing::flatGround();
+  for (const testing::Stepper stepper : {testing::Stepper::kStep, testing::Stepper::kQuickStep}) {
+    OdeWorld w(ground, ContactMode::kForce, stepper);
+    const WheelBody wheel = w.addWheelBody(21.0, {0, 0, kRadius - 0.001});
+    testing::addWheel(w, wheel);
+    w.plugin->beginStep(kStepSeconds);
+    EXPECT_GT(dBodyGetForce(wheel.body)[2], 0.0) << "the tyre's force, accumulated";
+    if (stepper == testing::Stepper::kStep) {
+      dWorldStep(w.world, kStepSeconds);
+    } else {
+      dWorldQuickStep(w.world, kStepSeconds);
+    }
+    const dReal* force = dBodyGetForce(wheel.body);
+    const dReal* torque = dBodyGetTorque(wheel.body);
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_EQ(force[i], 0.0);
+      EXPECT_EQ(torque[i], 0.0);
+    }
+  }
+}
+
+// Case: a near callback that never calls handlePair leaves the wheel's
+// contacts out of ODE; every such step is counted (and the wheel then meets
+// the terrain as an ODE cylinder).
+TEST(OdePluginTest, StepsWhoseContactsNeverReachOdeAreCounted) {
+  const Terrain ground = testing::flatGround();
+  OdeWorld w(ground, ContactMode::kConstraint);
+  w.call_handle_pair = false;
+  const WheelBody wheel = w.addWheelBody(3.7, {0, 0, kRadius - 0.001});
+  const ode::WheelId id = testing::addWheel(w, wheel);
+  for (int k = 0; k < 10; ++k) w.step(kStepSeconds);
+  EXPECT_GT(w.plugin->diagnostics(id).unhandled_steps, 0u);
+  EXPECT_LE(w.plugin->diagnostics(id).unhandled_steps, 10u);
+}
+
+// Case: ODE subtracts its contact surface layer from every depth; the plugin
+// adds it back, so the wheel still settles at m g / c (2 %).
+TEST(OdePluginTest, ContactSurfaceLayerDoesNotSoftenTheTyre) {
+  const Terrain ground = testing::flatGround();
+  OdeWorld w(ground, ContactMode::kConstraint);
+  dWorldSetContactSurfaceLayer(w.world, 0.001);  // ODE's demos' value (m)
+  const WheelBody wheel = w.addWheelBody(21.0, {0, 0, kRadius + 0.01});
+  testing::addWheel(w, wheel);
+  for (int k = 0; k < 3000; ++k) w.step(kStepSeconds);
+  const double expected = 21.0 * kGravityMps2 / kStiffness;
+  EXPECT_NEAR(kRadius - testing::position(wheel.body).z(), expected, 0.02 * expected);
+}
+
+// Case: a correcting-velocity cap below ERP Z / h cuts the tyre's spring;
+// the plugin counts the contacts it cut.
+TEST(OdePluginTest, CorrectingVelocityCapThatCutsTheSpringIsCounted) {
+  const Terrain ground = testing::flatGround();
+  OdeWorld w(ground, ContactMode::kConstraint);
+  const WheelBody wheel = w.addWheelBody(21.0, {0, 0, kRadius - 21.0 * kGravityMps2 / kStiffness});
+  const ode::WheelId id = testing::addWheel(w, wheel);
+  w.step(kStepSeconds);
+  EXPECT_EQ(w.plugin->diagnostics(id).capped_contacts, 0u) << "default cap: infinity";
+  // At rest ERP Z / h = (h c / (h c + b)) (m g / c) / h = 0.21 m/s.
+  dWorldSetContactMaxCorrectingVel(w.world, 0.1);  // ODE's demos' value (m/s)
+  w.step(kStepSeconds);
+  EXPECT_EQ(w.plugin->diagnostics(id).capped_contacts, 1u);
+}
+
+// Case: rolling resistance opposes the wheel's spin relative to its hub
+// (the body carrying the axle): a wheel turning with its hub feels none, a
+// wheel spinning on a still hub feels f_r R_z r_0 against the spin.
+TEST(OdePluginTest, RollingResistanceOpposesTheSpinRelativeToTheHub) {
+  const Terrain ground = testing::flatGround();
+  OdeWorld w(ground, ContactMode::kForce);
+  const WheelBody wheel = w.addWheelBody(21.0, {0, 0, kRadius - 21.0 * kGravityMps2 / kStiffness});
+  const dBodyID hub = dBodyCreate(w.world);
+  ode::RigidWheel spec;
+  spec.body = wheel.body;
+  spec.geom = wheel.geom;
+  spec.hub = hub;
+  const ode::WheelId id = w.plugin->addWheel(spec);
+  const double spin = 5.0;  // about the axle, world y (rad/s)
+  for (const double hub_spin : {spin, 0.0}) {
+    dBodySetAngularVel(wheel.body, 0, spin, 0);
+    dBodySetAngularVel(hub, 0, hub_spin, 0);
+    w.plugin->beginStep(kStepSeconds);
+    const ContactForce& c = w.plugin->forces(id).contacts[0];
+    const double expected = hub_spin == spin ? 0.0 : -0.018 * c.normal_force * 0.97 * kRadius;
+    EXPECT_NEAR(c.rolling_moment.y(), expected, 1e-9 * c.normal_force) << "hub spin " << hub_spin;
+  }
+}
+
+class CountingListener : public ode::WheelListener {
+ public:
+  void onWheelStep(ode::WheelId wheel, const WheelForces& forces, double step_seconds) override {
+    ++calls[wheel];
+    last_step_seconds = step_seconds;
+    last_contacts = forces.contacts.size();
+  }
+  int calls[2] = {0, 0};
+  double last_step_seconds = 0.0;
+  std::size_t last_contacts = 0;
+};
+
+// Case: the listener hears every wheel once per beginStep, with its forces
+// and the step length.
+TEST(OdePluginTest, ListenerHearsEveryWheelOncePerStep) {
+  const Terrain ground = testing::flatGround();
+  OdeWorld w(ground, ContactMode::kForce);
+  testing::addWheel(w, w.addWheelBody(3.7, {0, 0, kRadius - 0.001}));
+  testing::addWheel(w, w.addWheelBody(3.7, {2, 0, kRadius - 0.001}));
+  CountingListener listener;
+  w.plugin->setListener(&listener);
+  for (int k = 0; k < 5; ++k) w.step(2e-3);
+  EXPECT_EQ(listener.calls[0], 5);
+  EXPECT_EQ(listener.calls[1], 5);
+  EXPECT_EQ(listener.last_step_seconds, 2e-3);
+  EXPECT_EQ(listener.last_contacts, 1u);
+}
+
+// Case: bad registrations and steps are errors that name the problem.
+TEST(OdePluginTest, BadRegistrationIsAnErrorThatNamesIt) {
+  const Terrain ground = testing::flatGround();
+  OdeWorld w(ground, ContactMode::kConstraint);
+  const WheelBody wheel = w.addWheelBody(3.7, {0, 0, 1});
+  const WheelBody other = w.addWheelBody(3.7, {2, 0, 1});
+  ode::RigidWheel spec;
+  auto refused = [&](const char* message) {
+    EXPECT_THAT([&] { w.plugin->addWheel(spec); }, ThrowsMessage<InvalidInputError>(HasSubstr(message))) << message;
+  };
+  refused("body is null");
+  spec.body = wheel.body;
+  refused("geom is null");
+  spec.geom = other.geom;
+  refused("geom is not attached to body");
+  spec.geom = wheel.geom;
+  spec.axle_local = Eigen::Vector3d::Zero();
+  refused("axle_local = (0, 0, 0)");
+  spec.axle_local = Eigen::Vector3d::UnitZ();
+  spec.description.tyre.radial_stiffness = -5;
+  refused("radial_stiffness = -5");
+  spec.description.tyre.radial_stiffness = kStiffness;
+  spec.description.geometry.free_radius = 0.25;  // larger than the 0.19 m cylinder
+  refused("does not hold the tread");
+  spec.description.geometry.free_radius = kRadius;
+  w.plugin->addWheel(spec);
+  refused("already a registered wheel");
+  EXPECT_THAT([&] { w.plugin->beginStep(0.0); }, ThrowsMessage<InvalidInputError>(HasSubstr("step_seconds = 0")));
+  EXPECT_THROW(w.plugin->forces(7), std::out_of_range);
+}
+
+}  // namespace
+}  // namespace wtc
