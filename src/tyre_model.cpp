@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "tyre_kernels.hpp"
@@ -37,7 +38,7 @@ Eigen::Vector3d unitAxle(const Eigen::Vector3d& axle, const char* where) {
 
 }  // namespace
 
-TyreModel::TyreModel(EffectSet effects) : effects_(effects) {
+TyreModel::TyreModel(EffectSet effects, ContactMode mode) : effects_(effects), mode_(mode) {
   const bool slip = effects.has(Effect::kSlipTraction);
   const bool coulomb = effects.has(Effect::kCoulombFriction);
   if (slip && coulomb) {
@@ -110,6 +111,7 @@ const WheelForces& TyreModel::forces(std::span<const Material> materials, const 
 
   const double damping = effects_.has(Effect::kNormalDamping) ? tyre.radial_damping : 0.0;
   result.normal_stability = explicitSpringStability(tyre.radial_stiffness, damping, inertia.effective_mass, h);
+  if (mode_ == ContactMode::kConstraint) result.normal_stability.limit = std::numeric_limits<double>::infinity();
   ++state.steps_;
   if (!result.normal_stability.stable()) ++state.unstable_steps_;
   return result;

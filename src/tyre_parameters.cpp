@@ -4,6 +4,7 @@
 
 #include "builder_support.hpp"
 #include "wtc/error.hpp"
+#include "wtc/tolerances.hpp"
 
 namespace wtc {
 namespace {
@@ -38,6 +39,17 @@ void validate(const WheelDescription& wheel, const char* where) {
   validate(wheel.geometry, where);
   validate(wheel.tyre, where);
   validate(wheel.inertia, where);
+}
+
+void validateMounting(const Eigen::Vector3d& axle_local, const Eigen::Vector3d& centre_local, const char* where) {
+  if (!axle_local.allFinite() || axle_local.norm() < tolerance::kMinAxleNorm) {
+    throw InvalidInputError(std::string(where) + ": axle_local = " + formatVector(axle_local) +
+                            " is not finite or is zero");
+  }
+  if (!centre_local.allFinite()) {
+    throw InvalidInputError(std::string(where) + ": centre_local = " + formatVector(centre_local) +
+                            " is not finite");
+  }
 }
 
 }  // namespace wtc

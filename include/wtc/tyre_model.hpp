@@ -38,6 +38,7 @@
 #include <vector>
 
 #include "wtc/effects.hpp"
+#include "wtc/engine_contact.hpp"
 #include "wtc/terrain.hpp"
 #include "wtc/tyre_parameters.hpp"
 #include "wtc/wheel_contact.hpp"
@@ -77,10 +78,14 @@ class WheelState {
 class TyreModel {
  public:
   /// Assembles the model for `effects`. Throws InvalidInputError if both
-  /// slip_traction and coulomb_friction are asked for.
-  explicit TyreModel(EffectSet effects = EffectSet::full());
+  /// slip_traction and coulomb_friction are asked for. `mode` says who
+  /// integrates the normal spring: in constraint mode the engine solves it
+  /// implicitly, so no step exceeds its stability limit (the report keeps
+  /// h sqrt(c/m) with an infinite limit, and unstableSteps() stays 0).
+  explicit TyreModel(EffectSet effects = EffectSet::full(), ContactMode mode = ContactMode::kForce);
 
   EffectSet effects() const { return effects_; }
+  ContactMode mode() const { return mode_; }
   /// What the contact-level effects ask of WheelContactFinder.
   ContactOptions contactOptions() const { return contact_options_; }
 
@@ -104,6 +109,7 @@ class TyreModel {
 
  private:
   EffectSet effects_;
+  ContactMode mode_;
   ContactOptions contact_options_;
   Kernel kernel_ = nullptr;
 };

@@ -48,4 +48,9 @@ void validate(const TyreParameters& tyre, const char* where);
 void validate(const WheelInertia& inertia, const char* where);
 void validate(const WheelDescription& wheel, const char* where);
 
+/// How an adapter mounts a wheel on its body: the axle direction and the
+/// wheel centre in the body frame. Throws InvalidInputError unless the axle
+/// is finite and non-zero and the centre finite.
+void validateMounting(const Eigen::Vector3d& axle_local, const Eigen::Vector3d& centre_local, const char* where);
+
 }  // namespace wtc

@@ -45,7 +45,9 @@ TEST_P(BulletModeTest, DroppedWheelSettlesAtWeightOverStiffness) {
   }
 }
 
-// Case: without damping the bounce never rises above the drop height.
+// Case: without damping the bounce never rises above the drop height by
+// more than one step's travel at impact (v h, v = sqrt(2 g drop): the apex
+// wanders with the phase of contact within the step).
 TEST_P(BulletModeTest, UndampedBounceDoesNotGainEnergy) {
   const Terrain ground = flatGround();
   BulletWorld w(ground, GetParam());
@@ -57,7 +59,7 @@ TEST_P(BulletModeTest, UndampedBounceDoesNotGainEnergy) {
     w.world.stepSimulation(1e-3, 1, 1e-3);
     if (k > 5000) highest_late = std::max(highest_late, wheel.body->getCenterOfMassPosition().z());
   }
-  EXPECT_LE(highest_late, kRadius + drop + 1e-4);
+  EXPECT_LE(highest_late, kRadius + drop + std::sqrt(2 * kGravityMps2 * drop) * 1e-3);
 }
 
 // Case: a wheel rolling at 1 m/s decelerates under rolling resistance alone:

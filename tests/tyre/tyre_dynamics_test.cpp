@@ -40,7 +40,9 @@ TEST(TyreDynamicsTest, DroppedWheelSettlesAtWeightOverStiffness) {
 }
 
 // Case: without damping, the bounce keeps its height: symplectic Euler
-// neither gains nor loses energy over a cycle (to O(h) wiggle).
+// neither gains nor loses energy over a cycle. Its apex wanders by the
+// travel of about one step at impact (v h, v = sqrt(2 g drop) = 1 m/s:
+// 1 mm at 1 ms), with the phase of contact within the step.
 TEST(TyreDynamicsTest, UndampedBounceDoesNotGainEnergy) {
   const Terrain flat = tiltedSlab(0.0);
   SimWheel wheel;
@@ -53,8 +55,9 @@ TEST(TyreDynamicsTest, UndampedBounceDoesNotGainEnergy) {
     if (k > 18000) highest_late = std::max(highest_late, wheel.center.z());
   }
   const double top = wheel.description.geometry.free_radius + drop;
-  EXPECT_LE(highest_late, top + 1e-4);
-  EXPECT_GE(highest_late, top - 1e-2);  // and does not lose it either
+  const double one_step_travel = std::sqrt(2 * kGravityMps2 * drop) * 1e-3;  // (m)
+  EXPECT_LE(highest_late, top + one_step_travel);
+  EXPECT_GE(highest_late, top - 10 * one_step_travel);  // and does not lose it either
 }
 
 struct ParkedCase {
@@ -189,6 +192,16 @@ TEST(TyreDynamicsTest, StepBeyondTheExplicitSpringLimitIsReported) {
   restOnSlab(soft, 0.0);
   EXPECT_TRUE(step(model, flat, 2e-3, soft).normal_stability.stable());
   EXPECT_EQ(soft.state.unstableSteps(), 0u);
+  // Case: in constraint mode the engine solves the spring implicitly: the
+  // same stiff tyre is reported with its step number but never unstable.
+  const TyreModel implicit(EffectSet::full(), ContactMode::kConstraint);
+  SimWheel engine;
+  engine.description.tyre.radial_stiffness = 1e7;
+  restOnSlab(engine, 0.0);
+  const WheelForces& g = step(implicit, flat, 2e-3, engine);
+  EXPECT_TRUE(g.normal_stability.stable());
+  EXPECT_NEAR(g.normal_stability.step_number, 2e-3 * std::sqrt(1e7 / 3.7), 1e-12);
+  EXPECT_EQ(engine.state.unstableSteps(), 0u);
 }
 
 }  // namespace

@@ -83,13 +83,6 @@ void applyWrench(Wheel& w, const Kinematics& k, const btVector3& force, const bt
   }
 }
 
-void requireAxle(const btVector3& axle, const char* where) {
-  const Eigen::Vector3d a = toEigen(axle);
-  if (!a.allFinite() || a.norm() < tolerance::kMinAxleNorm) {
-    fail(where, "axle_local = " + formatVector(a) + " is not finite or is zero");
-  }
-}
-
 }  // namespace
 
 Plugin::Impl::Impl(btDiscreteDynamicsWorld& w, const Terrain& t, ContactMode m)
@@ -149,10 +142,7 @@ int Plugin::Impl::wheelOf(const btCollisionObject* object) const {
 
 WheelId Plugin::Impl::add(std::unique_ptr<Wheel> w, const char* where) {
   validate(w->description, where);
-  requireAxle(w->axle_local, where);
-  if (!toEigen(w->centre_local).allFinite()) {
-    fail(where, "centre_local = " + formatVector(toEigen(w->centre_local)) + " is not finite");
-  }
+  validateMounting(toEigen(w->axle_local), toEigen(w->centre_local), where);
   if (wheel_of.count(w->collider) != 0) fail(where, "this body is already a registered wheel");
   btCollisionShape* original = w->collider->getCollisionShape();
   if (original == nullptr) fail(where, "the wheel body has no collision shape");
@@ -226,7 +216,7 @@ Plugin::~Plugin() = default;
 WheelId Plugin::addWheel(const RigidWheel& spec) {
   static constexpr const char* kWhere = "wtc::bullet::Plugin::addWheel (rigid body)";
   if (spec.body == nullptr) fail(kWhere, "body is null");
-  auto w = std::make_unique<Wheel>(spec.effects);
+  auto w = std::make_unique<Wheel>(spec.effects, impl_->mode);
   w->body = spec.body;
   w->hub = spec.hub;
   w->collider = spec.body;
@@ -245,7 +235,7 @@ WheelId Plugin::addWheel(const MultiBodyWheel& spec) {
   }
   btMultiBodyLinkCollider* collider = spec.multibody->getLinkCollider(spec.link);
   if (collider == nullptr) fail(kWhere, "link " + std::to_string(spec.link) + " has no collider");
-  auto w = std::make_unique<Wheel>(spec.effects);
+  auto w = std::make_unique<Wheel>(spec.effects, impl_->mode);
   w->multibody = spec.multibody;
   w->link = spec.link;
   w->collider = collider;

@@ -17,7 +17,7 @@ inline btVector3 toBullet(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z(
 inline Eigen::Vector3d toEigen(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
 
 struct Wheel {
-  explicit Wheel(EffectSet effects) : model(effects) {}
+  Wheel(EffectSet effects, ContactMode mode) : model(effects, mode) {}
 
   btRigidBody* body = nullptr;     // a rigid wheel, or
   btMultiBody* multibody = nullptr;  // a multibody link

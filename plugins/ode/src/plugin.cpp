@@ -75,11 +75,7 @@ WheelId Plugin::Impl::add(const RigidWheel& spec) {
   if (spec.geom == nullptr) fail(kWhere, "geom is null (the near callback knows a wheel by its geom)");
   if (dGeomGetBody(spec.geom) != spec.body) fail(kWhere, "geom is not attached to body (dGeomSetBody)");
   validate(spec.description, kWhere);
-  if (!spec.axle_local.allFinite() || spec.axle_local.norm() < tolerance::kMinAxleNorm) {
-    fail(kWhere, "axle_local = " + formatVector(spec.axle_local) + " is not finite or is zero");
-  }
-  if (!spec.centre_local.allFinite())
-    fail(kWhere, "centre_local = " + formatVector(spec.centre_local) + " is not finite");
+  validateMounting(spec.axle_local, spec.centre_local, kWhere);
   if (wheel_of.count(spec.geom) != 0) fail(kWhere, "this geom is already a registered wheel");
   if (mode == ContactMode::kConstraint) {
     dVector3 centre, axle;
@@ -87,7 +83,7 @@ WheelId Plugin::Impl::add(const RigidWheel& spec) {
     dBodyVectorToWorld(spec.body, spec.axle_local.x(), spec.axle_local.y(), spec.axle_local.z(), axle);
     requireGeomHoldsTread(spec, toEigen(centre), toEigen(axle).normalized(), kWhere);
   }
-  auto w = std::make_unique<Wheel>(spec.effects);
+  auto w = std::make_unique<Wheel>(spec.effects, mode);
   w->body = spec.body;
   w->geom = spec.geom;
   w->hub = spec.hub;

@@ -9,7 +9,7 @@
 namespace wtc::ode {
 
 struct Wheel {
-  explicit Wheel(EffectSet effects) : model(effects) {}
+  Wheel(EffectSet effects, ContactMode mode) : model(effects, mode) {}
 
   dBodyID body = nullptr;
   dGeomID geom = nullptr;
