@@ -9,12 +9,12 @@ BulletWorld::BulletWorld(const Terrain& terrain, ContactMode mode) {
   plugin = std::make_unique<bullet::Plugin>(world, terrain, mode);
 }
 
-WheelBody& BulletWorld::addWheelBody(double mass, const btVector3& centre) {
-  bodies.push_back(std::make_unique<WheelBody>(world, mass, centre));
+BulletWheel& BulletWorld::addWheelBody(double mass, const btVector3& centre) {
+  bodies.push_back(std::make_unique<BulletWheel>(world, mass, centre));
   return *bodies.back();
 }
 
-WheelBody::WheelBody(btDiscreteDynamicsWorld& w, double mass, const btVector3& centre, double r, double width)
+BulletWheel::BulletWheel(btDiscreteDynamicsWorld& w, double mass, const btVector3& centre, double r, double width)
     : world(w), shape(btVector3(r, 0.5 * width, r)), motion(btTransform(btQuaternion::getIdentity(), centre)) {
   const btVector3 inertia(0.25 * mass * r * r + mass * width * width / 12, 0.5 * mass * r * r,
                           0.25 * mass * r * r + mass * width * width / 12);
@@ -22,9 +22,9 @@ WheelBody::WheelBody(btDiscreteDynamicsWorld& w, double mass, const btVector3& c
   world.addRigidBody(body.get());
 }
 
-WheelBody::~WheelBody() { world.removeRigidBody(body.get()); }
+BulletWheel::~BulletWheel() { world.removeRigidBody(body.get()); }
 
-bullet::WheelId addWheel(BulletWorld& w, WheelBody& wheel, EffectSet effects, const TyreParameters& tyre) {
+bullet::WheelId addWheel(BulletWorld& w, BulletWheel& wheel, EffectSet effects, const TyreParameters& tyre) {
   bullet::RigidWheel spec;
   spec.body = wheel.body.get();
   spec.description.tyre = tyre;
@@ -32,15 +32,6 @@ bullet::WheelId addWheel(BulletWorld& w, WheelBody& wheel, EffectSet effects, co
   spec.description.inertia.axial_inertia = 1.0 / wheel.body->getInvInertiaDiagLocal().y();
   spec.effects = effects;
   return w.plugin->addWheel(spec);
-}
-
-Terrain flatGround(int tiles, const Material& material) {
-  TerrainBuilder builder;
-  SlabParams slab;
-  slab.size_x = slab.size_y = 40.0;
-  slab.tiles_x = slab.tiles_y = tiles;
-  addSlab(builder, slab, builder.addMaterial(material));
-  return std::move(builder).build();
 }
 
 }  // namespace wtc::testing

@@ -14,10 +14,10 @@
 namespace wtc::testing {
 
 /// A disc-like wheel body: mass (kg), axial inertia m r^2 / 2, at `centre`.
-struct WheelBody {
-  WheelBody(btDiscreteDynamicsWorld& world, double mass, const btVector3& centre, double free_radius = 0.19,
+struct BulletWheel {
+  BulletWheel(btDiscreteDynamicsWorld& world, double mass, const btVector3& centre, double free_radius = 0.19,
             double tread_width = 0.12);
-  ~WheelBody();
+  ~BulletWheel();
   btDiscreteDynamicsWorld& world;
   btCylinderShape shape;
   btDefaultMotionState motion;
@@ -29,22 +29,19 @@ struct WheelBody {
 struct BulletWorld {
   explicit BulletWorld(const Terrain& terrain, ContactMode mode);
   /// A wheel body owned by this world.
-  WheelBody& addWheelBody(double mass, const btVector3& centre);
+  BulletWheel& addWheelBody(double mass, const btVector3& centre);
   btDefaultCollisionConfiguration config;
   btCollisionDispatcher dispatcher{&config};
   btDbvtBroadphase broadphase;
   btSequentialImpulseConstraintSolver solver;
   btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &config};
-  std::vector<std::unique_ptr<WheelBody>> bodies;
+  std::vector<std::unique_ptr<BulletWheel>> bodies;
   std::unique_ptr<bullet::Plugin> plugin;
 };
 
 /// Registers `wheel` with the defaults of the robot's wheel, `mass` as its
 /// effective mass and the disc's axial inertia.
-bullet::WheelId addWheel(BulletWorld& w, WheelBody& wheel, EffectSet effects = EffectSet::full(),
+bullet::WheelId addWheel(BulletWorld& w, BulletWheel& wheel, EffectSet effects = EffectSet::full(),
                          const TyreParameters& tyre = {});
-
-/// A flat slab (top z = 0), 40 x 40 m, optionally tiled.
-Terrain flatGround(int tiles = 1, const Material& material = {});
 
 }  // namespace wtc::testing

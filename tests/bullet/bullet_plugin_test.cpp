@@ -19,7 +19,7 @@ namespace {
 using testing::BulletWorld;
 using testing::flatGround;
 using testing::kGravityMps2;
-using testing::WheelBody;
+using WheelBody = testing::BulletWheel;
 
 constexpr double kRadius = 0.19;         // r_f (m)
 constexpr double kStiffness = 1e5;       // c (N/m), the default tyre

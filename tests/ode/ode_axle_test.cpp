@@ -35,7 +35,7 @@ struct Axle {
     testing::lockRotation(w, body);
     for (int i = 0; i < 2; ++i) {
       const double y = i == 0 ? kHalfTrack : -kHalfTrack;
-      const testing::WheelBody wheel = w.addWheelBody(kWheelMass, {0, y, height});
+      const testing::OdeWheel wheel = w.addWheelBody(kWheelMass, {0, y, height});
       wheels[i] = wheel.body;
       // Body 1 the wheel: dJointAddHingeTorque turns it by +tau about the
       // axis and the axle by -tau.

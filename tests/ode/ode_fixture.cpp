@@ -71,8 +71,8 @@ OdeWorld::~OdeWorld() {
   dWorldDestroy(world);
 }
 
-WheelBody OdeWorld::addWheelBody(double mass, const Eigen::Vector3d& centre) {
-  WheelBody wheel;
+OdeWheel OdeWorld::addWheelBody(double mass, const Eigen::Vector3d& centre) {
+  OdeWheel wheel;
   wheel.mass = mass;
   wheel.body = dBodyCreate(world);
   dMass m;
@@ -100,7 +100,7 @@ void OdeWorld::step(double h) {
   dJointGroupEmpty(contacts);
 }
 
-ode::WheelId addWheel(OdeWorld& w, const WheelBody& wheel, EffectSet effects, const TyreParameters& tyre) {
+ode::WheelId addWheel(OdeWorld& w, const OdeWheel& wheel, EffectSet effects, const TyreParameters& tyre) {
   ode::RigidWheel spec;
   spec.body = wheel.body;
   spec.geom = wheel.geom;
@@ -117,15 +117,6 @@ void keepUpright(OdeWorld& w, dBodyID body) {
 
 void lockRotation(OdeWorld& w, dBodyID body) {
   angularMotor(w, body, {Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitZ()});
-}
-
-Terrain flatGround(int tiles, const Material& material) {
-  TerrainBuilder builder;
-  SlabParams slab;
-  slab.size_x = slab.size_y = 40.0;
-  slab.tiles_x = slab.tiles_y = tiles;
-  addSlab(builder, slab, builder.addMaterial(material));
-  return std::move(builder).build();
 }
 
 Eigen::Vector3d position(dBodyID body) {

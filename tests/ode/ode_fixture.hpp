@@ -19,7 +19,7 @@ enum class Stepper { kStep, kQuickStep };
 
 /// A disc-like wheel: mass (kg), ODE's solid cylinder inertia (axial
 /// m r^2 / 2), its geom in the world's space.
-struct WheelBody {
+struct OdeWheel {
   dBodyID body = nullptr;
   dGeomID geom = nullptr;
   double mass = 0.0;
@@ -36,7 +36,7 @@ class OdeWorld {
   OdeWorld& operator=(const OdeWorld&) = delete;
 
   /// A wheel body (r_f = 0.19 m, w = 0.12 m) centred at `centre`, at rest.
-  WheelBody addWheelBody(double mass, const Eigen::Vector3d& centre);
+  OdeWheel addWheelBody(double mass, const Eigen::Vector3d& centre);
   /// beginStep, collide(), the world step, dJointGroupEmpty.
   void step(double step_seconds);
   /// dSpaceCollide with an ordinary near callback that calls handlePair first.
@@ -52,7 +52,7 @@ class OdeWorld {
 
 /// Registers `wheel` with the robot wheel's defaults, its mass as the
 /// effective mass and the disc's axial inertia.
-ode::WheelId addWheel(OdeWorld& w, const WheelBody& wheel, EffectSet effects = EffectSet::full(),
+ode::WheelId addWheel(OdeWorld& w, const OdeWheel& wheel, EffectSet effects = EffectSet::full(),
                       const TyreParameters& tyre = {});
 
 /// An angular motor holding a body upright (no rotation about world x and
@@ -64,9 +64,6 @@ ode::WheelId addWheel(OdeWorld& w, const WheelBody& wheel, EffectSet effects = E
 /// 0.4 mm).
 void keepUpright(OdeWorld& w, dBodyID body);
 void lockRotation(OdeWorld& w, dBodyID body);
-
-/// A flat slab (top z = 0), 40 x 40 m, optionally tiled.
-Terrain flatGround(int tiles = 1, const Material& material = {});
 
 Eigen::Vector3d position(dBodyID body);
 Eigen::Vector3d velocity(dBodyID body);

@@ -20,7 +20,7 @@ using ::testing::HasSubstr;
 using testing::kGravityMps2;
 using testing::OdeWorld;
 using ::testing::ThrowsMessage;
-using testing::WheelBody;
+using WheelBody = testing::OdeWheel;
 
 constexpr double kRadius = 0.19;       // r_f (m)
 constexpr double kStiffness = 1e5;     // c (N/m)

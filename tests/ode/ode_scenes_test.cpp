@@ -21,7 +21,7 @@ using Eigen::Vector3d;
 using testing::kGravityMps2;
 using testing::OdeWorld;
 using testing::Stepper;
-using testing::WheelBody;
+using WheelBody = testing::OdeWheel;
 
 constexpr double kRadius = 0.19;                  // r_f (m), the robot's wheel
 constexpr double kStiffness = 1e5;                // c (N/m), the default tyre

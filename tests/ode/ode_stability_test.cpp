@@ -33,7 +33,7 @@ bool settlesAtStep(ContactMode mode, double h) {
   const Terrain ground = testing::flatGround();
   OdeWorld w(ground, mode);
   const double rest = kWheelMass * kGravityMps2 / kStiffTyre;
-  const testing::WheelBody wheel = w.addWheelBody(kWheelMass, {0, 0, kRadius - rest + kDropM});
+  const testing::OdeWheel wheel = w.addWheelBody(kWheelMass, {0, 0, kRadius - rest + kDropM});
   testing::lockRotation(w, wheel.body);
   TyreParameters tyre;
   tyre.radial_stiffness = kStiffTyre;

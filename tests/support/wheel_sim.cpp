@@ -17,6 +17,15 @@ Terrain tiltedSlab(double slope_rad, const Material& material) {
   return std::move(builder).build();
 }
 
+Terrain flatGround(int tiles, const Material& material) {
+  TerrainBuilder builder;
+  SlabParams slab;
+  slab.size_x = slab.size_y = 40.0;
+  slab.tiles_x = slab.tiles_y = tiles;
+  addSlab(builder, slab, builder.addMaterial(material));
+  return std::move(builder).build();
+}
+
 Eigen::Vector3d slabNormal(double slope_rad) { return {-std::sin(slope_rad), 0.0, std::cos(slope_rad)}; }
 Eigen::Vector3d downhill(double slope_rad) { return {-std::cos(slope_rad), 0.0, -std::sin(slope_rad)}; }
 

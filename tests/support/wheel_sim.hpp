@@ -30,6 +30,10 @@ struct SimWheel {
 /// tilted by `slope_rad` about y so that it rises toward +x.
 Terrain tiltedSlab(double slope_rad, const Material& material = {});
 
+/// A flat slab (top z = 0), 40 x 40 m, optionally tiled into tiles x tiles
+/// boxes (the engine tests' ground).
+Terrain flatGround(int tiles = 1, const Material& material = {});
+
 /// The unit normal of tiltedSlab's top and its downhill unit direction.
 Eigen::Vector3d slabNormal(double slope_rad);
 Eigen::Vector3d downhill(double slope_rad);
