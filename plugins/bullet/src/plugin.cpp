@@ -101,9 +101,11 @@ Plugin::Impl::Impl(btDiscreteDynamicsWorld& w, const Terrain& t, ContactMode m)
   // second direction (SOLVER_USE_2_FRICTION_DIRECTIONS) would make a
   // pyramid: both capped at mu R_z, a diagonal force gets sqrt(2) mu R_z
   // (measured: half the slip law's lateral drift). A multibody world keeps
-  // its second direction: its solver applies no friction at all with one
-  // cached direction (measured). Both flags are world-wide
-  // (docs/bullet-plugin.md).
+  // its second direction: btMultiBodyConstraintSolver::convertMultiBodyContact
+  // overwrites every contact's friction directions with btPlaneSpace1 before
+  // it looks at the cache, so one "cached" direction is an arbitrary fixed
+  // one (measured: no grip along the wheel's travel). Both flags are
+  // world-wide (docs/bullet-plugin.md).
   if (mode == ContactMode::kConstraint) {
     world.getSolverInfo().m_solverMode |= SOLVER_ENABLE_FRICTION_DIRECTION_CACHING;
     if (dynamic_cast<btMultiBodyDynamicsWorld*>(&world) == nullptr) {
