@@ -19,14 +19,13 @@
 namespace {
 
 void show(const char* name, const wtc::ConvexPolyhedron& poly, const std::vector<Eigen::Vector3d>& points) {
-  std::printf("\n%s: %d vertices, %d faces, size %.3f m\n", name, poly.vertexCount(), poly.faceCount(),
-              poly.size());
+  std::printf("\n%s: %d vertices, %d faces, size %.3f m\n", name, poly.vertexCount(), poly.faceCount(), poly.size());
   std::printf("  %-28s %12s  %-28s  %-24s %5s  %s\n", "query point (m)", "signed d (m)", "closest point (m)",
               "direction", "iters", "status");
   for (const auto& p : points) {
     const wtc::PointQuery r = wtc::queryPoint(poly, p);
-    std::printf("  (%7.3f, %7.3f, %7.3f)  %12.6f  (%7.3f, %7.3f, %7.3f)  (%6.3f, %6.3f, %6.3f) %5d  %s\n", p.x(),
-                p.y(), p.z(), r.signed_distance, r.closest_point.x(), r.closest_point.y(), r.closest_point.z(),
+    std::printf("  (%7.3f, %7.3f, %7.3f)  %12.6f  (%7.3f, %7.3f, %7.3f)  (%6.3f, %6.3f, %6.3f) %5d  %s\n", p.x(), p.y(),
+                p.z(), r.signed_distance, r.closest_point.x(), r.closest_point.y(), r.closest_point.z(),
                 r.direction.x(), r.direction.y(), r.direction.z(), r.iterations, wtc::toString(r.status));
   }
 }
@@ -35,12 +34,12 @@ void show(const char* name, const wtc::ConvexPolyhedron& poly, const std::vector
 // onto the top, 2 mm into the ground where it touches.
 void climbLedge(const char* path) {
   const wtc::Terrain ledge = wtc::io::loadTerrain(path);
-  std::printf("\n%s: %zu pieces; a wheel r_f = 0.19 m, tread 0.12 m climbs the face and rolls over the edge\n",
-              path, ledge.pieceCount());
+  std::printf("\n%s: %zu pieces; a wheel r_f = 0.19 m, tread 0.12 m climbs the face and rolls over the edge\n", path,
+              ledge.pieceCount());
   const wtc::WheelGeometry wheel{0.19, 0.12};
   wtc::WheelContactFinder finder;
   const std::vector<Eigen::Vector3d> centres = {{-0.40, 0, 0.188}, {-0.188, 0, 0.188}, {-0.188, 0, 0.40},
-                                                {-0.188, 0, 0.65}, {-0.10, 0, 0.80},  {-0.02, 0, 0.838},
+                                                {-0.188, 0, 0.65}, {-0.10, 0, 0.80},   {-0.02, 0, 0.838},
                                                 {0.20, 0, 0.838}};
   std::printf("  %-24s %s\n", "wheel centre (m)", "contacts: piece, deflection (mm), e (toward the ground)");
   for (const auto& o : centres) {

@@ -30,13 +30,13 @@
 namespace {
 
 constexpr int kWheels = 6;
-constexpr double kRadius = 0.19, kWidth = 0.12;  // (m)
-constexpr double kMass = 21.0;                   // a sixth of the robot (kg)
-constexpr double kStepSeconds = 1e-3;            // (s)
-constexpr double kDriveTorque = 3.0;             // per wheel (N m): twice the soil's rolling resistance
-constexpr double kLaneSpacingM = 1.5;            // between the wheels' lines (m)
-constexpr double kStartX = -12.0, kDropM = 0.05; // start (m) and height above the ground (m)
-constexpr int kWarmupSteps = 2000;               // settle and spin up
+constexpr double kRadius = 0.19, kWidth = 0.12;   // (m)
+constexpr double kMass = 21.0;                    // a sixth of the robot (kg)
+constexpr double kStepSeconds = 1e-3;             // (s)
+constexpr double kDriveTorque = 3.0;              // per wheel (N m): twice the soil's rolling resistance
+constexpr double kLaneSpacingM = 1.5;             // between the wheels' lines (m)
+constexpr double kStartX = -12.0, kDropM = 0.05;  // start (m) and height above the ground (m)
+constexpr int kWarmupSteps = 2000;                // settle and spin up
 // Steps per run: 10 s, so that every wheel stays on the 30 m ground (m).
 constexpr int kTimedSteps = 10000;
 
@@ -94,7 +94,8 @@ struct Scene {
       return n;
     }
     int n = 0;
-    for (int m = 0; m < dispatcher.getNumManifolds(); ++m) n += dispatcher.getManifoldByIndexInternal(m)->getNumContacts();
+    for (int m = 0; m < dispatcher.getNumManifolds(); ++m)
+      n += dispatcher.getManifoldByIndexInternal(m)->getNumContacts();
     return n;
   }
 

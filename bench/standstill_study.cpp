@@ -89,8 +89,7 @@ Outcome direct(double eps, double h) {
 }
 
 void row(const std::string& law, double h, const Outcome& o) {
-  std::printf("| %s | %.1f | %.3g | %d | %.2g |\n", law.c_str(), h * 1e3, o.creep_m * 1e3, o.reversals,
-              o.fastest_mps);
+  std::printf("| %s | %.1f | %.3g | %d | %.2g |\n", law.c_str(), h * 1e3, o.creep_m * 1e3, o.reversals, o.fastest_mps);
 }
 
 }  // namespace

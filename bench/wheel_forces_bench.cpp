@@ -87,17 +87,17 @@ const Vector3d kForward = Vector3d::UnitX();      // direction of travel
 const Vector3d kAxle = Vector3d::UnitY();         // a: spin about +y rolls the wheel toward +x
 
 // The ground of WheelForces.
-constexpr double kCellM = 0.5;                           // heightfield spacing (m)
-constexpr int kCells = 150;                              // cells per side: 2 x 150^2 = 45,000 pieces
-constexpr double kPathLengthM = 20.0;                    // one lap (m): 20,000 steps
-constexpr double kFieldM = kCells * kCellM;              // side of the field (m)
-constexpr double kPathStartX = 0.5 * (kFieldM - kPathLengthM);  // path from here along +x (m)
-constexpr double kPathY = 0.5 * kFieldM;                 // on the grid row kCells / 2 (m)
-constexpr double kSwellM = 0.05, kSwellPerM = 0.7;       // undulation: amplitude (m), wavenumber (rad/m)
-constexpr double kRippleM = 0.02, kRipplePerM = 2.3;     // a shorter one on top (m, rad/m)
-constexpr double kTroughStartM = 4.0, kTroughEndM = 16.0;  // trough along the path (m from its start)
-constexpr double kTroughRampM = 2.0;                     // depth ramps from 0 to full over this (m)
-constexpr double kTroughFlankRad = 10.0 * M_PI / 180.0;  // flank slope (rad)
+constexpr double kCellM = 0.5;                                    // heightfield spacing (m)
+constexpr int kCells = 150;                                       // cells per side: 2 x 150^2 = 45,000 pieces
+constexpr double kPathLengthM = 20.0;                             // one lap (m): 20,000 steps
+constexpr double kFieldM = kCells * kCellM;                       // side of the field (m)
+constexpr double kPathStartX = 0.5 * (kFieldM - kPathLengthM);    // path from here along +x (m)
+constexpr double kPathY = 0.5 * kFieldM;                          // on the grid row kCells / 2 (m)
+constexpr double kSwellM = 0.05, kSwellPerM = 0.7;                // undulation: amplitude (m), wavenumber (rad/m)
+constexpr double kRippleM = 0.02, kRipplePerM = 2.3;              // a shorter one on top (m, rad/m)
+constexpr double kTroughStartM = 4.0, kTroughEndM = 16.0;         // trough along the path (m from its start)
+constexpr double kTroughRampM = 2.0;                              // depth ramps from 0 to full over this (m)
+constexpr double kTroughFlankRad = 10.0 * M_PI / 180.0;           // flank slope (rad)
 const double kTroughDepthM = kCellM * std::tan(kTroughFlankRad);  // full depth (m): flanks one cell wide
 
 // The ground of WheelForcesOnly: the spec's ledge (0.65 m, LedgeParams{}).

@@ -32,8 +32,8 @@
 // construction.
 #include <benchmark/benchmark.h>
 
-#include <btBulletCollisionCommon.h>
 #include <BulletCollision/BroadphaseCollision/btDbvt.h>
+#include <btBulletCollisionCommon.h>
 #include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
 #include <fcl/geometry/shape/box.h>
 
@@ -57,13 +57,13 @@ namespace {
 
 using Eigen::Vector3d;
 
-constexpr double kRadius = 0.19;     // r_f (m)
-constexpr double kTreadM = 0.12;     // w (m)
-constexpr double kCellM = 0.5;       // cell size (m)
-constexpr double kDepthM = 0.002;    // wheel sinkage (m)
-constexpr double kStepM = 0.001;     // rolling: 1 m/s at a 1 ms step (m)
-constexpr double kMaxLoopM = 5.0;    // rolling: semi-axis cap of the loop (m)
-constexpr int kColdPoints = 4096;    // cold: random positions
+constexpr double kRadius = 0.19;   // r_f (m)
+constexpr double kTreadM = 0.12;   // w (m)
+constexpr double kCellM = 0.5;     // cell size (m)
+constexpr double kDepthM = 0.002;  // wheel sinkage (m)
+constexpr double kStepM = 0.001;   // rolling: 1 m/s at a 1 ms step (m)
+constexpr double kMaxLoopM = 5.0;  // rolling: semi-axis cap of the loop (m)
+constexpr int kColdPoints = 4096;  // cold: random positions
 // Placement (see the header). The deepest depth changes by at most 1 m per
 // metre of height (distance is 1-Lipschitz), so a height bracket of
 // wtc::bench::kBisectionM pins the depth to 1e-8 m, 100x inside kDepthToleranceM.
@@ -72,7 +72,9 @@ constexpr double kDepthToleranceM = 1e-6;  // accepted error of the deepest cont
 const wtc::WheelGeometry kWheel{kRadius, kTreadM};
 const Vector3d kAxle = Vector3d::UnitY();
 
-double relief(double x, double y) { return 0.05 * std::sin(0.7 * x) * std::cos(0.9 * y) + 0.02 * std::sin(2.3 * x + 1.1 * y); }
+double relief(double x, double y) {
+  return 0.05 * std::sin(0.7 * x) * std::cos(0.9 * y) + 0.02 * std::sin(2.3 * x + 1.1 * y);
+}
 
 // cells_x x cells_y = pieces / 2, as square as the divisors allow.
 std::pair<int, int> gridFor(long pieces) {
@@ -160,7 +162,7 @@ Fixture& fixture(const std::string& kind, long pieces) {
   wtc::WheelContactFinder placer;
   auto onGround = [&](double x, double y) {
     const wtc::bench::Placement p = wtc::bench::restingCentre(*f->terrain, placer, kWheel, kAxle, {}, x, y,
-                                                               relief(x, y) + kRadius - kDepthM, kDepthM);
+                                                              relief(x, y) + kRadius - kDepthM, kDepthM);
     f->placement_error = std::max(f->placement_error, std::abs(p.depth - kDepthM));
     return p.centre;
   };
@@ -221,14 +223,16 @@ struct Gather {
     } collect;
     collect.out = &out;
     const btVector3 c(o.x(), o.y(), o.z());
-    f.bullet_tree.collideTVNoStackAlloc(f.bullet_tree.m_root,
-                                        btDbvtVolume::FromCR(c, kRadius), bullet_stack, collect);
+    f.bullet_tree.collideTVNoStackAlloc(f.bullet_tree.m_root, btDbvtVolume::FromCR(c, kRadius), bullet_stack, collect);
   }
   void run(const std::string& index, const Vector3d& o) {
     out.clear();
-    if (index == "wtc") wtc(o);
-    else if (index == "fcl") fcl(o);
-    else bullet(o);
+    if (index == "wtc")
+      wtc(o);
+    else if (index == "fcl")
+      fcl(o);
+    else
+      bullet(o);
   }
 };
 
@@ -317,7 +321,9 @@ const bool kRegistered = [] {
         benchmark::RegisterBenchmark(("WheelContacts" + tail).c_str(), wheelContacts, kind, pieces, motion);
       }
       benchmark::RegisterBenchmark(("TerrainBuild" + suffix).c_str(), terrainBuild, kind, pieces)
-          ->UseManualTime()->Iterations(1)->Unit(benchmark::kMillisecond);
+          ->UseManualTime()
+          ->Iterations(1)
+          ->Unit(benchmark::kMillisecond);
     }
   }
   return true;

@@ -21,8 +21,8 @@ SpringStability explicitSpringStability(double c, double b, double m, double h) 
 }
 
 std::string describe(const SpringStability& s, double c, double b, double m, double h) {
-  return "tyre spring c = " + formatNumber(c) + " N/m, b = " + formatNumber(b) + " N s/m on m = " +
-         formatNumber(m) + " kg at h = " + formatNumber(h) + " s: h sqrt(c/m) = " + formatNumber(s.step_number) +
+  return "tyre spring c = " + formatNumber(c) + " N/m, b = " + formatNumber(b) + " N s/m on m = " + formatNumber(m) +
+         " kg at h = " + formatNumber(h) + " s: h sqrt(c/m) = " + formatNumber(s.step_number) +
          (s.stable() ? " < " : " >= ") + "limit " + formatNumber(s.limit) + " (damping ratio " +
          formatNumber(s.damping_ratio) + ")";
 }

@@ -141,11 +141,11 @@ template <bool kDamping, Traction kTraction>
 constexpr std::array<TyreModel::Kernel, 2> byRolling = {&contactForces<kDamping, kTraction, false>,
                                                         &contactForces<kDamping, kTraction, true>};
 template <bool kDamping>
-constexpr std::array<std::array<TyreModel::Kernel, 2>, 3> byTraction = {
-    byRolling<kDamping, Traction::kNone>, byRolling<kDamping, Traction::kSlipLaw>,
-    byRolling<kDamping, Traction::kCoulomb>};
+constexpr std::array<std::array<TyreModel::Kernel, 2>, 3> byTraction = {byRolling<kDamping, Traction::kNone>,
+                                                                        byRolling<kDamping, Traction::kSlipLaw>,
+                                                                        byRolling<kDamping, Traction::kCoulomb>};
 constexpr std::array<std::array<std::array<TyreModel::Kernel, 2>, 3>, 2> kKernels = {byTraction<false>,
-                                                                                    byTraction<true>};
+                                                                                     byTraction<true>};
 
 }  // namespace
 

@@ -16,10 +16,10 @@ namespace {
 
 void requireFiniteMotion(const WheelMotion& motion, double step_seconds, const char* where) {
   if (!isFinite(motion.velocity) || !isFinite(motion.angular_velocity) || !isFinite(motion.hub_angular_velocity)) {
-    throw InvalidInputError(std::string(where) + ": wheel motion is not finite: velocity = " +
-                            formatVector(motion.velocity) + ", angular_velocity = " +
-                            formatVector(motion.angular_velocity) + ", hub_angular_velocity = " +
-                            formatVector(motion.hub_angular_velocity));
+    throw InvalidInputError(std::string(where) +
+                            ": wheel motion is not finite: velocity = " + formatVector(motion.velocity) +
+                            ", angular_velocity = " + formatVector(motion.angular_velocity) +
+                            ", hub_angular_velocity = " + formatVector(motion.hub_angular_velocity));
   }
   if (!(std::isfinite(step_seconds) && step_seconds > 0.0)) {
     throw InvalidInputError(std::string(where) + ": step_seconds = " + formatNumber(step_seconds) +
@@ -30,8 +30,7 @@ void requireFiniteMotion(const WheelMotion& motion, double step_seconds, const c
 Eigen::Vector3d unitAxle(const Eigen::Vector3d& axle, const char* where) {
   const double norm = axle.norm();
   if (!std::isfinite(norm) || norm < tolerance::kMinAxleNorm) {
-    throw InvalidInputError(std::string(where) + ": wheel axle = " + formatVector(axle) +
-                            " is not finite or is zero");
+    throw InvalidInputError(std::string(where) + ": wheel axle = " + formatVector(axle) + " is not finite or is zero");
   }
   return axle / norm;
 }
@@ -47,8 +46,8 @@ TyreModel::TyreModel(EffectSet effects, ContactMode mode) : effects_(effects), m
   }
   const detail::Traction traction =
       slip ? detail::Traction::kSlipLaw : (coulomb ? detail::Traction::kCoulomb : detail::Traction::kNone);
-  kernel_ = detail::selectKernel(effects.has(Effect::kNormalDamping), traction,
-                                 effects.has(Effect::kRollingResistance));
+  kernel_ =
+      detail::selectKernel(effects.has(Effect::kNormalDamping), traction, effects.has(Effect::kRollingResistance));
   contact_options_.multiple_contacts = effects.has(Effect::kMultipleContacts);
   contact_options_.tread_truncation = effects.has(Effect::kTreadTruncation);
 }

@@ -47,8 +47,7 @@ void validateMounting(const Eigen::Vector3d& axle_local, const Eigen::Vector3d& 
                             " is not finite or is zero");
   }
   if (!centre_local.allFinite()) {
-    throw InvalidInputError(std::string(where) + ": centre_local = " + formatVector(centre_local) +
-                            " is not finite");
+    throw InvalidInputError(std::string(where) + ": centre_local = " + formatVector(centre_local) + " is not finite");
   }
 }
 

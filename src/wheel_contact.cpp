@@ -82,8 +82,8 @@ void WheelContactFinder::applySeamRule(const Terrain& terrain, double gap, doubl
     const double patch = std::sqrt(2.0 * radius * b.deflection);
     double least = 1.0;
     for (const WheelContact& a : contacts_) {
-      const bool nearer = a.signed_distance < b.signed_distance ||
-                          (a.signed_distance == b.signed_distance && a.piece < b.piece);
+      const bool nearer =
+          a.signed_distance < b.signed_distance || (a.signed_distance == b.signed_distance && a.piece < b.piece);
       if (!nearer) continue;
       const double outside = terrain.piece(a.piece).planeBound(b.ground_point) - gap;  // (m)
       least = std::min(least, outside <= 0.0 ? 0.0 : std::min(1.0, outside / patch));

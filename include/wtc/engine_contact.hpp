@@ -28,13 +28,13 @@ enum class ContactMode {
 
 /// One contact as an engine constraint (constraint mode).
 struct EngineContact {
-  Eigen::Vector3d ground_point{Eigen::Vector3d::Zero()};  ///< On the piece's surface (world, m).
-  Eigen::Vector3d tread_point{Eigen::Vector3d::Zero()};   ///< P on the undeformed tread (world, m).
-  Eigen::Vector3d normal{Eigen::Vector3d::UnitZ()};       ///< Unit, from the ground toward the wheel centre: -e.
-  double depth = 0.0;                                     ///< Z (m), > 0 into the ground.
-  double stiffness = 0.0;                                 ///< share x c (N/m).
-  double damping = 0.0;                                   ///< share x b, 0 without normal damping (N s/m).
-  double friction = 0.0;                                  ///< mu for the engine's friction (dimensionless).
+  Eigen::Vector3d ground_point{Eigen::Vector3d::Zero()};         ///< On the piece's surface (world, m).
+  Eigen::Vector3d tread_point{Eigen::Vector3d::Zero()};          ///< P on the undeformed tread (world, m).
+  Eigen::Vector3d normal{Eigen::Vector3d::UnitZ()};              ///< Unit, from the ground toward the wheel centre: -e.
+  double depth = 0.0;                                            ///< Z (m), > 0 into the ground.
+  double stiffness = 0.0;                                        ///< share x c (N/m).
+  double damping = 0.0;                                          ///< share x b, 0 without normal damping (N s/m).
+  double friction = 0.0;                                         ///< mu for the engine's friction (dimensionless).
   Eigen::Vector3d friction_direction{Eigen::Vector3d::UnitX()};  ///< Unit, normal to `normal`: along the traction.
 };
 

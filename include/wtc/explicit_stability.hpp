@@ -13,8 +13,8 @@
 namespace wtc {
 
 struct SpringStability {
-  double step_number = 0.0;  ///< h sqrt(c/m) (dimensionless).
-  double limit = 2.0;        ///< 2 (sqrt(1 + zeta^2) - zeta) (dimensionless).
+  double step_number = 0.0;    ///< h sqrt(c/m) (dimensionless).
+  double limit = 2.0;          ///< 2 (sqrt(1 + zeta^2) - zeta) (dimensionless).
   double damping_ratio = 0.0;  ///< zeta = b / (2 sqrt(c m)) (dimensionless).
   bool stable() const { return step_number < limit; }
 };

@@ -98,9 +98,9 @@ class TyreModel {
 
   /// The second half of step, for contacts found elsewhere (an engine's own
   /// contact search, tests). `materials` are indexed by contact.material.
-  const WheelForces& forces(std::span<const Material> materials, const WheelDescription& wheel,
-                            const WheelPose& pose, const WheelMotion& motion, double step_seconds,
-                            std::span<const WheelContact> contacts, WheelState& state) const;
+  const WheelForces& forces(std::span<const Material> materials, const WheelDescription& wheel, const WheelPose& pose,
+                            const WheelMotion& motion, double step_seconds, std::span<const WheelContact> contacts,
+                            WheelState& state) const;
 
   /// What a force kernel reads (src/tyre_kernels.hpp).
   struct KernelInputs;

@@ -11,29 +11,29 @@ namespace wtc {
 /// c = 1e5 N/m is 2 mm of static deflection under 21 kg, b = 900 N s/m a
 /// damping ratio of about 0.3.
 struct TyreParameters {
-  double radial_stiffness = 1e5;      ///< c (N/m), > 0.
-  double radial_damping = 900.0;      ///< b (N s/m), >= 0.
-  double rolling_radius_ratio = 0.97; ///< r_0 / r_f (dimensionless, in (0, 1]); spec: 0.97.
-  double slip_speed_floor = 1e-3;     ///< eps in s = |V_s| / max(V_t, eps) (m/s), > 0.
+  double radial_stiffness = 1e5;       ///< c (N/m), > 0.
+  double radial_damping = 900.0;       ///< b (N s/m), >= 0.
+  double rolling_radius_ratio = 0.97;  ///< r_0 / r_f (dimensionless, in (0, 1]); spec: 0.97.
+  double slip_speed_floor = 1e-3;      ///< eps in s = |V_s| / max(V_t, eps) (m/s), > 0.
 
   // Low speed (docs/tyre-model.md, "Standstill"). The slip law acts through
   // a tread deflection u with relaxation length sigma = mu'(0) R_z / k_t:
   // its steady state is the spec's law, and at standstill it is a spring
   // that holds a parked vehicle without creep.
-  double tangential_stiffness = 1e5;     ///< k_t of the tread (N/m), > 0; a brush tyre's is close to c.
-  double standstill_damping_ratio = 1.0; ///< zeta_t of the tread spring at V_t = 0 (dimensionless, >= 0).
-  double standstill_speed = 0.1;         ///< Transport speed where that damping has faded out (m/s), > 0.
-  double stability_fraction = 0.4;       ///< kappa: h sqrt(k_t/m) and the rolling-resistance ramp gain
-                                         ///< h k / I are held below this (dimensionless, in (0, 1]).
-  double spin_floor = 1e-3;              ///< Smallest width of the sign(omega) ramp (rad/s), > 0.
+  double tangential_stiffness = 1e5;      ///< k_t of the tread (N/m), > 0; a brush tyre's is close to c.
+  double standstill_damping_ratio = 1.0;  ///< zeta_t of the tread spring at V_t = 0 (dimensionless, >= 0).
+  double standstill_speed = 0.1;          ///< Transport speed where that damping has faded out (m/s), > 0.
+  double stability_fraction = 0.4;        ///< kappa: h sqrt(k_t/m) and the rolling-resistance ramp gain
+                                          ///< h k / I are held below this (dimensionless, in (0, 1]).
+  double spin_floor = 1e-3;               ///< Smallest width of the sign(omega) ramp (rad/s), > 0.
 };
 
 /// What the contact forces accelerate: the stability bounds of the explicit
 /// tyre springs use these. The safe value is the smallest mass a contact
 /// can move alone: the wheel body's own (3.7 kg, 0.067 kg m^2 for the robot).
 struct WheelInertia {
-  double effective_mass = 3.7;     ///< m (kg), > 0.
-  double axial_inertia = 0.0668;   ///< I about the axle (kg m^2), > 0; 0.5 m r_f^2 for a disc.
+  double effective_mass = 3.7;    ///< m (kg), > 0.
+  double axial_inertia = 0.0668;  ///< I about the axle (kg m^2), > 0; 0.5 m r_f^2 for a disc.
 };
 
 struct WheelDescription {

@@ -21,15 +21,15 @@ struct WheelMotion {
 
 /// One contact's breakdown, for logging and controllers.
 struct ContactForce {
-  WheelContact contact;                                      ///< P, e, Z, piece, material.
-  double deflection_rate = 0.0;                              ///< v_z = V_P . e (m/s); > 0 into the ground.
-  double normal_force = 0.0;                                 ///< R_z = max(c Z + b v_z, 0) (N).
-  Eigen::Vector3d slip_velocity{Eigen::Vector3d::Zero()};    ///< V_s = V_P - v_z e (m/s).
-  double slip_ratio = 0.0;                                   ///< s = |V_s| / max(V_t, eps) (dimensionless).
-  double mu = 0.0;                                           ///< |R_xy| / R_z applied (dimensionless).
-  Eigen::Vector3d tangential_force{Eigen::Vector3d::Zero()}; ///< R_xy, in the tangent plane (N).
-  Eigen::Vector3d force{Eigen::Vector3d::Zero()};            ///< R = -R_z e + R_xy, applied at P (N).
-  Eigen::Vector3d rolling_moment{Eigen::Vector3d::Zero()};   ///< M_r, along the axle (N m).
+  WheelContact contact;                                       ///< P, e, Z, piece, material.
+  double deflection_rate = 0.0;                               ///< v_z = V_P . e (m/s); > 0 into the ground.
+  double normal_force = 0.0;                                  ///< R_z = max(c Z + b v_z, 0) (N).
+  Eigen::Vector3d slip_velocity{Eigen::Vector3d::Zero()};     ///< V_s = V_P - v_z e (m/s).
+  double slip_ratio = 0.0;                                    ///< s = |V_s| / max(V_t, eps) (dimensionless).
+  double mu = 0.0;                                            ///< |R_xy| / R_z applied (dimensionless).
+  Eigen::Vector3d tangential_force{Eigen::Vector3d::Zero()};  ///< R_xy, in the tangent plane (N).
+  Eigen::Vector3d force{Eigen::Vector3d::Zero()};             ///< R = -R_z e + R_xy, applied at P (N).
+  Eigen::Vector3d rolling_moment{Eigen::Vector3d::Zero()};    ///< M_r, along the axle (N m).
 };
 
 /// The wheel's totals. force and torque are the wrench on the wheel body
@@ -45,7 +45,7 @@ struct WheelForces {
   Eigen::Vector3d axial_moment{Eigen::Vector3d::Zero()};    ///< N m, along a.
   Eigen::Vector3d bearing_moment{Eigen::Vector3d::Zero()};  ///< N m, normal to a.
   std::span<const ContactForce> contacts;                   ///< Valid until the wheel's next step.
-  SpringStability normal_stability;                         ///< The tyre spring at this step (see explicit_stability.hpp).
+  SpringStability normal_stability;  ///< The tyre spring at this step (see explicit_stability.hpp).
 };
 
 }  // namespace wtc

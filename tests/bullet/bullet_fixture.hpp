@@ -7,8 +7,8 @@
 
 #include <btBulletDynamicsCommon.h>
 
-#include "wtc/bullet/plugin.hpp"
 #include "wheel_sim.hpp"
+#include "wtc/bullet/plugin.hpp"
 #include "wtc/terrain.hpp"
 
 namespace wtc::testing {
@@ -16,7 +16,7 @@ namespace wtc::testing {
 /// A disc-like wheel body: mass (kg), axial inertia m r^2 / 2, at `centre`.
 struct BulletWheel {
   BulletWheel(btDiscreteDynamicsWorld& world, double mass, const btVector3& centre, double free_radius = 0.19,
-            double tread_width = 0.12);
+              double tread_width = 0.12);
   ~BulletWheel();
   btDiscreteDynamicsWorld& world;
   btCylinderShape shape;

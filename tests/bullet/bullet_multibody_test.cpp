@@ -15,10 +15,10 @@
 namespace wtc {
 namespace {
 
-constexpr double kRadius = 0.19, kWidth = 0.12;  // r_f, tread (m)
-constexpr double kHalfTrack = 0.28;              // wheel centres at y = +-0.28 m (the robot's track)
+constexpr double kRadius = 0.19, kWidth = 0.12;       // r_f, tread (m)
+constexpr double kHalfTrack = 0.28;                   // wheel centres at y = +-0.28 m (the robot's track)
 constexpr double kWheelMass = 3.7, kBaseMass = 34.6;  // (kg): 21 kg per wheel in all
-constexpr double kStiffness = 1e5;               // c (N/m)
+constexpr double kStiffness = 1e5;                    // c (N/m)
 
 struct Axle {
   Axle(const Terrain& terrain, ContactMode mode, double height) {
@@ -106,8 +106,7 @@ TEST_P(BulletMultiBodyTest, DrivenAxleAcceleratesAsRollingPredicts) {
   EXPECT_NEAR(acceleration, expected, 0.05 * expected);
 }
 
-INSTANTIATE_TEST_SUITE_P(Modes, BulletMultiBodyTest,
-                         ::testing::Values(ContactMode::kForce, ContactMode::kConstraint),
+INSTANTIATE_TEST_SUITE_P(Modes, BulletMultiBodyTest, ::testing::Values(ContactMode::kForce, ContactMode::kConstraint),
                          [](const auto& info) { return info.param == ContactMode::kForce ? "Force" : "Constraint"; });
 
 }  // namespace

@@ -21,10 +21,10 @@ using testing::flatGround;
 using testing::kGravityMps2;
 using WheelBody = testing::BulletWheel;
 
-constexpr double kRadius = 0.19;         // r_f (m)
-constexpr double kStiffness = 1e5;       // c (N/m), the default tyre
+constexpr double kRadius = 0.19;    // r_f (m)
+constexpr double kStiffness = 1e5;  // c (N/m), the default tyre
 constexpr double kDegree = 0.017453292519943295;
-constexpr double kStillMps = 1e-6;       // speeds below this are standing still (m/s)
+constexpr double kStillMps = 1e-6;  // speeds below this are standing still (m/s)
 
 std::string modeName(ContactMode mode) { return mode == ContactMode::kForce ? "Force" : "Constraint"; }
 
@@ -121,7 +121,8 @@ TEST_P(BulletModeTest, LedgeCornerGivesTwoContacts) {
   ASSERT_EQ(w.plugin->forces(id).contacts.size(), 2u);
   if (GetParam() == ContactMode::kConstraint) {
     int points = 0;
-    for (int m = 0; m < w.dispatcher.getNumManifolds(); ++m) points += w.dispatcher.getManifoldByIndexInternal(m)->getNumContacts();
+    for (int m = 0; m < w.dispatcher.getNumManifolds(); ++m)
+      points += w.dispatcher.getManifoldByIndexInternal(m)->getNumContacts();
     EXPECT_EQ(points, 2);
   }
   // At rest against the face, a few millimetres into it.
@@ -155,7 +156,8 @@ TEST_P(BulletModeTest, TessellatedFlatGroundFeelsLikeOneSlab) {
   }
   EXPECT_GT(paths[0].back().x() - paths[0].front().x(), 2.0) << "crosses several 2 m tiles";
   double worst = 0.0;
-  for (std::size_t k = 0; k < paths[0].size(); ++k) worst = std::max(worst, double((paths[0][k] - paths[1][k]).length()));
+  for (std::size_t k = 0; k < paths[0].size(); ++k)
+    worst = std::max(worst, double((paths[0][k] - paths[1][k]).length()));
   EXPECT_LT(worst, 1e-9);
 }
 
@@ -255,18 +257,21 @@ TEST(BulletPluginTest, BadRegistrationIsAnErrorThatNamesIt) {
   BulletWorld w(ground, ContactMode::kForce);
   WheelBody& wheel = w.addWheelBody(3.7, btVector3(0, 0, 1));
   bullet::RigidWheel spec;
-  EXPECT_THAT([&] { w.plugin->addWheel(spec); }, ::testing::ThrowsMessage<InvalidInputError>(::testing::HasSubstr("body is null")));
+  EXPECT_THAT([&] { w.plugin->addWheel(spec); },
+              ::testing::ThrowsMessage<InvalidInputError>(::testing::HasSubstr("body is null")));
   spec.body = wheel.body.get();
   spec.axle_local = btVector3(0, 0, 0);
-  EXPECT_THAT([&] { w.plugin->addWheel(spec); }, ::testing::ThrowsMessage<InvalidInputError>(::testing::HasSubstr("axle_local = (0, 0, 0)")));
+  EXPECT_THAT([&] { w.plugin->addWheel(spec); },
+              ::testing::ThrowsMessage<InvalidInputError>(::testing::HasSubstr("axle_local = (0, 0, 0)")));
   spec.axle_local = btVector3(0, 1, 0);
   spec.description.tyre.radial_stiffness = -5;
-  EXPECT_THAT([&] { w.plugin->addWheel(spec); }, ::testing::ThrowsMessage<InvalidInputError>(::testing::HasSubstr("radial_stiffness = -5")));
+  EXPECT_THAT([&] { w.plugin->addWheel(spec); },
+              ::testing::ThrowsMessage<InvalidInputError>(::testing::HasSubstr("radial_stiffness = -5")));
   spec.description.tyre.radial_stiffness = 1e5;
   w.plugin->addWheel(spec);
-  EXPECT_THAT([&] { w.plugin->addWheel(spec); }, ::testing::ThrowsMessage<InvalidInputError>(::testing::HasSubstr("already a registered wheel")));
+  EXPECT_THAT([&] { w.plugin->addWheel(spec); },
+              ::testing::ThrowsMessage<InvalidInputError>(::testing::HasSubstr("already a registered wheel")));
 }
-
 
 // Case: a driven wheel, pushed as its vehicle would push it, rolls over a
 // 6 cm step (a third of its radius) and rests on the top.
@@ -294,7 +299,6 @@ TEST_P(BulletModeTest, DrivenWheelRollsOverAStepLowerThanItsRadius) {
   EXPECT_NEAR(wheel.body->getCenterOfMassPosition().z(), 0.06 + kRadius - mass * kGravityMps2 / kStiffness, 0.01);
   EXPECT_EQ(most_contacts, 2) << "the step's edge and the ground at the foot";
 }
-
 
 // A stiff tyre (c = 1e6 N/m) on the 3.7 kg wheel, dropped 1 mm above its
 // rest height, for 2 s at step h: stable if it settles within 1 % of m g / c.
@@ -334,12 +338,13 @@ TEST(BulletStabilityTest, LargestStableStepOfEachModeForAStiffTyre) {
   const double constraint = largestSettlingStep(ContactMode::kConstraint);
   RecordProperty("force_mode_largest_step_ms", std::to_string(force * 1e3));
   RecordProperty("constraint_mode_largest_step_ms", std::to_string(constraint * 1e3));
-  std::printf("stiff tyre c = 1e6 N/m on 3.7 kg: largest stable step, force mode %.3g ms (analytic %.3g ms), "
-              "constraint mode %.3g ms\n", force * 1e3, predicted * 1e3, constraint * 1e3);
+  std::printf(
+      "stiff tyre c = 1e6 N/m on 3.7 kg: largest stable step, force mode %.3g ms (analytic %.3g ms), "
+      "constraint mode %.3g ms\n",
+      force * 1e3, predicted * 1e3, constraint * 1e3);
   EXPECT_NEAR(force, predicted, 0.1 * predicted);
   EXPECT_GE(constraint, 10 * predicted);
 }
-
 
 // Case: every pair but wheel-terrain keeps Bullet's own collision with the
 // same terrain: a box (a chassis) dropped on the ledge rests on its top.
@@ -384,14 +389,14 @@ TEST(BulletPluginTest, WheelWhoseFiltersExcludeTheTerrainIsRefused) {
   btSphereShape sphere(0.19);
   btDefaultMotionState motion;
   btRigidBody body(btRigidBody::btRigidBodyConstructionInfo(3.7, &motion, &sphere, btVector3(0.05, 0.05, 0.05)));
-  w.world.addRigidBody(&body, btBroadphaseProxy::StaticFilter, btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
+  w.world.addRigidBody(&body, btBroadphaseProxy::StaticFilter,
+                       btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
   bullet::RigidWheel spec;
   spec.body = &body;
   EXPECT_THAT([&] { w.plugin->addWheel(spec); },
               ::testing::ThrowsMessage<InvalidInputError>(::testing::HasSubstr("excludes the static terrain")));
   w.world.removeRigidBody(&body);
 }
-
 
 // Case: a wheel rolling at 1 m/s under a side force of 0.3 m g drifts
 // sideways at the slip law's steady slip, V_y = s V_t with
@@ -416,7 +421,6 @@ TEST_P(BulletModeTest, SideForceGivesTheSlipLawsLateralDrift) {
   const double slip = -0.1 * std::log(1.0 - side / (0.8 * mass * kGravityMps2));  // mu(s) = 0.8 (1 - e^(-s/0.1))
   EXPECT_NEAR(drift, slip * speed, 0.05 * slip * speed);
 }
-
 
 // Case: the listener hears every wheel at every internal step, with the
 // step's length and the same result forces() returns afterwards.

@@ -16,9 +16,9 @@ namespace {
 
 using Eigen::Vector3d;
 
-constexpr double kRadius = 0.19;        // r_f of the spec's robot (m)
-constexpr double kDeflection = 0.002;   // about the static deflection (m)
-constexpr double kLoadTolerance = 0.01;  // the 1 % on normal load
+constexpr double kRadius = 0.19;              // r_f of the spec's robot (m)
+constexpr double kDeflection = 0.002;         // about the static deflection (m)
+constexpr double kLoadTolerance = 0.01;       // the 1 % on normal load
 constexpr double kGeometryTolerance = 1e-12;  // m, exact geometry here
 
 // Flat ground z <= 0 tessellated into 2 x cells^2 triangular prisms, each
@@ -112,7 +112,8 @@ TEST(WheelContactTest, LedgeFootGivesGroundAndFaceContacts) {
   // two genuine contacts, one pushing up, one pushing back.
   const wtc::Terrain terrain = ledge(0.65, 4);
   wtc::WheelContactFinder finder;
-  const auto contacts = finder.find(terrain, {kRadius, 0.12}, {{-kRadius + 0.003, 0, kRadius - 0.002}, Vector3d::UnitY()});
+  const auto contacts =
+      finder.find(terrain, {kRadius, 0.12}, {{-kRadius + 0.003, 0, kRadius - 0.002}, Vector3d::UnitY()});
   ASSERT_EQ(contacts.size(), 2u);
   std::vector<Vector3d> directions{contacts[0].e, contacts[1].e};
   EXPECT_THAT(directions, testing::UnorderedElementsAre(Vector3d(1, 0, 0), Vector3d(0, 0, -1)));
@@ -138,12 +139,14 @@ TEST(WheelContactTest, ConcaveValleyOfOneSurfaceKeepsBothSides) {
   // both sides at distinct points: both are genuine, none is a seam.
   wtc::TerrainBuilder builder;
   const auto material = builder.addMaterial({});
-  builder.addPiece(wtc::ConvexPolyhedron::fromPoints({{-1, -1, 1}, {0, -1, 0}, {-1, 1, 1}, {0, 1, 0},
-                                                      {-1, -1, -1}, {0, -1, -1}, {-1, 1, -1}, {0, 1, -1}}),
-                   material);
-  builder.addPiece(wtc::ConvexPolyhedron::fromPoints({{1, -1, 1}, {0, -1, 0}, {1, 1, 1}, {0, 1, 0},
-                                                      {1, -1, -1}, {0, -1, -1}, {1, 1, -1}, {0, 1, -1}}),
-                   material);
+  builder.addPiece(
+      wtc::ConvexPolyhedron::fromPoints(
+          {{-1, -1, 1}, {0, -1, 0}, {-1, 1, 1}, {0, 1, 0}, {-1, -1, -1}, {0, -1, -1}, {-1, 1, -1}, {0, 1, -1}}),
+      material);
+  builder.addPiece(
+      wtc::ConvexPolyhedron::fromPoints(
+          {{1, -1, 1}, {0, -1, 0}, {1, 1, 1}, {0, 1, 0}, {1, -1, -1}, {0, -1, -1}, {1, 1, -1}, {0, 1, -1}}),
+      material);
   const wtc::Terrain terrain = std::move(builder).build();
   wtc::WheelContactFinder finder;
   const double h = (kRadius - kDeflection) * std::sqrt(2.0);  // centre height for deflection kDeflection
@@ -159,8 +162,14 @@ wtc::Terrain valley(double slope_rad) {
   const auto material = builder.addMaterial({});
   const double rise = std::tan(slope_rad);
   for (const double side : {-1.0, 1.0}) {
-    builder.addPiece(wtc::ConvexPolyhedron::fromPoints({{side, -1, rise}, {0, -1, 0}, {side, 1, rise}, {0, 1, 0},
-                                                        {side, -1, -1}, {0, -1, -1}, {side, 1, -1}, {0, 1, -1}}),
+    builder.addPiece(wtc::ConvexPolyhedron::fromPoints({{side, -1, rise},
+                                                        {0, -1, 0},
+                                                        {side, 1, rise},
+                                                        {0, 1, 0},
+                                                        {side, -1, -1},
+                                                        {0, -1, -1},
+                                                        {side, 1, -1},
+                                                        {0, 1, -1}}),
                      material);
   }
   return std::move(builder).build();
@@ -211,7 +220,8 @@ TEST(WheelContactTest, DeepestOnlyOptionKeepsOneContact) {
   wtc::WheelContactFinder finder;
   wtc::ContactOptions one;
   one.multiple_contacts = false;
-  const auto contacts = finder.find(terrain, {kRadius, 0.12}, {{-kRadius + 0.003, 0, kRadius - 0.002}, Vector3d::UnitY()}, one);
+  const auto contacts =
+      finder.find(terrain, {kRadius, 0.12}, {{-kRadius + 0.003, 0, kRadius - 0.002}, Vector3d::UnitY()}, one);
   ASSERT_EQ(contacts.size(), 1u);
   EXPECT_NEAR(contacts[0].deflection, 0.003, kGeometryTolerance);
 }
@@ -231,12 +241,21 @@ TEST(WheelContactTest, BadInputIsNamed) {
   const wtc::Terrain terrain = singleSlab(2.0);
   wtc::WheelContactFinder finder;
   using testing::HasSubstr;
-  EXPECT_THAT([&] { finder.find(terrain, {-0.19, 0.12}, {}); },
-              testing::ThrowsMessage<wtc::InvalidInputError>(HasSubstr("free_radius = -0.19")));
-  EXPECT_THAT([&] { finder.find(terrain, {0.19, 0.12}, {{NAN, 0, 0}, Vector3d::UnitY()}); },
-              testing::ThrowsMessage<wtc::InvalidInputError>(HasSubstr("not finite")));
-  EXPECT_THAT([&] { finder.find(terrain, {0.19, 0.12}, {{0, 0, 0}, Vector3d::Zero()}); },
-              testing::ThrowsMessage<wtc::InvalidInputError>(HasSubstr("zero axle")));
+  EXPECT_THAT(
+      [&] {
+        finder.find(terrain, {-0.19, 0.12}, {});
+      },
+      testing::ThrowsMessage<wtc::InvalidInputError>(HasSubstr("free_radius = -0.19")));
+  EXPECT_THAT(
+      [&] {
+        finder.find(terrain, {0.19, 0.12}, {{NAN, 0, 0}, Vector3d::UnitY()});
+      },
+      testing::ThrowsMessage<wtc::InvalidInputError>(HasSubstr("not finite")));
+  EXPECT_THAT(
+      [&] {
+        finder.find(terrain, {0.19, 0.12}, {{0, 0, 0}, Vector3d::Zero()});
+      },
+      testing::ThrowsMessage<wtc::InvalidInputError>(HasSubstr("zero axle")));
 }
 
 }  // namespace

@@ -35,7 +35,7 @@ constexpr double kForceModeRelative = 1e-5;       // same integrator, same force
 constexpr double kConstraintModeRelative = 1e-4;  // two solvers of the same soft contacts
 constexpr double kStepSeconds = 1e-3;             // h (s)
 constexpr double kRadius = 0.19, kStiffness = 1e5;
-constexpr double kMass = 21.0;                    // a sixth of the robot (kg)
+constexpr double kMass = 21.0;  // a sixth of the robot (kg)
 constexpr double kDegree = 0.017453292519943295;
 
 double restDeflection(double slope = 0.0) { return kMass * kGravityMps2 * std::cos(slope) / kStiffness; }
@@ -70,8 +70,8 @@ double rollingDeceleration(Engine engine, ContactMode mode) {
 double parkedCreep(Engine engine, ContactMode mode) {
   const double slope = 15 * kDegree;
   const Terrain incline = tiltedSlab(slope);
-  auto sim = makeEngineSim(engine, mode, incline, kMass, (kRadius - restDeflection(slope)) * slabNormal(slope),
-                           Hold::kLocked);
+  auto sim =
+      makeEngineSim(engine, mode, incline, kMass, (kRadius - restDeflection(slope)) * slabNormal(slope), Hold::kLocked);
   run(*sim, 0.5);
   const Eigen::Vector3d start = sim->position();
   run(*sim, 10.0);
@@ -81,8 +81,8 @@ double parkedCreep(Engine engine, ContactMode mode) {
 double slideAcceleration(Engine engine, ContactMode mode) {
   const double slope = 45 * kDegree;
   const Terrain incline = tiltedSlab(slope);
-  auto sim = makeEngineSim(engine, mode, incline, kMass, (kRadius - restDeflection(slope)) * slabNormal(slope),
-                           Hold::kLocked);
+  auto sim =
+      makeEngineSim(engine, mode, incline, kMass, (kRadius - restDeflection(slope)) * slabNormal(slope), Hold::kLocked);
   run(*sim, 0.3);
   const double v0 = sim->velocity().dot(downhill(slope));
   run(*sim, 1.0);
@@ -133,7 +133,8 @@ double ledgeFootContacts(Engine engine, ContactMode mode) {
   TerrainBuilder builder;
   addLedge(builder, {}, builder.addMaterial({}));
   const Terrain ledge = std::move(builder).build();
-  auto sim = makeEngineSim(engine, mode, ledge, kMass, {-kRadius - 0.01, 0, kRadius - restDeflection()}, Hold::kUpright);
+  auto sim =
+      makeEngineSim(engine, mode, ledge, kMass, {-kRadius - 0.01, 0, kRadius - restDeflection()}, Hold::kUpright);
   run(*sim, 2.0, [&] { sim->push({100.0, 0, 0}, 0.0); });
   return static_cast<double>(sim->forces().contacts.size());
 }
@@ -166,21 +167,21 @@ TEST_P(CrossEngineTest, BulletAndOdeAgree) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Scenes, CrossEngineTest,
-    ::testing::Values(NamedScene{"settle deflection", "m", settleDeflection},
-                      NamedScene{"rolling deceleration", "m/s^2", rollingDeceleration},
-                      NamedScene{"parked creep in 10 s", "m", parkedCreep},
-                      NamedScene{"slide acceleration on 45 deg", "m/s^2", slideAcceleration},
-                      NamedScene{"saturated traction acceleration", "m/s^2", saturatedAcceleration},
-                      NamedScene{"lateral drift under a side force", "m/s", lateralDrift},
-                      NamedScene{"time to climb a 6 cm step", "s", stepClimbSeconds},
-                      NamedScene{"contacts at the ledge foot", "count", ledgeFootContacts}),
-    [](const auto& info) {
-      std::string name = info.param.name;
-      for (char& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-      return name;
-    });
+INSTANTIATE_TEST_SUITE_P(Scenes, CrossEngineTest,
+                         ::testing::Values(NamedScene{"settle deflection", "m", settleDeflection},
+                                           NamedScene{"rolling deceleration", "m/s^2", rollingDeceleration},
+                                           NamedScene{"parked creep in 10 s", "m", parkedCreep},
+                                           NamedScene{"slide acceleration on 45 deg", "m/s^2", slideAcceleration},
+                                           NamedScene{"saturated traction acceleration", "m/s^2",
+                                                      saturatedAcceleration},
+                                           NamedScene{"lateral drift under a side force", "m/s", lateralDrift},
+                                           NamedScene{"time to climb a 6 cm step", "s", stepClimbSeconds},
+                                           NamedScene{"contacts at the ledge foot", "count", ledgeFootContacts}),
+                         [](const auto& info) {
+                           std::string name = info.param.name;
+                           for (char& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+                           return name;
+                         });
 
 }  // namespace
 }  // namespace wtc::testing

@@ -70,9 +70,12 @@ class OdeSim : public EngineSim {
 
 std::string engineName(Engine engine) {
   switch (engine) {
-    case Engine::kBullet: return "Bullet";
-    case Engine::kOde: return "ODE dWorldStep";
-    case Engine::kOdeQuick: return "ODE dWorldQuickStep";
+    case Engine::kBullet:
+      return "Bullet";
+    case Engine::kOde:
+      return "ODE dWorldStep";
+    case Engine::kOdeQuick:
+      return "ODE dWorldQuickStep";
   }
   return "?";
 }

@@ -47,8 +47,8 @@ const WheelForces& step(const TyreModel& model, const Terrain& terrain, double h
   wheel.velocity += h * (forces.force / wheel.mass + gravity);
   wheel.center += h * wheel.velocity;
   if (!wheel.locked) {
-    wheel.spin += h * (forces.axial_moment.dot(wheel.axle) + wheel.drive_torque) /
-                  wheel.description.inertia.axial_inertia;
+    wheel.spin +=
+        h * (forces.axial_moment.dot(wheel.axle) + wheel.drive_torque) / wheel.description.inertia.axial_inertia;
   }
   return forces;
 }

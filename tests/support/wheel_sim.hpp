@@ -16,13 +16,13 @@ inline constexpr double kGravityMps2 = 9.81;
 
 struct SimWheel {
   WheelDescription description;
-  double mass = 21.0;                                  ///< Body mass (kg): a sixth of the 126 kg robot.
-  Eigen::Vector3d axle{Eigen::Vector3d::UnitY()};      ///< Fixed in the world.
-  Eigen::Vector3d center{Eigen::Vector3d::Zero()};     ///< (m)
-  Eigen::Vector3d velocity{Eigen::Vector3d::Zero()};   ///< (m/s)
-  double spin = 0.0;                                   ///< omega . axle (rad/s)
-  bool locked = false;                                 ///< Spin held at zero (a brake).
-  double drive_torque = 0.0;                           ///< About the axle (N m).
+  double mass = 21.0;                                 ///< Body mass (kg): a sixth of the 126 kg robot.
+  Eigen::Vector3d axle{Eigen::Vector3d::UnitY()};     ///< Fixed in the world.
+  Eigen::Vector3d center{Eigen::Vector3d::Zero()};    ///< (m)
+  Eigen::Vector3d velocity{Eigen::Vector3d::Zero()};  ///< (m/s)
+  double spin = 0.0;                                  ///< omega . axle (rad/s)
+  bool locked = false;                                ///< Spin held at zero (a brake).
+  double drive_torque = 0.0;                          ///< About the axle (N m).
   WheelState state;
 };
 

@@ -50,8 +50,8 @@ TEST(TyreAllocationTest, WarmStepsAllocateNothingForAnyEffectSet) {
       std::size_t contacts = 0;
       for (int mm = -1000; mm <= -188; ++mm) {
         const Vector3d centre{1e-3 * mm, 0.0, r - 0.002};
-        contacts = model.step(ledge, WheelDescription{}, {centre, Vector3d::UnitY()}, motion, 1e-3, state)
-                       .contacts.size();
+        contacts =
+            model.step(ledge, WheelDescription{}, {centre, Vector3d::UnitY()}, motion, 1e-3, state).contacts.size();
       }
       return contacts;
     };

@@ -19,12 +19,12 @@ namespace wtc {
 namespace {
 
 using Eigen::Vector3d;
-using testing::tiltedSlab;
 using ::testing::HasSubstr;
+using testing::tiltedSlab;
 
-constexpr double kTolerance = 1e-9;       // relative, for closed-form answers
-constexpr double kDeflectionM = 0.002;    // Z of the flat-ground cases (m)
-constexpr double kStepSeconds = 1e-3;     // h (s)
+constexpr double kTolerance = 1e-9;     // relative, for closed-form answers
+constexpr double kDeflectionM = 0.002;  // Z of the flat-ground cases (m)
+constexpr double kStepSeconds = 1e-3;   // h (s)
 
 const WheelDescription kWheel{};
 const double kRadius = kWheel.geometry.free_radius;
@@ -96,8 +96,8 @@ TEST(TyreModelTest, TractionOpposesSlipAndNeverExceedsMuTimesNormalForce) {
     const TyreModel model(EffectSet::full());
     WheelState carried;  // tread state carried through a random sequence
     for (int k = 0; k < 2000; ++k) {
-      const WheelMotion m = motion({speed(random), speed(random), 0.1 * speed(random)},
-                                   {spin(random), spin(random), spin(random)});
+      const WheelMotion m =
+          motion({speed(random), speed(random), 0.1 * speed(random)}, {spin(random), spin(random), spin(random)});
       const WheelPose pose = onFlat(depth(random));
       // Case: the first step from rest opposes the slip velocity exactly.
       WheelState fresh;
@@ -172,8 +172,8 @@ TEST(TyreModelTest, WrenchSplitsIntoAxialAndBearingMoments) {
   const Terrain steps = ledge();
   const TyreModel model(EffectSet::full());
   WheelState state;
-  const WheelForces& f = model.step(steps, kWheel, inLedgeFoot(), motion({0.3, 0.05, -0.02}, {0.1, 2.0, 0.2}),
-                                    kStepSeconds, state);
+  const WheelForces& f =
+      model.step(steps, kWheel, inLedgeFoot(), motion({0.3, 0.05, -0.02}, {0.1, 2.0, 0.2}), kStepSeconds, state);
   ASSERT_EQ(f.contacts.size(), 2u);
   Vector3d force = Vector3d::Zero(), torque = Vector3d::Zero();
   for (const ContactForce& c : f.contacts) {
@@ -244,9 +244,9 @@ TEST(TyreModelTest, EachEffectSwitchedOffRemovesExactlyItsContribution) {
 // m / h <= m / h: an explicit step cannot reverse the slip.
 TEST(TyreModelTest, TractionNearZeroSlipIsContinuousWithBoundedGain) {
   const Terrain flat = tiltedSlab(0.0);
-  for (const TyreModel& model : {TyreModel(EffectSet::full()), TyreModel(EffectSet::full()
-                                                                               .without(Effect::kSlipTraction)
-                                                                               .with(Effect::kCoulombFriction))}) {
+  for (const TyreModel& model :
+       {TyreModel(EffectSet::full()),
+        TyreModel(EffectSet::full().without(Effect::kSlipTraction).with(Effect::kCoulombFriction))}) {
     for (const double h : {1e-4, 1e-3, 2e-3}) {
       for (const double mass : {3.7, 21.0}) {
         WheelDescription wheel;
@@ -265,8 +265,8 @@ TEST(TyreModelTest, TractionNearZeroSlipIsContinuousWithBoundedGain) {
             EXPECT_EQ(fx, 0.0);
           }
           if (k > -1000) {
-            EXPECT_LE(std::abs(fx - previous), bound * dv * (1 + 1e-6)) << model.effects().toString() << " h = " << h
-                                                                         << " m = " << mass << " v = " << v;
+            EXPECT_LE(std::abs(fx - previous), bound * dv * (1 + 1e-6))
+                << model.effects().toString() << " h = " << h << " m = " << mass << " v = " << v;
           }
           EXPECT_LE(fx * v, 0.0);
           previous = fx;
@@ -292,9 +292,7 @@ TEST(TyreModelTest, NoNanOrInfinityForAnyFiniteInput) {
   std::mt19937_64 random(7);
   std::uniform_int_distribution<int> pick(0, 5);
   const double magnitudes[] = {0.0, 1e-300, 1e-9, 1.0, 1e3, 1e6};
-  auto any = [&] {
-    return Vector3d(magnitudes[pick(random)], -magnitudes[pick(random)], magnitudes[pick(random)]);
-  };
+  auto any = [&] { return Vector3d(magnitudes[pick(random)], -magnitudes[pick(random)], magnitudes[pick(random)]); };
   Material frictionless;
   frictionless.name = "ice";
   frictionless.mu_max = 0.0;
@@ -304,9 +302,8 @@ TEST(TyreModelTest, NoNanOrInfinityForAnyFiniteInput) {
   sticky.s1 = 1e-6;
   for (const Material& ground : {Material{}, frictionless, sticky}) {
     const Terrain flat = tiltedSlab(0.0, ground);
-    for (const EffectSet effects : {EffectSet::full(), EffectSet::full()
-                                                          .without(Effect::kSlipTraction)
-                                                          .with(Effect::kCoulombFriction)}) {
+    for (const EffectSet effects :
+         {EffectSet::full(), EffectSet::full().without(Effect::kSlipTraction).with(Effect::kCoulombFriction)}) {
       const TyreModel model(effects);
       WheelState state;
       for (int k = 0; k < 3000; ++k) {

@@ -174,8 +174,10 @@ void Plugin::Impl::preTick(double h) {
   const Terrain& ground = terrain.terrain();
   for (std::size_t id = 0; id < wheels.size(); ++id) {
     Wheel& w = *wheels[id];
-    const Kinematics k = w.body != nullptr ? rigidKinematics(w) : multiBodyKinematics(w, omega_scratch, velocity_scratch);
-    const WheelForces& f = w.model.step(ground, w.description, {toEigen(k.centre), toEigen(k.axle)}, k.motion, h, w.state);
+    const Kinematics k =
+        w.body != nullptr ? rigidKinematics(w) : multiBodyKinematics(w, omega_scratch, velocity_scratch);
+    const WheelForces& f =
+        w.model.step(ground, w.description, {toEigen(k.centre), toEigen(k.axle)}, k.motion, h, w.state);
     w.forces = &f;
     if (mode == ContactMode::kForce) {
       applyWrench(w, k, toBullet(f.force), toBullet(f.torque), h);
@@ -253,7 +255,9 @@ const WheelForces& Plugin::forces(WheelId wheel) const {
   return w.forces != nullptr ? *w.forces : kNone;
 }
 
-const WheelState& Plugin::state(WheelId wheel) const { return impl_->wheels.at(static_cast<std::size_t>(wheel))->state; }
+const WheelState& Plugin::state(WheelId wheel) const {
+  return impl_->wheels.at(static_cast<std::size_t>(wheel))->state;
+}
 int Plugin::wheelCount() const { return static_cast<int>(impl_->wheels.size()); }
 ContactMode Plugin::mode() const { return impl_->mode; }
 btCollisionObject& Plugin::terrainObject() { return impl_->terrain.object(); }

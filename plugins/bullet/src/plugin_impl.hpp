@@ -19,7 +19,7 @@ inline Eigen::Vector3d toEigen(const btVector3& v) { return {v.x(), v.y(), v.z()
 struct Wheel {
   Wheel(EffectSet effects, ContactMode mode) : model(effects, mode) {}
 
-  btRigidBody* body = nullptr;     // a rigid wheel, or
+  btRigidBody* body = nullptr;       // a rigid wheel, or
   btMultiBody* multibody = nullptr;  // a multibody link
   int link = -1;
   btRigidBody* hub = nullptr;
@@ -28,7 +28,7 @@ struct Wheel {
   WheelDescription description;
   TyreModel model;
   WheelState state;
-  std::unique_ptr<WheelShape> shape;  // replaces the collider's shape while registered
+  std::unique_ptr<WheelShape> shape;           // replaces the collider's shape while registered
   std::vector<EngineContact> engine_contacts;  // constraint mode: this step's contacts
   const WheelForces* forces = nullptr;
   btVector3 link_force{0, 0, 0}, link_torque{0, 0, 0};  // multibody: what this substep added

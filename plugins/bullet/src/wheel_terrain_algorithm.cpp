@@ -58,9 +58,9 @@ void WheelTerrainAlgorithm::writeWtcContacts(int wheel, bool wheel_is_body0, con
     btScalar nearest = BT_LARGE_FLOAT;
     for (int k = 0; k < manifold_->getNumContacts(); ++k) {
       const btManifoldPoint& p = manifold_->getContactPoint(k);
-      const btScalar d = ((manifold_->getBody0() == body0->getCollisionObject()) ? p.m_positionWorldOnB
-                                                                                  : p.m_positionWorldOnA)
-                             .distance2(point_on_b);
+      const btScalar d =
+          ((manifold_->getBody0() == body0->getCollisionObject()) ? p.m_positionWorldOnB : p.m_positionWorldOnA)
+              .distance2(point_on_b);
       if (d < nearest) nearest = d, index = k;
     }
     if (index < 0) continue;
@@ -89,11 +89,11 @@ void WheelTerrainAlgorithm::writeWtcContacts(int wheel, bool wheel_is_body0, con
 void WheelTerrainAlgorithm::delegate(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
                                      const btDispatcherInfo& dispatch_info, btManifoldResult* result) {
   const btCollisionObjectWrapper original0(body0->m_parent, unwrap(body0->getCollisionShape()),
-                                           body0->getCollisionObject(), body0->getWorldTransform(),
-                                           body0->m_partId, body0->m_index);
+                                           body0->getCollisionObject(), body0->getWorldTransform(), body0->m_partId,
+                                           body0->m_index);
   const btCollisionObjectWrapper original1(body1->m_parent, unwrap(body1->getCollisionShape()),
-                                           body1->getCollisionObject(), body1->getWorldTransform(),
-                                           body1->m_partId, body1->m_index);
+                                           body1->getCollisionObject(), body1->getWorldTransform(), body1->m_partId,
+                                           body1->m_index);
   if (child_ == nullptr) {
     child_ = m_dispatcher->findAlgorithm(&original0, &original1, nullptr, BT_CONTACT_POINT_ALGORITHMS);
   }

@@ -2,15 +2,15 @@
 // terrain file through wtc::io, and plugs WTC into a Bullet world through
 // wtc::bullet: returns 0 only when every answer is right, so the install
 // test fails on a broken package.
+#include <btBulletDynamicsCommon.h>
 #include <cmath>
 #include <cstdio>
 #include <exception>
-#include <btBulletDynamicsCommon.h>
 #include <wtc/bullet/plugin.hpp>
 #include <wtc/convex_polyhedron.hpp>
-#include <wtc/terrain_primitives.hpp>
 #include <wtc/io/terrain_file.hpp>
 #include <wtc/point_query.hpp>
+#include <wtc/terrain_primitives.hpp>
 
 int main() {
   const wtc::ConvexPolyhedron box = wtc::ConvexPolyhedron::box(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(2, 1, 1));

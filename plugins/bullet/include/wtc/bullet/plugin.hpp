@@ -47,11 +47,11 @@ using WheelListener = wtc::WheelListener;
 
 /// A wheel that is its own btRigidBody (on a hinge to its carrier, typically).
 struct RigidWheel {
-  btRigidBody* body = nullptr;                        ///< The wheel (not owned).
-  btRigidBody* hub = nullptr;                         ///< The body carrying the axle, or null (for omega_rel).
-  btVector3 axle_local{0, 1, 0};                      ///< Axle direction in the body frame.
-  btVector3 centre_local{0, 0, 0};                    ///< Wheel centre O in the body frame (m).
-  WheelDescription description;                       ///< Geometry, tyre, inertia.
+  btRigidBody* body = nullptr;      ///< The wheel (not owned).
+  btRigidBody* hub = nullptr;       ///< The body carrying the axle, or null (for omega_rel).
+  btVector3 axle_local{0, 1, 0};    ///< Axle direction in the body frame.
+  btVector3 centre_local{0, 0, 0};  ///< Wheel centre O in the body frame (m).
+  WheelDescription description;     ///< Geometry, tyre, inertia.
   EffectSet effects = EffectSet::full();
 };
 
