@@ -1,5 +1,5 @@
 # Installs the library and a relocatable CMake package:
-#   find_package(wtc CONFIG REQUIRED)  ->  wtc::core, wtc::io, wtc::bullet (and wtc::ode once built)
+#   find_package(wtc CONFIG REQUIRED)  ->  wtc::core, wtc::io, wtc::bullet, wtc::ode
 include(CMakePackageConfigHelpers)
 
 install(TARGETS wtc_core EXPORT wtcTargets

@@ -1,7 +1,7 @@
 // Builds a box with the installed WTC and queries one point, reads a
 // terrain file through wtc::io, and plugs WTC into a Bullet world through
-// wtc::bullet: returns 0 only when every answer is right, so the install
-// test fails on a broken package.
+// wtc::bullet and wtc::ode: returns 0 only when every answer is right, so
+// the install test fails on a broken package.
 #include <btBulletDynamicsCommon.h>
 #include <cmath>
 #include <cstdio>
@@ -9,6 +9,7 @@
 #include <wtc/bullet/plugin.hpp>
 #include <wtc/convex_polyhedron.hpp>
 #include <wtc/io/terrain_file.hpp>
+#include <wtc/ode/plugin.hpp>
 #include <wtc/point_query.hpp>
 #include <wtc/terrain_primitives.hpp>
 
@@ -54,7 +55,35 @@ int main() {
     deflection = 0.19 - wheel.getCenterOfMassPosition().z();
   }
   world.removeRigidBody(&wheel);
-  const bool bullet_ok = std::abs(deflection - 3.7 * 9.81 / 1e5) < 0.02 * 3.7 * 9.81 / 1e5;
+  const double expected = 3.7 * 9.81 / 1e5;
+  const bool bullet_ok = std::abs(deflection - expected) < 0.02 * expected;
   std::printf("wtc::bullet: settled deflection %.4g m: %s\n", deflection, bullet_ok ? "ok" : "WRONG");
-  return bullet_ok ? 0 : 1;
+
+  // wtc::ode: the same wheel in ODE (force mode: no near callback needed).
+  dInitODE2(0);
+  const dWorldID ode_world = dWorldCreate();
+  dWorldSetGravity(ode_world, 0, 0, -9.81);
+  const dSpaceID space = dHashSpaceCreate(nullptr);
+  const dBodyID body = dBodyCreate(ode_world);
+  dMass mass;
+  dMassSetSphereTotal(&mass, 3.7, 0.19);
+  dBodySetMass(body, &mass);
+  dBodySetPosition(body, 0, 0, 0.2);
+  const dGeomID geom = dCreateSphere(space, 0.19);
+  dGeomSetBody(geom, body);
+  {
+    wtc::ode::Plugin plugin(ode_world, space, ground);
+    plugin.addWheel({.body = body, .geom = geom, .axle_local = Eigen::Vector3d::UnitY()});  // horizontal axle
+    for (int k = 0; k < 2000; ++k) {
+      plugin.beginStep(1e-3);
+      dWorldStep(ode_world, 1e-3);
+    }
+    deflection = 0.19 - dBodyGetPosition(body)[2];
+  }
+  dSpaceDestroy(space);
+  dWorldDestroy(ode_world);
+  dCloseODE();
+  const bool ode_ok = std::abs(deflection - expected) < 0.02 * expected;
+  std::printf("wtc::ode: settled deflection %.4g m: %s\n", deflection, ode_ok ? "ok" : "WRONG");
+  return bullet_ok && ode_ok ? 0 : 1;
 }
