@@ -2,6 +2,9 @@
 
 #include <cmath>
 
+#include "wtc/tyre_model.hpp"
+#include "wtc/tyre_parameters.hpp"
+
 namespace wtc {
 namespace {
 
@@ -15,7 +18,9 @@ Eigen::Vector3d anyTangent(const Eigen::Vector3d& n) {
 
 }  // namespace
 
-EngineContact toEngineContact(const ContactForce& f, double stiffness, double damping) {
+EngineContact toEngineContact(const ContactForce& f, const TyreParameters& tyre, const TyreModel& model) {
+  const double stiffness = tyre.radial_stiffness;
+  const double damping = model.effects().has(Effect::kNormalDamping) ? tyre.radial_damping : 0.0;
   EngineContact c;
   c.ground_point = f.contact.ground_point;
   c.tread_point = f.contact.point;

@@ -103,6 +103,7 @@ const WheelForces& TyreModel::forces(std::span<const Material> materials, const 
     rolling_moment += f.rolling_moment;
   }
   const Eigen::Vector3d axial_contact = in.axle.dot(contact_moment) * in.axle;
+  result.rolling_moment = rolling_moment;
   result.torque = contact_moment + rolling_moment;
   result.axial_moment = axial_contact + rolling_moment;
   result.bearing_moment = contact_moment - axial_contact;

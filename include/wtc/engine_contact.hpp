@@ -20,6 +20,11 @@
 #include "wtc/wheel_forces.hpp"
 
 namespace wtc {
+class TyreModel;
+struct TyreParameters;
+}  // namespace wtc
+
+namespace wtc {
 
 enum class ContactMode {
   kForce,       ///< The tyre model's forces, applied explicitly.
@@ -38,9 +43,10 @@ struct EngineContact {
   Eigen::Vector3d friction_direction{Eigen::Vector3d::UnitX()};  ///< Unit, normal to `normal`: along the traction.
 };
 
-/// The engine contact of one contact of the tyre model's result.
-/// `damping` is the tyre's b when the model has normal damping, else 0.
-EngineContact toEngineContact(const ContactForce& force, double stiffness, double damping);
+/// The engine contact of one contact of `model`'s result for a wheel with
+/// `tyre`: stiffness c, damping b if the model has normal damping (else 0),
+/// both times the contact's load share.
+EngineContact toEngineContact(const ContactForce& force, const TyreParameters& tyre, const TyreModel& model);
 
 /// ERP and CFM of an implicit spring-damper (ODE's convention: CFM in
 /// m/(N s) per unit of the constraint force; Bullet derives the same pair

@@ -44,6 +44,7 @@ struct WheelForces {
   Eigen::Vector3d torque{Eigen::Vector3d::Zero()};          ///< About O (N m).
   Eigen::Vector3d axial_moment{Eigen::Vector3d::Zero()};    ///< N m, along a.
   Eigen::Vector3d bearing_moment{Eigen::Vector3d::Zero()};  ///< N m, normal to a.
+  Eigen::Vector3d rolling_moment{Eigen::Vector3d::Zero()};  ///< sum M_r (N m): what constraint mode applies explicitly.
   std::span<const ContactForce> contacts;                   ///< Valid until the wheel's next step.
   SpringStability normal_stability;  ///< The tyre spring at this step (see explicit_stability.hpp).
 };

@@ -184,14 +184,10 @@ void Plugin::Impl::preTick(double h) {
     } else {
       // The engine's contacts carry the normal and friction forces; rolling
       // resistance remains an explicit moment.
-      btVector3 rolling(0, 0, 0);
       w.engine_contacts.clear();
-      const double damping = w.model.effects().has(Effect::kNormalDamping) ? w.description.tyre.radial_damping : 0.0;
-      for (const ContactForce& c : f.contacts) {
-        rolling += toBullet(c.rolling_moment);
-        w.engine_contacts.push_back(toEngineContact(c, w.description.tyre.radial_stiffness, damping));
-      }
-      applyWrench(w, k, btVector3(0, 0, 0), rolling, h);
+      for (const ContactForce& c : f.contacts)
+        w.engine_contacts.push_back(toEngineContact(c, w.description.tyre, w.model));
+      applyWrench(w, k, btVector3(0, 0, 0), toBullet(f.rolling_moment), h);
     }
     if (listener != nullptr) listener->onWheelStep(static_cast<WheelId>(id), f, h);
   }

@@ -125,14 +125,10 @@ void Plugin::Impl::beginStep(double h) {
     } else {
       // The contact joints carry the normal and friction forces; rolling
       // resistance remains an explicit torque.
-      Eigen::Vector3d rolling = Eigen::Vector3d::Zero();
-      const double damping = w.model.effects().has(Effect::kNormalDamping) ? w.description.tyre.radial_damping : 0.0;
       w.contacts.clear();
-      for (const ContactForce& cf : f.contacts) {
-        rolling += cf.rolling_moment;
-        w.contacts.push_back({toEngineContact(cf, w.description.tyre.radial_stiffness, damping)});
-      }
-      dBodyAddTorque(w.body, rolling.x(), rolling.y(), rolling.z());
+      for (const ContactForce& cf : f.contacts)
+        w.contacts.push_back({toEngineContact(cf, w.description.tyre, w.model)});
+      dBodyAddTorque(w.body, f.rolling_moment.x(), f.rolling_moment.y(), f.rolling_moment.z());
       // Counted now, taken back when handlePair hands the contacts to ODE.
       if (!w.contacts.empty()) ++w.diagnostics.unhandled_steps;
     }
