@@ -1,5 +1,9 @@
-// Validation scenes of the Bullet plugin, each against its analytic or
-// expected value, in both contact modes (docs/bullet-plugin.md).
+// Validation scenes of the Bullet plugin that are Bullet's own (substeps,
+// multibody filters, delegation to Bullet's algorithms, the parked sweep
+// over steps, the stability bisection), in both contact modes. The scenes
+// shared with ODE (settling, rolling resistance, sliding, saturation, side
+// force) are checked against their analytic values for every engine in
+// tests/cross_engine. docs/bullet-plugin.md.
 #include "wtc/bullet/plugin.hpp"
 
 #include <cmath>
@@ -30,21 +34,6 @@ std::string modeName(ContactMode mode) { return mode == ContactMode::kForce ? "F
 
 class BulletModeTest : public ::testing::TestWithParam<ContactMode> {};
 
-// Case: a wheel (and a loaded wheel) dropped on flat ground settles at
-// m g / c within 2 %.
-TEST_P(BulletModeTest, DroppedWheelSettlesAtWeightOverStiffness) {
-  const Terrain ground = flatGround();
-  for (const double mass : {3.7, 21.0}) {
-    BulletWorld w(ground, GetParam());
-    WheelBody& wheel = w.addWheelBody(mass, btVector3(0, 0, kRadius + 0.01));
-    const bullet::WheelId id = testing::addWheel(w, wheel);
-    for (int k = 0; k < 3000; ++k) w.world.stepSimulation(1e-3, 1, 1e-3);
-    const double deflection = kRadius - wheel.body->getCenterOfMassPosition().z();
-    EXPECT_NEAR(deflection, mass * kGravityMps2 / kStiffness, 0.02 * mass * kGravityMps2 / kStiffness) << mass;
-    EXPECT_EQ(w.plugin->forces(id).contacts.size(), 1u);
-  }
-}
-
 // Case: without damping the bounce never rises above the drop height by
 // more than one step's travel at impact (v h, v = sqrt(2 g drop): the apex
 // wanders with the phase of contact within the step).
@@ -60,47 +49,6 @@ TEST_P(BulletModeTest, UndampedBounceDoesNotGainEnergy) {
     if (k > 5000) highest_late = std::max(highest_late, wheel.body->getCenterOfMassPosition().z());
   }
   EXPECT_LE(highest_late, kRadius + drop + std::sqrt(2 * kGravityMps2 * drop) * 1e-3);
-}
-
-// Case: a wheel rolling at 1 m/s decelerates under rolling resistance alone:
-// a = f_r m g r_0 r / (I + m r^2) = 0.114 m/s^2 for a disc (I = m r^2 / 2).
-TEST_P(BulletModeTest, FreeRollingWheelDeceleratesAsRollingResistancePredicts) {
-  const Terrain ground = flatGround();
-  BulletWorld w(ground, GetParam());
-  const double mass = 21.0, deflection = mass * kGravityMps2 / kStiffness;
-  WheelBody& wheel = w.addWheelBody(mass, btVector3(-5, 0, kRadius - deflection));
-  wheel.body->setAngularFactor(btVector3(0, 1, 0));  // upright: spin about the axle only
-  wheel.body->setLinearFactor(btVector3(1, 0, 1));
-  testing::addWheel(w, wheel);
-  wheel.body->setLinearVelocity(btVector3(1.0, 0, 0));
-  wheel.body->setAngularVelocity(btVector3(0, 1.0 / kRadius, 0));
-  for (int k = 0; k < 500; ++k) w.world.stepSimulation(1e-3, 1, 1e-3);
-  const double v0 = wheel.body->getLinearVelocity().x();
-  for (int k = 0; k < 2000; ++k) w.world.stepSimulation(1e-3, 1, 1e-3);
-  const double deceleration = (v0 - wheel.body->getLinearVelocity().x()) / 2.0;
-  const double inertia = 0.5 * mass * kRadius * kRadius;
-  const double expected = 0.018 * mass * kGravityMps2 * 0.97 * kRadius * kRadius / (inertia + mass * kRadius * kRadius);
-  EXPECT_NEAR(deceleration, expected, 0.05 * expected);
-}
-
-// Case: a driven wheel with a torque far beyond its grip accelerates at
-// mu_max g: the traction saturates at mu R_z.
-TEST_P(BulletModeTest, DrivenWheelTractionSaturatesAtMuTimesNormalForce) {
-  const Terrain ground = flatGround();
-  BulletWorld w(ground, GetParam());
-  const double mass = 21.0;
-  WheelBody& wheel = w.addWheelBody(mass, btVector3(-5, 0, kRadius - mass * kGravityMps2 / kStiffness));
-  wheel.body->setAngularFactor(btVector3(0, 1, 0));
-  wheel.body->setLinearFactor(btVector3(1, 0, 1));
-  testing::addWheel(w, wheel);
-  for (int k = 0; k < 200; ++k) w.world.stepSimulation(1e-3, 1, 1e-3);
-  const double v0 = wheel.body->getLinearVelocity().x();
-  for (int k = 0; k < 1000; ++k) {
-    wheel.body->applyTorque(btVector3(0, 100.0, 0));  // the robot's wheel motor; grip ~31 N m
-    w.world.stepSimulation(1e-3, 1, 1e-3);
-  }
-  const double acceleration = wheel.body->getLinearVelocity().x() - v0;  // over 1 s
-  EXPECT_NEAR(acceleration, 0.8 * kGravityMps2, 0.02 * 0.8 * kGravityMps2);
 }
 
 // Case: the wheel pressed into the foot of the 0.65 m ledge touches the
@@ -231,26 +179,6 @@ std::vector<SlopeCase> parkedCases() {
 INSTANTIATE_TEST_SUITE_P(ModesAndSteps, BulletParkedTest, ::testing::ValuesIn(parkedCases()), [](const auto& info) {
   return modeName(info.param.mode) + "_" + std::to_string(std::lround(info.param.step_seconds * 1e4)) + "e4s";
 });
-
-// Case: on 45 deg (tan = 1 > mu_max) the locked wheel slides with
-// a = g (sin - mu(1) cos), within 2 %.
-TEST_P(BulletModeTest, LockedWheelSlidesAboveTheFrictionLimit) {
-  const double slope = 45 * kDegree;
-  const Terrain incline = testing::tiltedSlab(slope);
-  BulletWorld w(incline, GetParam());
-  const double mass = 21.0, deflection = mass * kGravityMps2 * std::cos(slope) / kStiffness;
-  const Eigen::Vector3d centre = (kRadius - deflection) * testing::slabNormal(slope);
-  WheelBody& wheel = w.addWheelBody(mass, btVector3(centre.x(), centre.y(), centre.z()));
-  wheel.body->setAngularFactor(btVector3(0, 0, 0));
-  testing::addWheel(w, wheel);
-  const btVector3 down(-std::cos(slope), 0, -std::sin(slope));
-  for (int k = 0; k < 300; ++k) w.world.stepSimulation(1e-3, 1, 1e-3);
-  const double v0 = wheel.body->getLinearVelocity().dot(down);
-  for (int k = 0; k < 1000; ++k) w.world.stepSimulation(1e-3, 1, 1e-3);
-  const double acceleration = wheel.body->getLinearVelocity().dot(down) - v0;
-  const double expected = kGravityMps2 * (std::sin(slope) - tractionCoefficient(Material{}, 1.0) * std::cos(slope));
-  EXPECT_NEAR(acceleration, expected, 0.02 * expected);
-}
 
 TEST(BulletPluginTest, BadRegistrationIsAnErrorThatNamesIt) {
   const Terrain ground = flatGround();
@@ -396,30 +324,6 @@ TEST(BulletPluginTest, WheelWhoseFiltersExcludeTheTerrainIsRefused) {
   EXPECT_THAT([&] { w.plugin->addWheel(spec); },
               ::testing::ThrowsMessage<InvalidInputError>(::testing::HasSubstr("excludes the static terrain")));
   w.world.removeRigidBody(&body);
-}
-
-// Case: a wheel rolling at 1 m/s under a side force of 0.3 m g drifts
-// sideways at the slip law's steady slip, V_y = s V_t with
-// mu(s) R_z = 0.3 m g (s = 0.047): grip across the traction, in both modes.
-TEST_P(BulletModeTest, SideForceGivesTheSlipLawsLateralDrift) {
-  const Terrain ground = flatGround();
-  BulletWorld w(ground, GetParam());
-  const double mass = 21.0, side = 0.3 * mass * kGravityMps2;
-  WheelBody& wheel = w.addWheelBody(mass, btVector3(-8, 0, kRadius - mass * kGravityMps2 / kStiffness));
-  wheel.body->setAngularFactor(btVector3(0, 1, 0));
-  testing::addWheel(w, wheel);
-  wheel.body->setLinearVelocity(btVector3(1.0, 0, 0));
-  wheel.body->setAngularVelocity(btVector3(0, 1.0 / kRadius, 0));
-  double drift = 0.0;
-  for (int k = 0; k < 3000; ++k) {
-    wheel.body->applyCentralForce(btVector3(0, side, 0));
-    wheel.body->applyTorque(btVector3(0, 0.018 * mass * kGravityMps2 * 0.97 * kRadius, 0));  // holds the speed
-    w.world.stepSimulation(1e-3, 1, 1e-3);
-    if (k >= 2000) drift += wheel.body->getLinearVelocity().y() / 1000.0;
-  }
-  const double speed = wheel.body->getLinearVelocity().x();
-  const double slip = -0.1 * std::log(1.0 - side / (0.8 * mass * kGravityMps2));  // mu(s) = 0.8 (1 - e^(-s/0.1))
-  EXPECT_NEAR(drift, slip * speed, 0.05 * slip * speed);
 }
 
 // Case: the listener hears every wheel at every internal step, with the
