@@ -1,7 +1,10 @@
-// Validation scenes of the ODE plugin, the Bullet plugin's scenes, each
-// against its analytic or expected value, in both contact modes (and with
-// dWorldQuickStep where the solver matters). docs/ode-plugin.md has the
-// measured numbers.
+// Validation scenes of the ODE plugin that go beyond the scenes shared with
+// Bullet (tests/cross_engine checks rolling resistance, sliding and the side
+// force for every engine): settling on both terrain shapes, the bounce, the
+// traction seen through the contact joints' feedback, the spinning wheel in
+// the friction cone, the ledge foot, tiles, the parked sweep over steps; in
+// both contact modes and with dWorldQuickStep where the solver matters.
+// docs/ode-plugin.md has the measured numbers.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -33,7 +36,6 @@ constexpr double kDegree = 0.017453292519943295;  // (rad)
 
 // Tolerances of the issue, relative unless a unit says otherwise.
 constexpr double kSettleTolerance = 0.02;        // static deflection vs m g / c
-constexpr double kDecelerationTolerance = 0.05;  // rolling resistance
 constexpr double kSlideTolerance = 0.02;         // a = g (sin - mu(1) cos)
 constexpr double kSaturationTolerance = 1e-3;    // traction reaches mu_max R_z
 constexpr double kSaturationSlack = 1e-9;        // traction above mu_max R_z: roundoff of ODE's LCP
@@ -115,28 +117,6 @@ TEST_P(OdeSceneTest, UndampedBounceDoesNotGainEnergy) {
   }
 }
 
-// Case: a wheel rolling at 1 m/s decelerates under rolling resistance alone:
-// a = f_r m g r_0 r / (I + m r^2) = 0.114 m/s^2 for a disc (I = m r^2 / 2).
-TEST_P(OdeSceneTest, FreeRollingWheelDeceleratesAsRollingResistancePredicts) {
-  const Terrain ground = testing::flatGround();
-  OdeWorld w(ground, GetParam().mode, GetParam().stepper);
-  const WheelBody wheel = w.addWheelBody(kLoadedMass, restingCentre(kLoadedMass) + Vector3d(-5, 0, 0));
-  testing::keepUpright(w, wheel.body);
-  testing::addWheel(w, wheel);
-  const double speed = 1.0;  // (m/s)
-  dBodySetLinearVel(wheel.body, speed, 0, 0);
-  dBodySetAngularVel(wheel.body, 0, speed / kRadius, 0);  // rolling: omega x OP cancels V_O at P
-  for (int k = 0; k < 500; ++k) w.step(kStepSeconds);
-  const double v0 = testing::velocity(wheel.body).x();
-  for (int k = 0; k < 2000; ++k) w.step(kStepSeconds);
-  const double deceleration = (v0 - testing::velocity(wheel.body).x()) / 2.0;
-  const double inertia = 0.5 * kLoadedMass * kRadius * kRadius;
-  const double expected =
-      0.018 * kLoadedMass * kGravityMps2 * 0.97 * kRadius * kRadius / (inertia + kLoadedMass * kRadius * kRadius);
-  record("deceleration_error", deceleration / expected - 1);
-  EXPECT_NEAR(deceleration, expected, kDecelerationTolerance * expected);
-}
-
 // The largest |R_xy| / R_z over the wheel's contacts in the last step: the
 // tyre model's forces in force mode, the contact joints' in constraint mode.
 double tractionRatio(const OdeWorld& w, ode::WheelId id) {
@@ -202,54 +182,6 @@ TEST_P(OdeSceneTest, SpinningWheelTractionStaysInTheFrictionCone) {
   record("lateral_speed_mps", testing::velocity(wheel.body).y());
   EXPECT_LE(largest, kMuMax * (1 + kSaturationSlack));
   EXPECT_GT(testing::velocity(wheel.body).y(), 0.5) << "slides sideways (m/s after 1 s)";
-}
-
-// Case: a wheel rolling at 1 m/s under a side force of 0.3 m g drifts
-// sideways at the slip law's steady slip, V_y = s V_t with
-// mu(s) R_z = 0.3 m g: s = -s1 ln(1 - 0.3 / mu_max) = 0.047, in both modes
-// (constraint mode: grip across the traction comes from the tread state,
-// not from a second friction direction).
-TEST_P(OdeSceneTest, SideForceGivesTheSlipLawsLateralDrift) {
-  constexpr double kDriftTolerance = 0.05;
-  const Terrain ground = testing::flatGround();
-  OdeWorld w(ground, GetParam().mode, GetParam().stepper);
-  const double side = 0.3 * kLoadedMass * kGravityMps2, speed = 1.0;  // (N), (m/s)
-  const WheelBody wheel = w.addWheelBody(kLoadedMass, restingCentre(kLoadedMass) + Vector3d(-8, 0, 0));
-  testing::keepUpright(w, wheel.body);
-  testing::addWheel(w, wheel);
-  dBodySetLinearVel(wheel.body, speed, 0, 0);
-  dBodySetAngularVel(wheel.body, 0, speed / kRadius, 0);
-  const double rolling = 0.018 * kLoadedMass * kGravityMps2 * 0.97 * kRadius;  // f_r m g r_0 (N m)
-  double drift = 0.0;
-  for (int k = 0; k < 3000; ++k) {
-    dBodyAddForce(wheel.body, 0, side, 0);
-    dBodyAddTorque(wheel.body, 0, rolling, 0);  // holds the speed
-    w.step(kStepSeconds);
-    if (k >= 2000) drift += testing::velocity(wheel.body).y() / 1000.0;  // mean over the last second
-  }
-  const double slip = -0.1 * std::log(1.0 - side / (kMuMax * kLoadedMass * kGravityMps2));
-  const double expected = slip * testing::velocity(wheel.body).x();
-  record("drift_error", drift / expected - 1);
-  EXPECT_NEAR(drift, expected, kDriftTolerance * expected);
-}
-
-// Case: on 45 deg (tan = 1 > mu_max) the locked wheel slides with
-// a = g (sin - mu(1) cos) = 1.39 m/s^2 (sliding without rolling: s = 1).
-TEST_P(OdeSceneTest, LockedWheelSlidesAboveTheFrictionLimit) {
-  const double slope = 45 * kDegree;
-  const Terrain incline = testing::tiltedSlab(slope);
-  OdeWorld w(incline, GetParam().mode, GetParam().stepper);
-  const double deflection = kLoadedMass * kGravityMps2 * std::cos(slope) / kStiffness;
-  const WheelBody wheel = w.addWheelBody(kLoadedMass, (kRadius - deflection) * testing::slabNormal(slope));
-  testing::lockRotation(w, wheel.body);
-  testing::addWheel(w, wheel);
-  for (int k = 0; k < 300; ++k) w.step(kStepSeconds);
-  const double v0 = testing::velocity(wheel.body).dot(testing::downhill(slope));
-  for (int k = 0; k < 1000; ++k) w.step(kStepSeconds);
-  const double acceleration = testing::velocity(wheel.body).dot(testing::downhill(slope)) - v0;  // over 1 s
-  const double expected = kGravityMps2 * (std::sin(slope) - tractionCoefficient(Material{}, 1.0) * std::cos(slope));
-  record("slide_acceleration_error", acceleration / expected - 1);
-  EXPECT_NEAR(acceleration, expected, kSlideTolerance * expected);
 }
 
 // Case: the wheel pushed (100 N) into the foot of the 0.65 m ledge touches
