@@ -3,16 +3,15 @@
 //
 //   build/bench/wtc_bench_bullet --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 //
-// Scene: the rough ground of scenario 3 (terrains/rough_ground.yaml: 7200
-// heightfield prisms and rocks, mirrored into Bullet as convex hulls) and six
-// 21 kg wheels (cylinders r = 0.19 m, w = 0.12 m, kept upright), each on its
-// own line, driven by 3 N m from rest for 2 s of warm-up and 10 s of timed
-// steps. The motions differ (WTC has the soil's rolling resistance, Bullet
-// has none): the runs compare the cost of a step, not the trajectories. One item = one stepSimulation of 1 ms
-// for the whole scene. Runs:
-//   BulletStep/native       no WTC: Bullet's cylinder-against-hull contacts
-//                           (GJK/EPA through the compound), Bullet friction
-//   BulletStep/wtc_force    WTC in force mode (full tyre model)
+// Scene (bench/engine_step_scene.hpp, shared with wtc_bench_ode): six 21 kg
+// wheels driven across the rough ground of scenario 3, its pieces mirrored
+// into Bullet as convex hulls. The motions differ (WTC has the soil's
+// rolling resistance, Bullet has none): the runs compare the cost of a step,
+// not the trajectories. One item = one stepSimulation of 1 ms for the whole
+// scene. Runs:
+//   BulletStep/native          no WTC: Bullet's cylinder-against-hull contacts
+//                              (GJK/EPA through the compound), Bullet friction
+//   BulletStep/wtc_force       WTC in force mode (full tyre model)
 //   BulletStep/wtc_constraint  WTC in constraint mode
 // Counters: wheels, contacts (WTC contacts, or Bullet manifold points, per
 // step over all wheels).
@@ -27,23 +26,11 @@
 #include <wtc/bullet/terrain_object.hpp>
 #include <wtc/io/terrain_file.hpp>
 
+#include "engine_step_scene.hpp"
+
 namespace {
 
-constexpr int kWheels = 6;
-constexpr double kRadius = 0.19, kWidth = 0.12;   // (m)
-constexpr double kMass = 21.0;                    // a sixth of the robot (kg)
-constexpr double kStepSeconds = 1e-3;             // (s)
-constexpr double kDriveTorque = 3.0;              // per wheel (N m): twice the soil's rolling resistance
-constexpr double kLaneSpacingM = 1.5;             // between the wheels' lines (m)
-constexpr double kStartX = -12.0, kDropM = 0.05;  // start (m) and height above the ground (m)
-constexpr int kWarmupSteps = 2000;                // settle and spin up
-// Steps per run: 10 s, so that every wheel stays on the 30 m ground (m).
-constexpr int kTimedSteps = 10000;
-
-const wtc::Terrain& roughGround() {
-  static const wtc::Terrain terrain = wtc::io::loadTerrain(WTC_SOURCE_DIR "/terrains/rough_ground.yaml");
-  return terrain;
-}
+using namespace wtc::bench;
 
 struct Scene {
   explicit Scene(const std::string& kind) {
@@ -55,7 +42,7 @@ struct Scene {
     }
     const double inertia = 0.5 * kMass * kRadius * kRadius;
     for (int i = 0; i < kWheels; ++i) {
-      const btVector3 start(kStartX, (i - 0.5 * (kWheels - 1)) * kLaneSpacingM, 0.15 + kRadius + kDropM);
+      const btVector3 start(kStartX, laneY(i), kStartZ);
       motions.push_back(std::make_unique<btDefaultMotionState>(btTransform(btQuaternion::getIdentity(), start)));
       btRigidBody::btRigidBodyConstructionInfo info(kMass, motions.back().get(), &shape,
                                                     btVector3(inertia, inertia, inertia));
@@ -76,7 +63,6 @@ struct Scene {
         plugin->addWheel(spec);
       }
     }
-    for (int k = 0; k < kWarmupSteps; ++k) step();
   }
   ~Scene() {
     plugin.reset();
@@ -87,6 +73,7 @@ struct Scene {
     for (auto& body : bodies) body->applyTorque(btVector3(0, kDriveTorque, 0));
     world.stepSimulation(kStepSeconds, 1, kStepSeconds);
   }
+  double speed() const { return bodies.front()->getLinearVelocity().x(); }
   int contacts() {
     if (plugin) {
       int n = 0;
@@ -111,33 +98,11 @@ struct Scene {
   std::unique_ptr<wtc::bullet::Plugin> plugin;
 };
 
-void bulletStep(benchmark::State& state, const std::string& kind) {
-  Scene scene(kind);
-  long contacts = 0, steps = 0;
-  for (auto _ : state) {
-    scene.step();
-    contacts += scene.contacts();
-    ++steps;
-  }
-  state.SetItemsProcessed(steps);
-  state.counters["wheels"] = kWheels;
-  state.counters["contacts"] = steps > 0 ? static_cast<double>(contacts) / steps : 0.0;
-  state.counters["speed_mps"] = scene.bodies.front()->getLinearVelocity().x();
-}
-
 }  // namespace
 
-BENCHMARK_CAPTURE(bulletStep, native, std::string("native"))
-    ->Name("BulletStep/native")
-    ->Iterations(kTimedSteps)
-    ->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(bulletStep, wtc_force, std::string("wtc_force"))
-    ->Name("BulletStep/wtc_force")
-    ->Iterations(kTimedSteps)
-    ->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(bulletStep, wtc_constraint, std::string("wtc_constraint"))
-    ->Name("BulletStep/wtc_constraint")
-    ->Iterations(kTimedSteps)
-    ->Unit(benchmark::kMicrosecond);
-
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  registerScenes<Scene>("BulletStep");
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+}

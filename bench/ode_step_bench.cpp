@@ -3,12 +3,10 @@
 //
 //   build/bench/wtc_bench_ode --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 //
-// The scene of wtc_bench_bullet: the rough ground of scenario 3
-// (terrains/rough_ground.yaml, 7200 heightfield prisms and rocks, mirrored
-// into ODE as one triangle mesh per piece) and six 21 kg wheels (cylinders
-// r = 0.19 m, w = 0.12 m, held upright by an angular motor), each on its own
-// line, driven by 3 N m for 2 s of warm-up and 10 s of timed steps. One item
-// = one world step of 1 ms (dWorldQuickStep) for the whole scene, collision
+// The scene of wtc_bench_bullet (bench/engine_step_scene.hpp), its pieces
+// mirrored into ODE as one triangle mesh each, the wheels held upright by an
+// angular motor. One item = one world step of 1 ms (dWorldQuickStep) for the
+// whole scene, collision
 // included. Runs:
 //   OdeStep/native          no WTC: ODE's cylinder-against-trimesh contacts
 //                           (up to 8 per pair, mu 0.8)
@@ -27,24 +25,14 @@
 #include <wtc/io/terrain_file.hpp>
 #include <wtc/ode/plugin.hpp>
 
+#include "engine_step_scene.hpp"
+
 namespace {
 
-constexpr int kWheels = 6;
-constexpr double kRadius = 0.19, kWidth = 0.12;   // (m)
-constexpr double kMass = 21.0;                    // a sixth of the robot (kg)
-constexpr double kStepSeconds = 1e-3;             // (s)
-constexpr double kDriveTorque = 3.0;              // per wheel (N m): twice the soil's rolling resistance
-constexpr double kLaneSpacingM = 1.5;             // between the wheels' lines (m)
-constexpr double kStartX = -12.0, kDropM = 0.05;  // start (m) and height above the ground (m)
-constexpr int kWarmupSteps = 2000;                // settle and spin up
-constexpr int kTimedSteps = 10000;                // 10 s: every wheel stays on the 30 m ground
-constexpr int kMaxNativeContacts = 8;             // per pair, ODE's own collider
-constexpr double kNativeMu = 0.8;                 // ODE's Coulomb friction for its own contacts
+using namespace wtc::bench;
 
-const wtc::Terrain& roughGround() {
-  static const wtc::Terrain terrain = wtc::io::loadTerrain(WTC_SOURCE_DIR "/terrains/rough_ground.yaml");
-  return terrain;
-}
+constexpr int kMaxNativeContacts = 8;  // per pair, ODE's own collider
+constexpr double kNativeMu = 0.8;      // ODE's Coulomb friction for its own contacts
 
 class Scene {
  public:
@@ -69,7 +57,7 @@ class Scene {
       dMassSetCylinderTotal(&mass, kMass, 3, kRadius, kWidth);
       dBodySetMass(body, &mass);
       dBodySetQuaternion(body, turn);
-      dBodySetPosition(body, kStartX, (i - 0.5 * (kWheels - 1)) * kLaneSpacingM, 0.15 + kRadius + kDropM);
+      dBodySetPosition(body, kStartX, laneY(i), kStartZ);
       dBodySetAutoDisableFlag(body, 0);
       const dGeomID geom = dCreateCylinder(space_, kRadius, kWidth);
       dGeomSetBody(geom, body);
@@ -92,7 +80,6 @@ class Scene {
         plugin_->addWheel(spec);
       }
     }
-    for (int k = 0; k < kWarmupSteps; ++k) step();
   }
   ~Scene() {
     plugin_.reset();
@@ -147,39 +134,13 @@ class Scene {
   int joints_ = 0;
 };
 
-void odeStep(benchmark::State& state, const std::string& kind) {
-  Scene scene(kind);
-  long contacts = 0, steps = 0;
-  for (auto _ : state) {
-    scene.step();
-    contacts += scene.contacts();
-    ++steps;
-  }
-  state.SetItemsProcessed(steps);
-  state.counters["wheels"] = kWheels;
-  state.counters["contacts"] = steps > 0 ? static_cast<double>(contacts) / steps : 0.0;
-  state.counters["speed_mps"] = scene.speed();
-}
-
-// dInitODE2 before the first scene, for the whole program.
-const bool kOdeReady = [] {
-  dInitODE2(0);
-  return true;
-}();
-
 }  // namespace
 
-BENCHMARK_CAPTURE(odeStep, native, std::string("native"))
-    ->Name("OdeStep/native")
-    ->Iterations(kTimedSteps)
-    ->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(odeStep, wtc_force, std::string("wtc_force"))
-    ->Name("OdeStep/wtc_force")
-    ->Iterations(kTimedSteps)
-    ->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(odeStep, wtc_constraint, std::string("wtc_constraint"))
-    ->Name("OdeStep/wtc_constraint")
-    ->Iterations(kTimedSteps)
-    ->Unit(benchmark::kMicrosecond);
-
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  dInitODE2(0);
+  registerScenes<Scene>("OdeStep");
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  dCloseODE();
+}
