@@ -25,6 +25,8 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
   const double r = wheel.free_radius;
   const Eigen::Vector3d& o = pose.center;
 
+  caps_.clear();
+
   // 1. Candidate pieces.
   candidates_.clear();
   terrain.overlapping({o.array() - r, o.array() + r}, candidates_);
@@ -61,7 +63,16 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
   if (options.tread_truncation) {
     const Eigen::Vector3d a = pose.axle / axle_norm;
     const double half_width = 0.5 * wheel.tread_width;
-    std::erase_if(contacts_, [&](const WheelContact& c) { return std::abs(r * c.e.dot(a)) > half_width; });
+    caps_.clear();
+    std::size_t out = 0;
+    for (const WheelContact& c : contacts_) {
+      if (std::abs(r * c.e.dot(a)) > half_width) {
+        caps_.push_back(c);
+      } else {
+        contacts_[out++] = c;
+      }
+    }
+    contacts_.resize(out);
   }
 
   // 5. Deepest only.

@@ -63,6 +63,9 @@ class WheelState {
   /// limit (see WheelForces::normal_stability for the numbers).
   std::uint64_t steps() const { return steps_; }
   std::uint64_t unstableSteps() const { return unstable_steps_; }
+  /// The last step's contacts on the wheel's cut caps (no tyre force; see
+  /// WheelContactFinder::capContacts).
+  std::span<const WheelContact> capContacts() const { return finder_.capContacts(); }
   /// Forgets the tread deflections (a wheel teleported by the user).
   void resetTread() { tread_.clear(); }
 

@@ -81,10 +81,17 @@ class WheelContactFinder {
   /// Candidate pieces of the last call (for diagnostics and benchmarks).
   std::span<const PieceId> candidates() const { return candidates_; }
 
+  /// The contacts of the last call that the tread filter dropped: the ground
+  /// touches a cut cap (a wheel cambered beyond asin(w / 2 r_f) against its
+  /// ground, or lying on its side). They carry no tyre force; an engine
+  /// adapter can let the engine collide the wheel's rigid shape there, so
+  /// that a fallen wheel does not sink (docs/wheel-contact.md).
+  std::span<const WheelContact> capContacts() const { return caps_; }
+
  private:
   void applySeamRule(const Terrain& terrain, double gap, double radius);
   std::vector<PieceId> candidates_;
-  std::vector<WheelContact> contacts_;
+  std::vector<WheelContact> contacts_, caps_;
   std::vector<std::pair<PieceId, QueryCache>> caches_, next_caches_;
   std::vector<double> shares_;
 };

@@ -354,5 +354,23 @@ TEST(BulletPluginTest, ListenerHearsEveryWheelAtEveryInternalStep) {
   EXPECT_GT(recorder.last_force[1], 0.0);
 }
 
+
+// Case: a wheel lying on its side touches the ground with a cut cap, which
+// carries no tyre force (spec section 1); Bullet collides the wheel's own
+// cylinder there, so it rests on its side instead of sinking.
+TEST_P(BulletModeTest, WheelLyingOnItsSideRestsOnItsCap) {
+  const Terrain ground = flatGround();
+  BulletWorld w(ground, GetParam());
+  WheelBody& wheel = w.addWheelBody(3.7, btVector3(0, 0, 0.06 + 0.05));
+  // The cylinder's axis (the body's y, the axle) turned to the vertical.
+  wheel.body->setCenterOfMassTransform(
+      btTransform(btQuaternion(btVector3(1, 0, 0), SIMD_HALF_PI), btVector3(0, 0, 0.06 + 0.05)));
+  const bullet::WheelId id = testing::addWheel(w, wheel);
+  for (int k = 0; k < 2000; ++k) w.world.stepSimulation(1e-3, 1, 1e-3);
+  EXPECT_NEAR(wheel.body->getCenterOfMassPosition().z(), 0.06, 0.005) << "half the tread width above the ground";
+  EXPECT_EQ(w.plugin->forces(id).contacts.size(), 0u) << "no tyre contact on a cap";
+  EXPECT_FALSE(w.plugin->state(id).capContacts().empty());
+}
+
 }  // namespace
 }  // namespace wtc

@@ -1,5 +1,6 @@
 #include "wheel_terrain_algorithm.hpp"
 
+#include <cmath>
 #include <new>
 
 #include "plugin_impl.hpp"
@@ -16,9 +17,10 @@ WheelTerrainAlgorithm::WheelTerrainAlgorithm(const btCollisionAlgorithmConstruct
     : btCollisionAlgorithm(info), impl_(impl) {}
 
 WheelTerrainAlgorithm::~WheelTerrainAlgorithm() {
-  if (child_ != nullptr) {
-    child_->~btCollisionAlgorithm();
-    m_dispatcher->freeCollisionAlgorithm(child_);
+  for (btCollisionAlgorithm* child : {child_, cap_child_}) {
+    if (child == nullptr) continue;
+    child->~btCollisionAlgorithm();
+    m_dispatcher->freeCollisionAlgorithm(child);
   }
   if (manifold_ != nullptr) m_dispatcher->releaseManifold(manifold_);
 }
@@ -30,22 +32,25 @@ void WheelTerrainAlgorithm::processCollision(const btCollisionObjectWrapper* bod
   const int wheel0 = impl_.wheelOf(body0->getCollisionObject());
   const int wheel1 = impl_.wheelOf(body1->getCollisionObject());
   if (wheel0 >= 0 && body1->getCollisionObject() == terrain) {
-    writeWtcContacts(wheel0, true, body0, body1, result);
+    writeWtcContacts(wheel0, true, body0, body1, dispatch_info, result);
   } else if (wheel1 >= 0 && body0->getCollisionObject() == terrain) {
-    writeWtcContacts(wheel1, false, body0, body1, result);
+    writeWtcContacts(wheel1, false, body0, body1, dispatch_info, result);
   } else {
     delegate(body0, body1, dispatch_info, result);
   }
 }
 
 void WheelTerrainAlgorithm::writeWtcContacts(int wheel, bool wheel_is_body0, const btCollisionObjectWrapper* body0,
-                                             const btCollisionObjectWrapper* body1, btManifoldResult* result) {
+                                             const btCollisionObjectWrapper* body1,
+                                             const btDispatcherInfo& dispatch_info, btManifoldResult* result) {
   if (manifold_ == nullptr) {
     manifold_ = m_dispatcher->getNewManifold(body0->getCollisionObject(), body1->getCollisionObject());
   }
   result->setPersistentManifold(manifold_);
   // The contacts are WTC's, found afresh each step: nothing carries over.
   manifold_->clearManifold();
+  const Wheel& w = *impl_.wheels[wheel];
+  if (!w.state.capContacts().empty()) writeCapContacts(w, body0, body1, dispatch_info, result);
   if (impl_.mode == ContactMode::kForce) return;
   for (const EngineContact& c : impl_.wheels[wheel]->engine_contacts) {
     // Bullet's normal on B points from B to A; the point is on B; a
@@ -86,6 +91,44 @@ void WheelTerrainAlgorithm::writeWtcContacts(int wheel, bool wheel_is_body0, con
   }
 }
 
+// The ground touches a cut cap (a fallen wheel): WTC gives no force there,
+// so Bullet collides the wheel's own shape with the terrain, and the points
+// whose normal is a cap's (|n . a| > w / 2 r_f, the tread filter's test) are
+// kept; tread points are WTC's and are dropped. Rare: only when the finder
+// saw a cap contact, so the GJK/EPA cost is not paid while rolling.
+void WheelTerrainAlgorithm::writeCapContacts(const Wheel& w, const btCollisionObjectWrapper* body0,
+                                             const btCollisionObjectWrapper* body1,
+                                             const btDispatcherInfo& dispatch_info, btManifoldResult* result) {
+  const btCollisionObjectWrapper original0(body0->m_parent, unwrap(body0->getCollisionShape()),
+                                           body0->getCollisionObject(), body0->getWorldTransform(), body0->m_partId,
+                                           body0->m_index);
+  const btCollisionObjectWrapper original1(body1->m_parent, unwrap(body1->getCollisionShape()),
+                                           body1->getCollisionObject(), body1->getWorldTransform(), body1->m_partId,
+                                           body1->m_index);
+  if (cap_child_ == nullptr) {
+    cap_child_ = m_dispatcher->findAlgorithm(&original0, &original1, manifold_, BT_CONTACT_POINT_ALGORITHMS);
+  }
+  const btCollisionObjectWrapper* saved0 = result->getBody0Wrap();
+  const btCollisionObjectWrapper* saved1 = result->getBody1Wrap();
+  result->setBody0Wrap(&original0);
+  result->setBody1Wrap(&original1);
+  cap_child_->processCollision(&original0, &original1, dispatch_info, result);
+  result->setBody0Wrap(saved0);
+  result->setBody1Wrap(saved1);
+  const btVector3 axle = (w.collider->getWorldTransform().getBasis() * w.axle_local).normalized();
+  const double cap_cosine = 0.5 * w.description.geometry.tread_width / w.description.geometry.free_radius;
+  const double friction = impl_.terrain.terrain().materials()[w.state.capContacts().front().material].mu_max;
+  for (int k = manifold_->getNumContacts() - 1; k >= 0; --k) {
+    btManifoldPoint& p = manifold_->getContactPoint(k);
+    if (std::abs(p.m_normalWorldOnB.dot(axle)) > cap_cosine) {
+      p.m_combinedFriction = friction;
+      p.m_combinedRestitution = 0;
+    } else {
+      manifold_->removeContactPoint(k);
+    }
+  }
+}
+
 void WheelTerrainAlgorithm::delegate(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
                                      const btDispatcherInfo& dispatch_info, btManifoldResult* result) {
   const btCollisionObjectWrapper original0(body0->m_parent, unwrap(body0->getCollisionShape()),
@@ -109,6 +152,7 @@ void WheelTerrainAlgorithm::delegate(const btCollisionObjectWrapper* body0, cons
 void WheelTerrainAlgorithm::getAllContactManifolds(btManifoldArray& manifolds) {
   if (manifold_ != nullptr) manifolds.push_back(manifold_);
   if (child_ != nullptr) child_->getAllContactManifolds(manifolds);
+  // cap_child_ writes into manifold_, listed above.
 }
 
 }  // namespace wtc::bullet

@@ -11,6 +11,8 @@
 
 namespace wtc::bullet {
 
+struct Wheel;
+
 class WheelTerrainAlgorithm : public btCollisionAlgorithm {
  public:
   class CreateFunc : public btCollisionAlgorithmCreateFunc {
@@ -37,13 +39,18 @@ class WheelTerrainAlgorithm : public btCollisionAlgorithm {
 
  private:
   void writeWtcContacts(int wheel, bool wheel_is_body0, const btCollisionObjectWrapper* body0,
-                        const btCollisionObjectWrapper* body1, btManifoldResult* result);
+                        const btCollisionObjectWrapper* body1, const btDispatcherInfo& dispatch_info,
+                        btManifoldResult* result);
+  void writeCapContacts(const Wheel& wheel, const btCollisionObjectWrapper* body0,
+                        const btCollisionObjectWrapper* body1, const btDispatcherInfo& dispatch_info,
+                        btManifoldResult* result);
   void delegate(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
                 const btDispatcherInfo& dispatch_info, btManifoldResult* result);
 
   Plugin::Impl& impl_;
   btPersistentManifold* manifold_ = nullptr;
-  btCollisionAlgorithm* child_ = nullptr;
+  btCollisionAlgorithm* child_ = nullptr;      // other pairs: Bullet's algorithm for the originals
+  btCollisionAlgorithm* cap_child_ = nullptr;  // wheel-terrain caps: the same, into manifold_
 };
 
 }  // namespace wtc::bullet
