@@ -72,6 +72,28 @@ TEST_P(OdeTerrainShapeTest, ChassisRestsOnTheTerrainThroughOdesColliders) {
   EXPECT_GT(rotation[10], std::cos(0.01)) << "level within 10 mrad";
 }
 
+// Case: a wheel lying on its side touches the ground with a cut cap, which
+// carries no tyre force (spec section 1); ODE collides the wheel's own
+// cylinder there, so it rests on its side instead of sinking, in both modes
+// and on both terrain shapes.
+TEST_P(OdeTerrainShapeTest, WheelLyingOnItsSideRestsOnItsCap) {
+  constexpr double kHalfTreadM = 0.06;  // the cylinder's half width (m)
+  constexpr double kRestM = 0.005;      // ODE's rigid contact sinks a few mm at most (m)
+  const Terrain ground = testing::flatGround();
+  for (const ContactMode mode : {ContactMode::kForce, ContactMode::kConstraint}) {
+    OdeWorld w(ground, mode, testing::Stepper::kStep, GetParam());
+    const WheelBody wheel = w.addWheelBody(3.7, {0, 0, kHalfTreadM + 0.05});
+    const dQuaternion upright_axis = {1, 0, 0, 0};  // the cylinder's axis (the axle, local z) vertical
+    dBodySetQuaternion(wheel.body, upright_axis);
+    const ode::WheelId id = testing::addWheel(w, wheel);
+    for (int k = 0; k < 2000; ++k) w.step(kStepSeconds);
+    EXPECT_NEAR(testing::position(wheel.body).z(), kHalfTreadM, kRestM)
+        << (mode == ContactMode::kForce ? "force" : "constraint");
+    EXPECT_EQ(w.plugin->forces(id).contacts.size(), 0u) << "no tyre contact on a cap";
+    EXPECT_FALSE(w.plugin->state(id).capContacts().empty());
+  }
+}
+
 // Case: ODE gets the pieces as it expects them: faces counter-clockwise
 // seen from outside and, for a convex geom, an origin inside (ODE prints a
 // warning otherwise), even for a sliver whose bounding-box centre is

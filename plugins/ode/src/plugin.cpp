@@ -145,6 +145,7 @@ bool Plugin::Impl::handlePair(dGeomID a, dGeomID b, dJointGroupID group) {
     if (found == wheel_of.end() || !terrain.contains(a)) return false;
   }
   Wheel& w = *wheels[found->second];
+  if (!w.state.capContacts().empty()) collideCaps(w, ground, group);
   // The wheel's contacts are the core's, for all pieces at once: they go to
   // ODE the first time the wheel meets the terrain in this step (against
   // the terrain space, or against one of its pieces), and never twice.
@@ -161,6 +162,49 @@ bool Plugin::Impl::handlePair(dGeomID a, dGeomID b, dJointGroupID group) {
   }
   w.handled = true;
   return true;
+}
+
+namespace {
+
+// What collideCaps hands to ODE's callback for the pieces of a space.
+struct CapPass {
+  Plugin::Impl* impl;
+  Wheel* wheel;
+  dJointGroupID group;
+};
+
+}  // namespace
+
+// The ground touches a cut cap (a fallen wheel): WTC gives no force there,
+// so ODE collides the wheel's own geom with `ground` (a piece, or the
+// terrain space), and the contacts whose normal is a cap's
+// (|n . a| > w / 2 r_f, the tread filter's test) become rigid contact
+// joints; tread contacts are WTC's and are dropped. Rare: only when the
+// finder saw a cap contact.
+void Plugin::Impl::collideCaps(Wheel& w, dGeomID ground, dJointGroupID group) {
+  if (dGeomIsSpace(ground)) {
+    CapPass pass{this, &w, group};
+    dSpaceCollide2(w.geom, ground, &pass, [](void* data, dGeomID a, dGeomID b) {
+      CapPass& p = *static_cast<CapPass*>(data);
+      p.impl->collideCaps(*p.wheel, a == p.wheel->geom ? b : a, p.group);
+    });
+    return;
+  }
+  constexpr int kMaxCapContacts = 8;  // per piece: a cylinder's face on a triangle mesh
+  dContact contacts[kMaxCapContacts] = {};
+  const int n = dCollide(w.geom, ground, kMaxCapContacts, &contacts[0].geom, sizeof(dContact));
+  dVector3 axle;
+  dBodyVectorToWorld(w.body, w.axle_local.x(), w.axle_local.y(), w.axle_local.z(), axle);
+  const Eigen::Vector3d a = toEigen(axle).normalized();
+  const double cap_cosine = 0.5 * w.description.geometry.tread_width / w.description.geometry.free_radius;
+  const double mu = terrain.terrain().materials()[w.state.capContacts().front().material].mu_max;
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector3d normal = toEigen(contacts[i].geom.normal);
+    if (!(std::abs(normal.dot(a)) > cap_cosine)) continue;
+    contacts[i].surface.mode = dContactApprox1;
+    contacts[i].surface.mu = mu;
+    dJointAttach(dJointCreateContact(world, group, &contacts[i]), w.body, nullptr);
+  }
 }
 
 Plugin::Plugin(dWorldID world, dSpaceID space, const Terrain& terrain, ContactMode mode, TerrainShape shape)

@@ -32,6 +32,7 @@ struct Plugin::Impl {
   WheelId add(const RigidWheel& spec);
   void beginStep(double step_seconds);
   bool handlePair(dGeomID a, dGeomID b, dJointGroupID contacts);
+  void collideCaps(Wheel& wheel, dGeomID ground, dJointGroupID contacts);
   const Wheel& wheel(WheelId id) const;
 
   dWorldID world;
