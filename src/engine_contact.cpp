@@ -6,17 +6,6 @@
 #include "wtc/tyre_parameters.hpp"
 
 namespace wtc {
-namespace {
-
-// A unit vector normal to n (unit): the axis of n's smallest component
-// crossed with n, so it is never ill-conditioned.
-Eigen::Vector3d anyTangent(const Eigen::Vector3d& n) {
-  Eigen::Index smallest = 0;
-  n.cwiseAbs().minCoeff(&smallest);
-  return n.cross(Eigen::Vector3d::Unit(smallest)).normalized();
-}
-
-}  // namespace
 
 EngineContact toEngineContact(const ContactForce& f, const TyreParameters& tyre, const TyreModel& model) {
   const double stiffness = tyre.radial_stiffness;
@@ -36,7 +25,7 @@ EngineContact toEngineContact(const ContactForce& f, const TyreParameters& tyre,
   } else if (slip > 0.0 && std::isfinite(slip)) {
     c.friction_direction = -f.slip_velocity / slip;
   } else {
-    c.friction_direction = anyTangent(c.normal);
+    c.friction_direction = c.normal.unitOrthogonal();
   }
   return c;
 }

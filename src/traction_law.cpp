@@ -8,13 +8,6 @@
 #include "wtc/tolerances.hpp"
 
 namespace wtc {
-namespace {
-
-// Below this s/s1 the secant uses its Taylor series: (1 - e^-x)/x =
-// 1 - x/2 + x^2/6 - ..., exact to roundoff for x < 1e-8 with two terms.
-constexpr double kSeriesLimit = 1e-8;
-
-}  // namespace
 
 // With em = expm1(-s/s1): 1 - q = -em exactly to roundoff for small s, and
 // q = 1 + em, which only feeds 1 + s2 q (absolute accuracy suffices).
@@ -26,8 +19,7 @@ double tractionCoefficient(const Material& m, double slip_ratio) {
 double tractionSecant(const Material& m, double slip_ratio) {
   const double x = slip_ratio / m.s1;
   const double em = detail::expMinusOne(x);
-  const double one_minus_q_over_x = x < kSeriesLimit ? 1.0 - 0.5 * x : -em / x;
-  return m.mu_max / m.s1 * one_minus_q_over_x * (1.0 + m.s2 * (1.0 + em));
+  return m.mu_max / m.s1 * detail::oneMinusExpOverX(x, em) * (1.0 + m.s2 * (1.0 + em));
 }
 
 double tractionInitialSlope(const Material& m) { return m.mu_max * (1.0 + m.s2) / m.s1; }

@@ -18,8 +18,6 @@ namespace {
 using Eigen::Vector3d;
 using Inputs = TyreModel::KernelInputs;
 
-// Below this lambda h the relaxation integral uses its series (see below).
-constexpr double kSeriesLimit = 1e-8;
 // ln(1 / kTractionSaturation): s_sat >= s1 times this for every s2 >= 0.
 const double kSaturationLog = -std::log(tolerance::kTractionSaturation);
 
@@ -34,7 +32,7 @@ struct Relaxation {
 };
 Relaxation relaxation(double step, double lambda_h) {
   const double em = expMinusOne(lambda_h);
-  return {1.0 + em, step * (lambda_h < kSeriesLimit ? 1.0 - 0.5 * lambda_h : -em / lambda_h)};
+  return {1.0 + em, step * oneMinusExpOverX(lambda_h, em)};
 }
 
 // The tread state of the previous step's contact most aligned with e (within
