@@ -59,14 +59,13 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
   // 3. Seam rule.
   if (options.seam_rule && contacts_.size() > 1) applySeamRule(terrain, tolerance::kSeamGapRelative * r, r);
 
-  // 4. Tread filter: keep contacts with |OP . a| <= w / 2.
+  // 4. Tread filter: keep contacts with |OP . a| <= w / 2; the others are
+  // the caps'.
   if (options.tread_truncation) {
     const Eigen::Vector3d a = pose.axle / axle_norm;
-    const double half_width = 0.5 * wheel.tread_width;
-    caps_.clear();
     std::size_t out = 0;
     for (const WheelContact& c : contacts_) {
-      if (std::abs(r * c.e.dot(a)) > half_width) {
+      if (onCap(wheel, c.e, a)) {
         caps_.push_back(c);
       } else {
         contacts_[out++] = c;

@@ -24,6 +24,7 @@
 // gentle valley) loads the wheel like the flat ground it nearly is, instead
 // of doubling the load as soon as the crease is bent. See
 // docs/wheel-contact.md for why this is exact on flat seams and ridges.
+#include <cmath>
 #include <span>
 #include <string>
 #include <utility>
@@ -44,6 +45,14 @@ struct WheelGeometry {
 /// Throws InvalidInputError naming the field, its value and `where`.
 /// Allocates nothing unless it throws (it runs every step).
 void validate(const WheelGeometry& wheel, const char* where);
+
+/// True when the unit direction `d` from the wheel centre meets a cut cap
+/// rather than the tread: |r_f d . a| > w / 2, with `unit_axle` a. The tread
+/// filter's test; the engine adapters apply it to their own contact normals
+/// (the sign of d does not matter).
+inline bool onCap(const WheelGeometry& wheel, const Eigen::Vector3d& d, const Eigen::Vector3d& unit_axle) {
+  return std::abs(wheel.free_radius * d.dot(unit_axle)) > 0.5 * wheel.tread_width;
+}
 
 struct WheelPose {
   Eigen::Vector3d center{Eigen::Vector3d::Zero()};  ///< O (world, m).

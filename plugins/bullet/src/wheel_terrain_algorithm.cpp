@@ -93,34 +93,17 @@ void WheelTerrainAlgorithm::writeWtcContacts(int wheel, bool wheel_is_body0, con
 
 // The ground touches a cut cap (a fallen wheel): WTC gives no force there,
 // so Bullet collides the wheel's own shape with the terrain, and the points
-// whose normal is a cap's (|n . a| > w / 2 r_f, the tread filter's test) are
-// kept; tread points are WTC's and are dropped. Rare: only when the finder
-// saw a cap contact, so the GJK/EPA cost is not paid while rolling.
+// whose normal is a cap's (wtc::onCap, the tread filter's test) are kept; tread points are WTC's and are dropped. Rare:
+// only when the finder saw a cap contact, so the GJK/EPA cost is not paid while rolling.
 void WheelTerrainAlgorithm::writeCapContacts(const Wheel& w, const btCollisionObjectWrapper* body0,
                                              const btCollisionObjectWrapper* body1,
                                              const btDispatcherInfo& dispatch_info, btManifoldResult* result) {
-  const btCollisionObjectWrapper original0(body0->m_parent, unwrap(body0->getCollisionShape()),
-                                           body0->getCollisionObject(), body0->getWorldTransform(), body0->m_partId,
-                                           body0->m_index);
-  const btCollisionObjectWrapper original1(body1->m_parent, unwrap(body1->getCollisionShape()),
-                                           body1->getCollisionObject(), body1->getWorldTransform(), body1->m_partId,
-                                           body1->m_index);
-  if (cap_child_ == nullptr) {
-    cap_child_ = m_dispatcher->findAlgorithm(&original0, &original1, manifold_, BT_CONTACT_POINT_ALGORITHMS);
-  }
-  const btCollisionObjectWrapper* saved0 = result->getBody0Wrap();
-  const btCollisionObjectWrapper* saved1 = result->getBody1Wrap();
-  result->setBody0Wrap(&original0);
-  result->setBody1Wrap(&original1);
-  cap_child_->processCollision(&original0, &original1, dispatch_info, result);
-  result->setBody0Wrap(saved0);
-  result->setBody1Wrap(saved1);
-  const btVector3 axle = (w.collider->getWorldTransform().getBasis() * w.axle_local).normalized();
-  const double cap_cosine = 0.5 * w.description.geometry.tread_width / w.description.geometry.free_radius;
+  collideOriginals(cap_child_, manifold_, body0, body1, dispatch_info, result);
+  const Eigen::Vector3d axle = toEigen(w.collider->getWorldTransform().getBasis() * w.axle_local).normalized();
   const double friction = impl_.terrain.terrain().materials()[w.state.capContacts().front().material].mu_max;
   for (int k = manifold_->getNumContacts() - 1; k >= 0; --k) {
     btManifoldPoint& p = manifold_->getContactPoint(k);
-    if (std::abs(p.m_normalWorldOnB.dot(axle)) > cap_cosine) {
+    if (onCap(w.description.geometry, toEigen(p.m_normalWorldOnB), axle)) {
       p.m_combinedFriction = friction;
       p.m_combinedRestitution = 0;
     } else {
@@ -131,20 +114,29 @@ void WheelTerrainAlgorithm::writeCapContacts(const Wheel& w, const btCollisionOb
 
 void WheelTerrainAlgorithm::delegate(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
                                      const btDispatcherInfo& dispatch_info, btManifoldResult* result) {
+  collideOriginals(child_, nullptr, body0, body1, dispatch_info, result);
+}
+
+// Bullet's own algorithm for the pair with every WheelShape unwrapped to the
+// shape it wraps, created on first use into `child` (writing into `shared`,
+// or its own manifold when null).
+void WheelTerrainAlgorithm::collideOriginals(btCollisionAlgorithm*& child, btPersistentManifold* shared,
+                                             const btCollisionObjectWrapper* body0,
+                                             const btCollisionObjectWrapper* body1,
+                                             const btDispatcherInfo& dispatch_info, btManifoldResult* result) {
   const btCollisionObjectWrapper original0(body0->m_parent, unwrap(body0->getCollisionShape()),
                                            body0->getCollisionObject(), body0->getWorldTransform(), body0->m_partId,
                                            body0->m_index);
   const btCollisionObjectWrapper original1(body1->m_parent, unwrap(body1->getCollisionShape()),
                                            body1->getCollisionObject(), body1->getWorldTransform(), body1->m_partId,
                                            body1->m_index);
-  if (child_ == nullptr) {
-    child_ = m_dispatcher->findAlgorithm(&original0, &original1, nullptr, BT_CONTACT_POINT_ALGORITHMS);
-  }
+  if (child == nullptr)
+    child = m_dispatcher->findAlgorithm(&original0, &original1, shared, BT_CONTACT_POINT_ALGORITHMS);
   const btCollisionObjectWrapper* saved0 = result->getBody0Wrap();
   const btCollisionObjectWrapper* saved1 = result->getBody1Wrap();
   result->setBody0Wrap(&original0);
   result->setBody1Wrap(&original1);
-  child_->processCollision(&original0, &original1, dispatch_info, result);
+  child->processCollision(&original0, &original1, dispatch_info, result);
   result->setBody0Wrap(saved0);
   result->setBody1Wrap(saved1);
 }

@@ -46,6 +46,9 @@ class WheelTerrainAlgorithm : public btCollisionAlgorithm {
                         btManifoldResult* result);
   void delegate(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
                 const btDispatcherInfo& dispatch_info, btManifoldResult* result);
+  void collideOriginals(btCollisionAlgorithm*& child, btPersistentManifold* shared,
+                        const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
+                        const btDispatcherInfo& dispatch_info, btManifoldResult* result);
 
   Plugin::Impl& impl_;
   btPersistentManifold* manifold_ = nullptr;

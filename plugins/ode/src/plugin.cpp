@@ -178,7 +178,7 @@ struct CapPass {
 // The ground touches a cut cap (a fallen wheel): WTC gives no force there,
 // so ODE collides the wheel's own geom with `ground` (a piece, or the
 // terrain space), and the contacts whose normal is a cap's
-// (|n . a| > w / 2 r_f, the tread filter's test) become rigid contact
+// (wtc::onCap, the tread filter's test) become rigid contact
 // joints; tread contacts are WTC's and are dropped. Rare: only when the
 // finder saw a cap contact.
 void Plugin::Impl::collideCaps(Wheel& w, dGeomID ground, dJointGroupID group) {
@@ -196,11 +196,9 @@ void Plugin::Impl::collideCaps(Wheel& w, dGeomID ground, dJointGroupID group) {
   dVector3 axle;
   dBodyVectorToWorld(w.body, w.axle_local.x(), w.axle_local.y(), w.axle_local.z(), axle);
   const Eigen::Vector3d a = toEigen(axle).normalized();
-  const double cap_cosine = 0.5 * w.description.geometry.tread_width / w.description.geometry.free_radius;
   const double mu = terrain.terrain().materials()[w.state.capContacts().front().material].mu_max;
   for (int i = 0; i < n; ++i) {
-    const Eigen::Vector3d normal = toEigen(contacts[i].geom.normal);
-    if (!(std::abs(normal.dot(a)) > cap_cosine)) continue;
+    if (!onCap(w.description.geometry, toEigen(contacts[i].geom.normal), a)) continue;
     contacts[i].surface.mode = dContactApprox1;
     contacts[i].surface.mu = mu;
     dJointAttach(dJointCreateContact(world, group, &contacts[i]), w.body, nullptr);
