@@ -70,11 +70,17 @@ double rollingDeceleration(Engine engine, ContactMode mode) {
   return (v0 - sim->velocity().x()) / 2.0;
 }
 
+// A locked wheel (a parked vehicle's brake) at rest on `incline`, tilted by
+// `slope`, at its static deflection.
+std::unique_ptr<EngineSim> lockedOnSlope(Engine engine, ContactMode mode, const Terrain& incline, double slope) {
+  return makeEngineSim(engine, mode, incline, kMass, (kRadius - restDeflection(slope)) * slabNormal(slope),
+                       Hold::kLocked);
+}
+
 double parkedCreep(Engine engine, ContactMode mode) {
   const double slope = 15 * kDegree;
   const Terrain incline = tiltedSlab(slope);
-  auto sim =
-      makeEngineSim(engine, mode, incline, kMass, (kRadius - restDeflection(slope)) * slabNormal(slope), Hold::kLocked);
+  auto sim = lockedOnSlope(engine, mode, incline, slope);
   run(*sim, 0.5);
   const Eigen::Vector3d start = sim->position();
   run(*sim, 10.0);
@@ -84,8 +90,7 @@ double parkedCreep(Engine engine, ContactMode mode) {
 double slideAcceleration(Engine engine, ContactMode mode) {
   const double slope = 45 * kDegree;
   const Terrain incline = tiltedSlab(slope);
-  auto sim =
-      makeEngineSim(engine, mode, incline, kMass, (kRadius - restDeflection(slope)) * slabNormal(slope), Hold::kLocked);
+  auto sim = lockedOnSlope(engine, mode, incline, slope);
   run(*sim, 0.3);
   const double v0 = sim->velocity().dot(downhill(slope));
   run(*sim, 1.0);
