@@ -57,6 +57,8 @@ struct TreadState {
 /// nothing once warm.
 class WheelState {
  public:
+  /// The last step's result (no contacts before the first step).
+  const WheelForces& result() const { return result_; }
   /// The tread deflections after the last step (empty without traction).
   std::span<const TreadState> tread() const { return tread_; }
   /// Steps run, and steps whose tyre spring exceeded its explicit stability

@@ -178,7 +178,6 @@ void Plugin::Impl::preTick(double h) {
         w.body != nullptr ? rigidKinematics(w) : multiBodyKinematics(w, omega_scratch, velocity_scratch);
     const WheelForces& f =
         w.model.step(ground, w.description, {toEigen(k.centre), toEigen(k.axle)}, k.motion, h, w.state);
-    w.forces = &f;
     if (mode == ContactMode::kForce) {
       applyWrench(w, k, toBullet(f.force), toBullet(f.torque), h);
     } else {
@@ -246,9 +245,7 @@ WheelId Plugin::addWheel(const MultiBodyWheel& spec) {
 }
 
 const WheelForces& Plugin::forces(WheelId wheel) const {
-  static const WheelForces kNone;
-  const Wheel& w = *impl_->wheels.at(static_cast<std::size_t>(wheel));
-  return w.forces != nullptr ? *w.forces : kNone;
+  return impl_->wheels.at(static_cast<std::size_t>(wheel))->state.result();
 }
 
 const WheelState& Plugin::state(WheelId wheel) const {

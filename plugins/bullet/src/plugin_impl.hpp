@@ -30,7 +30,6 @@ struct Wheel {
   WheelState state;
   std::unique_ptr<WheelShape> shape;           // replaces the collider's shape while registered
   std::vector<EngineContact> engine_contacts;  // constraint mode: this step's contacts
-  const WheelForces* forces = nullptr;
   btVector3 link_force{0, 0, 0}, link_torque{0, 0, 0};  // multibody: what this substep added
 };
 

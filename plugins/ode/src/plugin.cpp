@@ -115,7 +115,6 @@ void Plugin::Impl::beginStep(double h) {
     motion.angular_velocity = toEigen(dBodyGetAngularVel(w.body));
     if (w.hub != nullptr) motion.hub_angular_velocity = toEigen(dBodyGetAngularVel(w.hub));
     const WheelForces& f = w.model.step(ground, w.description, {toEigen(centre), toEigen(axle)}, motion, h, w.state);
-    w.forces = &f;
     w.handled = false;
     if (mode == ContactMode::kForce) {
       // The wrench about O: F through O, then the torque. ODE clears both
@@ -215,9 +214,7 @@ void Plugin::beginStep(double step_seconds) { impl_->beginStep(step_seconds); }
 bool Plugin::handlePair(dGeomID a, dGeomID b, dJointGroupID contacts) { return impl_->handlePair(a, b, contacts); }
 
 const WheelForces& Plugin::forces(WheelId wheel) const {
-  static const WheelForces kNone;
-  const Wheel& w = impl_->wheel(wheel);
-  return w.forces != nullptr ? *w.forces : kNone;
+  return impl_->wheel(wheel).state.result();
 }
 
 const WheelState& Plugin::state(WheelId wheel) const { return impl_->wheel(wheel).state; }

@@ -18,7 +18,6 @@ struct Wheel {
   WheelDescription description;
   TyreModel model;
   WheelState state;
-  const WheelForces* forces = nullptr;
   // Constraint mode: this step's contacts. ODE writes each joint's feedback
   // here during the world step, so the vector changes only in beginStep
   // (the previous step's joints are gone by then: dJointGroupEmpty).
