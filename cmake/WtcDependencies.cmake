@@ -29,3 +29,25 @@ endif()
 # `yaml-cpp` (no namespace) in 0.7.
 find_package(assimp CONFIG REQUIRED)
 find_package(yaml-cpp CONFIG REQUIRED)
+
+# A package's CMake config can name files that only another package installs:
+# Debian's assimp config links /usr/lib/<arch>/libz.so, and libassimp-dev does
+# not depend on zlib1g-dev. Say so here, by name, rather than as a make error
+# ("No rule to make target .../libz.so") halfway through the build.
+function(wtc_require_linked_files)
+  foreach(target IN LISTS ARGN)
+    if(NOT TARGET ${target})
+      continue()
+    endif()
+    get_target_property(libs ${target} INTERFACE_LINK_LIBRARIES)
+    string(REGEX MATCHALL "/[^;<>$]+" files "${libs}")
+    foreach(file IN LISTS files)
+      if(NOT EXISTS "${file}")
+        message(FATAL_ERROR "${target}'s CMake config links ${file}, which is not "
+          "installed; tools/install-deps.sh installs every package the build needs")
+      endif()
+    endforeach()
+  endforeach()
+endfunction()
+wtc_require_linked_files(assimp::assimp yaml-cpp fcl Qhull::qhullcpp
+  Qhull::qhull_r GTest::gtest GTest::gmock benchmark::benchmark)

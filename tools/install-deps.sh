@@ -8,6 +8,7 @@ packages=(
   libbullet-dev libbullet-extras-dev libode-dev  # engines (double precision)
   libfcl-dev libccd-dev                          # independent distance checks
   libassimp-dev assimp-testmodels                # mesh import and its test files
+  zlib1g-dev                                     # assimp's CMake config links libz.so; libassimp-dev lacks the dependency
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3
