@@ -1,5 +1,5 @@
 # Installs the library and a relocatable CMake package:
-#   find_package(wtc CONFIG REQUIRED)  ->  wtc::core, wtc::io, wtc::bullet, wtc::ode
+#   find_package(wtc CONFIG REQUIRED)  ->  wtc::core, wtc::vehicle, wtc::io, wtc::bullet, wtc::ode
 include(CMakePackageConfigHelpers)
 
 install(TARGETS wtc_core EXPORT wtcTargets
@@ -7,8 +7,8 @@ install(TARGETS wtc_core EXPORT wtcTargets
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-# wtc::io, the terrain file readers.
-install(TARGETS wtc_io EXPORT wtcTargets
+# wtc::vehicle (descriptions, drives, hitch) and wtc::io (file readers).
+install(TARGETS wtc_vehicle wtc_io EXPORT wtcTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}

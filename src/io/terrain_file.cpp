@@ -187,13 +187,7 @@ std::int64_t addPiece(TerrainBuilder& builder, const YamlReader& in, const YAML:
 }  // namespace
 
 TerrainFileReport addTerrainFile(TerrainBuilder& builder, const std::filesystem::path& path) {
-  const std::string text = detail::readWholeFile(path);
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::ParserException& e) {
-    throw InvalidInputError(detail::where(path, e.mark.line + 1, e.mark.column + 1) + "YAML syntax error: " + e.msg);
-  }
+  const YAML::Node root = detail::loadYamlFile(path);
   const YamlReader in(path);
   if (!root.IsMap()) in.fail(root, "expected a mapping with 'materials' and 'pieces'");
   in.checkKeys(root, {"description", "materials", "pieces"});

@@ -3,7 +3,18 @@
 #include <cmath>
 #include <numbers>
 
+#include "file_support.hpp"
+
 namespace wtc::io::detail {
+
+YAML::Node loadYamlFile(const std::filesystem::path& path) {
+  const std::string text = readWholeFile(path);
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    throw InvalidInputError(where(path, e.mark.line + 1, e.mark.column + 1) + "YAML syntax error: " + e.msg);
+  }
+}
 
 void YamlReader::fail(const YAML::Node& node, const std::string& message) const {
   const YAML::Mark mark = node.Mark();

@@ -21,6 +21,10 @@ class YamlError : public InvalidInputError {
   using InvalidInputError::InvalidInputError;
 };
 
+/// The file's YAML document. Throws InvalidInputError for a missing or
+/// unreadable file and "<path>:<line>:<col>: YAML syntax error: ..." .
+YAML::Node loadYamlFile(const std::filesystem::path& path);
+
 class YamlReader {
  public:
   /// `context` prefixes messages (e.g. "pieces[2] (ledge): ").

@@ -1,0 +1,173 @@
+#include "wtc/vehicle/vehicle_description.hpp"
+
+#include <cmath>
+
+#include "wtc/error.hpp"
+#include "wtc/tolerances.hpp"
+
+namespace wtc::vehicle {
+namespace {
+
+[[noreturn]] void fail(const std::string& where, const std::string& what, const std::string& problem) {
+  throw InvalidInputError(where + ": " + what + ": " + problem);
+}
+
+void requirePositive(double value, const std::string& where, const std::string& what) {
+  if (!std::isfinite(value) || value <= 0.0) fail(where, what, formatNumber(value) + " must be finite and > 0");
+}
+
+void requireNonNegative(const Eigen::Vector3d& v, const std::string& where, const std::string& what) {
+  if (!v.allFinite() || (v.array() < 0.0).any()) fail(where, what, formatVector(v) + " must be finite and >= 0");
+}
+
+void normaliseAxis(Eigen::Vector3d& axis, const std::string& where, const std::string& what) {
+  const double norm = axis.norm();
+  if (!axis.allFinite() || norm < tolerance::kMinAxleNorm) {
+    fail(where, what, formatVector(axis) + " is not a direction (non-finite or zero)");
+  }
+  axis /= norm;
+}
+
+const char* jointName(JointType type) {
+  switch (type) {
+    case JointType::kRevolute:
+      return "revolute";
+    case JointType::kPrismatic:
+      return "prismatic";
+    case JointType::kBall:
+      return "ball";
+    case JointType::kFixed:
+      return "fixed";
+  }
+  return "?";
+}
+
+void validateJoint(Joint& joint, const std::string& where) {
+  if (!joint.anchor.allFinite()) fail(where, "joint anchor", formatVector(joint.anchor) + " is not finite");
+  const bool has_coordinate = joint.type == JointType::kRevolute || joint.type == JointType::kPrismatic;
+  if (has_coordinate) normaliseAxis(joint.axis, where, "joint axis");
+  if (joint.limits) {
+    if (!has_coordinate) fail(where, "joint limits", std::string("a ") + jointName(joint.type) + " joint has none");
+    const JointLimits& l = *joint.limits;
+    if (!std::isfinite(l.lower) || !std::isfinite(l.upper) || l.lower > l.upper) {
+      fail(where, "joint limits",
+           "[" + formatNumber(l.lower) + ", " + formatNumber(l.upper) + "] must be finite with lower <= upper");
+    }
+  }
+  if (joint.actuator) {
+    if (!has_coordinate) fail(where, "actuator", std::string("a ") + jointName(joint.type) + " joint cannot be driven");
+    requirePositive(joint.actuator->max_effort, where, "actuator max_effort");
+    requirePositive(joint.actuator->max_speed, where, "actuator max_speed");
+    requirePositive(joint.actuator->position_gain, where, "actuator position_gain");
+  }
+}
+
+}  // namespace
+
+void validate(Body& body, int index, const std::string& where) {
+  requirePositive(body.mass, where, "mass");
+  const Eigen::Vector3d& i = body.inertia;
+  if (!i.allFinite() || (i.array() <= 0.0).any()) fail(where, "inertia", formatVector(i) + " must be finite and > 0");
+  // Principal moments of a real body obey the triangle inequality.
+  const double slack = 1e-9 * i.sum();
+  if (i.x() + i.y() < i.z() - slack || i.y() + i.z() < i.x() - slack || i.z() + i.x() < i.y() - slack) {
+    fail(where, "inertia", formatVector(i) + " violates the triangle inequality (no rigid body has it)");
+  }
+  if (!body.pose.matrix().allFinite()) fail(where, "pose", "is not finite");
+  if (body.wheel) {
+    validate(body.wheel->geometry, where.c_str());
+    validate(body.wheel->tyre, where.c_str());
+    normaliseAxis(body.wheel->axle, where, "wheel axle");
+  }
+
+  const Shape& s = body.shape;
+  if (s.kind == Shape::Kind::kBox && (!s.box_size.allFinite() || (s.box_size.array() <= 0.0).any())) {
+    fail(where, "shape box", formatVector(s.box_size) + " must be finite and > 0");
+  }
+  if (s.kind == Shape::Kind::kCylinder || s.kind == Shape::Kind::kSphere)
+    requirePositive(s.radius, where, "shape radius");
+  if (s.kind == Shape::Kind::kCylinder) {
+    requirePositive(s.length, where, "shape length");
+    if (s.cylinder_axis < 0 || s.cylinder_axis > 2) fail(where, "shape axis", std::to_string(s.cylinder_axis));
+  }
+  if (body.parent >= index) {
+    fail(where, "parent", "index " + std::to_string(body.parent) + " must name a body listed before it");
+  }
+  if (body.parent >= 0) validateJoint(body.joint, where);
+}
+
+Eigen::Vector3d solidInertia(const Shape& shape, double mass) {
+  switch (shape.kind) {
+    case Shape::Kind::kBox: {
+      const Eigen::Vector3d sq = shape.box_size.cwiseAbs2();
+      return mass / 12.0 * Eigen::Vector3d(sq.y() + sq.z(), sq.x() + sq.z(), sq.x() + sq.y());
+    }
+    case Shape::Kind::kCylinder: {
+      // Axial m r^2 / 2, transverse m (3 r^2 + l^2) / 12.
+      const double r2 = shape.radius * shape.radius;
+      Eigen::Vector3d moments = Eigen::Vector3d::Constant(mass * (3.0 * r2 + shape.length * shape.length) / 12.0);
+      moments[shape.cylinder_axis] = 0.5 * mass * r2;
+      return moments;
+    }
+    case Shape::Kind::kSphere:
+      return Eigen::Vector3d::Constant(0.4 * mass * shape.radius * shape.radius);
+    case Shape::Kind::kNone:
+      break;
+  }
+  throw InvalidInputError("wtc::vehicle::solidInertia: a body without a shape needs its inertia given");
+}
+
+int VehicleDescription::find(const std::string& body_name) const {
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    if (bodies[i].name == body_name) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+double VehicleDescription::totalMass() const {
+  double sum = 0.0;
+  for (const Body& b : bodies) sum += b.mass;
+  return sum;
+}
+
+std::vector<int> VehicleDescription::wheels() const {
+  std::vector<int> out;
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    if (bodies[i].wheel) out.push_back(static_cast<int>(i));
+  }
+  return out;
+}
+
+std::vector<int> VehicleDescription::actuated() const {
+  std::vector<int> out;
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    if (bodies[i].parent >= 0 && bodies[i].joint.actuator) out.push_back(static_cast<int>(i));
+  }
+  return out;
+}
+
+void validate(VehicleDescription& vehicle, const std::string& where) {
+  if (vehicle.bodies.empty()) throw InvalidInputError(where + ": a vehicle needs at least one body");
+  for (std::size_t i = 0; i < vehicle.bodies.size(); ++i) {
+    Body& body = vehicle.bodies[i];
+    const std::string here = where + ": body '" + body.name + "'";
+    if (body.name.empty()) throw InvalidInputError(where + ": body " + std::to_string(i) + " has no name");
+    if (vehicle.find(body.name) != static_cast<int>(i)) fail(here, "name", "is used twice");
+    validate(body, static_cast<int>(i), here);
+  }
+  if (vehicle.hitch) {
+    Hitch& h = *vehicle.hitch;
+    const int n = static_cast<int>(vehicle.bodies.size());
+    if (h.body_a < 0 || h.body_a >= n || h.body_b < 0 || h.body_b >= n || h.body_a == h.body_b) {
+      throw InvalidInputError(where + ": hitch: body_a and body_b must name two different bodies");
+    }
+    if (!h.point_a.allFinite() || !h.point_b.allFinite()) {
+      throw InvalidInputError(where + ": hitch: points " + formatVector(h.point_a) + " and " + formatVector(h.point_b) +
+                              " must be finite");
+    }
+    requireNonNegative(h.stiffness, where + ": hitch", "stiffness");
+    requireNonNegative(h.damping, where + ": hitch", "damping");
+  }
+}
+
+}  // namespace wtc::vehicle

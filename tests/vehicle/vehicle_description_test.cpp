@@ -1,0 +1,104 @@
+// Vehicle descriptions: inertias of the shapes, and the checks of validate.
+#include "wtc/vehicle/vehicle_description.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <limits>
+
+#include "wtc/error.hpp"
+
+namespace wtc::vehicle {
+namespace {
+
+using ::testing::HasSubstr;
+constexpr double kTolerance = 1e-12;
+
+TEST(VehicleDescriptionTest, SolidInertiaMatchesTextbookFormulas) {
+  // Case: box a x b x c: m (b^2 + c^2) / 12, ...
+  Shape box{.kind = Shape::Kind::kBox, .box_size = {0.5, 0.4, 0.2}};
+  const Eigen::Vector3d ib = solidInertia(box, 12.0);
+  EXPECT_NEAR(ib.x(), 0.16 + 0.04, kTolerance);
+  EXPECT_NEAR(ib.y(), 0.25 + 0.04, kTolerance);
+  EXPECT_NEAR(ib.z(), 0.25 + 0.16, kTolerance);
+  // Case: the robot's wheel as a disc about y: m r^2 / 2 = 0.0668 kg m^2.
+  Shape disc{.kind = Shape::Kind::kCylinder, .radius = 0.19, .length = 0.12, .cylinder_axis = 1};
+  const Eigen::Vector3d iw = solidInertia(disc, 3.7);
+  EXPECT_NEAR(iw.y(), 0.5 * 3.7 * 0.19 * 0.19, kTolerance);
+  EXPECT_NEAR(iw.x(), 3.7 * (3 * 0.19 * 0.19 + 0.12 * 0.12) / 12, kTolerance);
+  // Case: sphere 2 m r^2 / 5.
+  Shape ball{.kind = Shape::Kind::kSphere, .radius = 0.15};
+  EXPECT_NEAR(solidInertia(ball, 10.0).z(), 0.4 * 10 * 0.0225, kTolerance);
+}
+
+VehicleDescription twoBodies() {
+  VehicleDescription v;
+  v.name = "test";
+  Body root{.name = "root", .mass = 10.0, .inertia = {1, 1, 1}};
+  Body child{.name = "child", .mass = 2.0, .inertia = {0.1, 0.1, 0.1}, .parent = 0};
+  child.joint = Joint{.type = JointType::kRevolute,
+                      .axis = {0, 2, 0},
+                      .limits = JointLimits{-1, 1},
+                      .actuator = ActuatorLimits{.max_effort = 10, .max_speed = 1}};
+  v.bodies = {root, child};
+  return v;
+}
+
+std::string errorOf(VehicleDescription v) {
+  try {
+    validate(v, "test.yaml");
+  } catch (const InvalidInputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(VehicleDescriptionTest, ValidVehicleIsAcceptedAndAxesNormalised) {
+  VehicleDescription v = twoBodies();
+  validate(v, "test.yaml");
+  EXPECT_NEAR(v.bodies[1].joint.axis.norm(), 1.0, kTolerance);
+  EXPECT_EQ(v.totalMass(), 12.0);
+  EXPECT_EQ(v.actuated(), std::vector<int>{1});
+  EXPECT_EQ(v.find("child"), 1);
+  EXPECT_EQ(v.find("none"), -1);
+}
+
+TEST(VehicleDescriptionTest, BadValuesAreRefusedByBodyAndField) {
+  VehicleDescription v = twoBodies();
+  v.bodies[1].mass = -2.0;
+  EXPECT_THAT(errorOf(v), HasSubstr("test.yaml: body 'child': mass: -2 must be finite and > 0"));
+  v = twoBodies();
+  v.bodies[0].inertia = {1, 1, 3};
+  EXPECT_THAT(errorOf(v), HasSubstr("violates the triangle inequality"));
+  v = twoBodies();
+  v.bodies[1].joint.axis = {0, 0, 0};
+  EXPECT_THAT(errorOf(v), HasSubstr("body 'child': joint axis"));
+  v = twoBodies();
+  v.bodies[1].joint.limits = JointLimits{1, -1};
+  EXPECT_THAT(errorOf(v), HasSubstr("lower <= upper"));
+  v = twoBodies();
+  v.bodies[1].joint.type = JointType::kBall;
+  EXPECT_THAT(errorOf(v), HasSubstr("a ball joint has none"));
+  v = twoBodies();
+  v.bodies[1].joint.actuator->max_speed = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THAT(errorOf(v), HasSubstr("actuator max_speed: nan"));
+  v = twoBodies();
+  v.bodies[1].name = "root";
+  EXPECT_THAT(errorOf(v), HasSubstr("is used twice"));
+  v = twoBodies();
+  v.bodies[0].parent = 1;
+  EXPECT_THAT(errorOf(v), HasSubstr("must name a body listed before it"));
+  v = twoBodies();
+  v.bodies[1].wheel = Wheel{};
+  v.bodies[1].wheel->geometry.free_radius = -0.19;
+  EXPECT_THAT(errorOf(v), HasSubstr("free_radius"));
+  v = twoBodies();
+  v.hitch = Hitch{.body_a = 0, .body_b = 0};
+  EXPECT_THAT(errorOf(v), HasSubstr("hitch: body_a and body_b must name two different bodies"));
+  v = twoBodies();
+  v.hitch = Hitch{.body_a = 0, .body_b = 1, .stiffness = {1, -1, 1}};
+  EXPECT_THAT(errorOf(v), HasSubstr("stiffness"));
+}
+
+}  // namespace
+}  // namespace wtc::vehicle

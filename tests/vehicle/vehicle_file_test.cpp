@@ -1,0 +1,110 @@
+// Vehicle files: the shipped vehicles load with the spec's numbers, and bad
+// files are refused with the file, line, body and problem.
+#include "wtc/io/vehicle_file.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+
+#include "wtc/error.hpp"
+
+namespace wtc::io {
+namespace {
+
+using ::testing::HasSubstr;
+using vehicle::JointType;
+constexpr double kTolerance = 1e-12;
+const std::filesystem::path kVehicles = std::filesystem::path(WTC_SOURCE_DIR) / "vehicles";
+
+TEST(VehicleFileTest, RobotHasTheSpecsMassWheelbaseAndDrives) {
+  const vehicle::VehicleDescription robot = loadVehicle(kVehicles / "six_wheel_robot.yaml");
+  // Spec: 126 kg (70 + 2 x 9 + 2 x 8 + 6 x 3.7 = 126.2).
+  EXPECT_NEAR(robot.totalMass(), 126.2, 1e-9);
+  ASSERT_EQ(robot.wheels().size(), 6u);
+  // Spec: wheelbase 0.86 m retracted and level; r_f = 0.19 m.
+  const auto centre = [&](const char* name) { return robot.bodies[robot.find(name)].pose.translation(); };
+  EXPECT_NEAR(centre("front_left_wheel").x() - centre("rear_left_wheel").x(), 0.86, kTolerance);
+  for (const int w : robot.wheels()) {
+    const vehicle::Body& wheel = robot.bodies[w];
+    EXPECT_EQ(wheel.wheel->geometry.free_radius, 0.19) << wheel.name;
+    EXPECT_NEAR(wheel.inertia.y(), 0.5 * 3.7 * 0.19 * 0.19, kTolerance) << wheel.name;
+    ASSERT_TRUE(wheel.joint.actuator) << wheel.name;
+    EXPECT_EQ(wheel.joint.actuator->max_speed, 5.0);  // spec: 5 rad/s
+  }
+  // Spec: folds +-90 deg, extensions 0.18 m.
+  const vehicle::Body& fold = robot.bodies[robot.find("front_carrier")];
+  EXPECT_EQ(fold.joint.type, JointType::kRevolute);
+  EXPECT_NEAR(fold.joint.limits->upper, std::numbers::pi / 2, kTolerance);
+  const vehicle::Body& slide = robot.bodies[robot.find("rear_slider")];
+  EXPECT_EQ(slide.joint.type, JointType::kPrismatic);
+  EXPECT_EQ(slide.joint.limits->upper, 0.18);
+  EXPECT_EQ(robot.actuated().size(), 10u);  // six wheels, two folds, two slides
+}
+
+TEST(VehicleFileTest, TowedSystemHasTwoRootsAndAHitchWhosePointsMeet) {
+  const vehicle::VehicleDescription towed = loadVehicle(kVehicles / "towed_system.yaml");
+  ASSERT_TRUE(towed.hitch);
+  const vehicle::Hitch& h = *towed.hitch;
+  const Eigen::Vector3d d1 = towed.bodies[h.body_a].pose * h.point_a;
+  const Eigen::Vector3d d2 = towed.bodies[h.body_b].pose * h.point_b;
+  EXPECT_NEAR((d1 - d2).norm(), 0.0, kTolerance);  // no preload at the reference
+  int roots = 0;
+  for (const auto& b : towed.bodies) roots += b.parent < 0;
+  EXPECT_EQ(roots, 2);
+  EXPECT_EQ(towed.bodies[towed.find("tug_front_caster")].joint.type, JointType::kBall);
+  EXPECT_EQ(towed.bodies[towed.find("nose_fork")].joint.axis, Eigen::Vector3d::UnitZ());
+  EXPECT_EQ(towed.actuated().size(), 2u);  // only the tug's two drive wheels
+}
+
+std::string errorOfFile(const std::string& text) {
+  const auto path = std::filesystem::temp_directory_path() / "wtc_vehicle_file_test.yaml";
+  std::ofstream(path) << text;
+  try {
+    loadVehicle(path);
+  } catch (const InvalidInputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(VehicleFileTest, BadFilesAreRefusedWithFileLineBodyAndProblem) {
+  const std::string head = "name: v\nbodies:\n  - name: base\n    mass: 10\n    shape: {box: [1, 1, 1]}\n";
+  // Case: a typo in a key.
+  EXPECT_THAT(errorOfFile(head + "  - name: arm\n    parent: base\n    mas: 2\n"),
+              HasSubstr("wtc_vehicle_file_test.yaml:8:5: bodies[1] (arm): unknown key 'mas'"));
+  // Case: a value of the wrong type.
+  EXPECT_THAT(errorOfFile("name: v\nbodies:\n  - name: base\n    mass: heavy\n    shape: {sphere: 1}\n"),
+              HasSubstr(":4:11: bodies[0] (base): mass: 'heavy' is not a number"));
+  // Case: a parent that does not exist.
+  EXPECT_THAT(
+      errorOfFile(head + "  - {name: arm, parent: nobody, mass: 1, shape: {sphere: 1}, joint: {type: fixed}}\n"),
+      HasSubstr("parent 'nobody' is not a body listed before this one"));
+  // Case: a negative radius.
+  EXPECT_THAT(errorOfFile(head + "  - {name: w, parent: base, mass: 1, wheel: {radius: -0.2, width: 0.1}, "
+                                 "joint: {type: revolute}}\n"),
+              HasSubstr("bodies[1] (w): body: wheel free_radius = -0.2 must be finite and > 0"));
+  // Case: an unknown joint type, and a drive on a ball joint.
+  EXPECT_THAT(errorOfFile(head + "  - {name: a, parent: base, mass: 1, shape: {sphere: 1}, joint: {type: hinge}}\n"),
+              HasSubstr("'hinge' is not revolute, prismatic, ball or fixed"));
+  EXPECT_THAT(errorOfFile(head + "  - {name: a, parent: base, mass: 1, shape: {sphere: 1}, "
+                                 "joint: {type: ball, drive: {max_effort: 1, max_speed: 1}}}\n"),
+              HasSubstr("a ball joint cannot be driven"));
+  // Case: a body with neither shape nor inertia; a missing file; a hitch to nobody.
+  EXPECT_THAT(errorOfFile("name: v\nbodies:\n  - {name: base, mass: 10}\n"),
+              HasSubstr("a body without a shape needs 'inertia'"));
+  EXPECT_THAT(errorOfFile(head + "hitch: {body_a: base, body_b: ghost, point_a: [0,0,0], point_b: [0,0,0], "
+                                 "stiffness: [1,1,1], damping: [1,1,1]}\n"),
+              HasSubstr("body_b: no body 'ghost'"));
+  try {
+    loadVehicle(kVehicles / "no_such_vehicle.yaml");
+    FAIL();
+  } catch (const InvalidInputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("no_such_vehicle.yaml: file not found"));
+  }
+}
+
+}  // namespace
+}  // namespace wtc::io
