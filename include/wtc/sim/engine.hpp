@@ -1,0 +1,102 @@
+#pragma once
+// One engine interface for whole vehicles (wtc::sim). Design note:
+//
+// An Engine holds one world: the terrain, one vehicle built from its
+// engine-free description (wtc::vehicle::VehicleDescription), its WTC wheels
+// through the engine's plugin, and a motor on every driven joint. Each
+// engine implements it once, beside its plugin (wtc::bullet_sim,
+// wtc::ode_sim); makeEngine (wtc::sim_engines) picks one. The run loop, the
+// controllers, the tests and the benchmarks drive every engine through this
+// interface, so a scene is written once.
+//
+// Indices are the description's body indices throughout. A step:
+//   setMotorTarget / addForce for the next step   (the caller: controller, hitch)
+//   step()                                        (tyre models, collision, solve)
+//   body / jointPosition / motorEffort / wheelForces   (the state after it)
+// Joint coordinates are zero at the description's reference configuration:
+// a revolute joint's angle is the child's rotation about the axis relative
+// to its parent, a prismatic joint's position the child's displacement
+// along it.
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include <Eigen/Geometry>
+
+#include "wtc/effects.hpp"
+#include "wtc/engine_contact.hpp"
+#include "wtc/terrain.hpp"
+#include "wtc/tyre_model.hpp"
+#include "wtc/vehicle/drive.hpp"
+#include "wtc/vehicle/hitch_law.hpp"
+#include "wtc/vehicle/vehicle_description.hpp"
+#include "wtc/wheel_listener.hpp"
+
+namespace wtc::sim {
+
+/// kOde steps with dWorldStep (direct), kOdeQuick with dWorldQuickStep (iterative).
+enum class EngineKind { kBullet, kOde, kOdeQuick };
+
+/// "bullet", "ode", "ode_quick".
+std::string_view engineName(EngineKind kind);
+/// The kind named `name`; InvalidInputError naming `where` and the known names otherwise.
+EngineKind parseEngine(std::string_view name, const std::string& where);
+
+struct EngineSettings {
+  EngineKind kind = EngineKind::kBullet;
+  ContactMode mode = ContactMode::kForce;
+  double step_seconds = 4e-4;  ///< h (s), > 0: the source's mean step.
+  int solver_iterations = 50;  ///< Iterative solvers' iterations per step (Bullet, ODE quickstep), > 0.
+  EffectSet tyre_effects = EffectSet::full();
+};
+
+/// Throws InvalidInputError naming the field and `where`.
+void validate(const EngineSettings& settings, const std::string& where);
+
+class Engine {
+ public:
+  virtual ~Engine() = default;
+
+  /// The motor of `body`'s joint for the next step (ignored for a body
+  /// without a drive; an inactive target switches the motor off).
+  virtual void setMotorTarget(int body, const vehicle::MotorTarget& target) = 0;
+  /// A force (N, world) at a world point on `body`, for the next step only.
+  virtual void addForce(int body, const Eigen::Vector3d& force, const Eigen::Vector3d& point) = 0;
+  /// One step of settings().step_seconds.
+  virtual void step() = 0;
+
+  /// Pose and velocity of a body's centre of mass (world).
+  virtual vehicle::BodyKinematics body(int body) const = 0;
+  /// Coordinate (rad or m) and rate of `body`'s joint to its parent
+  /// (revolute and prismatic joints; 0 for others).
+  virtual double jointPosition(int body) const = 0;
+  virtual double jointRate(int body) const = 0;
+  /// The effort `body`'s motor applied in the last step (N m or N).
+  virtual double motorEffort(int body) const = 0;
+  /// The last step's tyre result and state of a wheel body.
+  virtual const WheelForces& wheelForces(int body) const = 0;
+  virtual const WheelState& wheelState(int body) const = 0;
+  /// Called for each wheel at each step after its tyre model ran; null: none.
+  virtual void setWheelListener(WheelListener* listener) = 0;
+
+  const EngineSettings& settings() const { return settings_; }
+  const vehicle::VehicleDescription& vehicle() const { return vehicle_; }
+
+ protected:
+  Engine(const EngineSettings& settings, const vehicle::VehicleDescription& vehicle)
+      : settings_(settings), vehicle_(vehicle) {}
+
+ private:
+  EngineSettings settings_;
+  vehicle::VehicleDescription vehicle_;
+};
+
+/// The world pose of each body at the start: `placement` (the vehicle frame
+/// V in the world) times its reference pose, for an engine to build from.
+Eigen::Isometry3d startPose(const vehicle::VehicleDescription& vehicle, int body, const Eigen::Isometry3d& placement);
+
+/// What a tyre model needs of a wheel body: its geometry and tyre, and as
+/// inertia the body's own mass and its moment about the axle.
+WheelDescription wheelDescription(const vehicle::Body& body);
+
+}  // namespace wtc::sim

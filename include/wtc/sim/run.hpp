@@ -1,0 +1,66 @@
+#pragma once
+// The run loop (wtc::sim): one engine, one vehicle, one controller. Each
+// step reads the sensors, asks the controller, turns its commands into the
+// drives' motor targets (vehicle::motorTarget, saturation counted), applies
+// the hitch force, steps the engine and reads what it did. The runner, the
+// tests and the benchmarks all step vehicles through this class.
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "wtc/sim/engine.hpp"
+#include "wtc/vehicle/controller.hpp"
+#include "wtc/vehicle/joint_error.hpp"
+#include "wtc/vehicle/vehicle_effects.hpp"
+
+namespace wtc::sim {
+
+class Run {
+ public:
+  /// `engine` and `controller` must outlive the run; a null controller
+  /// leaves every drive off (a passive vehicle).
+  Run(Engine& engine, vehicle::Controller* controller, const vehicle::VehicleEffects& effects = {});
+
+  /// One engine step. Throws InvalidInputError for a non-finite command.
+  void step();
+
+  double time() const { return state_.time; }
+  std::uint64_t steps() const { return steps_; }
+  /// The sensors after the last step (at the start before the first).
+  const vehicle::VehicleState& state() const { return state_; }
+  /// Per body: the last step's commands, motor targets and drive records.
+  std::span<const vehicle::DriveCommand> commands() const { return commands_; }
+  std::span<const vehicle::MotorTarget> targets() const { return targets_; }
+  std::span<const vehicle::DriveReport> drives() const { return drives_; }
+  /// The hitch force of the last step, if the vehicle has a hitch.
+  const std::optional<vehicle::HitchForce>& hitch() const { return hitch_; }
+
+  /// Over the run so far: the largest joint error (vehicle::jointError),
+  /// the deepest tyre deflection Z of any contact (m), and whether any body
+  /// state was not finite (the run should stop).
+  const vehicle::JointError& maxJointError() const { return max_joint_error_; }
+  double maxDeflection() const { return max_deflection_; }
+  bool nonFinite() const { return non_finite_; }
+
+  const Engine& engine() const { return engine_; }
+
+ private:
+  void sense();
+
+  Engine& engine_;
+  vehicle::Controller* controller_;
+  vehicle::VehicleEffects effects_;
+  std::vector<int> actuated_;
+  vehicle::VehicleState state_;
+  std::vector<vehicle::DriveCommand> commands_;
+  std::vector<vehicle::MotorTarget> targets_;
+  std::vector<vehicle::DriveReport> drives_;
+  std::optional<vehicle::HitchForce> hitch_;
+  vehicle::JointError max_joint_error_;
+  double max_deflection_ = 0.0;
+  bool non_finite_ = false;
+  std::uint64_t steps_ = 0;
+};
+
+}  // namespace wtc::sim

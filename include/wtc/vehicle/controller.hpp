@@ -1,0 +1,42 @@
+#pragma once
+// A vehicle's controller (wtc::vehicle): sensors in, drive commands out,
+// once per engine step. Engine-free: it sees what a real robot's sensors
+// give (body poses and rates as an IMU and odometry would, joint positions
+// and rates from encoders, each wheel's contact as WTC measures it), never
+// the terrain.
+#include <span>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "wtc/vehicle/drive.hpp"
+#include "wtc/vehicle/hitch_law.hpp"
+
+namespace wtc::vehicle {
+
+/// A wheel's contact, as a load cell in its hub would report it.
+struct WheelSensor {
+  int contacts = 0;                                          ///< Contacts with the ground this step.
+  Eigen::Vector3d force{Eigen::Vector3d::Zero()};            ///< Ground force on the wheel (N, world).
+  Eigen::Vector3d contact_normal{Eigen::Vector3d::UnitZ()};  ///< Mean ground normal, unit (world); +z without contact.
+};
+
+/// Everything a controller may read, indexed by body (the description's
+/// order); `wheels` is empty for bodies that are not wheels.
+struct VehicleState {
+  double time = 0.0;                   ///< Since the start (s).
+  std::vector<BodyKinematics> bodies;  ///< Centre-of-mass poses and velocities (world).
+  std::vector<double> joint_position;  ///< Of each body's joint to its parent (rad or m; 0 for roots).
+  std::vector<double> joint_rate;      ///< (rad/s or m/s).
+  std::vector<WheelSensor> wheels;     ///< Per body; meaningful for wheels only.
+};
+
+class Controller {
+ public:
+  virtual ~Controller() = default;
+  /// The drive commands for the next step: `commands` has one entry per
+  /// body (kOff for bodies without a drive), pre-filled with the last ones.
+  virtual void update(const VehicleState& state, std::span<DriveCommand> commands) = 0;
+};
+
+}  // namespace wtc::vehicle

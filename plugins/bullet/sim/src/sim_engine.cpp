@@ -1,0 +1,323 @@
+#include "wtc/bullet/sim_engine.hpp"
+
+#include <limits>
+#include <vector>
+
+#include <BulletCollision/CollisionShapes/btCompoundShape.h>
+#include <BulletDynamics/Featherstone/btMultiBody.h>
+#include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
+#include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
+#include <BulletDynamics/Featherstone/btMultiBodyJointLimitConstraint.h>
+#include <BulletDynamics/Featherstone/btMultiBodyJointMotor.h>
+#include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
+#include <btBulletDynamicsCommon.h>
+
+#include "wtc/bullet/plugin.hpp"
+#include "wtc/constants.hpp"
+#include "wtc/error.hpp"
+
+namespace wtc::bullet {
+namespace {
+
+using vehicle::Body;
+using vehicle::JointType;
+using vehicle::Shape;
+
+btVector3 toBt(const Eigen::Ref<const Eigen::Vector3d>& v) { return {v.x(), v.y(), v.z()}; }
+Eigen::Vector3d toEigen(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
+btQuaternion toBtRotation(const Eigen::Matrix3d& r) {
+  const Eigen::Quaterniond q(r);
+  return {q.x(), q.y(), q.z(), q.w()};
+}
+Eigen::Matrix3d toEigen(const btMatrix3x3& m) {
+  Eigen::Matrix3d r;
+  for (int i = 0; i < 3; ++i) r.row(i) = toEigen(m.getRow(i)).transpose();
+  return r;
+}
+btTransform toBtTransform(const Eigen::Isometry3d& t) {
+  return btTransform(toBtRotation(Eigen::Matrix3d(t.linear())), toBt(t.translation()));
+}
+
+// A cylinder along body axis `axis` (0 x, 1 y, 2 z) of radius r and length l.
+std::unique_ptr<btCollisionShape> cylinder(int axis, double r, double l) {
+  switch (axis) {
+    case 0:
+      return std::make_unique<btCylinderShapeX>(btVector3(0.5 * l, r, r));
+    case 1:
+      return std::make_unique<btCylinderShape>(btVector3(r, 0.5 * l, r));
+    default:
+      return std::make_unique<btCylinderShapeZ>(btVector3(r, r, 0.5 * l));
+  }
+}
+
+// The body's collision shape, or null; `owned` keeps every shape made. A
+// wheel's is its tread (a sphere when w >= 2 r_f); WTC's algorithm replaces
+// it against the terrain.
+btCollisionShape* makeShape(const Body& body, std::vector<std::unique_ptr<btCollisionShape>>& owned) {
+  const auto keep = [&](std::unique_ptr<btCollisionShape> shape) { return owned.emplace_back(std::move(shape)).get(); };
+  if (body.wheel) {
+    const WheelGeometry& g = body.wheel->geometry;
+    if (g.tread_width >= 2.0 * g.free_radius) return keep(std::make_unique<btSphereShape>(g.free_radius));
+    int axis = 0;
+    body.wheel->axle.cwiseAbs().maxCoeff(&axis);
+    if (std::abs(body.wheel->axle[axis]) > 1.0 - 1e-12) return keep(cylinder(axis, g.free_radius, g.tread_width));
+    // An oblique axle: a y cylinder turned onto it.
+    auto compound = std::make_unique<btCompoundShape>();
+    const Eigen::Matrix3d turn(Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitY(), body.wheel->axle));
+    compound->addChildShape(btTransform(toBtRotation(turn)), keep(cylinder(1, g.free_radius, g.tread_width)));
+    return keep(std::move(compound));
+  }
+  const Shape& s = body.shape;
+  switch (s.kind) {
+    case Shape::Kind::kBox:
+      return keep(std::make_unique<btBoxShape>(toBt(Eigen::Vector3d(0.5 * s.box_size))));
+    case Shape::Kind::kCylinder:
+      return keep(cylinder(s.cylinder_axis, s.radius, s.length));
+    case Shape::Kind::kSphere:
+      return keep(std::make_unique<btSphereShape>(s.radius));
+    case Shape::Kind::kNone:
+      break;
+  }
+  return nullptr;
+}
+
+class SimEngine final : public sim::Engine {
+ public:
+  SimEngine(const sim::EngineSettings& settings, const Terrain& terrain, const vehicle::VehicleDescription& v,
+            const Eigen::Isometry3d& placement)
+      : sim::Engine(settings, v), refs_(v.bodies.size()) {
+    world_.setGravity(btVector3(0, 0, -kGravityMps2));
+    world_.getSolverInfo().m_numIterations = settings.solver_iterations;
+    buildTrees(placement);
+    plugin_ = std::make_unique<Plugin>(world_, terrain, settings.mode);
+    plugin_->terrainObject().setFriction(1.0);  // combined friction = product: the bodies' own decides
+    for (std::size_t i = 0; i < v.bodies.size(); ++i) {
+      const Body& body = v.bodies[i];
+      if (!body.wheel) continue;
+      MultiBodyWheel wheel;
+      wheel.multibody = refs_[i].multibody;
+      wheel.link = refs_[i].link;
+      wheel.axle_local = toBt(body.wheel->axle);
+      wheel.description = sim::wheelDescription(body);
+      wheel.effects = settings.tyre_effects;
+      refs_[i].wheel = plugin_->addWheel(wheel);
+    }
+  }
+
+  ~SimEngine() override {
+    plugin_.reset();
+    for (auto& c : constraints_) world_.removeMultiBodyConstraint(c.get());
+    for (auto& c : colliders_) world_.removeCollisionObject(c.get());
+    for (auto& mb : trees_) world_.removeMultiBody(mb.get());
+  }
+
+  void setMotorTarget(int body, const vehicle::MotorTarget& target) override {
+    btMultiBodyJointMotor* motor = refs_.at(body).motor;
+    if (motor == nullptr) return;
+    const double h = settings().step_seconds;
+    motor->setVelocityTarget(target.rate);
+    // An infinite cap (drive limits off) is the largest finite impulse.
+    const double cap = std::min(target.max_effort * h, std::numeric_limits<double>::max());
+    motor->setMaxAppliedImpulse(target.active ? cap : 0.0);
+  }
+
+  void addForce(int body, const Eigen::Vector3d& force, const Eigen::Vector3d& point) override {
+    const Ref& r = refs_.at(body);
+    const Eigen::Vector3d torque = (point - this->body(body).pose.translation()).cross(force);
+    if (r.link < 0) {
+      r.multibody->addBaseForce(toBt(force));
+      r.multibody->addBaseTorque(toBt(torque));
+    } else {
+      r.multibody->addLinkForce(r.link, toBt(force));
+      r.multibody->addLinkTorque(r.link, toBt(torque));
+    }
+  }
+
+  // One internal step of exactly h (maxSubSteps = 0: Bullet's variable step).
+  void step() override { world_.stepSimulation(settings().step_seconds, 0, settings().step_seconds); }
+
+  vehicle::BodyKinematics body(int body) const override {
+    const Ref& r = refs_.at(body);
+    const btMultiBody& mb = *r.multibody;
+    vehicle::BodyKinematics k;
+    if (r.link < 0) {
+      k.pose.translation() = toEigen(mb.getBasePos());
+      k.pose.linear() = toEigen(btMatrix3x3(mb.getWorldToBaseRot().inverse()));
+      k.linear_velocity = toEigen(mb.getBaseVel());
+      k.angular_velocity = toEigen(mb.getBaseOmega());
+      return k;
+    }
+    k.pose.translation() = toEigen(mb.localPosToWorld(r.link, btVector3(0, 0, 0)));
+    k.pose.linear() = toEigen(mb.localFrameToWorld(r.link, btMatrix3x3::getIdentity()));
+    omega_.resize(mb.getNumLinks() + 1);
+    velocity_.resize(mb.getNumLinks() + 1);
+    mb.compTreeLinkVelocities(&omega_[0], &velocity_[0]);  // index 0 the base, i + 1 link i; link frames
+    k.linear_velocity = toEigen(mb.localDirToWorld(r.link, velocity_[r.link + 1]));
+    k.angular_velocity = toEigen(mb.localDirToWorld(r.link, omega_[r.link + 1]));
+    return k;
+  }
+
+  double jointPosition(int body) const override {
+    const Ref& r = refs_.at(body);
+    return hasCoordinate(body) ? r.multibody->getJointPos(r.link) : 0.0;
+  }
+  double jointRate(int body) const override {
+    const Ref& r = refs_.at(body);
+    return hasCoordinate(body) ? r.multibody->getJointVel(r.link) : 0.0;
+  }
+  double motorEffort(int body) const override {
+    const btMultiBodyJointMotor* motor = refs_.at(body).motor;
+    return motor == nullptr ? 0.0
+                            : const_cast<btMultiBodyJointMotor*>(motor)->getAppliedImpulse(0) / settings().step_seconds;
+  }
+  const WheelForces& wheelForces(int body) const override { return plugin_->forces(wheelId(body)); }
+  const WheelState& wheelState(int body) const override { return plugin_->state(wheelId(body)); }
+  void setWheelListener(WheelListener* listener) override { plugin_->setListener(listener); }
+
+ private:
+  struct Ref {
+    btMultiBody* multibody = nullptr;
+    int link = -1;  // -1: the tree's base
+    btMultiBodyJointMotor* motor = nullptr;
+    WheelId wheel = -1;
+  };
+
+  bool hasCoordinate(int body) const {
+    const Body& b = vehicle().bodies.at(body);
+    return b.parent >= 0 && (b.joint.type == JointType::kRevolute || b.joint.type == JointType::kPrismatic);
+  }
+
+  WheelId wheelId(int body) const {
+    const WheelId id = refs_.at(body).wheel;
+    if (id < 0) throw InvalidInputError("wtc::bullet sim engine: body " + std::to_string(body) + " is not a wheel");
+    return id;
+  }
+
+  // One btMultiBody per root: its descendants are links, in body order.
+  void buildTrees(const Eigen::Isometry3d& placement) {
+    const std::vector<Body>& bodies = vehicle().bodies;
+    std::vector<int> links_of_root(bodies.size(), 0);
+    std::vector<int> root_of(bodies.size());
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      const int parent = bodies[i].parent;
+      root_of[i] = parent < 0 ? static_cast<int>(i) : root_of[parent];
+      if (parent >= 0) refs_[i].link = links_of_root[root_of[i]]++;
+    }
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      const Body& b = bodies[i];
+      if (b.parent >= 0) {
+        refs_[i].multibody = refs_[root_of[i]].multibody;
+        setupLink(static_cast<int>(i));
+        continue;
+      }
+      if (b.wheel) {
+        throw InvalidInputError("wtc::bullet sim engine: wheel body '" + b.name +
+                                "' must hang from a parent by a joint (Bullet's WTC wheels are multibody links)");
+      }
+      auto mb = std::make_unique<btMultiBody>(links_of_root[i], b.mass, toBt(b.inertia), false, false);
+      const Eigen::Isometry3d pose = sim::startPose(vehicle(), static_cast<int>(i), placement);
+      mb->setBasePos(toBt(pose.translation()));
+      mb->setWorldToBaseRot(toBtRotation(Eigen::Matrix3d(pose.linear().transpose())));
+      refs_[i].multibody = mb.get();
+      trees_.push_back(std::move(mb));
+    }
+    for (auto& mb : trees_) {
+      mb->finalizeMultiDof();
+      mb->setHasSelfCollision(false);
+      // No artificial damping, no clamp a robot's joints could meet.
+      mb->setLinearDamping(0.0);
+      mb->setAngularDamping(0.0);
+      world_.addMultiBody(mb.get());
+      btAlignedObjectArray<btQuaternion> rotations;
+      btAlignedObjectArray<btVector3> offsets;
+      mb->forwardKinematics(rotations, offsets);
+    }
+    for (std::size_t i = 0; i < bodies.size(); ++i) addCollider(static_cast<int>(i), placement);
+  }
+
+  void setupLink(int i) {
+    const Body& b = vehicle().bodies[i];
+    const Body& p = vehicle().bodies[b.parent];
+    Ref& r = refs_[i];
+    const int parent_link = refs_[b.parent].link;
+    const Eigen::Matrix3d r_p = p.pose.linear(), r_c = b.pose.linear();
+    const btQuaternion parent_to_this = toBtRotation(Eigen::Matrix3d(r_c.transpose() * r_p));
+    const btVector3 parent_com_to_pivot = toBt(r_p.transpose() * (b.joint.anchor - p.pose.translation()));
+    const btVector3 pivot_to_com = toBt(r_c.transpose() * (b.pose.translation() - b.joint.anchor));
+    const btVector3 axis = toBt(r_c.transpose() * b.joint.axis);
+    btMultiBody& mb = *r.multibody;
+    switch (b.joint.type) {
+      case JointType::kRevolute:
+        mb.setupRevolute(r.link, b.mass, toBt(b.inertia), parent_link, parent_to_this, axis, parent_com_to_pivot,
+                         pivot_to_com, true);
+        break;
+      case JointType::kPrismatic:
+        mb.setupPrismatic(r.link, b.mass, toBt(b.inertia), parent_link, parent_to_this, axis, parent_com_to_pivot,
+                          pivot_to_com, true);
+        break;
+      case JointType::kBall:
+        mb.setupSpherical(r.link, b.mass, toBt(b.inertia), parent_link, parent_to_this, parent_com_to_pivot,
+                          pivot_to_com, true);
+        break;
+      case JointType::kFixed:
+        mb.setupFixed(r.link, b.mass, toBt(b.inertia), parent_link, parent_to_this, parent_com_to_pivot, pivot_to_com,
+                      true);
+        break;
+    }
+    if (b.joint.limits) {
+      auto limit =
+          std::make_unique<btMultiBodyJointLimitConstraint>(&mb, r.link, b.joint.limits->lower, b.joint.limits->upper);
+      world_.addMultiBodyConstraint(limit.get());
+      constraints_.push_back(std::move(limit));
+    }
+    if (b.joint.actuator) {
+      auto motor = std::make_unique<btMultiBodyJointMotor>(&mb, r.link, 0.0, 0.0);
+      r.motor = motor.get();
+      world_.addMultiBodyConstraint(motor.get());
+      constraints_.push_back(std::move(motor));
+    }
+  }
+
+  void addCollider(int i, const Eigen::Isometry3d& placement) {
+    btCollisionShape* shape = makeShape(vehicle().bodies[i], shapes_);
+    if (shape == nullptr) return;
+    Ref& r = refs_[i];
+    auto collider = std::make_unique<btMultiBodyLinkCollider>(r.multibody, r.link);
+    collider->setCollisionShape(shape);
+    collider->setWorldTransform(toBtTransform(sim::startPose(vehicle(), i, placement)));
+    collider->setFriction(kBodyGroundFriction);
+    // A dynamic body's filters (a plain collision object defaults to the
+    // static group, which never meets the terrain).
+    world_.addCollisionObject(collider.get(), btBroadphaseProxy::DefaultFilter, btBroadphaseProxy::AllFilter);
+    if (r.link < 0) {
+      r.multibody->setBaseCollider(collider.get());
+    } else {
+      r.multibody->getLink(r.link).m_collider = collider.get();
+    }
+    colliders_.push_back(std::move(collider));
+  }
+
+  btDefaultCollisionConfiguration config_;
+  btCollisionDispatcher dispatcher_{&config_};
+  btDbvtBroadphase broadphase_;
+  btMultiBodyConstraintSolver solver_;
+  btMultiBodyDynamicsWorld world_{&dispatcher_, &broadphase_, &solver_, &config_};
+  std::vector<std::unique_ptr<btCollisionShape>> shapes_;
+  std::vector<std::unique_ptr<btMultiBody>> trees_;
+  std::vector<std::unique_ptr<btMultiBodyLinkCollider>> colliders_;
+  std::vector<std::unique_ptr<btMultiBodyConstraint>> constraints_;
+  std::vector<Ref> refs_;
+  std::unique_ptr<Plugin> plugin_;
+  mutable btAlignedObjectArray<btVector3> omega_, velocity_;  // scratch for link velocities
+};
+
+}  // namespace
+
+std::unique_ptr<sim::Engine> makeSimEngine(const sim::EngineSettings& settings, const Terrain& terrain,
+                                           const vehicle::VehicleDescription& vehicle,
+                                           const Eigen::Isometry3d& placement) {
+  sim::validate(settings, "wtc::bullet::makeSimEngine");
+  return std::make_unique<SimEngine>(settings, terrain, vehicle, placement);
+}
+
+}  // namespace wtc::bullet

@@ -1,0 +1,315 @@
+#include "wtc/ode/sim_engine.hpp"
+
+#include <array>
+#include <vector>
+
+#include <ode/ode.h>
+
+#include "wtc/constants.hpp"
+#include "wtc/error.hpp"
+#include "wtc/ode/plugin.hpp"
+
+namespace wtc::ode {
+namespace {
+
+using vehicle::Body;
+using vehicle::JointType;
+using vehicle::Shape;
+
+constexpr int kMaxBodyContacts = 8;  // per body-ground pair, for ODE's own colliders
+
+Eigen::Vector3d toEigen(const dReal* v) { return {v[0], v[1], v[2]}; }
+
+// ODE's dMatrix3 is row-major with a stride of 4.
+void toOde(const Eigen::Matrix3d& r, dMatrix3 m) {
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) m[4 * i + j] = r(i, j);
+    m[4 * i + 3] = 0.0;
+  }
+}
+Eigen::Matrix3d rotationFromOde(const dReal* m) {
+  Eigen::Matrix3d r;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) r(i, j) = m[4 * i + j];
+  }
+  return r;
+}
+
+// Turns ODE's z-aligned cylinder of `geom` onto body axis `axis` (unit).
+void alignCylinder(dGeomID geom, const Eigen::Vector3d& axis) {
+  dMatrix3 m;
+  toOde(Eigen::Matrix3d(Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), axis)), m);
+  dGeomSetOffsetRotation(geom, m);
+}
+
+// The body's collision geom in `space`, attached to `b`, or null. A wheel's
+// is its tread (a sphere when w >= 2 r_f), which WTC replaces against the
+// terrain.
+dGeomID makeGeom(const Body& body, dSpaceID space, dBodyID b) {
+  dGeomID geom = nullptr;
+  if (body.wheel) {
+    const WheelGeometry& g = body.wheel->geometry;
+    geom = g.tread_width >= 2.0 * g.free_radius ? dCreateSphere(space, g.free_radius)
+                                                : dCreateCylinder(space, g.free_radius, g.tread_width);
+    dGeomSetBody(geom, b);
+    if (dGeomGetClass(geom) == dCylinderClass) alignCylinder(geom, body.wheel->axle);
+    return geom;
+  }
+  const Shape& s = body.shape;
+  switch (s.kind) {
+    case Shape::Kind::kBox:
+      geom = dCreateBox(space, s.box_size.x(), s.box_size.y(), s.box_size.z());
+      break;
+    case Shape::Kind::kCylinder:
+      geom = dCreateCylinder(space, s.radius, s.length);
+      break;
+    case Shape::Kind::kSphere:
+      geom = dCreateSphere(space, s.radius);
+      break;
+    case Shape::Kind::kNone:
+      return nullptr;
+  }
+  dGeomSetBody(geom, b);
+  if (s.kind == Shape::Kind::kCylinder) alignCylinder(geom, Eigen::Vector3d::Unit(s.cylinder_axis));
+  return geom;
+}
+
+class SimEngine final : public sim::Engine {
+ public:
+  SimEngine(const sim::EngineSettings& settings, const Terrain& terrain, const vehicle::VehicleDescription& v,
+            const Eigen::Isometry3d& placement)
+      : sim::Engine(settings, v), refs_(v.bodies.size()) {
+    dInitODE2(0);  // counted: matched by dCloseODE in the destructor
+    world_ = dWorldCreate();
+    dWorldSetGravity(world_, 0, 0, -kGravityMps2);
+    dWorldSetQuickStepNumIterations(world_, settings.solver_iterations);
+    space_ = dHashSpaceCreate(nullptr);
+    contacts_ = dJointGroupCreate(0);
+    plugin_ = std::make_unique<Plugin>(world_, space_, terrain, settings.mode);
+    for (std::size_t i = 0; i < v.bodies.size(); ++i) buildBody(static_cast<int>(i), placement);
+    for (std::size_t i = 0; i < v.bodies.size(); ++i) {
+      const Body& body = v.bodies[i];
+      if (!body.wheel) continue;
+      RigidWheel wheel;
+      wheel.body = refs_[i].body;
+      wheel.geom = refs_[i].geom;
+      wheel.axle_local = body.wheel->axle;
+      wheel.description = sim::wheelDescription(body);
+      wheel.effects = settings.tyre_effects;
+      refs_[i].wheel = plugin_->addWheel(wheel);
+    }
+  }
+
+  ~SimEngine() override {
+    plugin_.reset();  // its terrain space lives in space_
+    dJointGroupDestroy(contacts_);
+    dSpaceDestroy(space_);  // destroys the bodies' geoms (cleanup mode on)
+    dWorldDestroy(world_);  // and the bodies and joints
+    dCloseODE();
+  }
+
+  void setMotorTarget(int body, const vehicle::MotorTarget& target) override {
+    const Ref& r = refs_.at(body);
+    if (r.motor == nullptr) return;
+    const bool angular = dJointGetType(r.motor) == dJointTypeAMotor;
+    const auto set = angular ? dJointSetAMotorParam : dJointSetLMotorParam;
+    set(r.motor, dParamVel, target.rate);
+    set(r.motor, dParamFMax, target.active ? target.max_effort : 0.0);
+  }
+
+  void addForce(int body, const Eigen::Vector3d& force, const Eigen::Vector3d& point) override {
+    dBodyAddForceAtPos(refs_.at(body).body, force.x(), force.y(), force.z(), point.x(), point.y(), point.z());
+  }
+
+  void step() override {
+    const double h = settings().step_seconds;
+    plugin_->beginStep(h);
+    dSpaceCollide(space_, this, &SimEngine::nearCallback);
+    if (settings().kind == sim::EngineKind::kOdeQuick) {
+      dWorldQuickStep(world_, h);
+    } else {
+      dWorldStep(world_, h);
+    }
+    dJointGroupEmpty(contacts_);
+  }
+
+  vehicle::BodyKinematics body(int body) const override {
+    const dBodyID b = refs_.at(body).body;
+    vehicle::BodyKinematics k;
+    k.pose.translation() = toEigen(dBodyGetPosition(b));
+    k.pose.linear() = rotationFromOde(dBodyGetRotation(b));
+    k.linear_velocity = toEigen(dBodyGetLinearVel(b));
+    k.angular_velocity = toEigen(dBodyGetAngularVel(b));
+    return k;
+  }
+
+  double jointPosition(int body) const override {
+    const dJointID j = refs_.at(body).joint;
+    if (j == nullptr) return 0.0;
+    switch (dJointGetType(j)) {
+      case dJointTypeHinge:
+        return dJointGetHingeAngle(j);
+      case dJointTypeSlider:
+        return dJointGetSliderPosition(j);
+      default:
+        return 0.0;
+    }
+  }
+  double jointRate(int body) const override {
+    const dJointID j = refs_.at(body).joint;
+    if (j == nullptr) return 0.0;
+    switch (dJointGetType(j)) {
+      case dJointTypeHinge:
+        return dJointGetHingeAngleRate(j);
+      case dJointTypeSlider:
+        return dJointGetSliderPositionRate(j);
+      default:
+        return 0.0;
+    }
+  }
+  // The motor's force or torque on the child along the joint's axis.
+  double motorEffort(int body) const override {
+    const Ref& r = refs_.at(body);
+    if (r.motor == nullptr) return 0.0;
+    Eigen::Vector3d axis;
+    if (dJointGetType(r.motor) == dJointTypeAMotor) {
+      dVector3 a;
+      dJointGetAMotorAxis(r.motor, 0, a);
+      return toEigen(r.feedback.t1).dot(toEigen(a));
+    }
+    dVector3 a;
+    dJointGetLMotorAxis(r.motor, 0, a);
+    return toEigen(r.feedback.f1).dot(toEigen(a));
+  }
+  const WheelForces& wheelForces(int body) const override { return plugin_->forces(wheelId(body)); }
+  const WheelState& wheelState(int body) const override { return plugin_->state(wheelId(body)); }
+  void setWheelListener(WheelListener* listener) override { plugin_->setListener(listener); }
+
+ private:
+  struct Ref {
+    dBodyID body = nullptr;
+    dGeomID geom = nullptr;
+    dJointID joint = nullptr;  // to the parent
+    dJointID motor = nullptr;  // the drive, if any
+    dJointFeedback feedback{};
+    WheelId wheel = -1;
+  };
+
+  WheelId wheelId(int body) const {
+    const WheelId id = refs_.at(body).wheel;
+    if (id < 0) throw InvalidInputError("wtc::ode sim engine: body " + std::to_string(body) + " is not a wheel");
+    return id;
+  }
+
+  void buildBody(int i, const Eigen::Isometry3d& placement) {
+    const Body& b = vehicle().bodies[i];
+    Ref& r = refs_[i];
+    r.body = dBodyCreate(world_);
+    dMass m;
+    dMassSetParameters(&m, b.mass, 0, 0, 0, b.inertia.x(), b.inertia.y(), b.inertia.z(), 0, 0, 0);
+    dBodySetMass(r.body, &m);
+    const Eigen::Isometry3d pose = sim::startPose(vehicle(), i, placement);
+    dBodySetPosition(r.body, pose.translation().x(), pose.translation().y(), pose.translation().z());
+    dMatrix3 rotation;
+    toOde(pose.linear(), rotation);
+    dBodySetRotation(r.body, rotation);
+    r.geom = makeGeom(b, space_, r.body);
+    if (b.parent >= 0) buildJoint(i, placement);
+  }
+
+  // The joint to the parent, at the start pose (where its coordinate is 0).
+  void buildJoint(int i, const Eigen::Isometry3d& placement) {
+    const Body& b = vehicle().bodies[i];
+    Ref& r = refs_[i];
+    const dBodyID parent = refs_[b.parent].body;
+    const Eigen::Vector3d anchor = placement * b.joint.anchor;
+    const Eigen::Vector3d axis = placement.linear() * b.joint.axis;
+    switch (b.joint.type) {
+      case JointType::kRevolute:
+        r.joint = dJointCreateHinge(world_, nullptr);
+        dJointAttach(r.joint, r.body, parent);
+        dJointSetHingeAnchor(r.joint, anchor.x(), anchor.y(), anchor.z());
+        dJointSetHingeAxis(r.joint, axis.x(), axis.y(), axis.z());
+        if (b.joint.limits) {
+          dJointSetHingeParam(r.joint, dParamLoStop, b.joint.limits->lower);
+          dJointSetHingeParam(r.joint, dParamHiStop, b.joint.limits->upper);
+        }
+        break;
+      case JointType::kPrismatic:
+        r.joint = dJointCreateSlider(world_, nullptr);
+        dJointAttach(r.joint, r.body, parent);
+        dJointSetSliderAxis(r.joint, axis.x(), axis.y(), axis.z());
+        if (b.joint.limits) {
+          dJointSetSliderParam(r.joint, dParamLoStop, b.joint.limits->lower);
+          dJointSetSliderParam(r.joint, dParamHiStop, b.joint.limits->upper);
+        }
+        break;
+      case JointType::kBall:
+        r.joint = dJointCreateBall(world_, nullptr);
+        dJointAttach(r.joint, r.body, parent);
+        dJointSetBallAnchor(r.joint, anchor.x(), anchor.y(), anchor.z());
+        break;
+      case JointType::kFixed:
+        r.joint = dJointCreateFixed(world_, nullptr);
+        dJointAttach(r.joint, r.body, parent);
+        dJointSetFixed(r.joint);
+        break;
+    }
+    if (!b.joint.actuator) return;
+    // The drive: off until the first command.
+    if (b.joint.type == JointType::kRevolute) {
+      r.motor = dJointCreateAMotor(world_, nullptr);
+      dJointAttach(r.motor, r.body, parent);
+      dJointSetAMotorMode(r.motor, dAMotorUser);
+      dJointSetAMotorNumAxes(r.motor, 1);
+      dJointSetAMotorAxis(r.motor, 0, 1, axis.x(), axis.y(), axis.z());  // rel 1: fixed in the child
+      dJointSetAMotorParam(r.motor, dParamFMax, 0.0);
+    } else {
+      r.motor = dJointCreateLMotor(world_, nullptr);
+      dJointAttach(r.motor, r.body, parent);
+      dJointSetLMotorNumAxes(r.motor, 1);
+      dJointSetLMotorAxis(r.motor, 0, 1, axis.x(), axis.y(), axis.z());
+      dJointSetLMotorParam(r.motor, dParamFMax, 0.0);
+    }
+    dJointSetFeedback(r.motor, &r.feedback);
+  }
+
+  static void nearCallback(void* data, dGeomID a, dGeomID b) {
+    SimEngine& e = *static_cast<SimEngine*>(data);
+    if (e.plugin_->handlePair(a, b, e.contacts_)) return;  // wheel-terrain: WTC's
+    if (dGeomIsSpace(a) || dGeomIsSpace(b)) {
+      dSpaceCollide2(a, b, data, &SimEngine::nearCallback);
+      return;
+    }
+    const dBodyID body_a = dGeomGetBody(a), body_b = dGeomGetBody(b);
+    // Terrain against terrain, or two bodies of the vehicle: nothing.
+    if ((body_a == nullptr) == (body_b == nullptr)) return;
+    std::array<dContact, kMaxBodyContacts> contact{};
+    const int n = dCollide(a, b, kMaxBodyContacts, &contact[0].geom, sizeof(dContact));
+    for (int k = 0; k < n; ++k) {
+      contact[k].surface.mode = dContactApprox1;
+      contact[k].surface.mu = kBodyGroundFriction;
+      dJointAttach(dJointCreateContact(e.world_, e.contacts_, &contact[k]), body_a, body_b);
+    }
+  }
+
+  dWorldID world_ = nullptr;
+  dSpaceID space_ = nullptr;
+  dJointGroupID contacts_ = nullptr;
+  std::unique_ptr<Plugin> plugin_;
+  std::vector<Ref> refs_;
+};
+
+}  // namespace
+
+std::unique_ptr<sim::Engine> makeSimEngine(const sim::EngineSettings& settings, const Terrain& terrain,
+                                           const vehicle::VehicleDescription& vehicle,
+                                           const Eigen::Isometry3d& placement) {
+  sim::validate(settings, "wtc::ode::makeSimEngine");
+  if (settings.kind == sim::EngineKind::kBullet) {
+    throw InvalidInputError("wtc::ode::makeSimEngine: engine kind bullet (expected ode or ode_quick)");
+  }
+  return std::make_unique<SimEngine>(settings, terrain, vehicle, placement);
+}
+
+}  // namespace wtc::ode

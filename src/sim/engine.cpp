@@ -1,0 +1,52 @@
+#include "wtc/sim/engine.hpp"
+
+#include <cmath>
+
+#include "wtc/error.hpp"
+
+namespace wtc::sim {
+
+std::string_view engineName(EngineKind kind) {
+  switch (kind) {
+    case EngineKind::kBullet:
+      return "bullet";
+    case EngineKind::kOde:
+      return "ode";
+    case EngineKind::kOdeQuick:
+      return "ode_quick";
+  }
+  return "?";
+}
+
+EngineKind parseEngine(std::string_view name, const std::string& where) {
+  for (const EngineKind kind : {EngineKind::kBullet, EngineKind::kOde, EngineKind::kOdeQuick}) {
+    if (name == engineName(kind)) return kind;
+  }
+  throw InvalidInputError(where + ": unknown engine '" + std::string(name) + "' (expected bullet, ode or ode_quick)");
+}
+
+void validate(const EngineSettings& settings, const std::string& where) {
+  if (!std::isfinite(settings.step_seconds) || settings.step_seconds <= 0.0) {
+    throw InvalidInputError(where + ": step " + formatNumber(settings.step_seconds) + " s must be finite and > 0");
+  }
+  if (settings.solver_iterations <= 0) {
+    throw InvalidInputError(where + ": solver_iterations " + std::to_string(settings.solver_iterations) +
+                            " must be > 0");
+  }
+}
+
+Eigen::Isometry3d startPose(const vehicle::VehicleDescription& vehicle, int body, const Eigen::Isometry3d& placement) {
+  return placement * vehicle.bodies[body].pose;
+}
+
+WheelDescription wheelDescription(const vehicle::Body& body) {
+  WheelDescription w;
+  w.geometry = body.wheel->geometry;
+  w.tyre = body.wheel->tyre;
+  // The moment about the axle: a^T I a with I diagonal in the body frame.
+  const Eigen::Vector3d& a = body.wheel->axle;
+  w.inertia = {.effective_mass = body.mass, .axial_inertia = a.cwiseAbs2().dot(body.inertia)};
+  return w;
+}
+
+}  // namespace wtc::sim

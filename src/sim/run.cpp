@@ -1,0 +1,79 @@
+#include "wtc/sim/run.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace wtc::sim {
+namespace {
+
+bool finite(const vehicle::BodyKinematics& k) {
+  return k.pose.matrix().allFinite() && k.linear_velocity.allFinite() && k.angular_velocity.allFinite();
+}
+
+}  // namespace
+
+Run::Run(Engine& engine, vehicle::Controller* controller, const vehicle::VehicleEffects& effects)
+    : engine_(engine), controller_(controller), effects_(effects), actuated_(engine.vehicle().actuated()) {
+  const std::size_t n = engine.vehicle().bodies.size();
+  state_.bodies.resize(n);
+  state_.joint_position.resize(n);
+  state_.joint_rate.resize(n);
+  state_.wheels.resize(n);
+  commands_.resize(n);
+  targets_.resize(n);
+  drives_.resize(n);
+  sense();
+}
+
+void Run::step() {
+  const vehicle::VehicleDescription& v = engine_.vehicle();
+  if (controller_ != nullptr) controller_->update(state_, commands_);
+  for (const int b : actuated_) {
+    const vehicle::Joint& joint = v.bodies[b].joint;
+    targets_[b] = vehicle::motorTarget(*joint.actuator, joint.limits, commands_[b], state_.joint_position[b],
+                                       effects_.actuator_limits);
+    engine_.setMotorTarget(b, targets_[b]);
+  }
+  if (v.hitch) {
+    const vehicle::Hitch& h = *v.hitch;
+    hitch_ = vehicle::hitchForce(h, state_.bodies[h.body_a], state_.bodies[h.body_b], effects_.hitch_damping);
+    engine_.addForce(h.body_b, hitch_->force_on_b, hitch_->point_b);
+    engine_.addForce(h.body_a, -hitch_->force_on_b, hitch_->point_a);
+  }
+  engine_.step();
+  ++steps_;
+  state_.time = static_cast<double>(steps_) * engine_.settings().step_seconds;
+  for (const int b : actuated_) vehicle::record(drives_[b], targets_[b], engine_.motorEffort(b));
+  sense();
+}
+
+void Run::sense() {
+  const vehicle::VehicleDescription& v = engine_.vehicle();
+  for (std::size_t i = 0; i < v.bodies.size(); ++i) {
+    const int b = static_cast<int>(i);
+    state_.bodies[i] = engine_.body(b);
+    non_finite_ = non_finite_ || !finite(state_.bodies[i]);
+    state_.joint_position[i] = engine_.jointPosition(b);
+    state_.joint_rate[i] = engine_.jointRate(b);
+    if (!v.bodies[i].wheel) continue;
+    const WheelForces& f = engine_.wheelForces(b);
+    vehicle::WheelSensor& s = state_.wheels[i];
+    s.contacts = static_cast<int>(f.contacts.size());
+    s.force = f.force;
+    Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+    for (const ContactForce& c : f.contacts) {
+      normal -= c.normal_force * c.contact.e;  // e points into the ground
+      max_deflection_ = std::max(max_deflection_, c.contact.deflection);
+    }
+    s.contact_normal = normal.norm() > 0.0 ? Eigen::Vector3d(normal.normalized()) : Eigen::Vector3d::UnitZ();
+  }
+  for (std::size_t i = 0; i < v.bodies.size(); ++i) {
+    if (v.bodies[i].parent < 0) continue;
+    const vehicle::JointError e =
+        vehicle::jointError(v, static_cast<int>(i), state_.bodies[i], state_.bodies[v.bodies[i].parent]);
+    max_joint_error_.distance = std::max(max_joint_error_.distance, e.distance);
+    max_joint_error_.angle = std::max(max_joint_error_.angle, e.angle);
+  }
+}
+
+}  // namespace wtc::sim

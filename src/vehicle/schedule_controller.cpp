@@ -1,0 +1,59 @@
+#include "wtc/vehicle/schedule_controller.hpp"
+
+#include <cmath>
+
+#include "wtc/error.hpp"
+
+namespace wtc::vehicle {
+
+ScheduleController::ScheduleController(const VehicleDescription& vehicle, std::vector<DriveSchedule> schedules,
+                                       const std::string& where) {
+  std::vector<bool> taken(vehicle.bodies.size(), false);
+  for (std::size_t s = 0; s < schedules.size(); ++s) {
+    const DriveSchedule& schedule = schedules[s];
+    const std::string at = where + ": schedule " + std::to_string(s);
+    if (schedule.points.empty()) throw InvalidInputError(at + " has no points");
+    for (std::size_t k = 0; k < schedule.points.size(); ++k) {
+      const SchedulePoint& p = schedule.points[k];
+      if (!std::isfinite(p.time) || !std::isfinite(p.value)) {
+        throw InvalidInputError(at + ", point " + std::to_string(k) + ": time and value must be finite");
+      }
+      if (k > 0 && p.time <= schedule.points[k - 1].time) {
+        throw InvalidInputError(at + ", point " + std::to_string(k) + ": time " + formatNumber(p.time) +
+                                " s does not increase");
+      }
+    }
+    Entry entry{.bodies = {}, .mode = schedule.mode, .points = schedule.points};
+    for (const std::string& name : schedule.drives) {
+      const int b = vehicle.find(name);
+      if (b < 0 || !vehicle.bodies[b].joint.actuator || vehicle.bodies[b].parent < 0) {
+        throw InvalidInputError(at + ": '" + name + "' is not a driven body of vehicle '" + vehicle.name + "'");
+      }
+      if (taken[b]) throw InvalidInputError(at + ": drive '" + name + "' is scheduled twice");
+      taken[b] = true;
+      entry.bodies.push_back(b);
+    }
+    entries_.push_back(std::move(entry));
+  }
+}
+
+double ScheduleController::valueAt(const std::vector<SchedulePoint>& points, double t) {
+  if (t <= points.front().time) return points.front().value;
+  for (std::size_t k = 1; k < points.size(); ++k) {
+    if (t <= points[k].time) {
+      const SchedulePoint& a = points[k - 1];
+      const SchedulePoint& b = points[k];
+      return a.value + (b.value - a.value) * (t - a.time) / (b.time - a.time);
+    }
+  }
+  return points.back().value;
+}
+
+void ScheduleController::update(const VehicleState& state, std::span<DriveCommand> commands) {
+  for (const Entry& e : entries_) {
+    const double value = valueAt(e.points, state.time);
+    for (const int b : e.bodies) commands[b] = {.mode = e.mode, .value = value};
+  }
+}
+
+}  // namespace wtc::vehicle

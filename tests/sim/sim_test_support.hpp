@@ -1,0 +1,19 @@
+#pragma once
+// What the sim tests share: the shipped vehicles, a flat ground, and the
+// engine settings every test runs in.
+#include <string>
+#include <vector>
+
+#include "wtc/sim/engine.hpp"
+#include "wtc/terrain.hpp"
+
+namespace wtc::testing {
+
+vehicle::VehicleDescription shippedVehicle(const std::string& file);  // under vehicles/
+/// A 20 m x 20 m slab, top face z = 0, one material (mu_max 0.8).
+Terrain flatGround();
+/// Every engine and mode a vehicle must run in.
+std::vector<sim::EngineSettings> everyEngine();
+std::string label(const sim::EngineSettings& settings);
+
+}  // namespace wtc::testing
