@@ -1,5 +1,6 @@
 # Installs the library and a relocatable CMake package:
-#   find_package(wtc CONFIG REQUIRED)  ->  wtc::core, wtc::vehicle, wtc::io, wtc::bullet, wtc::ode
+#   find_package(wtc CONFIG REQUIRED)  ->  wtc::core, wtc::vehicle, wtc::sim, wtc::io, wtc::bullet, wtc::ode,
+#   wtc::bullet_sim, wtc::ode_sim, wtc::sim_engines
 include(CMakePackageConfigHelpers)
 
 install(TARGETS wtc_core EXPORT wtcTargets
@@ -7,14 +8,14 @@ install(TARGETS wtc_core EXPORT wtcTargets
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-# wtc::vehicle (descriptions, drives, hitch) and wtc::io (file readers).
-install(TARGETS wtc_vehicle wtc_io EXPORT wtcTargets
+# wtc::vehicle (descriptions, drives, hitch), wtc::sim (engine interface, run loop) and wtc::io (file readers).
+install(TARGETS wtc_vehicle wtc_sim wtc_io EXPORT wtcTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 # The engine adapters.
-foreach(adapter IN ITEMS wtc_bullet wtc_ode)
+foreach(adapter IN ITEMS wtc_bullet wtc_ode wtc_bullet_sim wtc_ode_sim wtc_sim_engines)
   if(TARGET ${adapter})
     install(TARGETS ${adapter} EXPORT wtcTargets
       ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
@@ -28,6 +29,9 @@ install(DIRECTORY plugins/bullet/include/wtc DESTINATION ${CMAKE_INSTALL_INCLUDE
 if(EXISTS ${PROJECT_SOURCE_DIR}/plugins/ode/include/wtc)
   install(DIRECTORY plugins/ode/include/wtc DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endif()
+foreach(dir IN ITEMS plugins/bullet/sim/include/wtc plugins/ode/sim/include/wtc plugins/engines/include/wtc)
+  install(DIRECTORY ${dir} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+endforeach()
 
 set(WTC_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/wtc)
 install(EXPORT wtcTargets NAMESPACE wtc:: DESTINATION ${WTC_CMAKE_DIR})

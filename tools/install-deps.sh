@@ -11,7 +11,7 @@ packages=(
   zlib1g-dev                                     # assimp's CMake config links libz.so; libassimp-dev lacks the dependency
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  python3
+  python3 python3-matplotlib                    # wtc-sim's figures
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -3,6 +3,8 @@
 // terrains/README.md).
 #include "wtc/io/terrain_file.hpp"
 
+#include "terrain_node.hpp"
+
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -186,9 +188,7 @@ std::int64_t addPiece(TerrainBuilder& builder, const YamlReader& in, const YAML:
 
 }  // namespace
 
-TerrainFileReport addTerrainFile(TerrainBuilder& builder, const std::filesystem::path& path) {
-  const YAML::Node root = detail::loadYamlFile(path);
-  const YamlReader in(path);
+TerrainFileReport detail::addTerrainNode(TerrainBuilder& builder, const YamlReader& in, const YAML::Node& root) {
   if (!root.IsMap()) in.fail(root, "expected a mapping with 'materials' and 'pieces'");
   in.checkKeys(root, {"description", "materials", "pieces"});
 
@@ -243,6 +243,10 @@ TerrainFileReport addTerrainFile(TerrainBuilder& builder, const std::filesystem:
   }
   report.pieces.count = static_cast<PieceId>(builder.pieceCount()) - report.pieces.first;
   return report;
+}
+
+TerrainFileReport addTerrainFile(TerrainBuilder& builder, const std::filesystem::path& path) {
+  return detail::addTerrainNode(builder, YamlReader(path), detail::loadYamlFile(path));
 }
 
 Terrain loadTerrain(const std::filesystem::path& path) {

@@ -60,11 +60,14 @@ YAML::Node YamlReader::require(const YAML::Node& map, const char* key) const {
 
 double YamlReader::number(const YAML::Node& node, const std::string& what) const {
   if (!node.IsScalar()) fail(node, what + ": expected a number");
+  double value = 0.0;
   try {
-    return node.as<double>();
+    value = node.as<double>();
   } catch (const YAML::Exception&) {
     fail(node, what + ": '" + node.Scalar() + "' is not a number");
   }
+  if (!std::isfinite(value)) fail(node, what + ": '" + node.Scalar() + "' is not a finite number");
+  return value;
 }
 
 long long YamlReader::integer(const YAML::Node& node, const std::string& what) const {

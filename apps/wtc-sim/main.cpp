@@ -1,0 +1,168 @@
+// wtc-sim: runs one scene file in the engine it names (or the one given),
+// writes the series, a summary and the figures. It parses, runs and
+// writes; everything physical is in the libraries.
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "wtc/error.hpp"
+#include "wtc/io/scene_file.hpp"
+#include "wtc/sim/make_engine.hpp"
+#include "wtc/sim/scene_run.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::atomic<bool> g_stop{false};
+extern "C" void onSignal(int) { g_stop = true; }
+
+// A directory for this run that no earlier run used: `requested` if given
+// (it must not exist or be empty), else runs/<scene>_<engine>_<mode>[_N].
+fs::path outputDirectory(const std::string& requested, const wtc::sim::RunSummary& names) {
+  if (!requested.empty()) {
+    const fs::path dir(requested);
+    if (fs::exists(dir) && !fs::is_empty(dir)) {
+      throw wtc::InvalidInputError("--out " + requested +
+                                   ": the directory exists and is not empty (an earlier run's?)");
+    }
+    fs::create_directories(dir);
+    return dir;
+  }
+  const std::string base = "runs/" + names.scene + "_" + names.engine + "_" + names.mode;
+  fs::path dir = base;
+  for (int n = 2; fs::exists(dir); ++n) dir = base + "_" + std::to_string(n);
+  fs::create_directories(dir);
+  return dir;
+}
+
+nlohmann::json toJson(const wtc::sim::RunSummary& s) {
+  nlohmann::json j = {{"scene", s.scene},
+                      {"engine", s.engine},
+                      {"mode", s.mode},
+                      {"dt", s.dt},
+                      {"sim_time", s.sim_time},
+                      {"wall_time", s.wall_time},
+                      {"real_time_factor", s.real_time_factor},
+                      {"steps", s.steps},
+                      {"success", s.success},
+                      {"nan", s.nan},
+                      {"interrupted", s.interrupted},
+                      {"max_penetration", s.max_penetration},
+                      {"max_joint_gap_m", s.max_joint_gap},
+                      {"max_joint_angle_deg", s.max_joint_angle * 180.0 / 3.14159265358979323846},
+                      {"saturation_steps", s.saturation_steps},
+                      {"warnings", s.warnings},
+                      {"parameters", s.parameters}};
+  for (const auto& [key, value] : s.fields) j[key] = value;
+  for (const wtc::sim::DriveSummary& d : s.drives) {
+    j["drives"][d.name] = {{"steps", d.steps}, {"saturated_steps", d.saturated_steps}, {"peak_effort", d.peak_effort}};
+  }
+  return j;
+}
+
+// Written whole, then renamed: a reader never sees half a summary.
+void writeJson(const fs::path& path, const nlohmann::json& j) {
+  const fs::path tmp = path.string() + ".tmp";
+  {
+    std::ofstream out(tmp);
+    out << j.dump(2) << '\n';
+    if (!out) throw wtc::InvalidInputError("cannot write " + tmp.string());
+  }
+  fs::rename(tmp, path);
+}
+
+// The plotting script: beside the sources in a build tree, else installed.
+fs::path plotScript() {
+  const fs::path source = fs::path(WTC_SOURCE_DIR) / "apps/wtc-sim/plot_run.py";
+  if (fs::exists(source)) return source;
+  return fs::path(WTC_INSTALL_DATADIR) / "plot_run.py";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"wtc-sim: run a scene (scenes/*.yaml) in Bullet or ODE with WTC wheels"};
+  std::string scene_file, engine, mode, out;
+  double dt = 0.0, duration = 0.0;
+  std::vector<std::string> sets;
+  bool quiet = false, no_plots = false;
+  app.add_option("scene", scene_file, "scene file (YAML)")->required();
+  app.add_option("--engine", engine, "bullet, ode or ode_quick (overrides the scene's)");
+  app.add_option("--mode", mode, "force or constraint");
+  app.add_option("--dt", dt, "step (s)");
+  app.add_option("--duration", duration, "simulated time (s)");
+  app.add_option("--out", out, "output directory (new or empty; default runs/<scene>_<engine>_<mode>[_N])");
+  app.add_option("--set", sets, "key.path=value: override any value of the scene (repeatable)");
+  app.add_flag("--quiet", quiet, "no progress bar, no summary on stdout");
+  app.add_flag("--no-plots", no_plots, "skip the figures");
+  CLI11_PARSE(app, argc, argv);
+
+  wtc::sim::Scene scene;
+  try {
+    std::vector<wtc::io::Override> overrides;
+    if (!engine.empty()) overrides.push_back({"engine", engine});
+    if (!mode.empty()) overrides.push_back({"mode", mode});
+    if (app.count("--dt")) overrides.push_back({"dt", std::to_string(dt)});
+    if (app.count("--duration")) overrides.push_back({"duration", std::to_string(duration)});
+    for (const std::string& s : sets) overrides.push_back(wtc::io::parseOverride(s));
+    scene = wtc::io::loadScene(scene_file, overrides);
+  } catch (const std::exception& e) {
+    std::cerr << "wtc-sim: " << e.what() << '\n';
+    return 2;
+  }
+
+  try {
+    const auto engine_ptr = wtc::sim::makeEngine(scene.engine, *scene.terrain, scene.vehicle, scene.placement);
+    wtc::sim::RunSummary names;
+    names.scene = scene.name;
+    names.engine = std::string(wtc::sim::engineName(scene.engine.kind));
+    names.mode = scene.engine.mode == wtc::ContactMode::kForce ? "force" : "constraint";
+    const fs::path dir = outputDirectory(out, names);
+
+    std::signal(SIGINT, onSignal);
+    std::signal(SIGTERM, onSignal);
+    wtc::sim::RunOptions options{.out_dir = dir, .progress = {}, .stop = &g_stop};
+    const bool bar = !quiet && isatty(STDERR_FILENO);
+    if (bar) {
+      options.progress = [](double f) {
+        const int filled = static_cast<int>(f * 40.0);
+        std::fprintf(stderr, "\r[%-40s] %3d%%", std::string(filled, '#').c_str(), static_cast<int>(f * 100.0));
+        std::fflush(stderr);
+      };
+    }
+    const wtc::sim::RunSummary summary = wtc::sim::runScene(scene, *engine_ptr, options);
+    if (bar) std::fprintf(stderr, "\n");
+    writeJson(dir / "summary.json", toJson(summary));
+    for (const std::string& w : summary.warnings) std::cerr << "wtc-sim: warning: " << w << '\n';
+
+    std::string figures = "skipped (--no-plots)";
+    if (!no_plots && scene.output.plots) {
+      // The first Python on PATH, else Debian's (where python3-matplotlib puts it).
+      const std::string args = " '" + plotScript().string() + "' '" + dir.string() + "'";
+      int rc = std::system(("python3" + args + " 2>/dev/null").c_str());
+      if (rc != 0) rc = std::system(("/usr/bin/python3" + args).c_str());
+      figures = rc == 0 ? "drawn" : "not drawn (python3 with matplotlib is needed; see above)";
+    }
+    if (!quiet) {
+      std::printf("%s in %s (%s mode, dt %g s): %s\n", summary.scene.c_str(), summary.engine.c_str(),
+                  summary.mode.c_str(), summary.dt, summary.success ? "success" : "FAILED");
+      std::printf("  %.3f s simulated in %.3f s wall: %.1fx real time, %llu steps\n", summary.sim_time,
+                  summary.wall_time, summary.real_time_factor, static_cast<unsigned long long>(summary.steps));
+      for (const auto& [key, value] : summary.fields) std::printf("  %s: %.4g\n", key.c_str(), value);
+      std::printf("  outputs: %s (series, summary.json; figures %s)\n", dir.c_str(), figures.c_str());
+    }
+    return summary.success ? 0 : 1;
+  } catch (const std::exception& e) {
+    std::cerr << "wtc-sim: " << e.what() << '\n';
+    return 2;
+  }
+}

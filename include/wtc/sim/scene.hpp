@@ -1,0 +1,49 @@
+#pragma once
+// A scene (wtc::sim): everything one run needs, engine-free — the engine
+// and its settings, the terrain, the vehicle and where it starts, the
+// effects, the controller, what to record and how the scene judges its own
+// success. wtc::io::loadScene reads one from YAML (scenes/README.md).
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "wtc/sim/engine.hpp"
+#include "wtc/vehicle/controller.hpp"
+#include "wtc/vehicle/vehicle_effects.hpp"
+
+namespace wtc::sim {
+
+struct OutputSettings {
+  double rate_hz = 100.0;  ///< Rows per simulated second in the CSV series (> 0; at most one per step).
+  bool plots = true;       ///< Draw the figures after the run (when matplotlib is installed).
+};
+
+/// The scene's own criterion; a run succeeds when it ends without a
+/// non-finite state and every criterion given holds at its end.
+struct SuccessCriteria {
+  std::optional<double> min_distance;  ///< The vehicle's first body moved at least this far, horizontally (m).
+  std::optional<double> max_distance;  ///< And at most this far (m).
+  double max_tilt_deg = 45.0;          ///< Every root's z axis within this of the vertical (deg).
+};
+
+struct Scene {
+  std::string name;
+  std::string description;
+  std::string source;  ///< The file it came from (for messages and the summary).
+  EngineSettings engine;
+  double duration_seconds = 0.0;
+  std::shared_ptr<const Terrain> terrain;
+  vehicle::VehicleDescription vehicle;
+  Eigen::Isometry3d placement{Eigen::Isometry3d::Identity()};  ///< The vehicle frame V in the world.
+  vehicle::VehicleEffects vehicle_effects;
+  std::string controller_type;  ///< "none", "schedule", ...
+  /// A fresh controller for one run (controllers keep state).
+  std::function<std::unique_ptr<vehicle::Controller>()> make_controller;
+  OutputSettings output;
+  SuccessCriteria success;
+  std::map<std::string, double> parameters;  ///< The scene's named numbers, after overrides.
+};
+
+}  // namespace wtc::sim

@@ -1,0 +1,56 @@
+#pragma once
+// One scene, run from start to end (wtc::sim): the controller stepped, the series recorded and the run judged
+// by the scene's own criterion. The runner (wtc-sim), the tests and the
+// studies all run scenes through runScene.
+#include <atomic>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "wtc/sim/scene.hpp"
+
+namespace wtc::sim {
+
+struct RunOptions {
+  std::optional<std::filesystem::path> out_dir;   ///< Where the CSV series go (must exist); none: no files.
+  std::function<void(double fraction)> progress;  ///< Called about every 1 % of the run.
+  const std::atomic<bool>* stop = nullptr;        ///< Set (by a signal handler) to end the run early.
+};
+
+struct DriveSummary {
+  std::string name;
+  std::uint64_t steps = 0;            ///< Steps with the drive on.
+  std::uint64_t saturated_steps = 0;  ///< Of those, steps at a limit.
+  double peak_effort = 0.0;           ///< (N m or N).
+};
+
+struct RunSummary {
+  std::string scene, engine, mode;
+  double dt = 0.0, sim_time = 0.0;
+  double wall_time = 0.0;         ///< Of the stepping loop, recording included (s).
+  double real_time_factor = 0.0;  ///< sim_time / wall_time.
+  std::uint64_t steps = 0;
+  bool success = false;
+  bool nan = false;                    ///< A body state went non-finite (the run stopped there).
+  bool interrupted = false;            ///< Stopped before its duration.
+  double max_penetration = 0.0;        ///< The deepest tyre deflection Z of any contact (m).
+  double max_joint_gap = 0.0;          ///< (m), vehicle::jointError over the run.
+  double max_joint_angle = 0.0;        ///< (rad).
+  std::uint64_t saturation_steps = 0;  ///< Summed over the drives.
+  std::vector<DriveSummary> drives;
+  std::vector<std::string> warnings;
+  /// The scene's own figures: distance_m (horizontal, first body),
+  /// final_speed_mps, yaw_change_deg, max_tilt_deg.
+  std::map<std::string, double> fields;
+  std::map<std::string, double> parameters;  ///< The scene's, after overrides.
+};
+
+/// Runs `scene` in `engine` (built from it, e.g. by makeEngine, and not
+/// stepped yet) for its duration, or until a non-finite state or a stop.
+RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& options = {});
+
+}  // namespace wtc::sim

@@ -1,0 +1,272 @@
+// Scene files: the format is in include/wtc/io/scene_file.hpp and
+// scenes/README.md.
+#include "wtc/io/scene_file.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "file_support.hpp"
+#include "terrain_node.hpp"
+#include "wtc/error.hpp"
+#include "wtc/io/vehicle_file.hpp"
+#include "wtc/vehicle/schedule_controller.hpp"
+#include "yaml_reader.hpp"
+
+namespace wtc::io {
+namespace {
+
+using detail::YamlReader;
+
+constexpr const char* kVehicleEffects[] = {"actuator_limits", "hitch_damping"};
+
+// Applies one override to the document; `parameters` names the numbers a
+// first part that is not a key may set.
+void applyOverride(YAML::Node& root, const Override& o, const std::string& where) {
+  std::vector<std::string> parts;
+  for (std::size_t start = 0;;) {
+    const std::size_t dot = o.path.find('.', start);
+    parts.push_back(o.path.substr(start, dot - start));
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  if (std::any_of(parts.begin(), parts.end(), [](const std::string& p) { return p.empty(); })) {
+    throw InvalidInputError(where + ": '" + o.path + "' has an empty part");
+  }
+  YAML::Node value;
+  try {
+    value = YAML::Load(o.value);
+  } catch (const YAML::Exception& e) {
+    throw InvalidInputError(where + ": value '" + o.value + "' is not YAML: " + e.msg);
+  }
+  if (!root[parts.front()] && root["parameters"] && root["parameters"].IsMap() && root["parameters"][parts.front()]) {
+    parts.insert(parts.begin(), "parameters");
+  }
+  // yaml-cpp's Node is a handle: walk with copies, assign through the last.
+  YAML::Node node = root;
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+    const std::string& part = parts[i];
+    if (node.IsSequence()) {
+      const bool digits = std::all_of(part.begin(), part.end(), [](char c) { return c >= '0' && c <= '9'; });
+      if (!digits || std::stoul(part) >= node.size()) {
+        throw InvalidInputError(where + ": '" + part + "' is not an index of the list at '" + o.path + "' (size " +
+                                std::to_string(node.size()) + ")");
+      }
+      node.reset(node[std::stoul(part)]);
+    } else if (node.IsMap() || node.IsNull()) {
+      YAML::Node next = node[part];
+      node.reset(next);
+    } else {
+      throw InvalidInputError(where + ": '" + part + "' in '" + o.path + "' is below a value, not a map or list");
+    }
+  }
+  const std::string& last = parts.back();
+  if (node.IsSequence()) {
+    const bool digits = std::all_of(last.begin(), last.end(), [](char c) { return c >= '0' && c <= '9'; });
+    if (!digits || std::stoul(last) >= node.size()) {
+      throw InvalidInputError(where + ": '" + last + "' is not an index of the list at '" + o.path + "'");
+    }
+    node[std::stoul(last)] = value;
+  } else {
+    node[last] = value;
+  }
+}
+
+// Replaces every scalar "$name" ("-$name") outside `parameters` by the parameter's value.
+void substitute(const YamlReader& in, YAML::Node node, const std::map<std::string, double>& parameters) {
+  if (node.IsScalar()) {
+    // "$name", or "-$name" for its negative.
+    const std::string& s = node.Scalar();
+    const bool negative = s.size() > 2 && s[0] == '-' && s[1] == '$';
+    if (negative || (s.size() > 1 && s.front() == '$')) {
+      const auto found = parameters.find(s.substr(negative ? 2 : 1));
+      if (found == parameters.end()) in.fail(node, "'" + s + "' names no parameter of the scene");
+      node = negative ? -found->second : found->second;
+    }
+    return;
+  }
+  if (node.IsSequence()) {
+    for (std::size_t i = 0; i < node.size(); ++i) substitute(in, node[i], parameters);
+  } else if (node.IsMap()) {
+    for (auto entry : node) {
+      if (entry.first.Scalar() != "parameters") substitute(in, entry.second, parameters);
+    }
+  }
+}
+
+std::vector<vehicle::DriveSchedule> readSchedules(const YamlReader& in, const YAML::Node& node) {
+  if (!node.IsSequence()) in.fail(node, "schedules: expected a list");
+  std::vector<vehicle::DriveSchedule> schedules;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const YamlReader s = in.with("controller.schedules[" + std::to_string(i) + "]: ");
+    const YAML::Node n = node[i];
+    s.requireMap(n, "a schedule");
+    s.checkKeys(n, {"drives", "mode", "points"});
+    vehicle::DriveSchedule schedule;
+    const YAML::Node drives = s.require(n, "drives");
+    if (!drives.IsSequence()) s.fail(drives, "drives: expected a list of body names");
+    for (const auto& d : drives) schedule.drives.push_back(s.string(d, "drives"));
+    const std::string mode = s.string(s.require(n, "mode"), "mode");
+    if (mode == "velocity") {
+      schedule.mode = vehicle::DriveMode::kVelocity;
+    } else if (mode == "position") {
+      schedule.mode = vehicle::DriveMode::kPosition;
+    } else if (mode == "off") {
+      schedule.mode = vehicle::DriveMode::kOff;
+    } else {
+      s.fail(n["mode"], "mode: '" + mode + "' (expected velocity, position or off)");
+    }
+    const YAML::Node points = s.require(n, "points");
+    if (!points.IsSequence() || points.size() == 0) s.fail(points, "points: expected a list of [time, value]");
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      const Eigen::Vector2d p = s.vector<2>(points[k], "points[" + std::to_string(k) + "]");
+      schedule.points.push_back({.time = p.x(), .value = p.y()});
+    }
+    schedules.push_back(std::move(schedule));
+  }
+  return schedules;
+}
+
+void readController(const YamlReader& in, const YAML::Node& node, sim::Scene& scene) {
+  in.requireMap(node, "controller");
+  scene.controller_type = in.string(in.require(node, "type"), "controller.type");
+  if (scene.controller_type == "none") {
+    in.checkKeys(node, {"type"});
+    scene.make_controller = [] { return std::unique_ptr<vehicle::Controller>(); };
+  } else if (scene.controller_type == "schedule") {
+    in.checkKeys(node, {"type", "schedules"});
+    auto schedules = readSchedules(in, in.require(node, "schedules"));
+    try {
+      vehicle::ScheduleController check(scene.vehicle, schedules, "controller");
+    } catch (const InvalidInputError& e) {
+      in.fail(node, e.what());
+    }
+    scene.make_controller = [schedules, v = scene.vehicle] {
+      return std::unique_ptr<vehicle::Controller>(
+          std::make_unique<vehicle::ScheduleController>(v, schedules, "controller"));
+    };
+  } else {
+    in.fail(node["type"], "controller.type: '" + scene.controller_type + "' (expected none or schedule)");
+  }
+}
+
+void readEffects(const YamlReader& in, const YAML::Node& node, sim::Scene& scene) {
+  if (!node.IsSequence()) in.fail(node, "effects: expected a list of names");
+  std::vector<std::string> tyre;
+  scene.vehicle_effects = {.actuator_limits = false, .hitch_damping = false};
+  for (const auto& n : node) {
+    const std::string name = in.string(n, "effects");
+    if (name == "full") {
+      scene.vehicle_effects = {};
+      tyre.push_back(name);
+    } else if (name == kVehicleEffects[0]) {
+      scene.vehicle_effects.actuator_limits = true;
+    } else if (name == kVehicleEffects[1]) {
+      scene.vehicle_effects.hitch_damping = true;
+    } else {
+      tyre.push_back(name);
+    }
+  }
+  try {
+    scene.engine.tyre_effects = EffectSet::parse(tyre, "effects");
+  } catch (const InvalidInputError& e) {
+    in.fail(node, std::string(e.what()) + " (or a vehicle effect: actuator_limits, hitch_damping)");
+  }
+}
+
+}  // namespace
+
+Override parseOverride(const std::string& text) {
+  const std::size_t eq = text.find('=');
+  if (eq == std::string::npos || eq == 0) {
+    throw InvalidInputError("--set '" + text + "': expected key.path=value");
+  }
+  return {.path = text.substr(0, eq), .value = text.substr(eq + 1)};
+}
+
+sim::Scene loadScene(const std::filesystem::path& path, std::span<const Override> overrides) {
+  YAML::Node root = detail::loadYamlFile(path);
+  const YamlReader in(path);
+  in.requireMap(root, "scene file");
+  for (const Override& o : overrides) applyOverride(root, o, "--set " + o.path + "=" + o.value);
+  in.checkKeys(root, {"name", "description", "parameters", "engine", "mode", "dt", "duration", "solver_iterations",
+                      "terrain", "vehicle", "effects", "controller", "output", "success"});
+
+  sim::Scene scene;
+  scene.source = path.string();
+  if (const auto p = YamlReader::get(root, "parameters")) {
+    in.requireMap(*p, "parameters");
+    for (const auto& entry : *p) {
+      scene.parameters[entry.first.Scalar()] = in.number(entry.second, "parameters." + entry.first.Scalar());
+    }
+  }
+  substitute(in, root, scene.parameters);
+
+  scene.name = in.string(in.require(root, "name"), "name");
+  if (const auto d = YamlReader::get(root, "description")) scene.description = in.string(*d, "description");
+  scene.engine.kind = sim::EngineKind::kBullet;
+  if (const auto e = YamlReader::get(root, "engine")) {
+    try {
+      scene.engine.kind = sim::parseEngine(in.string(*e, "engine"), "engine");
+    } catch (const InvalidInputError& error) {
+      in.fail(*e, error.what());
+    }
+  }
+  if (const auto m = YamlReader::get(root, "mode")) {
+    const std::string mode = in.string(*m, "mode");
+    if (mode == "force") {
+      scene.engine.mode = ContactMode::kForce;
+    } else if (mode == "constraint") {
+      scene.engine.mode = ContactMode::kConstraint;
+    } else {
+      in.fail(*m, "mode: '" + mode + "' (expected force or constraint)");
+    }
+  }
+  scene.engine.step_seconds = in.number(root, "dt", scene.engine.step_seconds);
+  if (!(scene.engine.step_seconds > 0.0)) in.fail(root["dt"], "dt: must be > 0 s");
+  scene.engine.solver_iterations = static_cast<int>(in.integer(root, "solver_iterations", 50));
+  if (scene.engine.solver_iterations <= 0) in.fail(root["solver_iterations"], "solver_iterations: must be > 0");
+  scene.duration_seconds = in.number(in.require(root, "duration"), "duration");
+  if (!(scene.duration_seconds > 0.0)) in.fail(root["duration"], "duration: must be > 0 s");
+
+  const std::filesystem::path dir = path.parent_path();
+  const YAML::Node terrain = in.require(root, "terrain");
+  TerrainBuilder builder;
+  if (terrain.IsScalar()) {
+    addTerrainFile(builder, dir / in.string(terrain, "terrain"));
+  } else {
+    detail::addTerrainNode(builder, in.with("terrain: "), terrain);
+  }
+  if (builder.pieceCount() == 0) in.fail(terrain, "terrain: no pieces");
+  scene.terrain = std::make_shared<const Terrain>(std::move(builder).build());
+
+  const YAML::Node v = in.require(root, "vehicle");
+  if (v.IsScalar()) {
+    scene.vehicle = loadVehicle(dir / in.string(v, "vehicle"));
+  } else {
+    in.requireMap(v, "vehicle");
+    in.checkKeys(v, {"file", "translation", "rotation"});
+    scene.vehicle = loadVehicle(dir / in.string(in.require(v, "file"), "vehicle.file"));
+    scene.placement = in.with("vehicle: ").pose(v);
+  }
+
+  readEffects(in, YamlReader::get(root, "effects").value_or(YAML::Load("[full]")), scene);
+  readController(in, in.require(root, "controller"), scene);
+
+  if (const auto o = YamlReader::get(root, "output")) {
+    in.requireMap(*o, "output");
+    in.checkKeys(*o, {"rate_hz", "plots"});
+    scene.output.rate_hz = in.number(*o, "rate_hz", scene.output.rate_hz);
+    if (!(scene.output.rate_hz > 0.0)) in.fail((*o)["rate_hz"], "output.rate_hz: must be > 0");
+    scene.output.plots = in.boolean(*o, "plots", scene.output.plots);
+  }
+  if (const auto s = YamlReader::get(root, "success")) {
+    in.requireMap(*s, "success");
+    in.checkKeys(*s, {"min_distance", "max_distance", "max_tilt_deg"});
+    if (const auto d = YamlReader::get(*s, "min_distance")) scene.success.min_distance = in.number(*d, "min_distance");
+    if (const auto d = YamlReader::get(*s, "max_distance")) scene.success.max_distance = in.number(*d, "max_distance");
+    scene.success.max_tilt_deg = in.number(*s, "max_tilt_deg", scene.success.max_tilt_deg);
+  }
+  return scene;
+}
+
+}  // namespace wtc::io

@@ -1,0 +1,95 @@
+#include "wtc/sim/recorder.hpp"
+
+#include <algorithm>
+
+#include "wtc/error.hpp"
+
+namespace wtc::sim {
+namespace {
+
+std::ofstream open(const std::filesystem::path& path) {
+  std::ofstream out(path);
+  if (!out) throw InvalidInputError("wtc::sim::Recorder: cannot write " + path.string());
+  out.precision(9);
+  return out;
+}
+
+void endRow(std::ofstream& out) {
+  out << '\n';
+  out.flush();  // a killed run keeps every complete row
+}
+
+}  // namespace
+
+Recorder::Recorder(const std::filesystem::path& dir, const Run& run)
+    : actuated_(run.engine().vehicle().actuated()), wheel_bodies_(run.engine().vehicle().wheels()) {
+  const vehicle::VehicleDescription& v = run.engine().vehicle();
+  bodies_ = open(dir / "bodies.csv");
+  drives_ = open(dir / "drives.csv");
+  wheels_ = open(dir / "wheels.csv");
+  bodies_ << "t_s";
+  for (const vehicle::Body& b : v.bodies) {
+    for (const char* c : {"x_m", "y_m", "z_m", "qw", "qx", "qy", "qz", "vx_mps", "vy_mps", "vz_mps", "wx_radps",
+                          "wy_radps", "wz_radps"}) {
+      bodies_ << ',' << b.name << '.' << c;
+    }
+  }
+  endRow(bodies_);
+  drives_ << "t_s";
+  for (const int i : actuated_) {
+    for (const char* c : {"position", "rate", "command", "target_rate", "effort", "saturated"}) {
+      drives_ << ',' << v.bodies[i].name << '.' << c;
+    }
+  }
+  endRow(drives_);
+  wheels_ << "t_s";
+  for (const int i : wheel_bodies_) {
+    for (const char* c : {"contacts", "fx_N", "fy_N", "fz_N", "max_slip"})
+      wheels_ << ',' << v.bodies[i].name << '.' << c;
+  }
+  endRow(wheels_);
+  if (v.hitch) {
+    hitch_ = open(dir / "hitch.csv");
+    hitch_ << "t_s,dx_m,dy_m,dz_m,px_N,py_N,pz_N";
+    endRow(hitch_);
+  }
+}
+
+void Recorder::record(const Run& run) {
+  const vehicle::VehicleState& s = run.state();
+  bodies_ << s.time;
+  for (const vehicle::BodyKinematics& k : s.bodies) {
+    const Eigen::Quaterniond q(k.pose.linear());
+    const Eigen::Vector3d& p = k.pose.translation();
+    bodies_ << ',' << p.x() << ',' << p.y() << ',' << p.z() << ',' << q.w() << ',' << q.x() << ',' << q.y() << ','
+            << q.z();
+    for (const Eigen::Vector3d* v : {&k.linear_velocity, &k.angular_velocity}) {
+      bodies_ << ',' << v->x() << ',' << v->y() << ',' << v->z();
+    }
+  }
+  endRow(bodies_);
+  drives_ << s.time;
+  for (const int i : actuated_) {
+    const vehicle::DriveReport& d = run.drives()[i];
+    drives_ << ',' << s.joint_position[i] << ',' << s.joint_rate[i] << ',' << run.commands()[i].value << ','
+            << run.targets()[i].rate << ',' << d.last_effort << ',' << (d.last_saturated ? 1 : 0);
+  }
+  endRow(drives_);
+  wheels_ << s.time;
+  for (const int i : wheel_bodies_) {
+    const WheelForces& f = run.engine().wheelForces(i);
+    double slip = 0.0;
+    for (const ContactForce& c : f.contacts) slip = std::max(slip, c.slip_ratio);
+    wheels_ << ',' << f.contacts.size() << ',' << f.force.x() << ',' << f.force.y() << ',' << f.force.z() << ','
+            << slip;
+  }
+  endRow(wheels_);
+  if (run.hitch() && hitch_.is_open()) {
+    const vehicle::HitchForce& h = *run.hitch();
+    hitch_ << s.time << ',' << h.deflection.x() << ',' << h.deflection.y() << ',' << h.deflection.z() << ','
+           << h.force_local.x() << ',' << h.force_local.y() << ',' << h.force_local.z();
+    endRow(hitch_);
+  }
+}
+
+}  // namespace wtc::sim

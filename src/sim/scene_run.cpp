@@ -1,0 +1,117 @@
+#include "wtc/sim/scene_run.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "wtc/sim/recorder.hpp"
+#include "wtc/sim/run.hpp"
+
+namespace wtc::sim {
+namespace {
+
+constexpr double kDegPerRad = 180.0 / std::numbers::pi;
+// The bounds on a joint's error through a scene (warned above).
+constexpr double kJointGapWarnM = 1e-3;
+constexpr double kJointAngleWarnRad = 0.1 / kDegPerRad;
+
+double tiltRad(const Eigen::Isometry3d& pose) { return std::acos(std::clamp(pose.linear().col(2).z(), -1.0, 1.0)); }
+double yawRad(const Eigen::Isometry3d& pose) { return std::atan2(pose.linear()(1, 0), pose.linear()(0, 0)); }
+
+std::string mmOrDeg(double v, int digits) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.*f", digits, v);
+  return text;
+}
+
+}  // namespace
+
+RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& options) {
+  RunSummary summary;
+  summary.scene = scene.name;
+  summary.engine = std::string(engineName(scene.engine.kind));
+  summary.mode = scene.engine.mode == ContactMode::kForce ? "force" : "constraint";
+  summary.dt = scene.engine.step_seconds;
+  summary.parameters = scene.parameters;
+
+  const std::unique_ptr<vehicle::Controller> controller = scene.make_controller();
+  Run run(engine, controller.get(), scene.vehicle_effects);
+  std::optional<Recorder> recorder;
+  if (options.out_dir) recorder.emplace(*options.out_dir, run);
+  const vehicle::VehicleDescription& v = scene.vehicle;
+  const auto steps = static_cast<std::uint64_t>(std::llround(scene.duration_seconds / summary.dt));
+  const auto every = std::max<std::uint64_t>(1, std::llround(1.0 / (scene.output.rate_hz * summary.dt)));
+  const std::uint64_t progress_every = std::max<std::uint64_t>(1, steps / 100);
+  const Eigen::Isometry3d start = run.state().bodies.front().pose;
+  double max_tilt = 0.0, yaw_change = 0.0, last_yaw = yawRad(start);
+
+  const auto t0 = std::chrono::steady_clock::now();
+  if (recorder) recorder->record(run);
+  while (run.steps() < steps) {
+    if (options.stop != nullptr && options.stop->load()) break;
+    run.step();
+    if (run.nonFinite()) break;
+    const Eigen::Isometry3d& pose = run.state().bodies.front().pose;
+    for (std::size_t i = 0; i < v.bodies.size(); ++i) {
+      if (v.bodies[i].parent < 0) max_tilt = std::max(max_tilt, tiltRad(run.state().bodies[i].pose));
+    }
+    // Yaw unwrapped step by step (a turn in place may pass +-pi).
+    const double yaw = yawRad(pose);
+    yaw_change += std::remainder(yaw - last_yaw, 2.0 * std::numbers::pi);
+    last_yaw = yaw;
+    if (recorder && run.steps() % every == 0) recorder->record(run);
+    if (options.progress && run.steps() % progress_every == 0) {
+      options.progress(static_cast<double>(run.steps()) / static_cast<double>(steps));
+    }
+  }
+  summary.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  summary.steps = run.steps();
+  summary.sim_time = run.time();
+  summary.real_time_factor = summary.wall_time > 0.0 ? summary.sim_time / summary.wall_time : 0.0;
+  summary.nan = run.nonFinite();
+  summary.interrupted = run.steps() < steps;
+  summary.max_penetration = run.maxDeflection();
+  summary.max_joint_gap = run.maxJointError().distance;
+  summary.max_joint_angle = run.maxJointError().angle;
+  for (const int b : v.actuated()) {
+    const vehicle::DriveReport& d = run.drives()[b];
+    summary.drives.push_back({.name = v.bodies[b].name,
+                              .steps = d.steps,
+                              .saturated_steps = d.saturated_steps,
+                              .peak_effort = d.peak_effort});
+    summary.saturation_steps += d.saturated_steps;
+    if (d.saturated_steps > 0) {
+      summary.warnings.push_back("drive " + v.bodies[b].name + " saturated in " + std::to_string(d.saturated_steps) +
+                                 " of " + std::to_string(d.steps) + " steps");
+    }
+  }
+  for (const int w : v.wheels()) {
+    const std::uint64_t unstable = engine.wheelState(w).unstableSteps();
+    if (unstable > 0) {
+      summary.warnings.push_back("wheel " + v.bodies[w].name + ": tyre spring beyond its explicit stability limit in " +
+                                 std::to_string(unstable) + " steps (reduce dt or use constraint mode)");
+    }
+  }
+  if (summary.max_joint_gap > kJointGapWarnM || summary.max_joint_angle > kJointAngleWarnRad) {
+    summary.warnings.push_back("joints came apart by up to " + mmOrDeg(summary.max_joint_gap * 1e3, 3) + " mm and " +
+                               mmOrDeg(summary.max_joint_angle * kDegPerRad, 3) + " deg (bound: 1 mm, 0.1 deg)");
+  }
+  if (summary.nan) summary.warnings.push_back("a body state went non-finite at t = " + mmOrDeg(run.time(), 4) + " s");
+
+  const vehicle::BodyKinematics& end = run.state().bodies.front();
+  const double distance = (end.pose.translation() - start.translation()).head<2>().norm();
+  summary.fields["distance_m"] = distance;
+  summary.fields["final_speed_mps"] = end.linear_velocity.head<2>().norm();
+  summary.fields["yaw_change_deg"] = yaw_change * kDegPerRad;
+  summary.fields["max_tilt_deg"] = max_tilt * kDegPerRad;
+  const SuccessCriteria& c = scene.success;
+  summary.success = !summary.nan && !summary.interrupted && max_tilt * kDegPerRad <= c.max_tilt_deg &&
+                    (!c.min_distance || distance >= *c.min_distance) &&
+                    (!c.max_distance || distance <= *c.max_distance);
+  return summary;
+}
+
+}  // namespace wtc::sim
