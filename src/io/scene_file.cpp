@@ -60,6 +60,10 @@ void applyOverride(YAML::Node& root, const Override& o, const std::string& where
     }
   }
   const std::string& last = parts.back();
+  if (node.IsScalar()) {
+    throw InvalidInputError(where + ": '" + parts[parts.size() - 2] + "' in '" + o.path +
+                            "' is below a value, not a map or list");
+  }
   if (node.IsSequence()) {
     const bool digits = std::all_of(last.begin(), last.end(), [](char c) { return c >= '0' && c <= '9'; });
     if (!digits || std::stoul(last) >= node.size()) {

@@ -1,0 +1,118 @@
+// Scene files: every shipped scene loads; overrides reach any value (lists
+// included) and parameters; bad scenes are refused before anything runs,
+// naming the file, the line, the key and the problem.
+#include "wtc/io/scene_file.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "wtc/error.hpp"
+
+namespace wtc::io {
+namespace {
+
+using ::testing::HasSubstr;
+namespace fs = std::filesystem;
+const fs::path kScenes = fs::path(WTC_SOURCE_DIR) / "scenes";
+
+std::vector<fs::path> shippedScenes() {
+  std::vector<fs::path> all;
+  for (const auto& entry : fs::directory_iterator(kScenes)) {
+    if (entry.path().extension() == ".yaml") all.push_back(entry.path());
+  }
+  std::sort(all.begin(), all.end());
+  return all;
+}
+
+// The error of loading `text` as a scene beside the shipped ones (so that
+// its relative paths resolve), with `overrides`.
+std::string errorOf(const std::string& text, std::vector<Override> overrides = {}) {
+  const fs::path path = kScenes / "wtc_scene_file_test.yaml.tmp";
+  std::ofstream(path) << text;
+  try {
+    loadScene(path, overrides);
+  } catch (const InvalidInputError& e) {
+    fs::remove(path);
+    return e.what();
+  }
+  fs::remove(path);
+  return "no error";
+}
+
+const std::string kMinimal =
+    "name: t\nduration: 1\nterrain: ../terrains/flat.yaml\nvehicle: ../vehicles/six_wheel_robot.yaml\n"
+    "controller: {type: none}\n";
+
+TEST(SceneFileTest, EveryShippedSceneLoadsAndNamesItsVehicleAndController) {
+  const auto scenes = shippedScenes();
+  ASSERT_GE(scenes.size(), 6u);
+  for (const fs::path& file : scenes) {
+    const sim::Scene scene = loadScene(file);
+    EXPECT_EQ(scene.name, file.stem().string()) << file;
+    EXPECT_GT(scene.duration_seconds, 0.0) << file;
+    EXPECT_FALSE(scene.vehicle.bodies.empty()) << file;
+    EXPECT_EQ(scene.controller_type, "schedule") << file;
+    EXPECT_NE(scene.make_controller(), nullptr) << file;
+  }
+}
+
+TEST(SceneFileTest, OverridesReachValuesListsAndParameters) {
+  const fs::path file = kScenes / "robot_straight.yaml";
+  const sim::Scene plain = loadScene(file);
+  EXPECT_EQ(plain.parameters.at("wheel_rate"), 4.0);
+  const std::vector<Override> overrides = {parseOverride("engine=ode_quick"),
+                                           parseOverride("mode=constraint"),
+                                           parseOverride("dt=0.001"),
+                                           parseOverride("wheel_rate=2.5"),
+                                           parseOverride("vehicle.translation=[1, 2, 0.5]"),
+                                           parseOverride("output.rate_hz=50")};
+  const sim::Scene s = loadScene(file, overrides);
+  EXPECT_EQ(s.engine.kind, sim::EngineKind::kOdeQuick);
+  EXPECT_EQ(s.engine.mode, ContactMode::kConstraint);
+  EXPECT_EQ(s.engine.step_seconds, 0.001);
+  EXPECT_EQ(s.parameters.at("wheel_rate"), 2.5);
+  EXPECT_EQ(s.placement.translation(), Eigen::Vector3d(1, 2, 0.5));
+  EXPECT_EQ(s.output.rate_hz, 50.0);
+  // A list element by index: the second schedule's single point.
+  const sim::Scene t =
+      loadScene(file, std::vector<Override>{parseOverride("controller.schedules.1.points.0=[0, 0.1]")});
+  vehicle::VehicleState state;
+  state.time = 0.0;
+  std::vector<vehicle::DriveCommand> commands(t.vehicle.bodies.size());
+  t.make_controller()->update(state, commands);
+  EXPECT_EQ(commands[t.vehicle.find("front_slider")].value, 0.1);
+}
+
+TEST(SceneFileTest, BadScenesAreRefusedWithFileLineKeyAndProblem) {
+  // Case: a typo in a key, at its line.
+  EXPECT_THAT(errorOf(kMinimal + "durration: 2\n"),
+              HasSubstr("wtc_scene_file_test.yaml.tmp:6:1: unknown key 'durration'"));
+  // Case: an unknown engine, a wrong type, a non-finite or impossible number.
+  EXPECT_THAT(errorOf(kMinimal + "engine: physx\n"), HasSubstr(":6:9: engine: unknown engine 'physx'"));
+  EXPECT_THAT(errorOf(kMinimal + "dt: fast\n"), HasSubstr(":6:5: dt: 'fast' is not a number"));
+  EXPECT_THAT(errorOf(kMinimal + "dt: .nan\n"), HasSubstr("dt: '.nan' is not a finite number"));
+  EXPECT_THAT(errorOf(kMinimal + "dt: -0.001\n"), HasSubstr("dt: must be > 0 s"));
+  // Case: a missing terrain file, named.
+  EXPECT_THAT(errorOf("name: t\nduration: 1\nterrain: nowhere.yaml\nvehicle: ../vehicles/six_wheel_robot.yaml\n"
+                      "controller: {type: none}\n"),
+              HasSubstr("nowhere.yaml: file not found"));
+  // Case: a controller naming a body without a drive, or an unknown type.
+  EXPECT_THAT(
+      errorOf("name: t\nduration: 1\nterrain: ../terrains/flat.yaml\nvehicle: ../vehicles/six_wheel_robot.yaml\n"
+              "controller: {type: schedule, schedules: [{drives: [middle], mode: velocity, points: [[0, 1]]}]}\n"),
+      HasSubstr("'middle' is not a driven body of vehicle 'six_wheel_robot'"));
+  EXPECT_THAT(errorOf(kMinimal + "effects: [slip_traction, warp_drive]\n"), HasSubstr("warp_drive"));
+  // Case: a parameter used but never defined.
+  EXPECT_THAT(errorOf(kMinimal + "dt: $step\n"), HasSubstr("'$step' names no parameter of the scene"));
+  // Case: overrides that cannot apply, named as overrides.
+  EXPECT_THAT(errorOf(kMinimal, {parseOverride("duration.x=1")}),
+              HasSubstr("--set duration.x=1: 'duration' in 'duration.x' is below a value"));
+  EXPECT_THAT(errorOf(kMinimal, {parseOverride("nonsense=1")}), HasSubstr("unknown key 'nonsense'"));
+  EXPECT_THROW(parseOverride("no_equals_sign"), InvalidInputError);
+}
+
+}  // namespace
+}  // namespace wtc::io
