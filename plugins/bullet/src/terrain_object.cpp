@@ -1,10 +1,52 @@
 #include "wtc/bullet/terrain_object.hpp"
 
+#include <algorithm>
+#include <cstdint>
+#include <numeric>
+
 namespace wtc::bullet {
+namespace {
+
+// Interleaves the low 16 bits of x and y (a Morton code).
+std::uint32_t interleave(std::uint32_t x, std::uint32_t y) {
+  const auto spread = [](std::uint32_t v) {
+    v &= 0xffff;
+    v = (v | (v << 8)) & 0x00ff00ff;
+    v = (v | (v << 4)) & 0x0f0f0f0f;
+    v = (v | (v << 2)) & 0x33333333;
+    return (v | (v << 1)) & 0x55555555;
+  };
+  return spread(x) | (spread(y) << 1);
+}
+
+// Piece ids with neighbours next to each other: Morton order of the
+// centres of their boxes on a 2^16 grid over the terrain's box.
+std::vector<PieceId> spatialOrder(const Terrain& terrain) {
+  const auto count = static_cast<PieceId>(terrain.pieceCount());
+  std::vector<Eigen::Vector3d> centres(count);
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (PieceId id = 0; id < count; ++id) {
+    const Aabb& box = terrain.piece(id).bounds();
+    centres[id] = 0.5 * (box.min + box.max);
+    lo = lo.cwiseMin(centres[id]);
+    hi = hi.cwiseMax(centres[id]);
+  }
+  const Eigen::Vector3d scale = (65535.0 / (hi - lo).cwiseMax(1e-9).array()).matrix();
+  std::vector<std::uint32_t> code(count);
+  for (PieceId id = 0; id < count; ++id) {
+    const Eigen::Vector3d q = (centres[id] - lo).cwiseProduct(scale);
+    code[id] = interleave(static_cast<std::uint32_t>(q.x()), static_cast<std::uint32_t>(q.y()));
+  }
+  std::vector<PieceId> order(count);
+  std::iota(order.begin(), order.end(), PieceId{0});
+  std::stable_sort(order.begin(), order.end(), [&](PieceId a, PieceId b) { return code[a] < code[b]; });
+  return order;
+}
+
+}  // namespace
 
 TerrainObject::TerrainObject(const Terrain& terrain) : terrain_(terrain) {
   const auto count = static_cast<PieceId>(terrain.pieceCount());
-  compound_ = std::make_unique<btCompoundShape>(true, count);
   hulls_.reserve(count);
   for (PieceId id = 0; id < count; ++id) {
     const ConvexPolyhedron& piece = terrain.piece(id);
@@ -17,9 +59,26 @@ TerrainObject::TerrainObject(const Terrain& terrain) : terrain_(terrain) {
     }
     hull->recalcLocalAabb();
     hull->setMargin(kTerrainMarginM);
-    const Eigen::Vector3d& o = piece.origin();
-    compound_->addChildShape(btTransform(btQuaternion::getIdentity(), btVector3(o.x(), o.y(), o.z())), hull.get());
     hulls_.push_back(std::move(hull));
+  }
+  const auto origin = [&](PieceId id) {
+    const Eigen::Vector3d& o = terrain.piece(id).origin();
+    return btTransform(btQuaternion::getIdentity(), btVector3(o.x(), o.y(), o.z()));
+  };
+  if (count <= kPiecesPerGroup) {
+    compound_ = std::make_unique<btCompoundShape>(true, count);
+    for (PieceId id = 0; id < count; ++id) compound_->addChildShape(origin(id), hulls_[id].get());
+  } else {
+    const std::vector<PieceId> order = spatialOrder(terrain);
+    const int group_count = static_cast<int>((order.size() + kPiecesPerGroup - 1) / kPiecesPerGroup);
+    compound_ = std::make_unique<btCompoundShape>(true, group_count);
+    for (std::size_t first = 0; first < order.size(); first += kPiecesPerGroup) {
+      const std::size_t end = std::min(order.size(), first + kPiecesPerGroup);
+      auto group = std::make_unique<btCompoundShape>(true, static_cast<int>(end - first));
+      for (std::size_t k = first; k < end; ++k) group->addChildShape(origin(order[k]), hulls_[order[k]].get());
+      compound_->addChildShape(btTransform::getIdentity(), group.get());
+      groups_.push_back(std::move(group));
+    }
   }
   object_.setCollisionShape(compound_.get());
   object_.setCollisionFlags(object_.getCollisionFlags() | btCollisionObject::CF_STATIC_OBJECT);

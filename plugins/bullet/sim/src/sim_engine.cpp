@@ -23,6 +23,11 @@ using vehicle::Body;
 using vehicle::JointType;
 using vehicle::Shape;
 
+// The solver stops iterating once the squared velocity errors of its rows
+// sum below this ((m/s)^2): about 1e-5 m/s per row, far below what a joint
+// or a motor needs; the remaining iterations would only spend time.
+constexpr double kSolverResidualM2ps2 = 1e-10;
+
 btVector3 toBt(const Eigen::Ref<const Eigen::Vector3d>& v) { return {v.x(), v.y(), v.z()}; }
 Eigen::Vector3d toEigen(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
 btQuaternion toBtRotation(const Eigen::Matrix3d& r) {
@@ -88,6 +93,7 @@ class SimEngine final : public sim::Engine {
       : sim::Engine(settings, v), refs_(v.bodies.size()) {
     world_.setGravity(btVector3(0, 0, -kGravityMps2));
     world_.getSolverInfo().m_numIterations = settings.solver_iterations;
+    world_.getSolverInfo().m_leastSquaresResidualThreshold = kSolverResidualM2ps2;
     buildTrees(placement);
     plugin_ = std::make_unique<Plugin>(world_, terrain, settings.mode);
     plugin_->terrainObject().setFriction(1.0);  // combined friction = product: the bodies' own decides
@@ -134,7 +140,10 @@ class SimEngine final : public sim::Engine {
   }
 
   // One internal step of exactly h (maxSubSteps = 0: Bullet's variable step).
-  void step() override { world_.stepSimulation(settings().step_seconds, 0, settings().step_seconds); }
+  void step() override {
+    world_.stepSimulation(settings().step_seconds, 0, settings().step_seconds);
+    for (LinkVelocities& v : velocities_) v.valid = false;
+  }
 
   vehicle::BodyKinematics body(int body) const override {
     const Ref& r = refs_.at(body);
@@ -149,11 +158,9 @@ class SimEngine final : public sim::Engine {
     }
     k.pose.translation() = toEigen(mb.localPosToWorld(r.link, btVector3(0, 0, 0)));
     k.pose.linear() = toEigen(mb.localFrameToWorld(r.link, btMatrix3x3::getIdentity()));
-    omega_.resize(mb.getNumLinks() + 1);
-    velocity_.resize(mb.getNumLinks() + 1);
-    mb.compTreeLinkVelocities(&omega_[0], &velocity_[0]);  // index 0 the base, i + 1 link i; link frames
-    k.linear_velocity = toEigen(mb.localDirToWorld(r.link, velocity_[r.link + 1]));
-    k.angular_velocity = toEigen(mb.localDirToWorld(r.link, omega_[r.link + 1]));
+    const LinkVelocities& v = linkVelocities(r.tree);
+    k.linear_velocity = toEigen(mb.localDirToWorld(r.link, v.linear[r.link + 1]));
+    k.angular_velocity = toEigen(mb.localDirToWorld(r.link, v.angular[r.link + 1]));
     return k;
   }
 
@@ -175,8 +182,27 @@ class SimEngine final : public sim::Engine {
   void setWheelListener(WheelListener* listener) override { plugin_->setListener(listener); }
 
  private:
+  // A tree's link velocities in link frames (index 0 the base, i + 1 link
+  // i), computed once per step for all its links.
+  struct LinkVelocities {
+    btAlignedObjectArray<btVector3> angular, linear;
+    bool valid = false;
+  };
+  const LinkVelocities& linkVelocities(int tree) const {
+    LinkVelocities& v = velocities_[tree];
+    if (!v.valid) {
+      const btMultiBody& mb = *trees_[tree];
+      v.angular.resize(mb.getNumLinks() + 1);
+      v.linear.resize(mb.getNumLinks() + 1);
+      mb.compTreeLinkVelocities(&v.angular[0], &v.linear[0]);
+      v.valid = true;
+    }
+    return v;
+  }
+
   struct Ref {
     btMultiBody* multibody = nullptr;
+    int tree = -1;  // index in trees_
     int link = -1;  // -1: the tree's base
     btMultiBodyJointMotor* motor = nullptr;
     WheelId wheel = -1;
@@ -207,6 +233,7 @@ class SimEngine final : public sim::Engine {
       const Body& b = bodies[i];
       if (b.parent >= 0) {
         refs_[i].multibody = refs_[root_of[i]].multibody;
+        refs_[i].tree = refs_[root_of[i]].tree;
         setupLink(static_cast<int>(i));
         continue;
       }
@@ -219,8 +246,10 @@ class SimEngine final : public sim::Engine {
       mb->setBasePos(toBt(pose.translation()));
       mb->setWorldToBaseRot(toBtRotation(Eigen::Matrix3d(pose.linear().transpose())));
       refs_[i].multibody = mb.get();
+      refs_[i].tree = static_cast<int>(trees_.size());
       trees_.push_back(std::move(mb));
     }
+    velocities_.resize(trees_.size());
     for (auto& mb : trees_) {
       mb->finalizeMultiDof();
       mb->setHasSelfCollision(false);
@@ -308,7 +337,7 @@ class SimEngine final : public sim::Engine {
   std::vector<std::unique_ptr<btMultiBodyConstraint>> constraints_;
   std::vector<Ref> refs_;
   std::unique_ptr<Plugin> plugin_;
-  mutable btAlignedObjectArray<btVector3> omega_, velocity_;  // scratch for link velocities
+  mutable std::vector<LinkVelocities> velocities_;  // per tree
 };
 
 }  // namespace

@@ -1,0 +1,66 @@
+// wtc_bench_sim: the cost of one step of a whole vehicle (wtc::sim::Run:
+// controller, drives, engine, sensors) in each engine, against the same
+// vehicle's contact-free floor measured in the same run.
+//
+//   robot_rough/<engine>/<mode>: scenes/robot_rough.yaml at 0.4 ms, driving
+//     over the rough ground (the speed case);
+//   robot_floor/<engine>: the same vehicle and commands, placed 1 km away
+//     from any ground: everything but contacts.
+//
+// Counters: us_per_step (wall time per step) and real_time_factor
+// (h / wall time per step). Usage:
+//   build/bench/wtc_bench_sim --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
+#include <benchmark/benchmark.h>
+
+#include <filesystem>
+#include <memory>
+
+#include "wtc/io/scene_file.hpp"
+#include "wtc/sim/make_engine.hpp"
+#include "wtc/sim/run.hpp"
+
+namespace {
+
+constexpr double kWarmupSeconds = 1.5;  // the robot settles and reaches its speed first
+
+const std::filesystem::path kScene = std::filesystem::path(WTC_SOURCE_DIR) / "scenes/robot_rough.yaml";
+
+void stepScene(benchmark::State& state, const char* engine, const char* mode, bool floor) {
+  std::vector<wtc::io::Override> overrides = {{"engine", engine}, {"mode", mode}};
+  if (floor) overrides.push_back({"vehicle.translation", "[1000, 0, 0]"});
+  const wtc::sim::Scene scene = wtc::io::loadScene(kScene, overrides);
+  const auto e = wtc::sim::makeEngine(scene.engine, *scene.terrain, scene.vehicle, scene.placement);
+  const std::unique_ptr<wtc::vehicle::Controller> controller = scene.make_controller();
+  wtc::sim::Run run(*e, controller.get(), scene.vehicle_effects);
+  // The floor falls freely: it warms up the same number of steps.
+  while (run.time() < kWarmupSeconds) run.step();
+  for (auto _ : state) run.step();
+  const double h = scene.engine.step_seconds;
+  state.counters["us_per_step"] = benchmark::Counter(1e-6 * static_cast<double>(state.iterations()),
+                                                     benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["real_time_factor"] =
+      benchmark::Counter(h * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["nan"] = run.nonFinite() ? 1.0 : 0.0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  for (const char* engine : {"bullet", "ode", "ode_quick"}) {
+    for (const char* mode : {"force", "constraint"}) {
+      benchmark::RegisterBenchmark((std::string("robot_rough/") + engine + "/" + mode).c_str(),
+                                   [=](benchmark::State& s) { stepScene(s, engine, mode, false); })
+          ->Unit(benchmark::kMicrosecond)
+          ->UseRealTime()
+          ->MinTime(2.0);
+    }
+    benchmark::RegisterBenchmark((std::string("robot_floor/") + engine).c_str(),
+                                 [=](benchmark::State& s) { stepScene(s, engine, "force", true); })
+        ->Unit(benchmark::kMicrosecond)
+        ->UseRealTime()
+        ->MinTime(2.0);
+  }
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+}
