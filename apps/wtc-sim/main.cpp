@@ -64,8 +64,12 @@ nlohmann::json toJson(const wtc::sim::RunSummary& s) {
                       {"parameters", s.parameters}};
   for (const auto& [key, value] : s.fields) j[key] = value;
   for (const wtc::sim::DriveSummary& d : s.drives) {
-    j["drives"][d.name] = {{"steps", d.steps}, {"saturated_steps", d.saturated_steps}, {"peak_effort", d.peak_effort}};
+    j["drives"][d.name] = {{"steps", d.steps},
+                           {"saturated_steps", d.saturated_steps},
+                           {"peak_effort", d.peak_effort},
+                           {"mean_effort", d.mean_effort}};
   }
+  for (const auto& [name, slip] : s.wheel_peak_slip) j["wheels"][name]["peak_slip"] = slip;
   return j;
 }
 

@@ -9,6 +9,7 @@
 #include "terrain_node.hpp"
 #include "wtc/error.hpp"
 #include "wtc/io/vehicle_file.hpp"
+#include "wtc/vehicle/path_controller.hpp"
 #include "wtc/vehicle/schedule_controller.hpp"
 #include "yaml_reader.hpp"
 
@@ -148,8 +149,66 @@ void readController(const YamlReader& in, const YAML::Node& node, sim::Scene& sc
       return std::unique_ptr<vehicle::Controller>(
           std::make_unique<vehicle::ScheduleController>(v, schedules, "controller"));
     };
+  } else if (scene.controller_type == "path") {
+    in.checkKeys(node, {"type", "body", "left_drive", "right_drive", "lead", "x", "y", "gains", "max_tracking_error"});
+    vehicle::PathControllerParams p;
+    p.body = in.string(in.require(node, "body"), "controller.body");
+    p.left_drive = in.string(in.require(node, "left_drive"), "controller.left_drive");
+    p.right_drive = in.string(in.require(node, "right_drive"), "controller.right_drive");
+    p.lead = in.number(node, "lead", p.lead);
+    for (const auto& [key, coefficients] : {std::pair{"x", &p.x_coefficients}, std::pair{"y", &p.y_coefficients}}) {
+      const YAML::Node list = in.require(node, key);
+      if (!list.IsSequence() || list.size() == 0 || list.size() > 6) {
+        in.fail(list, std::string("controller.") + key + ": expected 1 to 6 polynomial coefficients (degree <= 5)");
+      }
+      for (std::size_t i = 0; i < list.size(); ++i) {
+        (*coefficients)[i] = in.number(list[i], std::string("controller.") + key + "[" + std::to_string(i) + "]");
+      }
+    }
+    if (const auto gains = YamlReader::get(node, "gains")) {
+      const Eigen::Vector2d k = in.vector<2>(*gains, "controller.gains");
+      p.gain_x = k.x();
+      p.gain_y = k.y();
+    }
+    p.max_tracking_error = in.number(node, "max_tracking_error", p.max_tracking_error);
+    try {
+      vehicle::PathController check(scene.vehicle, p, "controller");
+    } catch (const InvalidInputError& e) {
+      in.fail(node, e.what());
+    }
+    scene.make_controller = [p, v = scene.vehicle] {
+      return std::unique_ptr<vehicle::Controller>(std::make_unique<vehicle::PathController>(v, p, "controller"));
+    };
   } else {
-    in.fail(node["type"], "controller.type: '" + scene.controller_type + "' (expected none or schedule)");
+    in.fail(node["type"], "controller.type: '" + scene.controller_type + "' (expected none, schedule or path)");
+  }
+}
+
+// `cases: {name: {value: {derived: number, ...}, ...}}`: the value of the
+// parameter `name` picks a set of further parameters (a friction case
+// picks its coefficients).
+void applyCases(const YamlReader& in, const YAML::Node& cases, std::map<std::string, double>& parameters) {
+  in.requireMap(cases, "cases");
+  for (const auto& entry : cases) {
+    const std::string name = entry.first.Scalar();
+    const auto chosen = parameters.find(name);
+    if (chosen == parameters.end()) in.fail(entry.first, "cases: '" + name + "' is not a parameter of the scene");
+    in.requireMap(entry.second, ("cases." + name).c_str());
+    bool found = false;
+    std::string known;
+    for (const auto& option : entry.second) {
+      const double value = in.number(option.first, "cases." + name + " key");
+      known += (known.empty() ? "" : ", ") + option.first.Scalar();
+      if (value != chosen->second) continue;
+      found = true;
+      in.requireMap(option.second, ("cases." + name + "." + option.first.Scalar()).c_str());
+      for (const auto& derived : option.second) {
+        parameters[derived.first.Scalar()] = in.number(derived.second, "cases." + name + "." + derived.first.Scalar());
+      }
+    }
+    if (!found) {
+      in.fail(entry.second, "cases." + name + ": no case " + formatNumber(chosen->second) + " (known: " + known + ")");
+    }
   }
 }
 
@@ -193,7 +252,7 @@ sim::Scene loadScene(const std::filesystem::path& path, std::span<const Override
   in.requireMap(root, "scene file");
   for (const Override& o : overrides) applyOverride(root, o, "--set " + o.path + "=" + o.value);
   in.checkKeys(root, {"name", "description", "parameters", "engine", "mode", "dt", "duration", "solver_iterations",
-                      "terrain", "vehicle", "effects", "controller", "output", "success"});
+                      "terrain", "vehicle", "effects", "controller", "output", "success", "cases"});
 
   sim::Scene scene;
   scene.source = path.string();
@@ -203,6 +262,7 @@ sim::Scene loadScene(const std::filesystem::path& path, std::span<const Override
       scene.parameters[entry.first.Scalar()] = in.number(entry.second, "parameters." + entry.first.Scalar());
     }
   }
+  if (const auto cases = YamlReader::get(root, "cases")) applyCases(in, *cases, scene.parameters);
   substitute(in, root, scene.parameters);
 
   scene.name = in.string(in.require(root, "name"), "name");

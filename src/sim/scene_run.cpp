@@ -47,6 +47,10 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
   const Eigen::Isometry3d start = run.state().bodies.front().pose;
   double max_tilt = 0.0, yaw_change = 0.0, last_yaw = yawRad(start);
 
+  std::vector<double> effort_sum(v.bodies.size(), 0.0);
+  std::vector<double> peak_slip(v.bodies.size(), 0.0);
+  const std::vector<int> wheels = v.wheels();
+  double hitch_peak = 0.0, hitch_sum_x = 0.0;
   const auto t0 = std::chrono::steady_clock::now();
   if (recorder) recorder->record(run);
   while (run.steps() < steps) {
@@ -61,6 +65,15 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
     const double yaw = yawRad(pose);
     yaw_change += std::remainder(yaw - last_yaw, 2.0 * std::numbers::pi);
     last_yaw = yaw;
+    for (const int b : v.actuated()) effort_sum[b] += std::abs(run.drives()[b].last_effort);
+    for (const int w : wheels) {
+      for (const ContactForce& c : engine.wheelForces(w).contacts) peak_slip[w] = std::max(peak_slip[w], c.slip_ratio);
+    }
+    if (run.hitch()) {
+      // P on the towed body in the tug's horizontal axes: x > 0 when pulling.
+      hitch_peak = std::max(hitch_peak, run.hitch()->force_local.head<2>().norm());
+      hitch_sum_x += run.hitch()->force_local.x();
+    }
     if (recorder && run.steps() % every == 0) recorder->record(run);
     if (options.progress && run.steps() % progress_every == 0) {
       options.progress(static_cast<double>(run.steps()) / static_cast<double>(steps));
@@ -81,7 +94,8 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
     summary.drives.push_back({.name = v.bodies[b].name,
                               .steps = d.steps,
                               .saturated_steps = d.saturated_steps,
-                              .peak_effort = d.peak_effort});
+                              .peak_effort = d.peak_effort,
+                              .mean_effort = d.steps > 0 ? effort_sum[b] / static_cast<double>(d.steps) : 0.0});
     summary.saturation_steps += d.saturated_steps;
     if (d.saturated_steps > 0) {
       summary.warnings.push_back("drive " + v.bodies[b].name + " saturated in " + std::to_string(d.saturated_steps) +
@@ -107,9 +121,17 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
   summary.fields["final_speed_mps"] = end.linear_velocity.head<2>().norm();
   summary.fields["yaw_change_deg"] = yaw_change * kDegPerRad;
   summary.fields["max_tilt_deg"] = max_tilt * kDegPerRad;
+  for (const int w : wheels) summary.wheel_peak_slip[v.bodies[w].name] = peak_slip[w];
+  if (v.hitch && run.steps() > 0) {
+    summary.fields["hitch_force_peak_N"] = hitch_peak;
+    summary.fields["hitch_force_mean_x_N"] = hitch_sum_x / static_cast<double>(run.steps());
+  }
+  const bool controller_failed = controller && controller->failed();
+  if (controller) controller->summarize(summary.fields);
+  if (controller_failed) summary.warnings.push_back("controller: " + controller->failure());
   const SuccessCriteria& c = scene.success;
-  summary.success = !summary.nan && !summary.interrupted && max_tilt * kDegPerRad <= c.max_tilt_deg &&
-                    (!c.min_distance || distance >= *c.min_distance) &&
+  summary.success = !summary.nan && !summary.interrupted && !controller_failed &&
+                    max_tilt * kDegPerRad <= c.max_tilt_deg && (!c.min_distance || distance >= *c.min_distance) &&
                     (!c.max_distance || distance <= *c.max_distance);
   return summary;
 }

@@ -10,6 +10,7 @@
 #include <fstream>
 
 #include "wtc/error.hpp"
+#include "wtc/traction_law.hpp"
 
 namespace wtc::io {
 namespace {
@@ -54,7 +55,7 @@ TEST(SceneFileTest, EveryShippedSceneLoadsAndNamesItsVehicleAndController) {
     EXPECT_EQ(scene.name, file.stem().string()) << file;
     EXPECT_GT(scene.duration_seconds, 0.0) << file;
     EXPECT_FALSE(scene.vehicle.bodies.empty()) << file;
-    EXPECT_EQ(scene.controller_type, "schedule") << file;
+    EXPECT_THAT(scene.controller_type, ::testing::AnyOf("schedule", "path")) << file;
     EXPECT_NE(scene.make_controller(), nullptr) << file;
   }
 }
@@ -86,6 +87,18 @@ TEST(SceneFileTest, OverridesReachValuesListsAndParameters) {
   EXPECT_EQ(commands[t.vehicle.find("front_slider")].value, 0.1);
 }
 
+// A case parameter picks derived parameters; a material given its static
+// coefficient (mu_peak) gets the s2 whose peak it is (the spec's mapping).
+TEST(SceneFileTest, CasesPickParametersAndMuPeakSetsS2) {
+  for (const auto& [which, dynamic, peak] : {std::tuple{"1", 0.45, 0.75}, {"2", 0.30, 0.50}, {"3", 0.21, 0.35}}) {
+    const sim::Scene s = loadScene(kScenes / "towed_incline.yaml", std::vector<Override>{{"friction_case", which}});
+    const Material& m = s.terrain->material(0);
+    EXPECT_EQ(m.mu_max, dynamic) << which;
+    EXPECT_NEAR(tractionPeak(m), peak, 1e-9) << which;
+    EXPECT_NEAR(m.s2, 4.44, 0.01) << which;  // the spec's s2 for a static/dynamic ratio of 5/3
+  }
+}
+
 TEST(SceneFileTest, BadScenesAreRefusedWithFileLineKeyAndProblem) {
   // Case: a typo in a key, at its line.
   EXPECT_THAT(errorOf(kMinimal + "durration: 2\n"),
@@ -112,6 +125,21 @@ TEST(SceneFileTest, BadScenesAreRefusedWithFileLineKeyAndProblem) {
               HasSubstr("--set duration.x=1: 'duration' in 'duration.x' is below a value"));
   EXPECT_THAT(errorOf(kMinimal, {parseOverride("nonsense=1")}), HasSubstr("unknown key 'nonsense'"));
   EXPECT_THROW(parseOverride("no_equals_sign"), InvalidInputError);
+  // Case: a case that does not exist, named with the known ones.
+  EXPECT_THAT(errorOf(kMinimal + "parameters: {pick: 4}\ncases: {pick: {1: {a: 1}, 2: {a: 2}}}\n"),
+              HasSubstr("cases.pick: no case 4 (known: 1, 2)"));
+  // Case: a path controller with a wheel that is not driven, or C behind the axle.
+  const std::string towed =
+      "name: t\nduration: 1\nterrain: ../terrains/flat.yaml\nvehicle: ../vehicles/towed_system.yaml\n";
+  EXPECT_THAT(errorOf(towed + "controller: {type: path, body: tug, left_drive: nose_wheel, right_drive: "
+                              "tug_right_wheel, x: [0], y: [0]}\n"),
+              HasSubstr("left_drive 'nose_wheel' is not a driven wheel"));
+  EXPECT_THAT(errorOf(towed + "controller: {type: path, body: tug, left_drive: tug_left_wheel, right_drive: "
+                              "tug_right_wheel, lead: -1, x: [0], y: [0]}\n"),
+              HasSubstr("lead -1 m must be > 0"));
+  EXPECT_THAT(errorOf(towed + "controller: {type: path, body: tug, left_drive: tug_left_wheel, right_drive: "
+                              "tug_right_wheel, x: [0, 1, 2, 3, 4, 5, 6], y: [0]}\n"),
+              HasSubstr("expected 1 to 6 polynomial coefficients"));
 }
 
 }  // namespace

@@ -26,6 +26,7 @@ struct DriveSummary {
   std::uint64_t steps = 0;            ///< Steps with the drive on.
   std::uint64_t saturated_steps = 0;  ///< Of those, steps at a limit.
   double peak_effort = 0.0;           ///< (N m or N).
+  double mean_effort = 0.0;           ///< Mean |effort| over the steps with the drive on (N m or N).
 };
 
 struct RunSummary {
@@ -43,8 +44,12 @@ struct RunSummary {
   std::uint64_t saturation_steps = 0;  ///< Summed over the drives.
   std::vector<DriveSummary> drives;
   std::vector<std::string> warnings;
+  /// The largest slip ratio each wheel had in contact, by wheel name.
+  std::map<std::string, double> wheel_peak_slip;
   /// The scene's own figures: distance_m (horizontal, first body),
-  /// final_speed_mps, yaw_change_deg, max_tilt_deg.
+  /// final_speed_mps, yaw_change_deg, max_tilt_deg; with a hitch,
+  /// hitch_force_peak_N (horizontal) and hitch_force_mean_x_N (along the
+  /// tug, positive pulling); and the controller's (Controller::summarize).
   std::map<std::string, double> fields;
   std::map<std::string, double> parameters;  ///< The scene's, after overrides.
 };

@@ -4,7 +4,9 @@
 // give (body poses and rates as an IMU and odometry would, joint positions
 // and rates from encoders, each wheel's contact as WTC measures it), never
 // the terrain.
+#include <map>
 #include <span>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -37,6 +39,13 @@ class Controller {
   /// The drive commands for the next step: `commands` has one entry per
   /// body (kOff for bodies without a drive), pre-filled with the last ones.
   virtual void update(const VehicleState& state, std::span<DriveCommand> commands) = 0;
+  /// The controller's own figures for the run's summary (a tracking error,
+  /// a phase reached), added to `fields` by name with units in the name.
+  virtual void summarize(std::map<std::string, double>& fields) const { (void)fields; }
+  /// True once the controller could not do its task (a path it could not
+  /// hold): the run then fails, and says why (failure()).
+  virtual bool failed() const { return false; }
+  virtual std::string failure() const { return {}; }
 };
 
 }  // namespace wtc::vehicle
