@@ -16,6 +16,10 @@ constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 // The bounds on a joint's error through a scene (warned above).
 constexpr double kJointGapWarnM = 1e-3;
 constexpr double kJointAngleWarnRad = 0.1 / kDegPerRad;
+// A wheel's peak slip ratio counts only while its centre moves at least
+// this fast (m/s): below, s = |V_s| / max(V_t, eps) is eps's figure, not
+// the tyre's.
+constexpr double kSlipSpeedFloorMps = 0.1;
 
 double tiltRad(const Eigen::Isometry3d& pose) { return std::acos(std::clamp(pose.linear().col(2).z(), -1.0, 1.0)); }
 double yawRad(const Eigen::Isometry3d& pose) { return std::atan2(pose.linear()(1, 0), pose.linear()(0, 0)); }
@@ -67,6 +71,7 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
     last_yaw = yaw;
     for (const int b : v.actuated()) effort_sum[b] += std::abs(run.drives()[b].last_effort);
     for (const int w : wheels) {
+      if (run.state().bodies[w].linear_velocity.norm() < kSlipSpeedFloorMps) continue;
       for (const ContactForce& c : engine.wheelForces(w).contacts) peak_slip[w] = std::max(peak_slip[w], c.slip_ratio);
     }
     if (run.hitch()) {

@@ -44,7 +44,8 @@ struct RunSummary {
   std::uint64_t saturation_steps = 0;  ///< Summed over the drives.
   std::vector<DriveSummary> drives;
   std::vector<std::string> warnings;
-  /// The largest slip ratio each wheel had in contact, by wheel name.
+  /// The largest slip ratio each wheel had in contact while its centre
+  /// moved at 0.1 m/s or more, by wheel name.
   std::map<std::string, double> wheel_peak_slip;
   /// The scene's own figures: distance_m (horizontal, first body),
   /// final_speed_mps, yaw_change_deg, max_tilt_deg; with a hitch,
