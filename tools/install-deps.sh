@@ -12,6 +12,7 @@ packages=(
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-matplotlib                    # wtc-sim's figures
+  libjs-three chromium-headless-shell           # the replay page (three.js) and its test (headless Chromium)
 )
 missing=()
 for p in "${packages[@]}"; do

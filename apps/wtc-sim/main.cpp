@@ -16,6 +16,7 @@
 #include "wtc/error.hpp"
 #include "wtc/io/scene_file.hpp"
 #include "wtc/sim/make_engine.hpp"
+#include "wtc/sim/replay.hpp"
 #include "wtc/sim/scene_run.hpp"
 
 namespace {
@@ -84,11 +85,27 @@ void writeJson(const fs::path& path, const nlohmann::json& j) {
   fs::rename(tmp, path);
 }
 
-// The plotting script: beside the sources in a build tree, else installed.
-fs::path plotScript() {
-  const fs::path source = fs::path(WTC_SOURCE_DIR) / "apps/wtc-sim/plot_run.py";
+// A file of wtc-sim's own (the plotting script, the replay page): beside
+// the sources in a build tree, else where it is installed.
+fs::path ownFile(const std::string& name) {
+  const fs::path source = fs::path(WTC_SOURCE_DIR) / "apps/wtc-sim" / name;
   if (fs::exists(source)) return source;
-  return fs::path(WTC_INSTALL_DATADIR) / "plot_run.py";
+  return fs::path(WTC_INSTALL_DATADIR) / name;
+}
+
+// The replay page beside the run's data, with three.js copied in so the
+// directory can be moved. Returns what went wrong, or "".
+std::string writeReplayPage(const fs::path& dir) {
+  const fs::path three = WTC_THREE_JS_DIR;
+  const fs::path files[][2] = {{ownFile("replay.html"), dir / "replay.html"},
+                               {three / "build/three.min.js", dir / "three.min.js"},
+                               {three / "examples/js/controls/OrbitControls.js", dir / "OrbitControls.js"}};
+  for (const auto& [from, to] : files) {
+    std::error_code error;
+    fs::copy_file(from, to, fs::copy_options::overwrite_existing, error);
+    if (error) return "cannot copy " + from.string() + " (is libjs-three installed?): " + error.message();
+  }
+  return {};
 }
 
 }  // namespace
@@ -143,15 +160,21 @@ int main(int argc, char** argv) {
         std::fflush(stderr);
       };
     }
+    wtc::sim::Replay replay(scene, scene.output.replay_fps);
+    options.replay = &replay;
     const wtc::sim::RunSummary summary = wtc::sim::runScene(scene, *engine_ptr, options);
     if (bar) std::fprintf(stderr, "\n");
     writeJson(dir / "summary.json", toJson(summary));
+    replay.write(dir / "replay_data.js", summary);
+    if (const std::string problem = writeReplayPage(dir); !problem.empty()) {
+      std::cerr << "wtc-sim: warning: replay page not written: " << problem << '\n';
+    }
     for (const std::string& w : summary.warnings) std::cerr << "wtc-sim: warning: " << w << '\n';
 
     std::string figures = "skipped (--no-plots)";
     if (!no_plots && scene.output.plots) {
       // The first Python on PATH, else Debian's (where python3-matplotlib puts it).
-      const std::string args = " '" + plotScript().string() + "' '" + dir.string() + "'";
+      const std::string args = " '" + ownFile("plot_run.py").string() + "' '" + dir.string() + "'";
       int rc = std::system(("python3" + args + " 2>/dev/null").c_str());
       if (rc != 0) rc = std::system(("/usr/bin/python3" + args).c_str());
       figures = rc == 0 ? "drawn" : "not drawn (python3 with matplotlib is needed; see above)";
@@ -162,7 +185,7 @@ int main(int argc, char** argv) {
       std::printf("  %.3f s simulated in %.3f s wall: %.1fx real time, %llu steps\n", summary.sim_time,
                   summary.wall_time, summary.real_time_factor, static_cast<unsigned long long>(summary.steps));
       for (const auto& [key, value] : summary.fields) std::printf("  %s: %.4g\n", key.c_str(), value);
-      std::printf("  outputs: %s (series, summary.json; figures %s)\n", dir.c_str(), figures.c_str());
+      std::printf("  outputs: %s (series, summary.json, replay.html; figures %s)\n", dir.c_str(), figures.c_str());
     }
     return summary.success ? 0 : 1;
   } catch (const std::exception& e) {

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "wtc/sim/recorder.hpp"
+#include "wtc/sim/replay.hpp"
 #include "wtc/sim/run.hpp"
 
 namespace wtc::sim {
@@ -57,6 +58,7 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
   double hitch_peak = 0.0, hitch_sum_x = 0.0;
   const auto t0 = std::chrono::steady_clock::now();
   if (recorder) recorder->record(run);
+  if (options.replay != nullptr) options.replay->observe(run);
   while (run.steps() < steps) {
     if (options.stop != nullptr && options.stop->load()) break;
     run.step();
@@ -80,6 +82,7 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
       hitch_sum_x += run.hitch()->force_local.x();
     }
     if (recorder && run.steps() % every == 0) recorder->record(run);
+    if (options.replay != nullptr) options.replay->observe(run);
     if (options.progress && run.steps() % progress_every == 0) {
       options.progress(static_cast<double>(run.steps()) / static_cast<double>(steps));
     }

@@ -14,11 +14,16 @@
 #include "wtc/sim/scene.hpp"
 
 namespace wtc::sim {
+class Replay;
+}
+
+namespace wtc::sim {
 
 struct RunOptions {
   std::optional<std::filesystem::path> out_dir;   ///< Where the CSV series go (must exist); none: no files.
   std::function<void(double fraction)> progress;  ///< Called about every 1 % of the run.
   const std::atomic<bool>* stop = nullptr;        ///< Set (by a signal handler) to end the run early.
+  Replay* replay = nullptr;                       ///< Given every step (Replay::observe), if set.
 };
 
 struct DriveSummary {

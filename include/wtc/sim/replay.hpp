@@ -1,0 +1,42 @@
+#pragma once
+// What a run's replay page draws (wtc::sim): the terrain's faces, the
+// vehicle's shapes, and frames at a fixed rate of every body's pose and
+// every wheel contact's point and force. Written as one JavaScript file
+// (`const WTC_REPLAY = {...};`) so that a page opened from disk can load
+// it with a <script> tag (browsers refuse fetch() on file:// URLs).
+//
+// Numbers are quantised to keep a long run small: positions in mm,
+// quaternions in 1e-4, forces in N, times in ms (integers). The terrain
+// leaves out faces that look straight down (nobody sees them).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "wtc/sim/run.hpp"
+#include "wtc/sim/scene.hpp"
+#include "wtc/sim/scene_run.hpp"
+
+namespace wtc::sim {
+
+class Replay {
+ public:
+  /// Frames every 1 / fps of simulated time (fps > 0).
+  Replay(const Scene& scene, double fps);
+  /// Call after every step (and once before the first): keeps a frame when
+  /// its time has come.
+  void observe(const Run& run);
+  /// Writes the data file. Throws InvalidInputError naming a path it
+  /// cannot write.
+  void write(const std::filesystem::path& path, const RunSummary& summary) const;
+  std::size_t frames() const { return times_ms_.size(); }
+
+ private:
+  const Scene& scene_;
+  double period_;
+  double next_ = 0.0;
+  std::vector<long long> times_ms_;
+  std::vector<long long> poses_;                  // per frame: per body x y z (mm) qw qx qy qz (1e-4)
+  std::vector<std::vector<long long>> contacts_;  // per frame: per contact px py pz (mm) fx fy fz (N)
+};
+
+}  // namespace wtc::sim

@@ -1,0 +1,149 @@
+#include "wtc/sim/replay.hpp"
+
+#include <cmath>
+#include <fstream>
+
+#include "wtc/error.hpp"
+
+namespace wtc::sim {
+namespace {
+
+constexpr double kMmPerM = 1000.0;
+constexpr double kQuaternionScale = 1e4;
+// Faces whose outward normal's z is below this look down: left out.
+constexpr double kDownFacingNz = -0.7;
+
+long long mm(double metres) { return std::llround(metres * kMmPerM); }
+
+std::string quoted(const std::string& s) {
+  std::string out = "\"";
+  for (const char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (static_cast<unsigned char>(c) >= 0x20) out += c;
+  }
+  return out + "\"";
+}
+
+template <typename Numbers>
+void writeArray(std::ostream& out, const Numbers& numbers) {
+  out << '[';
+  bool first = true;
+  for (const auto n : numbers) {
+    if (!first) out << ',';
+    out << n;
+    first = false;
+  }
+  out << ']';
+}
+
+void writeTerrain(std::ostream& out, const Terrain& terrain) {
+  std::vector<long long> positions;
+  std::vector<long long> indices;
+  for (PieceId id = 0; id < static_cast<PieceId>(terrain.pieceCount()); ++id) {
+    const ConvexPolyhedron& piece = terrain.piece(id);
+    const auto base = static_cast<long long>(positions.size() / 3);
+    for (int v = 0; v < piece.vertexCount(); ++v) {
+      const Eigen::Vector3d p = piece.vertex(v);
+      positions.insert(positions.end(), {mm(p.x()), mm(p.y()), mm(p.z())});
+    }
+    for (int f = 0; f < piece.faceCount(); ++f) {
+      if (piece.faceNormal(f).z() < kDownFacingNz) continue;
+      const auto face = piece.faceVertices(f);
+      for (std::size_t k = 1; k + 1 < face.size(); ++k) {  // a fan: faces are convex
+        indices.insert(indices.end(), {base + face[0], base + face[k], base + face[k + 1]});
+      }
+    }
+  }
+  out << "\"terrain\":{\"positions\":";
+  writeArray(out, positions);
+  out << ",\"indices\":";
+  writeArray(out, indices);
+  out << '}';
+}
+
+void writeBodies(std::ostream& out, const vehicle::VehicleDescription& v) {
+  out << "\"bodies\":[";
+  for (std::size_t i = 0; i < v.bodies.size(); ++i) {
+    const vehicle::Body& b = v.bodies[i];
+    out << (i ? "," : "") << "{\"name\":" << quoted(b.name);
+    if (b.wheel) {
+      const Eigen::Vector3d& a = b.wheel->axle;
+      out << ",\"kind\":\"wheel\",\"radius\":" << mm(b.wheel->geometry.free_radius)
+          << ",\"width\":" << mm(b.wheel->geometry.tread_width) << ",\"axis\":[" << a.x() << ',' << a.y() << ','
+          << a.z() << ']';
+    } else {
+      const vehicle::Shape& s = b.shape;
+      switch (s.kind) {
+        case vehicle::Shape::Kind::kBox:
+          out << ",\"kind\":\"box\",\"size\":[" << mm(s.box_size.x()) << ',' << mm(s.box_size.y()) << ','
+              << mm(s.box_size.z()) << ']';
+          break;
+        case vehicle::Shape::Kind::kCylinder: {
+          const Eigen::Vector3d a = Eigen::Vector3d::Unit(s.cylinder_axis);
+          out << ",\"kind\":\"cylinder\",\"radius\":" << mm(s.radius) << ",\"width\":" << mm(s.length)
+              << ",\"axis\":[" << a.x() << ',' << a.y() << ',' << a.z() << ']';
+          break;
+        }
+        case vehicle::Shape::Kind::kSphere: out << ",\"kind\":\"sphere\",\"radius\":" << mm(s.radius); break;
+        case vehicle::Shape::Kind::kNone: out << ",\"kind\":\"none\""; break;
+      }
+    }
+    out << '}';
+  }
+  out << ']';
+}
+
+}  // namespace
+
+Replay::Replay(const Scene& scene, double fps) : scene_(scene), period_(1.0 / fps) {
+  if (!(fps > 0.0) || !std::isfinite(fps)) {
+    throw InvalidInputError("wtc::sim::Replay: frame rate " + formatNumber(fps) + " must be finite and > 0");
+  }
+}
+
+void Replay::observe(const Run& run) {
+  if (run.time() + 1e-12 < next_) return;
+  next_ += period_;
+  times_ms_.push_back(std::llround(run.time() * 1e3));
+  for (const vehicle::BodyKinematics& k : run.state().bodies) {
+    const Eigen::Vector3d& p = k.pose.translation();
+    const Eigen::Quaterniond q(k.pose.linear());
+    poses_.insert(poses_.end(), {mm(p.x()), mm(p.y()), mm(p.z()), std::llround(q.w() * kQuaternionScale),
+                                 std::llround(q.x() * kQuaternionScale), std::llround(q.y() * kQuaternionScale),
+                                 std::llround(q.z() * kQuaternionScale)});
+  }
+  std::vector<long long>& c = contacts_.emplace_back();
+  for (const int w : scene_.vehicle.wheels()) {
+    for (const ContactForce& f : run.engine().wheelForces(w).contacts) {
+      const Eigen::Vector3d& p = f.contact.point;
+      c.insert(c.end(), {mm(p.x()), mm(p.y()), mm(p.z()), std::llround(f.force.x()), std::llround(f.force.y()),
+                         std::llround(f.force.z())});
+    }
+  }
+}
+
+void Replay::write(const std::filesystem::path& path, const RunSummary& summary) const {
+  std::ofstream out(path);
+  if (!out) throw InvalidInputError("wtc::sim::Replay: cannot write " + path.string());
+  out << "// The data of replay.html (written by wtc-sim): see include/wtc/sim/replay.hpp.\n";
+  out << "const WTC_REPLAY = {\"scene\":" << quoted(summary.scene) << ",\"engine\":" << quoted(summary.engine)
+      << ",\"mode\":" << quoted(summary.mode) << ",\"dt\":" << summary.dt
+      << ",\"real_time_factor\":" << summary.real_time_factor << ",\"success\":" << (summary.success ? "true" : "false")
+      << ",\"fps\":" << 1.0 / period_ << ',';
+  writeTerrain(out, *scene_.terrain);
+  out << ',';
+  writeBodies(out, scene_.vehicle);
+  out << ",\"times\":";
+  writeArray(out, times_ms_);
+  out << ",\"poses\":";
+  writeArray(out, poses_);
+  out << ",\"contacts\":[";
+  for (std::size_t i = 0; i < contacts_.size(); ++i) {
+    if (i) out << ',';
+    writeArray(out, contacts_[i]);
+  }
+  out << "]};\n";
+  if (!out) throw InvalidInputError("wtc::sim::Replay: writing " + path.string() + " failed");
+}
+
+}  // namespace wtc::sim
