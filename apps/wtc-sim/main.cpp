@@ -47,6 +47,7 @@ fs::path outputDirectory(const std::string& requested, const wtc::sim::RunSummar
 
 nlohmann::json toJson(const wtc::sim::RunSummary& s) {
   nlohmann::json j = {{"scene", s.scene},
+                      {"status", s.interrupted ? "interrupted" : "completed"},
                       {"engine", s.engine},
                       {"mode", s.mode},
                       {"dt", s.dt},
@@ -160,6 +161,16 @@ int main(int argc, char** argv) {
         std::fflush(stderr);
       };
     }
+    // A summary from the start: a run killed before its end (SIGKILL, a
+    // power cut) leaves one that says so; the end replaces it whole.
+    writeJson(dir / "summary.json", {{"scene", names.scene},
+                                     {"engine", names.engine},
+                                     {"mode", names.mode},
+                                     {"dt", scene.engine.step_seconds},
+                                     {"status", "running"},
+                                     {"interrupted", true},
+                                     {"success", false},
+                                     {"note", "written when the run started; a run that ends replaces it"}});
     wtc::sim::Replay replay(scene, scene.output.replay_fps);
     options.replay = &replay;
     const wtc::sim::RunSummary summary = wtc::sim::runScene(scene, *engine_ptr, options);

@@ -5,28 +5,31 @@
 #include "wtc/error.hpp"
 
 namespace wtc::sim {
+
+void detail::CsvFile::open(const std::filesystem::path& path) {
+  file_.reset(std::fopen(path.c_str(), "w"));
+  if (!file_) throw InvalidInputError("wtc::sim::Recorder: cannot write " + path.string());
+  row_.precision(9);
+}
+
+void detail::CsvFile::endRow() {
+  row_ << '\n';
+  const std::string row = row_.str();
+  std::fwrite(row.data(), 1, row.size(), file_.get());
+  std::fflush(file_.get());  // a killed run keeps every complete row
+  row_.str({});
+}
+
 namespace {
-
-std::ofstream open(const std::filesystem::path& path) {
-  std::ofstream out(path);
-  if (!out) throw InvalidInputError("wtc::sim::Recorder: cannot write " + path.string());
-  out.precision(9);
-  return out;
-}
-
-void endRow(std::ofstream& out) {
-  out << '\n';
-  out.flush();  // a killed run keeps every complete row
-}
-
+void endRow(detail::CsvFile& out) { out.endRow(); }
 }  // namespace
 
 Recorder::Recorder(const std::filesystem::path& dir, const Run& run)
     : actuated_(run.engine().vehicle().actuated()), wheel_bodies_(run.engine().vehicle().wheels()) {
   const vehicle::VehicleDescription& v = run.engine().vehicle();
-  bodies_ = open(dir / "bodies.csv");
-  drives_ = open(dir / "drives.csv");
-  wheels_ = open(dir / "wheels.csv");
+  bodies_.open(dir / "bodies.csv");
+  drives_.open(dir / "drives.csv");
+  wheels_.open(dir / "wheels.csv");
   bodies_ << "t_s";
   for (const vehicle::Body& b : v.bodies) {
     for (const char* c : {"x_m", "y_m", "z_m", "qw", "qx", "qy", "qz", "vx_mps", "vy_mps", "vz_mps", "wx_radps",
@@ -49,7 +52,7 @@ Recorder::Recorder(const std::filesystem::path& dir, const Run& run)
   }
   endRow(wheels_);
   if (v.hitch) {
-    hitch_ = open(dir / "hitch.csv");
+    hitch_.open(dir / "hitch.csv");
     hitch_ << "t_s,dx_m,dy_m,dz_m,px_N,py_N,pz_N";
     endRow(hitch_);
   }
@@ -84,7 +87,7 @@ void Recorder::record(const Run& run) {
             << slip;
   }
   endRow(wheels_);
-  if (run.hitch() && hitch_.is_open()) {
+  if (run.hitch() && hitch_.isOpen()) {
     const vehicle::HitchForce& h = *run.hitch();
     hitch_ << s.time << ',' << h.deflection.x() << ',' << h.deflection.y() << ',' << h.deflection.z() << ','
            << h.force_local.x() << ',' << h.force_local.y() << ',' << h.force_local.z();

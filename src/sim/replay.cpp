@@ -80,12 +80,16 @@ void writeBodies(std::ostream& out, const vehicle::VehicleDescription& v) {
           break;
         case vehicle::Shape::Kind::kCylinder: {
           const Eigen::Vector3d a = Eigen::Vector3d::Unit(s.cylinder_axis);
-          out << ",\"kind\":\"cylinder\",\"radius\":" << mm(s.radius) << ",\"width\":" << mm(s.length)
-              << ",\"axis\":[" << a.x() << ',' << a.y() << ',' << a.z() << ']';
+          out << ",\"kind\":\"cylinder\",\"radius\":" << mm(s.radius) << ",\"width\":" << mm(s.length) << ",\"axis\":["
+              << a.x() << ',' << a.y() << ',' << a.z() << ']';
           break;
         }
-        case vehicle::Shape::Kind::kSphere: out << ",\"kind\":\"sphere\",\"radius\":" << mm(s.radius); break;
-        case vehicle::Shape::Kind::kNone: out << ",\"kind\":\"none\""; break;
+        case vehicle::Shape::Kind::kSphere:
+          out << ",\"kind\":\"sphere\",\"radius\":" << mm(s.radius);
+          break;
+        case vehicle::Shape::Kind::kNone:
+          out << ",\"kind\":\"none\"";
+          break;
       }
     }
     out << '}';

@@ -7,14 +7,38 @@
 //   drives.csv  t, then per drive: position rate command target_rate effort saturated
 //   wheels.csv  t, then per wheel: contacts fx fy fz max_slip
 //   hitch.csv   t dx dy dz px py pz   (the towed system only)
+#include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <memory>
+#include <sstream>
 #include <vector>
 
 #include "wtc/sim/run.hpp"
 
 namespace wtc::sim {
+
+namespace detail {
+/// A CSV file written a whole row at a time: the row is composed in memory
+/// and goes out in one write, so a killed process leaves whole rows only.
+class CsvFile {
+ public:
+  void open(const std::filesystem::path& path);
+  bool isOpen() const { return file_ != nullptr; }
+  template <typename T>
+  CsvFile& operator<<(const T& value) {
+    row_ << value;
+    return *this;
+  }
+  void endRow();
+
+ private:
+  struct Close {
+    void operator()(std::FILE* f) const { std::fclose(f); }
+  };
+  std::unique_ptr<std::FILE, Close> file_;
+  std::ostringstream row_;
+};
+}  // namespace detail
 
 class Recorder {
  public:
@@ -25,7 +49,7 @@ class Recorder {
   void record(const Run& run);
 
  private:
-  std::ofstream bodies_, drives_, wheels_, hitch_;
+  detail::CsvFile bodies_, drives_, wheels_, hitch_;
   std::vector<int> actuated_, wheel_bodies_;
 };
 
