@@ -14,6 +14,7 @@
 
 #include "../builder_support.hpp"  // wtc::core's parameter checks, shared
 #include "file_support.hpp"
+#include "mesh_header_check.hpp"
 #include "wtc/error.hpp"
 
 namespace wtc::io {
@@ -84,6 +85,8 @@ MeshFileContents readMeshFile(const std::filesystem::path& path, const MeshFileO
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InvalidInputError(where(path) + "file not found");
   if (std::filesystem::is_directory(path, ec)) throw InvalidInputError(where(path) + "is a directory, not a file");
+
+  detail::checkDeclaredCounts(path);  // before assimp allocates what the header claims
 
   // Read without post-processing first, to tell a point cloud (vertices,
   // no faces: assimp's validation would only say "contains no faces") from

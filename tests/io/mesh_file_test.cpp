@@ -178,9 +178,8 @@ TEST_F(MeshFileTest, ScaleAndPosePlaceTheFile) {
 }
 
 TEST_F(MeshFileTest, RecordedBadFilesGiveErrorsWithThePath) {
-  // Files of the assimp test suite made to fail, and point clouds. Not
-  // invalid/OutOfMemory.off: its header claims 3.5e9 vertices and assimp
-  // allocates ~16 GB for 40 s before failing.
+  // Files of the assimp test suite made to fail, and point clouds
+  // (invalid/OutOfMemory.off: DeclaredCountsBeyondTheFileSizeAreRefusedBeforeAssimpReads).
   const std::pair<std::filesystem::path, const char*> cases[] = {
       {kModels / "OBJ" / "point_cloud.obj", "point cloud: 3 vertices and no faces"},
       {kModels / "PLY" / "points.ply", "point cloud: 4 vertices and no faces"},
@@ -221,6 +220,44 @@ TEST_F(MeshFileTest, BrokenFilesWrittenHereGiveErrorsWithThePath) {
     TerrainBuilder builder;
     EXPECT_THAT(errorOf([&] { addMeshFile(builder, path, builder.addMaterial({})); }),
                 AllOf(HasSubstr(path.string() + ": "), HasSubstr(expected)));
+  }
+}
+
+// Headers whose counts cannot fit in the file. Before the check assimp
+// allocated for them: ~16 GB for OutOfMemory.off (its OFF reader wraps the
+// count to 32 bits), ~6 GB for the 88-byte STL (its size test wraps too).
+TEST_F(MeshFileTest, DeclaredCountsBeyondTheFileSizeAreRefusedBeforeAssimpReads) {
+  std::string stl(80, ' ');
+  const std::uint32_t wrapping_count = 85899346;  // 84 + 50 n = 2^32 + 88, i.e. 88 in 32 bits
+  stl.append(reinterpret_cast<const char*>(&wrapping_count), 4);
+  stl.append(4, '\0');
+  const std::pair<std::filesystem::path, const char*> cases[] = {
+      {kModels / "invalid" / "OutOfMemory.off", "OFF header declares 353535235358 vertices and 6 faces"},
+      {write("huge.off", "OFF\n# comment\n1000000000 1 0\n0 0 0\n3 0 0 0\n"),
+       "OFF header declares 1000000000 vertices and 1 faces"},
+      {write("huge_n.off", "nOFF 3\n4 2000000000 0\n"), "OFF header declares 4 vertices and 2000000000 faces"},
+      {write("huge.ply",
+             "ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\nproperty float x\n"
+             "property float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+             "end_header\n"),
+       "binary PLY header declares 4000000000 'vertex', 1 'face'"},
+      {write("huge_ascii.ply",
+             "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+             "property float z\nelement face 99999999999999999999999\n"
+             "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"),
+       "ASCII PLY header declares 3 'vertex', more than 1.8e19 'face'"},
+      {write("wrapping.stl", stl), "binary STL header declares 85899346 triangles, which needs at least 4294967384"},
+  };
+  for (const auto& [path, expected] : cases) {
+    TerrainBuilder builder;
+    EXPECT_THAT(errorOf([&] { addMeshFile(builder, path, builder.addMaterial({})); }),
+                AllOf(HasSubstr(path.string() + ": "), HasSubstr(expected), HasSubstr("but the file has only")));
+  }
+  // Honest headers of each format still read.
+  for (const auto& path :
+       {kModels / "OFF" / "Cube.off", kModels / "OFF" / "Wuson.off", kModels / "PLY" / "cube.ply",
+        kModels / "PLY" / "cube_binary.ply", kModels / "PLY" / "Wuson.ply", kModels / "STL" / "Spider_binary.stl"}) {
+    EXPECT_GT(readMeshFile(path).triangleCount(), 0) << path;
   }
 }
 

@@ -13,7 +13,9 @@
 // about x.
 //
 // Errors: InvalidInputError whose message starts with the path, for a
-// missing file, a file assimp cannot read or validate (its error string is
+// missing file, an OFF, PLY or binary STL header declaring more vertices,
+// faces or triangles than the file's size can hold (checked before assimp
+// allocates for them), a file assimp cannot read or validate (its error string is
 // included), an empty scene (no meshes, or meshes without vertices), a
 // point cloud (vertices, no faces), a scene with points and lines but no
 // triangles; and from addTriangleMesh, naming the part and the triangle,

@@ -1,0 +1,191 @@
+// Declared counts of OFF, PLY and binary STL headers against the file size
+// (why: see mesh_header_check.hpp).
+#include "mesh_header_check.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "file_support.hpp"
+#include "wtc/error.hpp"
+
+namespace wtc::io::detail {
+namespace {
+
+constexpr std::uint64_t kSaturated = std::numeric_limits<std::uint64_t>::max();
+/// The head read to find a header: PLY headers with long comments fit.
+constexpr std::size_t kHeadBytes = 64 * 1024;
+
+std::uint64_t saturatingAdd(std::uint64_t a, std::uint64_t b) { return a > kSaturated - b ? kSaturated : a + b; }
+std::uint64_t saturatingMul(std::uint64_t a, std::uint64_t b) {
+  return (a != 0 && b > kSaturated / a) ? kSaturated : a * b;
+}
+
+// A decimal count as written (not wrapped to 32 bits the way assimp reads
+// it), saturating; false if `text` does not start with a digit.
+bool parseCount(std::string_view text, std::uint64_t& value) {
+  if (text.empty() || !std::isdigit(static_cast<unsigned char>(text.front()))) return false;
+  value = 0;
+  for (const char c : text) {
+    if (!std::isdigit(static_cast<unsigned char>(c))) break;
+    value = saturatingAdd(saturatingMul(value, 10), static_cast<std::uint64_t>(c - '0'));
+  }
+  return true;
+}
+
+std::string countText(std::uint64_t n) { return n == kSaturated ? "more than 1.8e19" : std::to_string(n); }
+
+// Whitespace-separated tokens of `bytes`, skipping '#' comments to the end
+// of their line (OFF's comments).
+class Tokens {
+ public:
+  explicit Tokens(std::string_view bytes) : bytes_(bytes) {}
+  std::string_view next() {
+    while (pos_ < bytes_.size()) {
+      const char c = bytes_[pos_];
+      if (c == '#') {
+        while (pos_ < bytes_.size() && bytes_[pos_] != '\n') ++pos_;
+      } else if (std::isspace(static_cast<unsigned char>(c))) {
+        ++pos_;
+      } else {
+        break;
+      }
+    }
+    const std::size_t start = pos_;
+    while (pos_ < bytes_.size() && !std::isspace(static_cast<unsigned char>(bytes_[pos_])) && bytes_[pos_] != '#') {
+      ++pos_;
+    }
+    return bytes_.substr(start, pos_ - start);
+  }
+
+ private:
+  std::string_view bytes_;
+  std::size_t pos_ = 0;
+};
+
+void refuse(const std::filesystem::path& path, const std::string& format, const std::string& declared,
+            std::uint64_t needed, std::uint64_t file_size) {
+  throw InvalidInputError(where(path) + format + " header declares " + declared + ", which needs at least " +
+                          countText(needed) + " bytes, but the file has only " + std::to_string(file_size) +
+                          " bytes (a damaged or hostile file; refused before allocating for it)");
+}
+
+// OFF keyword with assimp's optional prefixes: [ST][C][N][4][n]OFF.
+bool isOffKeyword(std::string_view token) {
+  std::size_t i = 0;
+  if (token.substr(i, 2) == "ST") i += 2;
+  if (token.substr(i, 1) == "C") ++i;
+  if (token.substr(i, 1) == "N") ++i;
+  if (token.substr(i, 1) == "4") ++i;
+  const bool dimension = token.substr(i, 1) == "n";
+  if (dimension) ++i;
+  return token.substr(i) == "OFF";
+}
+
+void checkOff(const std::filesystem::path& path, std::string_view bytes, std::uint64_t file_size) {
+  Tokens tokens(bytes);
+  const std::string_view keyword = tokens.next();
+  if (!isOffKeyword(keyword)) return;
+  if (keyword.find('n') != std::string_view::npos) tokens.next();  // nOFF: the dimension comes first
+  std::uint64_t vertices = 0, faces = 0;
+  if (!parseCount(tokens.next(), vertices) || !parseCount(tokens.next(), faces)) return;  // assimp refuses it
+  const std::uint64_t needed =
+      saturatingAdd(saturatingMul(vertices, kOffMinBytesPerVertex), saturatingMul(faces, kOffMinBytesPerFace));
+  // The last line may lack its newline: one byte of slack.
+  if (needed > saturatingAdd(file_size, 1)) {
+    refuse(path, "OFF", countText(vertices) + " vertices and " + countText(faces) + " faces", needed, file_size);
+  }
+}
+
+std::uint64_t plyTypeBytes(std::string_view type) {
+  if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
+  if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
+  if (type == "int" || type == "uint" || type == "float" || type == "int32" || type == "uint32" || type == "float32") {
+    return 4;
+  }
+  if (type == "double" || type == "float64") return 8;
+  return 0;  // unknown: assimp refuses or skips it; count it as nothing
+}
+
+void checkPly(const std::filesystem::path& path, std::string_view bytes, std::uint64_t file_size) {
+  if (bytes.substr(0, 3) != "ply") return;
+  const std::size_t end = bytes.find("end_header");
+  if (end == std::string_view::npos) return;  // header beyond the head read, or none: assimp decides
+  std::size_t body = bytes.find('\n', end);
+  body = body == std::string_view::npos ? bytes.size() : body + 1;
+  bool ascii = true;
+  struct Element {
+    std::string name;
+    std::uint64_t count = 0;
+    std::uint64_t min_bytes = 0;
+  };
+  std::vector<Element> elements;
+  std::size_t line_start = 0;
+  while (line_start < end) {
+    std::size_t line_end = bytes.find('\n', line_start);
+    if (line_end == std::string_view::npos) line_end = bytes.size();
+    Tokens tokens(bytes.substr(line_start, line_end - line_start));
+    line_start = line_end + 1;
+    const std::string_view word = tokens.next();
+    if (word == "format") {
+      ascii = tokens.next() == "ascii";
+    } else if (word == "element") {
+      Element e;
+      e.name = std::string(tokens.next());
+      if (!parseCount(tokens.next(), e.count)) return;  // assimp refuses it
+      elements.push_back(std::move(e));
+    } else if (word == "property" && !elements.empty()) {
+      std::string_view type = tokens.next();
+      if (type == "list") type = tokens.next();  // an empty list is just its count
+      elements.back().min_bytes += ascii ? kPlyAsciiMinBytesPerProperty : plyTypeBytes(type);
+    }
+  }
+  std::uint64_t needed = 0;
+  std::string declared;
+  for (const auto& e : elements) {
+    // An element without properties still takes a line (ASCII); count one byte.
+    needed = saturatingAdd(needed, saturatingMul(e.count, std::max<std::uint64_t>(e.min_bytes, 1)));
+    declared += (declared.empty() ? "" : ", ") + countText(e.count) + " '" + e.name + "'";
+  }
+  const std::uint64_t available = file_size - std::min<std::uint64_t>(file_size, body) + (ascii ? 1 : 0);
+  if (needed > available)
+    refuse(path, ascii ? "ASCII PLY" : "binary PLY", declared, saturatingAdd(needed, body), file_size);
+}
+
+void checkBinaryStl(const std::filesystem::path& path, std::string_view bytes, std::uint64_t file_size) {
+  if (file_size < kStlHeaderBytes || bytes.size() < kStlHeaderBytes) return;
+  std::uint32_t count = 0;
+  std::memcpy(&count, bytes.data() + 80, 4);  // little-endian, as the format says
+  const std::uint64_t needed = kStlHeaderBytes + kStlBytesPerTriangle * count;
+  // assimp takes the file for binary STL when 84 + 50 n equals the size in
+  // 32-bit arithmetic; only the wrapped equality is a lie.
+  const auto wrapped = static_cast<std::uint32_t>(needed);
+  if (wrapped == static_cast<std::uint32_t>(file_size) && needed != file_size) {
+    refuse(path, "binary STL", std::to_string(count) + " triangles", needed, file_size);
+  }
+}
+
+}  // namespace
+
+void checkDeclaredCounts(const std::filesystem::path& path, std::string_view bytes, std::uint64_t file_size) {
+  checkOff(path, bytes, file_size);
+  checkPly(path, bytes, file_size);
+  checkBinaryStl(path, bytes, file_size);
+}
+
+void checkDeclaredCounts(const std::filesystem::path& path) {
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec) return;  // assimp reports what is wrong with the file
+  std::ifstream in(path, std::ios::binary);
+  std::string head(std::min<std::uintmax_t>(size, kHeadBytes), '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  checkDeclaredCounts(path, head, size);
+}
+
+}  // namespace wtc::io::detail
