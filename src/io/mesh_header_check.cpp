@@ -86,6 +86,8 @@ bool isOffKeyword(std::string_view token) {
   return token.substr(i) == "OFF";
 }
 
+void checkOffFaces(const std::filesystem::path& path, std::string_view bytes);
+
 void checkOff(const std::filesystem::path& path, std::string_view bytes, std::uint64_t file_size) {
   Tokens tokens(bytes);
   const std::string_view keyword = tokens.next();
@@ -98,6 +100,68 @@ void checkOff(const std::filesystem::path& path, std::string_view bytes, std::ui
   // The last line may lack its newline: one byte of slack.
   if (needed > saturatingAdd(file_size, 1)) {
     refuse(path, "OFF", countText(vertices) + " vertices and " + countText(faces) + " faces", needed, file_size);
+  }
+  checkOffFaces(path, bytes);
+}
+
+// OFF face lines, which assimp 5.2 trusts: a face of zero vertices, a face
+// listing more vertices than its line holds, or an index past the vertex
+// count make its reader touch memory it does not own (found by
+// wtc_fuzz_mesh_off; docs/fuzzing.md). Lines split at '\n' or '\r' as
+// assimp splits them; blank lines and '#' comments skipped.
+void checkOffFaces(const std::filesystem::path& path, std::string_view bytes) {
+  struct Line {
+    std::string_view text;
+    long number;
+  };
+  std::vector<Line> lines;
+  long number = 1;
+  std::size_t start = 0;
+  for (std::size_t i = 0; i <= bytes.size(); ++i) {
+    if (i == bytes.size() || bytes[i] == '\n' || bytes[i] == '\r') {
+      const std::string_view text = bytes.substr(start, i - start);
+      const std::size_t first = text.find_first_not_of(" \t");
+      if (first != std::string_view::npos && text[first] != '#') lines.push_back({text, number});
+      if (i < bytes.size() && bytes[i] == '\n') ++number;
+      start = i + 1;
+    }
+  }
+  if (lines.empty()) return;
+  // The keyword line, then the counts (on it or on the next lines).
+  std::uint64_t counts[2] = {0, 0};
+  int found = 0;
+  std::size_t next = 0;
+  bool keyword = true;
+  while (found < 2 && next < lines.size()) {
+    Tokens tokens(lines[next++].text);
+    if (keyword) {
+      const std::string_view k = tokens.next();
+      if (k.find('n') != std::string_view::npos) tokens.next();
+      keyword = false;
+    }
+    for (std::string_view t = tokens.next(); !t.empty() && found < 2; t = tokens.next()) {
+      if (!parseCount(t, counts[found++])) return;  // assimp refuses it
+    }
+  }
+  const std::uint64_t vertices = counts[0], faces = counts[1];
+  next += static_cast<std::size_t>(std::min<std::uint64_t>(vertices, lines.size()));
+  for (std::uint64_t f = 0; f < faces && next < lines.size(); ++f, ++next) {
+    Tokens tokens(lines[next].text);
+    const auto at = where(path, lines[next].number, 1) + "face " + std::to_string(f) + ": ";
+    std::uint64_t n = 0;
+    if (!parseCount(tokens.next(), n) || n == 0) {
+      throw InvalidInputError(at + "a face needs a vertex count of at least 1 first on its line");
+    }
+    for (std::uint64_t k = 0; k < n; ++k) {
+      std::uint64_t index = 0;
+      if (!parseCount(tokens.next(), index)) {
+        throw InvalidInputError(at + "declares " + countText(n) + " vertices but its line lists " + std::to_string(k));
+      }
+      if (index >= vertices) {
+        throw InvalidInputError(at + "vertex index " + countText(index) + " is out of range (the file declares " +
+                                countText(vertices) + " vertices)");
+      }
+    }
   }
 }
 
@@ -185,6 +249,12 @@ void checkDeclaredCounts(const std::filesystem::path& path) {
   std::string head(std::min<std::uintmax_t>(size, kHeadBytes), '\0');
   in.read(head.data(), static_cast<std::streamsize>(head.size()));
   head.resize(static_cast<std::size_t>(in.gcount()));
+  // An OFF file's faces are checked too: read all of it (text, and its
+  // declared counts already fit its size).
+  if (size > head.size() && isOffKeyword(Tokens(head).next())) {
+    checkDeclaredCounts(path, readWholeFile(path), size);
+    return;
+  }
   checkDeclaredCounts(path, head, size);
 }
 

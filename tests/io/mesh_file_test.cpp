@@ -261,6 +261,24 @@ TEST_F(MeshFileTest, DeclaredCountsBeyondTheFileSizeAreRefusedBeforeAssimpReads)
   }
 }
 
+// OFF face lines assimp 5.2 trusts: with any of these its reader touched
+// memory it does not own (a SEGV under ASan, found by wtc_fuzz_mesh_off;
+// the first case is its input, fuzz/corpus/mesh_off/regression-zero-vertex-face.off).
+TEST_F(MeshFileTest, OffFacesThatAssimpWouldOverrunAreRefusedByLine) {
+  const std::string vertices = "OFF\n3 2\n0.1 0.2 0.3\n0.2 0.3 0.4\n0.3 0.4 0.5\n";
+  const std::pair<std::filesystem::path, const char*> cases[] = {
+      {write("zero.off", vertices + "0\n0\r20\n4\n"),
+       ":6:1: face 0: a face needs a vertex count of at least 1 first on its line"},
+      {write("short.off", vertices + "3 0 1 2\n4 0 1\n"), ":7:1: face 1: declares 4 vertices but its line lists 2"},
+      {write("range.off", vertices + "3 0 1 2\n3 0 1 3\n"),
+       ":7:1: face 1: vertex index 3 is out of range (the file declares 3 vertices)"},
+  };
+  for (const auto& [path, expected] : cases) {
+    EXPECT_THAT(errorOf([&] { readMeshFile(path); }), AllOf(HasSubstr(path.string() + ":"), HasSubstr(expected)));
+  }
+  EXPECT_EQ(readMeshFile(write("good.off", vertices + "3 0 1 2\n3 0 2 1\n")).triangleCount(), 2);
+}
+
 TEST_F(MeshFileTest, BadOptionsAreRejected) {
   MeshFileOptions options;
   options.scale = 0.0;
