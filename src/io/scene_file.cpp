@@ -9,6 +9,7 @@
 #include "terrain_node.hpp"
 #include "wtc/error.hpp"
 #include "wtc/io/vehicle_file.hpp"
+#include "wtc/vehicle/climb_controller.hpp"
 #include "wtc/vehicle/path_controller.hpp"
 #include "wtc/vehicle/schedule_controller.hpp"
 #include "yaml_reader.hpp"
@@ -179,8 +180,23 @@ void readController(const YamlReader& in, const YAML::Node& node, sim::Scene& sc
     scene.make_controller = [p, v = scene.vehicle] {
       return std::unique_ptr<vehicle::Controller>(std::make_unique<vehicle::PathController>(v, p, "controller"));
     };
+  } else if (scene.controller_type == "climb") {
+    in.checkKeys(node, {"type", "approach_speed", "crawl_speed", "drive_on_time", "phase_timeout"});
+    vehicle::ClimbControllerParams p;
+    p.approach_speed = in.number(node, "approach_speed", p.approach_speed);
+    p.crawl_speed = in.number(node, "crawl_speed", p.crawl_speed);
+    p.drive_on_time = in.number(node, "drive_on_time", p.drive_on_time);
+    p.phase_timeout = in.number(node, "phase_timeout", p.phase_timeout);
+    try {
+      vehicle::ClimbController check(scene.vehicle, p, "controller");
+    } catch (const InvalidInputError& e) {
+      in.fail(node, e.what());
+    }
+    scene.make_controller = [p, v = scene.vehicle] {
+      return std::unique_ptr<vehicle::Controller>(std::make_unique<vehicle::ClimbController>(v, p, "controller"));
+    };
   } else {
-    in.fail(node["type"], "controller.type: '" + scene.controller_type + "' (expected none, schedule or path)");
+    in.fail(node["type"], "controller.type: '" + scene.controller_type + "' (expected none, schedule, path or climb)");
   }
 }
 
@@ -327,10 +343,13 @@ sim::Scene loadScene(const std::filesystem::path& path, std::span<const Override
   }
   if (const auto s = YamlReader::get(root, "success")) {
     in.requireMap(*s, "success");
-    in.checkKeys(*s, {"min_distance", "max_distance", "max_tilt_deg"});
+    in.checkKeys(*s, {"min_distance", "max_distance", "max_tilt_deg", "min_wheel_height"});
     if (const auto d = YamlReader::get(*s, "min_distance")) scene.success.min_distance = in.number(*d, "min_distance");
     if (const auto d = YamlReader::get(*s, "max_distance")) scene.success.max_distance = in.number(*d, "max_distance");
     scene.success.max_tilt_deg = in.number(*s, "max_tilt_deg", scene.success.max_tilt_deg);
+    if (const auto d = YamlReader::get(*s, "min_wheel_height")) {
+      scene.success.min_wheel_height = in.number(*d, "min_wheel_height");
+    }
   }
   return scene;
 }

@@ -61,8 +61,10 @@ void Run::sense() {
     s.contacts = static_cast<int>(f.contacts.size());
     s.force = f.force;
     Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+    s.points.clear();  // keeps its capacity: no allocation once warm
     for (const ContactForce& c : f.contacts) {
       normal -= c.normal_force * c.contact.e;  // e points into the ground
+      s.points.push_back({.point = c.contact.ground_point, .normal = -c.contact.e, .load = c.normal_force});
       max_deflection_ = std::max(max_deflection_, c.contact.deflection);
     }
     s.contact_normal = normal.norm() > 0.0 ? Eigen::Vector3d(normal.normalized()) : Eigen::Vector3d::UnitZ();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -138,7 +139,11 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
   if (controller) controller->summarize(summary.fields);
   if (controller_failed) summary.warnings.push_back("controller: " + controller->failure());
   const SuccessCriteria& c = scene.success;
+  double lowest_wheel = std::numeric_limits<double>::infinity();
+  for (const int w : v.wheels()) lowest_wheel = std::min(lowest_wheel, run.state().bodies[w].pose.translation().z());
+  if (!v.wheels().empty()) summary.fields["lowest_wheel_height_m"] = lowest_wheel;
   summary.success = !summary.nan && !summary.interrupted && !controller_failed &&
+                    (!c.min_wheel_height || lowest_wheel >= *c.min_wheel_height) &&
                     max_tilt * kDegPerRad <= c.max_tilt_deg && (!c.min_distance || distance >= *c.min_distance) &&
                     (!c.max_distance || distance <= *c.max_distance);
   return summary;

@@ -55,7 +55,7 @@ TEST(SceneFileTest, EveryShippedSceneLoadsAndNamesItsVehicleAndController) {
     EXPECT_EQ(scene.name, file.stem().string()) << file;
     EXPECT_GT(scene.duration_seconds, 0.0) << file;
     EXPECT_FALSE(scene.vehicle.bodies.empty()) << file;
-    EXPECT_THAT(scene.controller_type, ::testing::AnyOf("schedule", "path")) << file;
+    EXPECT_THAT(scene.controller_type, ::testing::AnyOf("schedule", "path", "climb")) << file;
     EXPECT_NE(scene.make_controller(), nullptr) << file;
   }
 }

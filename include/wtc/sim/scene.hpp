@@ -27,6 +27,8 @@ struct SuccessCriteria {
   std::optional<double> min_distance;  ///< The vehicle's first body moved at least this far, horizontally (m).
   std::optional<double> max_distance;  ///< And at most this far (m).
   double max_tilt_deg = 45.0;          ///< Every root's z axis within this of the vertical (deg).
+  /// At the end every wheel's centre at least this high (world z, m): on top of a ledge.
+  std::optional<double> min_wheel_height;
 };
 
 struct Scene {

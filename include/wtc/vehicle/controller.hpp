@@ -16,11 +16,20 @@
 
 namespace wtc::vehicle {
 
-/// A wheel's contact, as a load cell in its hub would report it.
+/// One of a wheel's contacts with the ground, as WTC finds it.
+struct SensedContact {
+  Eigen::Vector3d point{Eigen::Vector3d::Zero()};    ///< The ground point P (world, m).
+  Eigen::Vector3d normal{Eigen::Vector3d::UnitZ()};  ///< Out of the ground toward the wheel centre (unit, world).
+  double load = 0.0;                                 ///< Normal force (N).
+};
+
+/// A wheel's contact, as a load cell in its hub and WTC's contact state
+/// report it.
 struct WheelSensor {
   int contacts = 0;                                          ///< Contacts with the ground this step.
   Eigen::Vector3d force{Eigen::Vector3d::Zero()};            ///< Ground force on the wheel (N, world).
-  Eigen::Vector3d contact_normal{Eigen::Vector3d::UnitZ()};  ///< Mean ground normal, unit (world); +z without contact.
+  Eigen::Vector3d contact_normal{Eigen::Vector3d::UnitZ()};  ///< Load-weighted mean normal, unit (world); +z without contact.
+  std::vector<SensedContact> points;                         ///< Each contact (a wheel at a step's foot has two).
 };
 
 /// Everything a controller may read, indexed by body (the description's
