@@ -42,6 +42,13 @@ constexpr double kSquareUpSeconds = 2.0;
 // the edge for kFoldLimitSeconds, the step is out of reach.
 constexpr double kFoldLimitMarginRad = 0.03;
 constexpr double kFoldLimitSeconds = 1.5;
+// The highest step climbable: the rear fold short of its limit by this
+// (rad), and the middle wheels' centres this far above the edge (m).
+constexpr double kFoldReserveRad = 5.0 * std::numbers::pi / 180.0;
+constexpr double kStepClearanceM = 0.04;
+// While the rear rises, each front wheel must bear at least this (N): a
+// tenth of its share of the robot's weight on level ground.
+constexpr double kFrontLoadN = 20.0;
 // The rear arm counts as level within this (rad).
 constexpr double kLevelRad = 0.05;
 constexpr double kDegPerRad = 180.0 / std::numbers::pi;
@@ -64,6 +71,12 @@ struct ClimbController::Sensed {
       if (c.normal.dot(forward) < kFaceNormalForward) return true;
     }
     return false;
+  }
+  // The wheel's total normal load (N).
+  double load(int a, int s) const {
+    double n = 0.0;
+    for (const SensedContact& c : sensor[a][s]->points) n += c.load;
+    return n;
   }
   // The highest ground point among the wheel's contacts whose normal is
   // within acos(threshold) of the vertical (one it stands on), or -inf.
@@ -126,6 +139,12 @@ ClimbController::ClimbController(const VehicleDescription& v, const ClimbControl
   fold_speed_ = std::min(v.bodies[front_fold_].joint.actuator->max_speed, v.bodies[rear_fold_].joint.actuator->max_speed);
   // The arm from M to an outer axle at zero extension.
   arm_ = (v.bodies[wheels_[kRear][0]].pose.translation() - v.bodies[wheels_[kMiddle][0]].pose.translation()).norm();
+  // The highest step: the rear arm, fully out and short of its fold limit
+  // by kFoldReserveRad, lifts M to (arm + L) sin(angle) above the rear
+  // wheels' centres; the middle wheels ride onto the top only from there
+  // (the step's height plus kStepClearanceM below M).
+  const double rear_reach = std::min(-travel(rear_fold_).lower, std::numbers::pi / 2) - kFoldReserveRad;
+  max_step_ = (arm_ + rear_travel_) * std::sin(rear_reach) - kStepClearanceM;
 
   const auto positive = [&](double value, const char* name, double max) {
     if (!std::isfinite(value) || value <= 0.0 || value > max) {
@@ -208,11 +227,20 @@ void ClimbController::update(const VehicleState& state, std::span<DriveCommand> 
       }
       break;
     case Phase::kRaiseFront: {
-      // Both front wheels stand on something well above the ground: the top edge.
-      const double left = s.standZ(kFront, 0, kEdgeNormalUp), right = s.standZ(kFront, 1, kEdgeNormalUp);
+      // Both front wheels stand on something well above the ground, nearly
+      // upright over it: they have rolled onto the top.
+      const double left = s.standZ(kFront, 0, kTopNormalUp), right = s.standZ(kFront, 1, kTopNormalUp);
       if (left > ground_z_ + kRaisedFrontM && right > ground_z_ + kRaisedFrontM) {
         edge_z_ = 0.5 * (left + right);
         edge_known_ = true;
+        if (edge_z_ - ground_z_ > max_step_) {
+          abort("the step (" + formatNumber(std::round((edge_z_ - ground_z_) * 1e3) / 1e3) +
+                    " m) is higher than the rear fold can lift the middle axle with the rear wheels on the ground (" +
+                    formatNumber(std::round(max_step_ * 1e3) / 1e3) +
+                    " m): the rear wheels would leave the ground with the centre of mass behind the edge",
+                t);
+          break;
+        }
         enter(Phase::kLiftMiddle, t);
         break;
       }
@@ -272,14 +300,34 @@ void ClimbController::update(const VehicleState& state, std::span<DriveCommand> 
       break;
     }
     case Phase::kLiftMiddle: {
+      // Once the middle wheels bear on the edge, the corner carries M and
+      // the front fold no longer pitches the middle body: levelling would
+      // only lift the front wheels off the top. The front holds; the rear
+      // fold presses its wheels on (and up) the face while every wheel
+      // drives M over the edge.
+      const bool middle_on_edge = s.standZ(kMiddle, 0, kEdgeNormalUp) > ground_z_ + kRaisedFrontM ||
+                                  s.standZ(kMiddle, 1, kEdgeNormalUp) > ground_z_ + kRaisedFrontM;
+      if (middle_on_edge) {
+        front = {.mode = DriveMode::kVelocity, .value = 0.0};
+        rear = {.mode = DriveMode::kVelocity, .value = -fold_speed_};
+        break;
+      }
       front = {.mode = DriveMode::kVelocity, .value = level};
       const double target_z = edge_z_ + kLiftAboveEdgeRadii * radius_;
       rear = {.mode = DriveMode::kVelocity, .value = -kLiftGain * (target_z - s.axle[kMiddle].z()) / arm_};
       break;
     }
-    case Phase::kRaiseRear:
+    case Phase::kRaiseRear: {
+      // The rear wheels leave the ground only while the front wheels stay
+      // loaded: with the centre of mass still behind the middle wheels,
+      // lifting the rear would tip the robot back onto it. Until then the
+      // robot crawls on and the rear arm follows the ground.
+      const bool front_loaded = s.load(kFront, 0) > kFrontLoadN && s.load(kFront, 1) > kFrontLoadN;
       front = {.mode = DriveMode::kVelocity, .value = level};
+      rear = {.mode = DriveMode::kVelocity, .value = front_loaded ? fold_speed_ : 0.0};
+      if (rear_fold > 0.0) rear = {.mode = DriveMode::kPosition, .value = 0.0};
       break;
+    }
     case Phase::kDriveOn:
       speed = params_.approach_speed;
       break;
@@ -326,6 +374,7 @@ void ClimbController::summarize(std::map<std::string, double>& fields) const {
   fields["max_rear_pitch_deg"] = max_rear_pitch_ * kDegPerRad;
   fields["max_middle_pitch_deg"] = max_middle_pitch_ * kDegPerRad;
   fields["phase"] = static_cast<double>(phase_);
+  fields["max_climbable_step_m"] = max_step_;
 }
 
 }  // namespace wtc::vehicle

@@ -80,7 +80,7 @@ class ClimbController final : public Controller {
   int middle_ = -1, front_fold_ = -1, rear_fold_ = -1, front_slider_ = -1, rear_slider_ = -1;
   std::array<std::array<int, 2>, 3> wheels_{};  // [axle][left, right]
   double radius_ = 0.0, arm_ = 0.0, front_travel_ = 0.0, rear_travel_ = 0.0;
-  double fold_max_ = 0.0, fold_speed_ = 0.0, wheel_max_rate_ = 0.0;
+  double fold_max_ = 0.0, fold_speed_ = 0.0, wheel_max_rate_ = 0.0, max_step_ = 0.0;
 
   Phase phase_ = Phase::kApproach;
   double phase_start_ = 0.0;
