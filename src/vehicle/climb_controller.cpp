@@ -42,10 +42,15 @@ constexpr double kSquareUpSeconds = 2.0;
 // the edge for kFoldLimitSeconds, the step is out of reach.
 constexpr double kFoldLimitMarginRad = 0.03;
 constexpr double kFoldLimitSeconds = 1.5;
+// Raising the front: with both front wheels in the air above this fold
+// angle (rad), the fold comes down at this fraction of its rated speed to
+// set them on the top.
+constexpr double kLowerOntoTopFromRad = 30.0 * std::numbers::pi / 180.0;
+constexpr double kLowerOntoTopFraction = 0.3;
 // The highest step climbable: the rear fold short of its limit by this
 // (rad), and the middle wheels' centres this far above the edge (m).
 constexpr double kFoldReserveRad = 5.0 * std::numbers::pi / 180.0;
-constexpr double kStepClearanceM = 0.04;
+constexpr double kStepClearanceM = 0.0;
 // While the rear rises, each front wheel must bear at least this (N): a
 // tenth of its share of the robot's weight on level ground.
 constexpr double kFrontLoadN = 20.0;
@@ -284,6 +289,7 @@ void ClimbController::update(const VehicleState& state, std::span<DriveCommand> 
   double speed = params_.crawl_speed;
   std::array<double, 2> side_speed{};
   DriveCommand front{.mode = DriveMode::kPosition, .value = 0.0};
+  bool front_wheels_free = false;
   // Levelling the middle body with the front fold works while the front
   // wheels bear on the ground (raising the fold then pitches the middle
   // nose down); with them in the air it would only lift them: hold.
@@ -295,8 +301,21 @@ void ClimbController::update(const VehicleState& state, std::span<DriveCommand> 
       speed = params_.approach_speed;
       break;
     case Phase::kRaiseFront: {
-      const bool pressing = s.face(kFront, 0) || s.face(kFront, 1);
-      front = {.mode = DriveMode::kVelocity, .value = pressing ? fold_speed_ : 0.0};
+      // Up while a front wheel presses on the face below its edge; down
+      // gently once both ride on the edge (driven, they roll over it) or
+      // have lost the face above it (they land on the top).
+      const bool on_edge = s.standZ(kFront, 0, kEdgeNormalUp) > ground_z_ + kRaisedFrontM &&
+                           s.standZ(kFront, 1, kEdgeNormalUp) > ground_z_ + kRaisedFrontM;
+      const bool pressing = !on_edge && (s.face(kFront, 0) || s.face(kFront, 1));
+      const bool free = s.sensor[kFront][0]->contacts == 0 && s.sensor[kFront][1]->contacts == 0;
+      double rate = 0.0;
+      if (pressing) {
+        rate = fold_speed_;
+      } else if ((free || on_edge) && front_fold > kLowerOntoTopFromRad) {
+        rate = -kLowerOntoTopFraction * fold_speed_;
+      }
+      front_wheels_free = !on_edge;
+      front = {.mode = DriveMode::kVelocity, .value = rate};
       break;
     }
     case Phase::kLiftMiddle: {
@@ -352,8 +371,9 @@ void ClimbController::update(const VehicleState& state, std::span<DriveCommand> 
     }
   }
   // Raising the front: its wheels run free, so that they roll up the face
-  // as the fold lifts them instead of holding on to it by friction.
-  if (phase_ == Phase::kRaiseFront) {
+  // as the fold lifts them instead of holding on to it by friction; on the
+  // edge they are driven again.
+  if (front_wheels_free) {
     for (int side = 0; side < 2; ++side) commands[wheels_[kFront][side]] = {.mode = DriveMode::kOff, .value = 0.0};
   }
   if (front.mode == DriveMode::kVelocity) front.value = clampRate(front.value, fold_speed_);
