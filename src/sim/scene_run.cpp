@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <chrono>
-#include <limits>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numbers>
 
 #include "wtc/sim/recorder.hpp"

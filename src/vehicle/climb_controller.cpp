@@ -63,9 +63,9 @@ double clampRate(double rate, double max) { return std::clamp(rate, -max, max); 
 }  // namespace
 
 struct ClimbController::Sensed {
-  Eigen::Vector3d forward;                   // horizontal heading (unit)
-  double yaw = 0.0, beta = 0.0;              // middle body yaw and pitch (nose up > 0)
-  std::array<Eigen::Vector3d, 3> axle;       // axle centres
+  Eigen::Vector3d forward;                     // horizontal heading (unit)
+  double yaw = 0.0, beta = 0.0;                // middle body yaw and pitch (nose up > 0)
+  std::array<Eigen::Vector3d, 3> axle;         // axle centres
   double gamma_front = 0.0, gamma_rear = 0.0;  // sections' elevations (rad)
   std::array<std::array<const WheelSensor*, 2>, 3> sensor{};
   std::array<std::array<Eigen::Vector3d, 2>, 3> centre;
@@ -96,13 +96,20 @@ struct ClimbController::Sensed {
 
 const char* ClimbController::phaseName(Phase phase) {
   switch (phase) {
-    case Phase::kApproach: return "approach";
-    case Phase::kRaiseFront: return "raise front";
-    case Phase::kLiftMiddle: return "lift middle";
-    case Phase::kRaiseRear: return "raise rear";
-    case Phase::kDriveOn: return "drive on";
-    case Phase::kStopped: return "stopped";
-    case Phase::kAborted: return "aborted";
+    case Phase::kApproach:
+      return "approach";
+    case Phase::kRaiseFront:
+      return "raise front";
+    case Phase::kLiftMiddle:
+      return "lift middle";
+    case Phase::kRaiseRear:
+      return "raise rear";
+    case Phase::kDriveOn:
+      return "drive on";
+    case Phase::kStopped:
+      return "stopped";
+    case Phase::kAborted:
+      return "aborted";
   }
   return "?";
 }
@@ -141,7 +148,8 @@ ClimbController::ClimbController(const VehicleDescription& v, const ClimbControl
   front_travel_ = travel(front_slider_).upper;
   rear_travel_ = travel(rear_slider_).upper;
   fold_max_ = travel(front_fold_).upper;
-  fold_speed_ = std::min(v.bodies[front_fold_].joint.actuator->max_speed, v.bodies[rear_fold_].joint.actuator->max_speed);
+  fold_speed_ =
+      std::min(v.bodies[front_fold_].joint.actuator->max_speed, v.bodies[rear_fold_].joint.actuator->max_speed);
   // The arm from M to an outer axle at zero extension.
   arm_ = (v.bodies[wheels_[kRear][0]].pose.translation() - v.bodies[wheels_[kMiddle][0]].pose.translation()).norm();
   // The highest step: the rear arm, fully out and short of its fold limit
@@ -193,7 +201,8 @@ void ClimbController::enter(Phase phase, double time) {
 }
 
 void ClimbController::abort(const std::string& why, double time) {
-  failure_ = std::string("climb aborted in phase '") + phaseName(phase_) + "' at t = " + formatNumber(time) + " s: " + why;
+  failure_ = std::string("climb aborted in phase '") + phaseName(phase_) +
+             "' at t = " + formatNumber(std::round(time * 1e3) / 1e3) + " s: " + why;
   enter(Phase::kAborted, time);
 }
 
@@ -252,9 +261,10 @@ void ClimbController::update(const VehicleState& state, std::span<DriveCommand> 
       if (front_fold >= fold_max_ - kFoldLimitMarginRad) {
         if (fold_limit_time_ < 0.0) fold_limit_time_ = t;
         if (t - fold_limit_time_ > kFoldLimitSeconds) {
-          abort("the front section at its fold limit does not reach the top edge: the step is taller than the robot "
-                "can climb",
-                t);
+          abort(
+              "the front section at its fold limit does not reach the top edge: the step is taller than the robot "
+              "can climb",
+              t);
         }
       } else {
         fold_limit_time_ = -1.0;
@@ -282,7 +292,8 @@ void ClimbController::update(const VehicleState& state, std::span<DriveCommand> 
       break;
     }
     case Phase::kStopped:
-    case Phase::kAborted: break;
+    case Phase::kAborted:
+      break;
   }
 
   // Commands for the phase.

@@ -21,11 +21,9 @@ namespace fs = std::filesystem;
 const fs::path kRoot = fs::path(WTC_SOURCE_DIR);
 
 sim::RunSummary climb(const std::string& engine, const std::string& height, const std::string& mode = "force") {
-  const sim::Scene s = io::loadScene(kRoot / "scenes" / "robot_ledge.yaml",
-                                     std::vector<io::Override>{{"engine", engine},
-                                                               {"mode", mode},
-                                                               {"ledge_height", height},
-                                                               {"duration", "22"}});
+  const sim::Scene s = io::loadScene(
+      kRoot / "scenes" / "robot_ledge.yaml",
+      std::vector<io::Override>{{"engine", engine}, {"mode", mode}, {"ledge_height", height}, {"duration", "22"}});
   const auto e = sim::makeEngine(s.engine, *s.terrain, s.vehicle, s.placement);
   return sim::runScene(s, *e);
 }
@@ -57,7 +55,8 @@ TEST(LedgeClimbTest, AStepOutOfReachFailsCleanly) {
     EXPECT_LT(r.fields.at("max_tilt_deg"), 45.0) << engine;
     EXPECT_LT(r.fields.at("lowest_wheel_height_m"), 0.25) << engine;
     bool said = false;
-    for (const std::string& w : r.warnings) said = said || w.find("taller than the robot can climb") != std::string::npos;
+    for (const std::string& w : r.warnings)
+      said = said || w.find("taller than the robot can climb") != std::string::npos;
     EXPECT_TRUE(said) << engine;
   }
 }
@@ -71,7 +70,8 @@ TEST(LedgeClimbTest, AVehicleWithoutTheRobotsSectionsIsRefusedByName) {
     EXPECT_NE(std::string(e.what()).find("'middle'"), std::string::npos) << e.what();
   }
   const vehicle::VehicleDescription robot = io::loadVehicle(kRoot / "vehicles" / "six_wheel_robot.yaml");
-  EXPECT_THROW(vehicle::ClimbController(robot, {.approach_speed = 2.0}, "c"), InvalidInputError);  // above 5 rad/s x 0.19 m
+  EXPECT_THROW(vehicle::ClimbController(robot, {.approach_speed = 2.0}, "c"),
+               InvalidInputError);  // above 5 rad/s x 0.19 m
   EXPECT_THROW(vehicle::ClimbController(robot, {.crawl_speed = -0.1}, "c"), InvalidInputError);
 }
 

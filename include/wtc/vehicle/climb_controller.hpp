@@ -85,14 +85,14 @@ class ClimbController final : public Controller {
   Phase phase_ = Phase::kApproach;
   double phase_start_ = 0.0;
   bool ground_known_ = false, edge_known_ = false;
-  double ground_z_ = 0.0;                 // the ground under the start (world z, m)
+  double ground_z_ = 0.0;                          // the ground under the start (world z, m)
   std::array<double, 2> first_touch_{-1.0, -1.0};  // per side (s)
-  double touch_time_ = -1.0;              // first face contact (s)
+  double touch_time_ = -1.0;                       // first face contact (s)
   double fold_limit_time_ = -1.0;
-  double edge_z_ = 0.0;                   // the top edge, measured (world z, m)
+  double edge_z_ = 0.0;  // the top edge, measured (world z, m)
   double climbed_time_ = -1.0, stop_time_ = -1.0;
   double max_front_pitch_ = 0.0, max_rear_pitch_ = 0.0, max_middle_pitch_ = 0.0;
-  double heading_ = 0.0;                  // yaw held after squaring up (rad)
+  double heading_ = 0.0;  // yaw held after squaring up (rad)
   std::string failure_;
 };
 

@@ -26,10 +26,11 @@ struct SensedContact {
 /// A wheel's contact, as a load cell in its hub and WTC's contact state
 /// report it.
 struct WheelSensor {
-  int contacts = 0;                                          ///< Contacts with the ground this step.
-  Eigen::Vector3d force{Eigen::Vector3d::Zero()};            ///< Ground force on the wheel (N, world).
-  Eigen::Vector3d contact_normal{Eigen::Vector3d::UnitZ()};  ///< Load-weighted mean normal, unit (world); +z without contact.
-  std::vector<SensedContact> points;                         ///< Each contact (a wheel at a step's foot has two).
+  int contacts = 0;                                ///< Contacts with the ground this step.
+  Eigen::Vector3d force{Eigen::Vector3d::Zero()};  ///< Ground force on the wheel (N, world).
+  Eigen::Vector3d contact_normal{
+      Eigen::Vector3d::UnitZ()};      ///< Load-weighted mean normal, unit (world); +z without contact.
+  std::vector<SensedContact> points;  ///< Each contact (a wheel at a step's foot has two).
 };
 
 /// Everything a controller may read, indexed by body (the description's
