@@ -58,6 +58,20 @@ const WheelForces& TyreModel::step(const Terrain& terrain, const WheelDescriptio
   return forces(terrain.materials(), wheel, pose, motion, step_seconds, contacts, state);
 }
 
+const WheelForces& TyreModel::stepInEngine(const Terrain& terrain, const WheelDescription& wheel,
+                                           const WheelPose& pose, const WheelMotion& motion, double step_seconds,
+                                           WheelState& state) const {
+  const bool finite = isFinite(pose.center) && isFinite(pose.axle) && isFinite(motion.velocity) &&
+                      isFinite(motion.angular_velocity) && isFinite(motion.hub_angular_velocity);
+  state.last_skipped_ = !finite;
+  if (finite) return step(terrain, wheel, pose, motion, step_seconds, state);
+  ++state.non_finite_steps_;
+  state.tread_.clear();
+  state.forces_.clear();
+  state.result_ = WheelForces{};
+  return state.result_;
+}
+
 const WheelForces& TyreModel::forces(std::span<const Material> materials, const WheelDescription& wheel,
                                      const WheelPose& pose, const WheelMotion& motion, double step_seconds,
                                      std::span<const WheelContact> contacts, WheelState& state) const {

@@ -13,6 +13,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-matplotlib                    # wtc-sim's figures
   libjs-three chromium-headless-shell           # the replay page (three.js) and its test (headless Chromium)
+  clang-14 libclang-rt-14-dev                   # libFuzzer, ASan, UBSan for fuzz/ (ctest -L fuzz)
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -65,6 +65,10 @@ class WheelState {
   /// limit (see WheelForces::normal_stability for the numbers).
   std::uint64_t steps() const { return steps_; }
   std::uint64_t unstableSteps() const { return unstable_steps_; }
+  /// Steps an engine adapter skipped because the wheel's pose or motion was
+  /// not finite (TyreModel::stepInEngine), and whether the last one was.
+  std::uint64_t nonFiniteSteps() const { return non_finite_steps_; }
+  bool lastStepSkipped() const { return last_skipped_; }
   /// The last step's contacts on the wheel's cut caps (no tyre force; see
   /// WheelContactFinder::capContacts).
   std::span<const WheelContact> capContacts() const { return finder_.capContacts(); }
@@ -77,7 +81,8 @@ class WheelState {
   std::vector<ContactForce> forces_;
   std::vector<TreadState> tread_, next_tread_;
   WheelForces result_;
-  std::uint64_t steps_ = 0, unstable_steps_ = 0;
+  std::uint64_t steps_ = 0, unstable_steps_ = 0, non_finite_steps_ = 0;
+  bool last_skipped_ = false;
 };
 
 class TyreModel {
@@ -100,6 +105,18 @@ class TyreModel {
   /// or a non-positive step.
   const WheelForces& step(const Terrain& terrain, const WheelDescription& wheel, const WheelPose& pose,
                           const WheelMotion& motion, double step_seconds, WheelState& state) const;
+
+  /// The step an engine adapter runs inside the engine's own step, where an
+  /// exception would leave the engine's world half-stepped. A wheel whose
+  /// pose or motion is not finite (its body's state went NaN or infinite in
+  /// the engine) is skipped instead: its result is empty (no contacts, a
+  /// zero wrench, so no force or engine contact is applied), its tread
+  /// deflections are forgotten, state.lastStepSkipped() is true and
+  /// state.nonFiniteSteps() counts it; the adapter reports it to its
+  /// listener. Invalid parameters or step still throw, as in step (the
+  /// adapters check both before the engine steps).
+  const WheelForces& stepInEngine(const Terrain& terrain, const WheelDescription& wheel, const WheelPose& pose,
+                                  const WheelMotion& motion, double step_seconds, WheelState& state) const;
 
   /// The second half of step, for contacts found elsewhere (an engine's own
   /// contact search, tests). `materials` are indexed by contact.material.

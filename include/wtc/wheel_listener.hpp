@@ -17,6 +17,10 @@ class WheelListener {
   virtual void onWheelStep(WheelId wheel, const WheelForces& forces, double step_seconds) {
     (void)wheel, (void)forces, (void)step_seconds;
   }
+  /// Instead of onWheelStep when the wheel's body state (pose or velocity)
+  /// was not finite: the adapter applied no tyre force and no contact this
+  /// step, and counts it (WheelState::nonFiniteSteps).
+  virtual void onWheelSkipped(WheelId wheel, double step_seconds) { (void)wheel, (void)step_seconds; }
 };
 
 }  // namespace wtc

@@ -191,6 +191,8 @@ VehicleDescription loadVehicle(const std::filesystem::path& path) {
   const YAML::Node bodies = in.require(root, "bodies");
   if (!bodies.IsSequence() || bodies.size() == 0) in.fail(bodies, "bodies: expected a non-empty list");
   for (std::size_t i = 0; i < bodies.size(); ++i) {
+    // A list item that is not a mapping ("- name" cut short) has no keys to read.
+    in.requireMap(bodies[i], ("bodies[" + std::to_string(i) + "]").c_str());
     const YAML::Node name = bodies[i]["name"];
     const YamlReader here = in.with("bodies[" + std::to_string(i) + "]" +
                                     (name && name.IsScalar() ? " (" + name.as<std::string>() + ")" : "") + ": ");

@@ -112,6 +112,11 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
     }
   }
   for (const int w : v.wheels()) {
+    const std::uint64_t skipped = engine.wheelState(w).nonFiniteSteps();
+    if (skipped > 0) {
+      summary.warnings.push_back("wheel " + v.bodies[w].name + ": body state not finite in " +
+                                 std::to_string(skipped) + " steps (no tyre force applied in those)");
+    }
     const std::uint64_t unstable = engine.wheelState(w).unstableSteps();
     if (unstable > 0) {
       summary.warnings.push_back("wheel " + v.bodies[w].name + ": tyre spring beyond its explicit stability limit in " +

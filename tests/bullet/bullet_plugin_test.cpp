@@ -355,6 +355,38 @@ TEST(BulletPluginTest, ListenerHearsEveryWheelAtEveryInternalStep) {
 }
 
 
+// Case: a wheel whose body state goes NaN (a user's bad impulse, an engine
+// blow-up) inside stepSimulation: the plugin applies nothing for it, counts
+// it and tells the listener, and throws nothing through Bullet; the other
+// wheel keeps its tyre force. Both modes.
+TEST_P(BulletModeTest, NonFiniteWheelIsSkippedCountedAndReportedWithoutThrowing) {
+  struct Recorder : bullet::WheelListener {
+    void onWheelStep(bullet::WheelId wheel, const WheelForces&, double) override { ++steps[wheel]; }
+    void onWheelSkipped(bullet::WheelId wheel, double) override { ++skipped[wheel]; }
+    int steps[2] = {0, 0}, skipped[2] = {0, 0};
+  } recorder;
+  const Terrain ground = flatGround();
+  BulletWorld w(ground, GetParam());
+  WheelBody& good = w.addWheelBody(3.7, btVector3(0, 0, kRadius - 0.001));
+  WheelBody& bad = w.addWheelBody(3.7, btVector3(2, 0, kRadius - 0.001));
+  testing::addWheel(w, good);
+  testing::addWheel(w, bad);
+  w.plugin->setListener(&recorder);
+  w.world.stepSimulation(1e-3, 1, 1e-3);
+  bad.body->setLinearVelocity(btVector3(std::nan(""), 0, 0));
+  EXPECT_NO_THROW(for (int k = 0; k < 5; ++k) w.world.stepSimulation(1e-3, 1, 1e-3));
+  EXPECT_EQ(recorder.skipped[1], 5);
+  EXPECT_EQ(recorder.steps[1], 1);
+  EXPECT_EQ(recorder.skipped[0], 0);
+  EXPECT_EQ(recorder.steps[0], 6);
+  EXPECT_EQ(w.plugin->state(1).nonFiniteSteps(), 5u);
+  EXPECT_TRUE(w.plugin->state(1).lastStepSkipped());
+  EXPECT_TRUE(w.plugin->forces(1).contacts.empty());
+  EXPECT_FALSE(w.plugin->state(0).lastStepSkipped());
+  EXPECT_FALSE(w.plugin->forces(0).contacts.empty());
+  EXPECT_TRUE(std::isfinite(good.body->getLinearVelocity().z()));
+}
+
 // Case: a wheel lying on its side touches the ground with a cut cap, which
 // carries no tyre force (spec section 1); Bullet collides the wheel's own
 // cylinder there, so it rests on its side instead of sinking.

@@ -289,6 +289,46 @@ TEST(OdePluginTest, ListenerHearsEveryWheelOncePerStep) {
   EXPECT_EQ(listener.last_contacts, 1u);
 }
 
+// Case: a wheel whose body state goes NaN: beginStep applies nothing for it
+// (no force, no contact joint), counts it and tells the listener, and
+// throws nothing; the other wheel keeps its tyre force. Both modes.
+TEST(OdePluginTest, NonFiniteWheelIsSkippedCountedAndReportedWithoutThrowing) {
+  struct Recorder : ode::WheelListener {
+    void onWheelStep(ode::WheelId wheel, const WheelForces&, double) override { ++steps[wheel]; }
+    void onWheelSkipped(ode::WheelId wheel, double) override { ++skipped[wheel]; }
+    int steps[2] = {0, 0}, skipped[2] = {0, 0};
+  };
+  const Terrain ground = testing::flatGround();
+  for (const ContactMode mode : {ContactMode::kForce, ContactMode::kConstraint}) {
+    Recorder recorder;
+    OdeWorld w(ground, mode);
+    const WheelBody good = w.addWheelBody(3.7, {0, 0, kRadius - 0.001});
+    const WheelBody bad = w.addWheelBody(3.7, {2, 0, kRadius - 0.001});
+    testing::addWheel(w, good);
+    testing::addWheel(w, bad);
+    w.plugin->setListener(&recorder);
+    w.step(1e-3);
+    dBodySetLinearVel(bad.body, std::nan(""), 0, 0);
+    // The plugin's part of the step alone: ODE itself would spread the NaN.
+    for (int k = 0; k < 5; ++k) {
+      EXPECT_NO_THROW(w.plugin->beginStep(1e-3));
+      w.collide();
+      EXPECT_EQ(dBodyGetNumJoints(bad.body), 0);
+      dJointGroupEmpty(w.contacts);
+    }
+    EXPECT_EQ(recorder.skipped[1], 5);
+    EXPECT_EQ(recorder.steps[1], 1);
+    EXPECT_EQ(recorder.skipped[0], 0);
+    EXPECT_EQ(recorder.steps[0], 6);
+    EXPECT_EQ(w.plugin->state(1).nonFiniteSteps(), 5u);
+    EXPECT_TRUE(w.plugin->forces(1).contacts.empty());
+    EXPECT_FALSE(w.plugin->forces(0).contacts.empty());
+    const dReal* f = dBodyGetForce(bad.body);
+    EXPECT_EQ(f[0], 0.0);  // nothing added (ODE keeps what is added until its step)
+    EXPECT_EQ(f[2], 0.0);
+  }
+}
+
 // Case: bad registrations and steps are errors that name the problem.
 TEST(OdePluginTest, BadRegistrationIsAnErrorThatNamesIt) {
   const Terrain ground = testing::flatGround();

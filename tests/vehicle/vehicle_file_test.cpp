@@ -75,6 +75,10 @@ TEST(VehicleFileTest, BadFilesAreRefusedWithFileLineBodyAndProblem) {
   // Case: a typo in a key.
   EXPECT_THAT(errorOfFile(head + "  - name: arm\n    parent: base\n    mas: 2\n"),
               HasSubstr("wtc_vehicle_file_test.yaml:8:5: bodies[1] (arm): unknown key 'mas'"));
+  // Case: a list item that is not a mapping (found by wtc_fuzz_vehicle: yaml-cpp's
+  // "operator[] call on a scalar" escaped as a YAML::Exception).
+  EXPECT_THAT(errorOfFile(head + "  - namee ground is z = 0\n"),
+              HasSubstr("wtc_vehicle_file_test.yaml:6:5: bodies[1] must be a mapping (key: value lines)"));
   // Case: a value of the wrong type.
   EXPECT_THAT(errorOfFile("name: v\nbodies:\n  - name: base\n    mass: heavy\n    shape: {sphere: 1}\n"),
               HasSubstr(":4:11: bodies[0] (base): mass: 'heavy' is not a number"));

@@ -177,7 +177,14 @@ void Plugin::Impl::preTick(double h) {
     const Kinematics k =
         w.body != nullptr ? rigidKinematics(w) : multiBodyKinematics(w, omega_scratch, velocity_scratch);
     const WheelForces& f =
-        w.model.step(ground, w.description, {toEigen(k.centre), toEigen(k.axle)}, k.motion, h, w.state);
+        w.model.stepInEngine(ground, w.description, {toEigen(k.centre), toEigen(k.axle)}, k.motion, h, w.state);
+    if (w.state.lastStepSkipped()) {
+      // Its body's state is not finite: no force and no contact this step
+      // (an exception here would leave Bullet's world half-stepped).
+      w.engine_contacts.clear();
+      if (listener != nullptr) listener->onWheelSkipped(static_cast<WheelId>(id), h);
+      continue;
+    }
     if (mode == ContactMode::kForce) {
       applyWrench(w, k, toBullet(f.force), toBullet(f.torque), h);
     } else {

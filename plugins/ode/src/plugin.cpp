@@ -114,8 +114,16 @@ void Plugin::Impl::beginStep(double h) {
     motion.velocity = toEigen(velocity);
     motion.angular_velocity = toEigen(dBodyGetAngularVel(w.body));
     if (w.hub != nullptr) motion.hub_angular_velocity = toEigen(dBodyGetAngularVel(w.hub));
-    const WheelForces& f = w.model.step(ground, w.description, {toEigen(centre), toEigen(axle)}, motion, h, w.state);
+    const WheelForces& f =
+        w.model.stepInEngine(ground, w.description, {toEigen(centre), toEigen(axle)}, motion, h, w.state);
     w.handled = false;
+    if (w.state.lastStepSkipped()) {
+      // Its body's state is not finite: no force and no contact joint this
+      // step (an exception here would leave the caller's step half-done).
+      w.contacts.clear();
+      if (listener != nullptr) listener->onWheelSkipped(static_cast<WheelId>(id), h);
+      continue;
+    }
     if (mode == ContactMode::kForce) {
       // The wrench about O: F through O, then the torque. ODE clears both
       // after the world step, so they act on exactly this step.
