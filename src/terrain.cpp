@@ -1,5 +1,7 @@
 #include "wtc/terrain.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -55,6 +57,24 @@ PieceId TerrainBuilder::addPiece(ConvexPolyhedron piece, MaterialId material) {
   pieces_.push_back(std::move(piece));
   piece_material_.push_back(material);
   return static_cast<PieceId>(pieces_.size() - 1);
+}
+
+void TerrainBuilder::requireRoomFor(std::uint64_t count, const std::string& where) const {
+  const std::uint64_t total = pieces_.size() + count;
+  if (count > static_cast<std::uint64_t>(std::numeric_limits<PieceId>::max()) ||
+      total > static_cast<std::uint64_t>(std::numeric_limits<PieceId>::max())) {
+    throw InvalidInputError(where + ": " + std::to_string(count) + " pieces would pass the largest terrain (" +
+                            std::to_string(std::numeric_limits<PieceId>::max()) + " pieces)");
+  }
+  const long pages = sysconf(_SC_PHYS_PAGES), page_bytes = sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || page_bytes <= 0) return;  // unknown: let the allocation decide
+  const long double needed = static_cast<long double>(total) * sizeof(ConvexPolyhedron);
+  const long double memory = static_cast<long double>(pages) * static_cast<long double>(page_bytes);
+  if (needed > memory) {
+    throw InvalidInputError(where + ": " + std::to_string(count) + " pieces need more than " +
+                            formatNumber(static_cast<double>(needed / 1e9)) + " GB, more than this machine's " +
+                            formatNumber(static_cast<double>(memory / 1e9)) + " GB of memory");
+  }
 }
 
 void TerrainBuilder::reserve(std::size_t count) {

@@ -72,6 +72,8 @@ PieceRange addSlab(TerrainBuilder& builder, const SlabParams& p, MaterialId mate
   requireAtLeast(p.tiles_x, 1, kWhere, "tiles_x");
   requireAtLeast(p.tiles_y, 1, kWhere, "tiles_y");
   requireRigid(p.pose_WL, kWhere, "pose_WL");
+  builder.requireRoomFor(static_cast<std::uint64_t>(p.tiles_x) * static_cast<std::uint64_t>(p.tiles_y),
+                         std::string(kWhere) + " (tiles_x x tiles_y)");
   std::vector<ConvexPolyhedron> pieces;
   pieces.reserve(static_cast<std::size_t>(p.tiles_x) * static_cast<std::size_t>(p.tiles_y));
   for (int j = 0; j < p.tiles_y; ++j) {
@@ -125,6 +127,7 @@ PieceRange addLedge(TerrainBuilder& builder, const LedgeParams& p, MaterialId ma
   requirePositive(p.width, kWhere, "width", "m");
   requirePositive(p.thickness, kWhere, "thickness", "m");
   requireAtLeast(p.approach_tiles, 1, kWhere, "approach_tiles");
+  builder.requireRoomFor(static_cast<std::uint64_t>(p.approach_tiles) + 1, std::string(kWhere) + " (approach_tiles)");
   requireRigid(p.pose_WL, kWhere, "pose_WL");
   const double y = 0.5 * p.width;
   std::vector<ConvexPolyhedron> pieces;
@@ -140,6 +143,7 @@ PieceRange addLedge(TerrainBuilder& builder, const LedgeParams& p, MaterialId ma
 PieceRange addStairs(TerrainBuilder& builder, const StairsParams& p, MaterialId material) {
   constexpr const char* kWhere = "wtc::addStairs";
   requireAtLeast(p.steps, 1, kWhere, "steps");
+  builder.requireRoomFor(static_cast<std::uint64_t>(p.steps), std::string(kWhere) + " (steps)");
   requirePositive(p.rise, kWhere, "rise", "m");
   requirePositive(p.run, kWhere, "run", "m");
   requirePositive(p.width, kWhere, "width", "m");

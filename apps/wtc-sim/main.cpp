@@ -133,8 +133,8 @@ int main(int argc, char** argv) {
     std::vector<wtc::io::Override> overrides;
     if (!engine.empty()) overrides.push_back({"engine", engine});
     if (!mode.empty()) overrides.push_back({"mode", mode});
-    if (app.count("--dt")) overrides.push_back({"dt", std::to_string(dt)});
-    if (app.count("--duration")) overrides.push_back({"duration", std::to_string(duration)});
+    if (app.count("--dt")) overrides.push_back({"dt", wtc::formatNumber(dt)});
+    if (app.count("--duration")) overrides.push_back({"duration", wtc::formatNumber(duration)});
     for (const std::string& s : sets) overrides.push_back(wtc::io::parseOverride(s));
     scene = wtc::io::loadScene(scene_file, overrides);
   } catch (const std::exception& e) {

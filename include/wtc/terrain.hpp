@@ -33,6 +33,11 @@ class TerrainBuilder {
   PieceId addPiece(ConvexPolyhedron piece, MaterialId material);
   /// Reserves room for `count` more pieces (large heightfields).
   void reserve(std::size_t count);
+  /// Throws InvalidInputError naming `where` when `count` more pieces would
+  /// pass PieceId's range or cannot fit in this machine's memory (counted
+  /// at sizeof(ConvexPolyhedron) each, a lower bound): a terrain file
+  /// asking for 10^10 tiles is refused before anything is allocated.
+  void requireRoomFor(std::uint64_t count, const std::string& where) const;
   std::size_t pieceCount() const { return pieces_.size(); }
   MaterialId materialCount() const { return static_cast<MaterialId>(materials_.size()); }
   /// Builds the index. Throws InvalidInputError if there are no pieces.

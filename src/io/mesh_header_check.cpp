@@ -88,13 +88,45 @@ bool isOffKeyword(std::string_view token) {
 
 void checkOffFaces(const std::filesystem::path& path, std::string_view bytes);
 
+bool hasOffExtension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext == ".off";
+}
+
+// The OFF keyword at the start of `token`, possibly with the next number
+// glued to it ("OFF3585235358": assimp reads the keyword's three letters
+// and then the count, with or without a space between). A file named *.off
+// without any keyword is still read by assimp's OFF reader, from its first
+// number ("3535235358 6 0"). Both found by fuzzing. Returns the keyword
+// ("OFF" for a bare *.off file; "" if not OFF), the rest of the token that
+// is the first count in `rest`.
+std::string_view offKeywordOf(const std::filesystem::path& path, std::string_view token, std::string_view& rest) {
+  rest = {};
+  const std::size_t off = token.find("OFF");
+  if (off != std::string_view::npos && isOffKeyword(token.substr(0, off + 3))) {
+    rest = token.substr(off + 3);
+    return token.substr(0, off + 3);
+  }
+  if (!hasOffExtension(path)) return {};
+  rest = token;
+  return "OFF";
+}
+
 void checkOff(const std::filesystem::path& path, std::string_view bytes, std::uint64_t file_size) {
   Tokens tokens(bytes);
-  const std::string_view keyword = tokens.next();
-  if (!isOffKeyword(keyword)) return;
-  if (keyword.find('n') != std::string_view::npos) tokens.next();  // nOFF: the dimension comes first
+  std::string_view glued;
+  const std::string_view keyword = offKeywordOf(path, tokens.next(), glued);
+  if (keyword.empty()) return;
+  // The next token: the one glued to the keyword, else the next one.
+  const auto next = [&] {
+    const std::string_view t = glued.empty() ? tokens.next() : glued;
+    glued = {};
+    return t;
+  };
+  if (keyword.find('n') != std::string_view::npos) next();  // nOFF: the dimension comes first
   std::uint64_t vertices = 0, faces = 0;
-  if (!parseCount(tokens.next(), vertices) || !parseCount(tokens.next(), faces)) return;  // assimp refuses it
+  if (!parseCount(next(), vertices) || !parseCount(next(), faces)) return;  // assimp refuses it
   const std::uint64_t needed =
       saturatingAdd(saturatingMul(vertices, kOffMinBytesPerVertex), saturatingMul(faces, kOffMinBytesPerFace));
   // The last line may lack its newline: one byte of slack.
@@ -134,12 +166,19 @@ void checkOffFaces(const std::filesystem::path& path, std::string_view bytes) {
   bool keyword = true;
   while (found < 2 && next < lines.size()) {
     Tokens tokens(lines[next++].text);
+    std::string_view glued;
     if (keyword) {
-      const std::string_view k = tokens.next();
-      if (k.find('n') != std::string_view::npos) tokens.next();
+      const std::string_view k = offKeywordOf(path, tokens.next(), glued);
+      if (k.find('n') != std::string_view::npos) {  // nOFF: skip the dimension, glued or next
+        if (glued.empty()) {
+          tokens.next();
+        } else {
+          glued = {};
+        }
+      }
       keyword = false;
     }
-    for (std::string_view t = tokens.next(); !t.empty() && found < 2; t = tokens.next()) {
+    for (std::string_view t = glued.empty() ? tokens.next() : glued; !t.empty() && found < 2; t = tokens.next()) {
       if (!parseCount(t, counts[found++])) return;  // assimp refuses it
     }
   }
@@ -177,8 +216,22 @@ std::uint64_t plyTypeBytes(std::string_view type) {
 
 void checkPly(const std::filesystem::path& path, std::string_view bytes, std::uint64_t file_size) {
   if (bytes.substr(0, 3) != "ply") return;
+  // A PLY header is lines of printable text ending in end_header (PLY's
+  // definition); assimp 5.2 loops forever on a header without one that holds
+  // control bytes (found by fuzzing: wtc_fuzz_mesh_ply hung), so refuse both.
   const std::size_t end = bytes.find("end_header");
-  if (end == std::string_view::npos) return;  // header beyond the head read, or none: assimp decides
+  const std::size_t header_end = end == std::string_view::npos ? bytes.size() : end;
+  for (std::size_t i = 0; i < header_end; ++i) {
+    const auto c = static_cast<unsigned char>(bytes[i]);
+    if (c < 0x20 && c != '\n' && c != '\r' && c != '\t') {
+      throw InvalidInputError(where(path) + "PLY header holds a control byte (" + std::to_string(c) + ") at byte " +
+                              std::to_string(i) + ": not a PLY file");
+    }
+  }
+  if (end == std::string_view::npos) {
+    if (file_size > bytes.size()) return;  // the header goes on past the head read: assimp decides
+    throw InvalidInputError(where(path) + "PLY header has no end_header line: not a PLY file");
+  }
   std::size_t body = bytes.find('\n', end);
   body = body == std::string_view::npos ? bytes.size() : body + 1;
   bool ascii = true;
@@ -251,7 +304,8 @@ void checkDeclaredCounts(const std::filesystem::path& path) {
   head.resize(static_cast<std::size_t>(in.gcount()));
   // An OFF file's faces are checked too: read all of it (text, and its
   // declared counts already fit its size).
-  if (size > head.size() && isOffKeyword(Tokens(head).next())) {
+  std::string_view glued;
+  if (size > head.size() && !offKeywordOf(path, Tokens(head).next(), glued).empty()) {
     checkDeclaredCounts(path, readWholeFile(path), size);
     return;
   }

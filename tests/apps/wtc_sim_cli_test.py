@@ -36,6 +36,13 @@ def main():
                            (["--set", "garbage"], "expected key.path=value")):
         r = subprocess.run([wtc_sim, scene, *args, "--out", "bad", "--no-plots"], capture_output=True, text=True)
         check(r.returncode == 2 and expected in r.stderr, f"{' '.join(args)} refused, naming '{expected}'")
+    # A small step given on the command line reaches the scene exactly (it
+    # was once printed with six decimals: 1e-7 became 0 and was refused).
+    r = subprocess.run([wtc_sim, scene, "--dt", "2.5e-7", "--duration", "1e-6", "--out", "tiny_step", "--no-plots",
+                        "--quiet"], capture_output=True, text=True)
+    with open(os.path.join("tiny_step", "summary.json")) as f:
+        tiny = json.load(f)
+    check(r.returncode in (0, 1) and tiny["dt"] == 2.5e-7 and tiny["steps"] == 4, "--dt 2.5e-7 runs 4 steps of 2.5e-7 s")
     r = subprocess.run([wtc_sim, os.path.join(work, "missing.yaml")], capture_output=True, text=True)
     check(r.returncode == 2 and "missing.yaml" in r.stderr and "not found" in r.stderr, "a missing scene file is named")
     check(not os.path.exists("bad"), "nothing is written for a refused command line")

@@ -210,6 +210,11 @@ TEST_F(MeshFileTest, BrokenFilesWrittenHereGiveErrorsWithThePath) {
       {write("empty.stl", ""), "cannot read the mesh file: "},
       {write("garbage.stl", std::string("\x13\x37 not a mesh at all \x01\xfe", 24)), "cannot read the mesh file: "},
       {write("garbage.obj", "this is\nnot an OBJ file\n"), "empty scene"},
+      // assimp 5.2 loops forever on these (found by wtc_fuzz_mesh_ply): refused first.
+      {write("no_end_header.ply", "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\n"),
+       "PLY header has no end_header line"},
+      {write("control_bytes.ply", std::string("ply\nformat ascii 1.0\nelement verte\x03\0\0\0\x03\x07 4\n", 40)),
+       "PLY header holds a control byte (3)"},
       {write("bad_number.stl", "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0\n"),
        "cannot read the mesh file: "},
       {write("unknown.xyz123", "1 2 3\n"), "cannot read the mesh file: "},
@@ -236,6 +241,13 @@ TEST_F(MeshFileTest, DeclaredCountsBeyondTheFileSizeAreRefusedBeforeAssimpReads)
       {write("huge.off", "OFF\n# comment\n1000000000 1 0\n0 0 0\n3 0 0 0\n"),
        "OFF header declares 1000000000 vertices and 1 faces"},
       {write("huge_n.off", "nOFF 3\n4 2000000000 0\n"), "OFF header declares 4 vertices and 2000000000 faces"},
+      // The count glued to the keyword (found by wtc_fuzz_mesh_off: assimp read
+      // it and asked for 43 GB).
+      {write("glued.off", "OFF3585235358 6 0\n-0.5 -0.5 0.5\n0.5 -0 0.5\n"),
+       "OFF header declares 3585235358 vertices and 6 faces"},
+      // No keyword at all: assimp's OFF reader, chosen by the extension, reads
+      // the counts from the first line (also found by wtc_fuzz_mesh_off).
+      {write("bare.off", "3535235358 6 0\n-0.5 0.5\n"), "OFF header declares 3535235358 vertices and 6 faces"},
       {write("huge.ply",
              "ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\nproperty float x\n"
              "property float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\n"

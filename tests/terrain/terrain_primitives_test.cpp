@@ -221,6 +221,12 @@ TEST(TerrainPrimitivesTest, BadParametersAreNamedInTheMessage) {
          slab.pose_WL.linear() = Eigen::Vector3d(1.0, 1.0, -1.0).asDiagonal();  // a mirror
          addSlab(b, slab, m);
        }},
+      // Absurd counts are refused before anything is allocated: 10^10 tiles
+      // pass PieceId's range; 2e9 steps need more memory than any machine here.
+      {"wtc::addSlab (tiles_x x tiles_y): 10000000000 pieces would pass the largest terrain",
+       [](auto& b, auto m) { addSlab(b, {.tiles_x = 100000, .tiles_y = 100000}, m); }},
+      {"wtc::addStairs (steps): 2000000000 pieces need more than",
+       [](auto& b, auto m) { addStairs(b, {.steps = 2000000000}, m); }},
   };
   for (const auto& c : cases) {
     Fixture f;

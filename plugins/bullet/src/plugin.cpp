@@ -143,7 +143,6 @@ int Plugin::Impl::wheelOf(const btCollisionObject* object) const {
 }
 
 WheelId Plugin::Impl::add(std::unique_ptr<Wheel> w, const char* where) {
-  validate(w->description, where);
   validateMounting(toEigen(w->axle_local), toEigen(w->centre_local), where);
   if (wheel_of.count(w->collider) != 0) fail(where, "this body is already a registered wheel");
   btCollisionShape* original = w->collider->getCollisionShape();
@@ -159,7 +158,7 @@ WheelId Plugin::Impl::add(std::unique_ptr<Wheel> w, const char* where) {
                     ") excludes the static terrain; add the wheel's collider with btBroadphaseProxy::DefaultFilter "
                     "and AllFilter (btDiscreteDynamicsWorld::addCollisionObject defaults to the static group)");
   }
-  w->shape = std::make_unique<WheelShape>(w->description.geometry.free_radius, original);
+  w->shape = std::make_unique<WheelShape>(w->mounted.description().geometry.free_radius, original);
   w->collider->setCollisionShape(w->shape.get());
   w->collider->setActivationState(DISABLE_DEACTIVATION);
   if (w->collider->getBroadphaseHandle() != nullptr) world.updateSingleAabb(w->collider);
@@ -176,26 +175,18 @@ void Plugin::Impl::preTick(double h) {
     Wheel& w = *wheels[id];
     const Kinematics k =
         w.body != nullptr ? rigidKinematics(w) : multiBodyKinematics(w, omega_scratch, velocity_scratch);
-    const WheelForces& f =
-        w.model.stepInEngine(ground, w.description, {toEigen(k.centre), toEigen(k.axle)}, k.motion, h, w.state);
-    if (w.state.lastStepSkipped()) {
+    const MountedWheelStep& r = w.mounted.step(ground, {toEigen(k.centre), toEigen(k.axle)}, k.motion, h);
+    if (r.skipped) {
       // Its body's state is not finite: no force and no contact this step
       // (an exception here would leave Bullet's world half-stepped).
-      w.engine_contacts.clear();
       if (listener != nullptr) listener->onWheelSkipped(static_cast<WheelId>(id), h);
       continue;
     }
-    if (mode == ContactMode::kForce) {
-      applyWrench(w, k, toBullet(f.force), toBullet(f.torque), h);
-    } else {
-      // The engine's contacts carry the normal and friction forces; rolling
-      // resistance remains an explicit moment.
-      w.engine_contacts.clear();
-      for (const ContactForce& c : f.contacts)
-        w.engine_contacts.push_back(toEngineContact(c, w.description.tyre, w.model));
-      applyWrench(w, k, btVector3(0, 0, 0), toBullet(f.rolling_moment), h);
-    }
-    if (listener != nullptr) listener->onWheelStep(static_cast<WheelId>(id), f, h);
+    // Constraint mode: the contacts reach Bullet through the collision
+    // algorithm (wheel_terrain_algorithm.cpp); the wrench is then the
+    // rolling moment alone.
+    applyWrench(w, k, toBullet(r.force), toBullet(r.torque), h);
+    if (listener != nullptr) listener->onWheelStep(static_cast<WheelId>(id), w.mounted.forces(), h);
   }
 }
 
@@ -222,13 +213,13 @@ Plugin::~Plugin() = default;
 WheelId Plugin::addWheel(const RigidWheel& spec) {
   static constexpr const char* kWhere = "wtc::bullet::Plugin::addWheel (rigid body)";
   if (spec.body == nullptr) fail(kWhere, "body is null");
-  auto w = std::make_unique<Wheel>(spec.effects, impl_->mode);
+  validate(spec.description, kWhere);
+  auto w = std::make_unique<Wheel>(spec.description, spec.effects, impl_->mode);
   w->body = spec.body;
   w->hub = spec.hub;
   w->collider = spec.body;
   w->axle_local = spec.axle_local;
   w->centre_local = spec.centre_local;
-  w->description = spec.description;
   return impl_->add(std::move(w), kWhere);
 }
 
@@ -241,22 +232,22 @@ WheelId Plugin::addWheel(const MultiBodyWheel& spec) {
   }
   btMultiBodyLinkCollider* collider = spec.multibody->getLinkCollider(spec.link);
   if (collider == nullptr) fail(kWhere, "link " + std::to_string(spec.link) + " has no collider");
-  auto w = std::make_unique<Wheel>(spec.effects, impl_->mode);
+  validate(spec.description, kWhere);
+  auto w = std::make_unique<Wheel>(spec.description, spec.effects, impl_->mode);
   w->multibody = spec.multibody;
   w->link = spec.link;
   w->collider = collider;
   w->axle_local = spec.axle_local;
   w->centre_local = spec.centre_local;
-  w->description = spec.description;
   return impl_->add(std::move(w), kWhere);
 }
 
 const WheelForces& Plugin::forces(WheelId wheel) const {
-  return impl_->wheels.at(static_cast<std::size_t>(wheel))->state.result();
+  return impl_->wheels.at(static_cast<std::size_t>(wheel))->mounted.forces();
 }
 
 const WheelState& Plugin::state(WheelId wheel) const {
-  return impl_->wheels.at(static_cast<std::size_t>(wheel))->state;
+  return impl_->wheels.at(static_cast<std::size_t>(wheel))->mounted.state();
 }
 int Plugin::wheelCount() const { return static_cast<int>(impl_->wheels.size()); }
 ContactMode Plugin::mode() const { return impl_->mode; }

@@ -10,6 +10,7 @@
 #include "wtc/bullet/plugin.hpp"
 #include "wtc/bullet/terrain_object.hpp"
 #include "wtc/bullet/wheel_shape.hpp"
+#include "wtc/mounted_wheel.hpp"
 
 namespace wtc::bullet {
 
@@ -17,7 +18,8 @@ inline btVector3 toBullet(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z(
 inline Eigen::Vector3d toEigen(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
 
 struct Wheel {
-  Wheel(EffectSet effects, ContactMode mode) : model(effects, mode) {}
+  Wheel(const WheelDescription& description, EffectSet effects, ContactMode mode)
+      : mounted(description, effects, mode) {}
 
   btRigidBody* body = nullptr;       // a rigid wheel, or
   btMultiBody* multibody = nullptr;  // a multibody link
@@ -25,11 +27,8 @@ struct Wheel {
   btRigidBody* hub = nullptr;
   btCollisionObject* collider = nullptr;
   btVector3 axle_local, centre_local;
-  WheelDescription description;
-  TyreModel model;
-  WheelState state;
-  std::unique_ptr<WheelShape> shape;           // replaces the collider's shape while registered
-  std::vector<EngineContact> engine_contacts;  // constraint mode: this step's contacts
+  MountedWheel mounted;                         // tyre model, state, this step's result and engine contacts
+  std::unique_ptr<WheelShape> shape;            // replaces the collider's shape while registered
   btVector3 link_force{0, 0, 0}, link_torque{0, 0, 0};  // multibody: what this substep added
 };
 

@@ -50,9 +50,9 @@ void WheelTerrainAlgorithm::writeWtcContacts(int wheel, bool wheel_is_body0, con
   // The contacts are WTC's, found afresh each step: nothing carries over.
   manifold_->clearManifold();
   const Wheel& w = *impl_.wheels[wheel];
-  if (!w.state.capContacts().empty()) writeCapContacts(w, body0, body1, dispatch_info, result);
+  if (!w.mounted.state().capContacts().empty()) writeCapContacts(w, body0, body1, dispatch_info, result);
   if (impl_.mode == ContactMode::kForce) return;
-  for (const EngineContact& c : impl_.wheels[wheel]->engine_contacts) {
+  for (const EngineContact& c : impl_.wheels[wheel]->mounted.last().contacts) {
     // Bullet's normal on B points from B to A; the point is on B; a
     // negative distance is a penetration.
     const btVector3 normal_on_b = toBullet(wheel_is_body0 ? c.normal : Eigen::Vector3d(-c.normal));
@@ -100,10 +100,10 @@ void WheelTerrainAlgorithm::writeCapContacts(const Wheel& w, const btCollisionOb
                                              const btDispatcherInfo& dispatch_info, btManifoldResult* result) {
   collideOriginals(cap_child_, manifold_, body0, body1, dispatch_info, result);
   const Eigen::Vector3d axle = toEigen(w.collider->getWorldTransform().getBasis() * w.axle_local).normalized();
-  const double friction = impl_.terrain.terrain().materials()[w.state.capContacts().front().material].mu_max;
+  const double friction = impl_.terrain.terrain().materials()[w.mounted.state().capContacts().front().material].mu_max;
   for (int k = manifold_->getNumContacts() - 1; k >= 0; --k) {
     btManifoldPoint& p = manifold_->getContactPoint(k);
-    if (onCap(w.description.geometry, toEigen(p.m_normalWorldOnB), axle)) {
+    if (onCap(w.mounted.description().geometry, toEigen(p.m_normalWorldOnB), axle)) {
       p.m_combinedFriction = friction;
       p.m_combinedRestitution = 0;
     } else {

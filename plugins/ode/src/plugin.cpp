@@ -83,13 +83,12 @@ WheelId Plugin::Impl::add(const RigidWheel& spec) {
     dBodyVectorToWorld(spec.body, spec.axle_local.x(), spec.axle_local.y(), spec.axle_local.z(), axle);
     requireGeomHoldsTread(spec, toEigen(centre), toEigen(axle).normalized(), kWhere);
   }
-  auto w = std::make_unique<Wheel>(spec.effects, mode);
+  auto w = std::make_unique<Wheel>(spec.description, spec.effects, mode);
   w->body = spec.body;
   w->geom = spec.geom;
   w->hub = spec.hub;
   w->axle_local = spec.axle_local;
   w->centre_local = spec.centre_local;
-  w->description = spec.description;
   dBodySetAutoDisableFlag(spec.body, 0);  // the tread state needs every step
   const auto id = static_cast<WheelId>(wheels.size());
   wheel_of.emplace(spec.geom, id);
@@ -114,32 +113,24 @@ void Plugin::Impl::beginStep(double h) {
     motion.velocity = toEigen(velocity);
     motion.angular_velocity = toEigen(dBodyGetAngularVel(w.body));
     if (w.hub != nullptr) motion.hub_angular_velocity = toEigen(dBodyGetAngularVel(w.hub));
-    const WheelForces& f =
-        w.model.stepInEngine(ground, w.description, {toEigen(centre), toEigen(axle)}, motion, h, w.state);
+    const MountedWheelStep& r = w.mounted.step(ground, {toEigen(centre), toEigen(axle)}, motion, h);
     w.handled = false;
-    if (w.state.lastStepSkipped()) {
+    w.contacts.clear();
+    if (r.skipped) {
       // Its body's state is not finite: no force and no contact joint this
       // step (an exception here would leave the caller's step half-done).
-      w.contacts.clear();
       if (listener != nullptr) listener->onWheelSkipped(static_cast<WheelId>(id), h);
       continue;
     }
-    if (mode == ContactMode::kForce) {
-      // The wrench about O: F through O, then the torque. ODE clears both
-      // after the world step, so they act on exactly this step.
-      dBodyAddForceAtPos(w.body, f.force.x(), f.force.y(), f.force.z(), centre[0], centre[1], centre[2]);
-      dBodyAddTorque(w.body, f.torque.x(), f.torque.y(), f.torque.z());
-    } else {
-      // The contact joints carry the normal and friction forces; rolling
-      // resistance remains an explicit torque.
-      w.contacts.clear();
-      for (const ContactForce& cf : f.contacts)
-        w.contacts.push_back({toEngineContact(cf, w.description.tyre, w.model)});
-      dBodyAddTorque(w.body, f.rolling_moment.x(), f.rolling_moment.y(), f.rolling_moment.z());
-      // Counted now, taken back when handlePair hands the contacts to ODE.
-      if (!w.contacts.empty()) ++w.diagnostics.unhandled_steps;
-    }
-    if (listener != nullptr) listener->onWheelStep(static_cast<WheelId>(id), f, h);
+    // The wrench about O: F through O, then the torque (in constraint mode
+    // the rolling moment alone; the contact joints carry the rest). ODE
+    // clears both after the world step, so they act on exactly this step.
+    dBodyAddForceAtPos(w.body, r.force.x(), r.force.y(), r.force.z(), centre[0], centre[1], centre[2]);
+    dBodyAddTorque(w.body, r.torque.x(), r.torque.y(), r.torque.z());
+    for (const EngineContact& contact : r.contacts) w.contacts.push_back({contact});
+    // Counted now, taken back when handlePair hands the contacts to ODE.
+    if (!w.contacts.empty()) ++w.diagnostics.unhandled_steps;
+    if (listener != nullptr) listener->onWheelStep(static_cast<WheelId>(id), w.mounted.forces(), h);
   }
 }
 
@@ -152,7 +143,7 @@ bool Plugin::Impl::handlePair(dGeomID a, dGeomID b, dJointGroupID group) {
     if (found == wheel_of.end() || !terrain.contains(a)) return false;
   }
   Wheel& w = *wheels[found->second];
-  if (!w.state.capContacts().empty()) collideCaps(w, ground, group);
+  if (!w.mounted.state().capContacts().empty()) collideCaps(w, ground, group);
   // The wheel's contacts are the core's, for all pieces at once: they go to
   // ODE the first time the wheel meets the terrain in this step (against
   // the terrain space, or against one of its pieces), and never twice.
@@ -203,9 +194,9 @@ void Plugin::Impl::collideCaps(Wheel& w, dGeomID ground, dJointGroupID group) {
   dVector3 axle;
   dBodyVectorToWorld(w.body, w.axle_local.x(), w.axle_local.y(), w.axle_local.z(), axle);
   const Eigen::Vector3d a = toEigen(axle).normalized();
-  const double mu = terrain.terrain().materials()[w.state.capContacts().front().material].mu_max;
+  const double mu = terrain.terrain().materials()[w.mounted.state().capContacts().front().material].mu_max;
   for (int i = 0; i < n; ++i) {
-    if (!onCap(w.description.geometry, toEigen(contacts[i].geom.normal), a)) continue;
+    if (!onCap(w.mounted.description().geometry, toEigen(contacts[i].geom.normal), a)) continue;
     contacts[i].surface.mode = dContactApprox1;
     contacts[i].surface.mu = mu;
     dJointAttach(dJointCreateContact(world, group, &contacts[i]), w.body, nullptr);
@@ -222,10 +213,10 @@ void Plugin::beginStep(double step_seconds) { impl_->beginStep(step_seconds); }
 bool Plugin::handlePair(dGeomID a, dGeomID b, dJointGroupID contacts) { return impl_->handlePair(a, b, contacts); }
 
 const WheelForces& Plugin::forces(WheelId wheel) const {
-  return impl_->wheel(wheel).state.result();
+  return impl_->wheel(wheel).mounted.forces();
 }
 
-const WheelState& Plugin::state(WheelId wheel) const { return impl_->wheel(wheel).state; }
+const WheelState& Plugin::state(WheelId wheel) const { return impl_->wheel(wheel).mounted.state(); }
 std::span<const SolvedContact> Plugin::solvedContacts(WheelId wheel) const { return impl_->wheel(wheel).contacts; }
 const WheelDiagnostics& Plugin::diagnostics(WheelId wheel) const { return impl_->wheel(wheel).diagnostics; }
 int Plugin::wheelCount() const { return static_cast<int>(impl_->wheels.size()); }

@@ -4,23 +4,24 @@
 #include <unordered_map>
 #include <vector>
 
+#include "wtc/mounted_wheel.hpp"
 #include "wtc/ode/plugin.hpp"
 
 namespace wtc::ode {
 
 struct Wheel {
-  Wheel(EffectSet effects, ContactMode mode) : model(effects, mode) {}
+  Wheel(const WheelDescription& description, EffectSet effects, ContactMode mode)
+      : mounted(description, effects, mode) {}
 
   dBodyID body = nullptr;
   dGeomID geom = nullptr;
   dBodyID hub = nullptr;
   Eigen::Vector3d axle_local, centre_local;
-  WheelDescription description;
-  TyreModel model;
-  WheelState state;
-  // Constraint mode: this step's contacts. ODE writes each joint's feedback
-  // here during the world step, so the vector changes only in beginStep
-  // (the previous step's joints are gone by then: dJointGroupEmpty).
+  MountedWheel mounted;  // tyre model, state, this step's result and engine contacts
+  // Constraint mode: this step's contacts with their joints' feedback. ODE
+  // writes each joint's feedback here during the world step, so the vector
+  // changes only in beginStep (the previous step's joints are gone by then:
+  // dJointGroupEmpty).
   std::vector<SolvedContact> contacts;
   bool handled = false;  // handlePair has seen this wheel against the terrain this step
   WheelDiagnostics diagnostics;

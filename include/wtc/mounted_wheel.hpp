@@ -1,0 +1,68 @@
+#pragma once
+// A wheel as an engine adapter holds it (wtc::core). Design note:
+//
+// Both adapters (wtc::bullet, wtc::ode) do the same per wheel and step:
+// run the tyre model inside the engine's step, skip a wheel whose body state
+// went non-finite, and turn the result into what the engine takes for the
+// contact mode: in force mode the whole tyre wrench about the wheel centre
+// O; in constraint mode the engine contacts (engine_contact.hpp) plus the
+// rolling-resistance moment, which stays explicit. That lives here once; an
+// adapter reads the wheel's kinematics from its engine, calls step, and
+// writes the result to its bodies and solver.
+#include <span>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "wtc/effects.hpp"
+#include "wtc/engine_contact.hpp"
+#include "wtc/terrain.hpp"
+#include "wtc/tyre_model.hpp"
+#include "wtc/wheel_forces.hpp"
+
+namespace wtc {
+
+/// What an adapter applies for one step of one wheel.
+struct MountedWheelStep {
+  /// The body's pose or motion was not finite: apply nothing, add no
+  /// contact (WheelState::nonFiniteSteps counts it).
+  bool skipped = false;
+  /// Through O (N): the tyre force in force mode; zero in constraint mode.
+  Eigen::Vector3d force{Eigen::Vector3d::Zero()};
+  /// About O (N m): the tyre torque in force mode; the rolling-resistance
+  /// moment in constraint mode.
+  Eigen::Vector3d torque{Eigen::Vector3d::Zero()};
+  /// Constraint mode: the engine contacts for this step (empty in force
+  /// mode). Valid until the wheel's next step.
+  std::span<const EngineContact> contacts;
+};
+
+class MountedWheel {
+ public:
+  /// Throws InvalidInputError for an invalid description or effect set.
+  MountedWheel(const WheelDescription& description, EffectSet effects, ContactMode mode);
+
+  /// One step of length h inside the engine's step: never throws for a
+  /// non-finite pose or motion (TyreModel::stepInEngine); throws for a
+  /// non-positive step.
+  const MountedWheelStep& step(const Terrain& terrain, const WheelPose& pose, const WheelMotion& motion, double h);
+
+  const WheelDescription& description() const { return description_; }
+  const TyreModel& model() const { return model_; }
+  ContactMode mode() const { return model_.mode(); }
+  /// The last step's tyre result (what the explicit model computed).
+  const WheelForces& forces() const { return state_.result(); }
+  const WheelState& state() const { return state_; }
+  WheelState& state() { return state_; }
+  /// The last step's result for the engine.
+  const MountedWheelStep& last() const { return step_; }
+
+ private:
+  WheelDescription description_;
+  TyreModel model_;
+  WheelState state_;
+  std::vector<EngineContact> contacts_;
+  MountedWheelStep step_;
+};
+
+}  // namespace wtc

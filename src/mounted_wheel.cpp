@@ -1,0 +1,30 @@
+// The per-wheel step both engine adapters run (design note in
+// include/wtc/mounted_wheel.hpp).
+#include "wtc/mounted_wheel.hpp"
+
+namespace wtc {
+
+MountedWheel::MountedWheel(const WheelDescription& description, EffectSet effects, ContactMode mode)
+    : description_(description), model_(effects, mode) {
+  validate(description_, "wtc::MountedWheel");
+}
+
+const MountedWheelStep& MountedWheel::step(const Terrain& terrain, const WheelPose& pose, const WheelMotion& motion,
+                                           double h) {
+  const WheelForces& f = model_.stepInEngine(terrain, description_, pose, motion, h, state_);
+  contacts_.clear();  // keeps its capacity: no allocation once warm
+  step_ = MountedWheelStep{};
+  step_.skipped = state_.lastStepSkipped();
+  if (step_.skipped) return step_;
+  if (model_.mode() == ContactMode::kForce) {
+    step_.force = f.force;
+    step_.torque = f.torque;
+  } else {
+    for (const ContactForce& c : f.contacts) contacts_.push_back(toEngineContact(c, description_.tyre, model_));
+    step_.torque = f.rolling_moment;
+    step_.contacts = contacts_;
+  }
+  return step_;
+}
+
+}  // namespace wtc

@@ -1,0 +1,26 @@
+# ctest -L sanitizers: the test suite built with AddressSanitizer and
+# UndefinedBehaviorSanitizer (GCC) in BUILD_DIR, then run there. UBSan's
+# reports abort (-fno-sanitize-recover=all) and ASan's and LeakSanitizer's
+# fail their test, so any report fails this one. Leaks inside libassimp
+# itself (outside WTC's code) are suppressed: tests/sanitizer_suppressions.txt.
+#   cmake -DSOURCE_DIR=<repo> -DBUILD_DIR=<dir> -DCXX=<g++> -P run_sanitized_suite.cmake
+set(flags "-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer")
+execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${BUILD_DIR} -DCMAKE_CXX_COMPILER=${CXX}
+                        -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS=${flags}
+                        -DCMAKE_EXE_LINKER_FLAGS=${flags} -DCMAKE_SHARED_LINKER_FLAGS=${flags}
+                        -DWTC_BUILD_BENCHMARKS=OFF -DWTC_SANITIZED_CHILD=ON
+                RESULT_VARIABLE rc)
+if(rc)
+  message(FATAL_ERROR "configuring the sanitized build failed (${rc})")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} --build ${BUILD_DIR} -j2 RESULT_VARIABLE rc)
+if(rc)
+  message(FATAL_ERROR "building the sanitized suite failed (${rc})")
+endif()
+set(ENV{ASAN_OPTIONS} "detect_leaks=1:abort_on_error=0:halt_on_error=1")
+set(ENV{UBSAN_OPTIONS} "print_stacktrace=1:halt_on_error=1")
+set(ENV{LSAN_OPTIONS} "suppressions=${SOURCE_DIR}/tests/sanitizer_suppressions.txt:print_suppressions=0")
+execute_process(COMMAND ${CMAKE_CTEST_COMMAND} --test-dir ${BUILD_DIR} -j2 --output-on-failure RESULT_VARIABLE rc)
+if(rc)
+  message(FATAL_ERROR "the sanitized suite failed (${rc}): see the reports above")
+endif()
