@@ -17,6 +17,10 @@ SpringStability explicitSpringStability(double c, double b, double m, double h) 
   s.damping_ratio = dampingRatio(c, b, m);
   s.limit = stepLimit(s.damping_ratio);
   s.step_number = h * std::sqrt(c / m);
+  s.stiffness = c;
+  s.damping = b;
+  s.mass = m;
+  s.step_seconds = h;
   return s;
 }
 
@@ -25,6 +29,11 @@ std::string describe(const SpringStability& s, double c, double b, double m, dou
          " kg at h = " + formatNumber(h) + " s: h sqrt(c/m) = " + formatNumber(s.step_number) +
          (s.stable() ? " < " : " >= ") + "limit " + formatNumber(s.limit) + " (damping ratio " +
          formatNumber(s.damping_ratio) + ")";
+}
+
+std::string describe(const SpringStability& s) {
+  return describe(s, s.stiffness, s.damping, s.mass, s.step_seconds) + "; the largest stable step is " +
+         formatNumber(largestStableStep(s.stiffness, s.damping, s.mass)) + " s";
 }
 
 double largestStableStep(double c, double b, double m, double fraction) {

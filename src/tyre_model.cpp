@@ -123,10 +123,17 @@ const WheelForces& TyreModel::forces(std::span<const Material> materials, const 
   result.bearing_moment = contact_moment - axial_contact;
   result.contacts = state.forces_;
 
+  // The springs of several contacts act in parallel on the wheel: their
+  // load shares add (two full contacts in a V-valley double c and b).
+  double shares = 0.0;
+  for (const ContactForce& f : state.forces_) shares += f.contact.load_share;
+  shares = std::max(shares, 1.0);
   const double damping = effects_.has(Effect::kNormalDamping) ? tyre.radial_damping : 0.0;
-  result.normal_stability = explicitSpringStability(tyre.radial_stiffness, damping, inertia.effective_mass, h);
+  result.normal_stability =
+      explicitSpringStability(shares * tyre.radial_stiffness, shares * damping, inertia.effective_mass, h);
   if (mode_ == ContactMode::kConstraint) result.normal_stability.limit = std::numeric_limits<double>::infinity();
   ++state.steps_;
+  state.first_unstable_ = !result.normal_stability.stable() && state.unstable_steps_ == 0;
   if (!result.normal_stability.stable()) ++state.unstable_steps_;
   return result;
 }

@@ -152,7 +152,9 @@ int main(int argc, char** argv) {
 
     std::signal(SIGINT, onSignal);
     std::signal(SIGTERM, onSignal);
-    wtc::sim::RunOptions options{.out_dir = dir, .progress = {}, .stop = &g_stop};
+    wtc::sim::RunOptions options;
+    options.out_dir = dir;
+    options.stop = &g_stop;
     const bool bar = !quiet && isatty(STDERR_FILENO);
     if (bar) {
       options.progress = [](double f) {
@@ -171,6 +173,10 @@ int main(int argc, char** argv) {
                                      {"interrupted", true},
                                      {"success", false},
                                      {"note", "written when the run started; a run that ends replaces it"}});
+    // Said on stderr when it happens, even with --quiet (a warning, not progress).
+    options.warn = [bar](const std::string& warning) {
+      std::fprintf(stderr, "%swtc-sim: warning: %s\n", bar ? "\n" : "", warning.c_str());
+    };
     wtc::sim::Replay replay(scene, scene.output.replay_fps);
     options.replay = &replay;
     const wtc::sim::RunSummary summary = wtc::sim::runScene(scene, *engine_ptr, options);

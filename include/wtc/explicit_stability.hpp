@@ -16,8 +16,16 @@ struct SpringStability {
   double step_number = 0.0;    ///< h sqrt(c/m) (dimensionless).
   double limit = 2.0;          ///< 2 (sqrt(1 + zeta^2) - zeta) (dimensionless).
   double damping_ratio = 0.0;  ///< zeta = b / (2 sqrt(c m)) (dimensionless).
+  double stiffness = 0.0;      ///< c the step saw (N/m): a wheel's contacts add theirs (a V-valley doubles it).
+  double damping = 0.0;        ///< b the step saw (N s/m), summed likewise.
+  double mass = 0.0;           ///< m (kg).
+  double step_seconds = 0.0;   ///< h (s).
   bool stable() const { return step_number < limit; }
 };
+
+/// describe() with the stiffness, damping, mass and step the report holds,
+/// and the largest stable step: "... ; the largest stable step is 0.0031 s".
+std::string describe(const SpringStability& stability);
 
 /// The explicit stability of spring c (N/m), damper b (N s/m) on mass m (kg)
 /// at step h (s). Preconditions: c, m, h > 0, b >= 0.

@@ -69,6 +69,9 @@ class WheelState {
   /// not finite (TyreModel::stepInEngine), and whether the last one was.
   std::uint64_t nonFiniteSteps() const { return non_finite_steps_; }
   bool lastStepSkipped() const { return last_skipped_; }
+  /// True when the last step was the wheel's first beyond its explicit
+  /// stability limit (adapters tell their listener once per wheel).
+  bool firstUnstableStep() const { return first_unstable_; }
   /// The last step's contacts on the wheel's cut caps (no tyre force; see
   /// WheelContactFinder::capContacts).
   std::span<const WheelContact> capContacts() const { return finder_.capContacts(); }
@@ -82,7 +85,7 @@ class WheelState {
   std::vector<TreadState> tread_, next_tread_;
   WheelForces result_;
   std::uint64_t steps_ = 0, unstable_steps_ = 0, non_finite_steps_ = 0;
-  bool last_skipped_ = false;
+  bool last_skipped_ = false, first_unstable_ = false;
 };
 
 class TyreModel {

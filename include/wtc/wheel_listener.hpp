@@ -3,6 +3,7 @@
 // call per wheel per internal step, after the wheel's tyre model ran and
 // before the engine integrates the step. A listener interface with
 // do-nothing defaults (not a global callback), shared by both adapters.
+#include "wtc/explicit_stability.hpp"
 #include "wtc/wheel_forces.hpp"
 
 namespace wtc {
@@ -21,6 +22,13 @@ class WheelListener {
   /// was not finite: the adapter applied no tyre force and no contact this
   /// step, and counts it (WheelState::nonFiniteSteps).
   virtual void onWheelSkipped(WheelId wheel, double step_seconds) { (void)wheel, (void)step_seconds; }
+  /// Once per wheel, at its first step whose explicit tyre spring is beyond
+  /// the step's stability limit (force mode): describe(stability) gives
+  /// h sqrt(c/m) against the limit and the largest stable step. Later such
+  /// steps are counted (WheelState::unstableSteps), not reported again.
+  virtual void onFirstUnstableStep(WheelId wheel, const SpringStability& stability) {
+    (void)wheel, (void)stability;
+  }
 };
 
 }  // namespace wtc

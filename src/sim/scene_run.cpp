@@ -32,6 +32,28 @@ std::string mmOrDeg(double v, int digits) {
   return text;
 }
 
+// The first unstable tyre-spring step of each wheel, said as it happens
+// (RunOptions::warn) and kept for the summary. The engines register the
+// wheels in body order: WheelId k is the k-th of VehicleDescription::wheels().
+class UnstableSpringWatch final : public WheelListener {
+ public:
+  UnstableSpringWatch(const vehicle::VehicleDescription& v, const std::function<void(const std::string&)>& warn)
+      : warn_(warn) {
+    for (const int w : v.wheels()) names_.push_back(v.bodies[w].name);
+    first_.resize(names_.size());
+  }
+  void onFirstUnstableStep(WheelId wheel, const SpringStability& s) override {
+    first_[static_cast<std::size_t>(wheel)] = describe(s);
+    if (warn_) warn_("wheel " + names_[static_cast<std::size_t>(wheel)] + ": " + first_[wheel] + ", first at this step");
+  }
+  /// describe() of the wheel's first unstable step ("" if none).
+  const std::string& first(std::size_t k) const { return first_[k]; }
+
+ private:
+  std::function<void(const std::string&)> warn_;
+  std::vector<std::string> names_, first_;
+};
+
 }  // namespace
 
 RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& options) {
@@ -44,6 +66,8 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
 
   const std::unique_ptr<vehicle::Controller> controller = scene.make_controller();
   Run run(engine, controller.get(), scene.vehicle_effects);
+  UnstableSpringWatch spring_watch(scene.vehicle, options.warn);
+  engine.setWheelListener(&spring_watch);
   std::optional<Recorder> recorder;
   if (options.out_dir) recorder.emplace(*options.out_dir, run);
   const vehicle::VehicleDescription& v = scene.vehicle;
@@ -89,6 +113,7 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
     }
   }
   summary.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  engine.setWheelListener(nullptr);
 
   summary.steps = run.steps();
   summary.sim_time = run.time();
@@ -111,6 +136,7 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
                                  " of " + std::to_string(d.steps) + " steps");
     }
   }
+  std::size_t wheel_index = 0;
   for (const int w : v.wheels()) {
     const std::uint64_t skipped = engine.wheelState(w).nonFiniteSteps();
     if (skipped > 0) {
@@ -120,8 +146,10 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
     const std::uint64_t unstable = engine.wheelState(w).unstableSteps();
     if (unstable > 0) {
       summary.warnings.push_back("wheel " + v.bodies[w].name + ": tyre spring beyond its explicit stability limit in " +
-                                 std::to_string(unstable) + " steps (reduce dt or use constraint mode)");
+                                 std::to_string(unstable) + " steps (" + spring_watch.first(wheel_index) +
+                                 " at the first; reduce dt or use constraint mode)");
     }
+    ++wheel_index;
   }
   if (summary.max_joint_gap > kJointGapWarnM || summary.max_joint_angle > kJointAngleWarnRad) {
     summary.warnings.push_back("joints came apart by up to " + mmOrDeg(summary.max_joint_gap * 1e3, 3) + " mm and " +

@@ -43,6 +43,12 @@ def main():
     with open(os.path.join("tiny_step", "summary.json")) as f:
         tiny = json.load(f)
     check(r.returncode in (0, 1) and tiny["dt"] == 2.5e-7 and tiny["steps"] == 4, "--dt 2.5e-7 runs 4 steps of 2.5e-7 s")
+    # A step too large for the explicit tyre spring is said on stderr as it
+    # happens (once per wheel, with its numbers), even with --quiet.
+    r = subprocess.run([wtc_sim, scene, "--dt", "0.01", "--duration", "0.05", "--out", "big_step", "--no-plots",
+                        "--quiet"], capture_output=True, text=True)
+    said = [line for line in r.stderr.splitlines() if "largest stable step" in line and "first at this step" in line]
+    check(len(said) == 6, f"--dt 0.01: one stderr line per wheel on its first unstable step (got {len(said)})")
     r = subprocess.run([wtc_sim, os.path.join(work, "missing.yaml")], capture_output=True, text=True)
     check(r.returncode == 2 and "missing.yaml" in r.stderr and "not found" in r.stderr, "a missing scene file is named")
     check(not os.path.exists("bad"), "nothing is written for a refused command line")

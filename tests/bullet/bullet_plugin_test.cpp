@@ -355,6 +355,32 @@ TEST(BulletPluginTest, ListenerHearsEveryWheelAtEveryInternalStep) {
 }
 
 
+// Case: a tyre spring too stiff for the step is said once per wheel, with
+// its numbers (h sqrt(c/m) = 0.02 sqrt(1e5 / 3.7) = 3.3 against the limit
+// 2 (sqrt(1 + zeta^2) - zeta)), then only counted.
+TEST(BulletPluginTest, FirstUnstableStepOfEachWheelIsToldOnceWithItsNumbers) {
+  struct Recorder : bullet::WheelListener {
+    void onFirstUnstableStep(bullet::WheelId wheel, const SpringStability& s) override {
+      ++calls[wheel];
+      text = describe(s);
+      number = s.step_number;
+    }
+    int calls[1] = {0};
+    std::string text;
+    double number = 0.0;
+  } recorder;
+  const Terrain ground = flatGround();
+  BulletWorld w(ground, ContactMode::kForce);
+  WheelBody& wheel = w.addWheelBody(3.7, btVector3(0, 0, kRadius - 0.001));
+  testing::addWheel(w, wheel);
+  w.plugin->setListener(&recorder);
+  for (int k = 0; k < 10; ++k) w.world.stepSimulation(0.02, 1, 0.02);
+  EXPECT_EQ(recorder.calls[0], 1);
+  EXPECT_NEAR(recorder.number, 0.02 * std::sqrt(kStiffness / 3.7), 1e-9);
+  EXPECT_NE(recorder.text.find("the largest stable step is"), std::string::npos) << recorder.text;
+  EXPECT_GE(w.plugin->state(0).unstableSteps(), 1u);
+}
+
 // Case: a wheel whose body state goes NaN (a user's bad impulse, an engine
 // blow-up) inside stepSimulation: the plugin applies nothing for it, counts
 // it and tells the listener, and throws nothing through Bullet; the other

@@ -320,6 +320,29 @@ TEST(TyreModelTest, NoNanOrInfinityForAnyFiniteInput) {
   }
 }
 
+// Case: the springs of a wheel's contacts act in parallel; in the ledge's
+// foot (face and ground, both full contacts) the explicit step sees 2c, so
+// its step number is sqrt(2) times a flat-ground wheel's (issue: a V-valley
+// doubles the stiffness), and the report names it with the largest stable step.
+TEST(TyreModelTest, StabilityCountsTheStiffnessOfEveryContact) {
+  const Terrain ground = ledge();
+  const TyreModel model;
+  WheelState foot_state, flat_state;
+  const WheelForces& foot = model.step(ground, kWheel, inLedgeFoot(), motion(Vector3d::Zero()), kStepSeconds, foot_state);
+  ASSERT_EQ(foot.contacts.size(), 2u);
+  double shares = 0.0;
+  for (const ContactForce& c : foot.contacts) shares += c.contact.load_share;
+  EXPECT_GT(shares, 1.99);
+  const double c = kWheel.tyre.radial_stiffness;
+  EXPECT_NEAR(foot.normal_stability.stiffness, shares * c, kTolerance * c);
+  const SpringStability foot_stability = foot.normal_stability;
+  const WheelForces& flat =
+      model.step(testing::tiltedSlab(0.0), kWheel, onFlat(), motion(Vector3d::Zero()), kStepSeconds, flat_state);
+  ASSERT_EQ(flat.contacts.size(), 1u);
+  EXPECT_NEAR(foot_stability.step_number, std::sqrt(shares) * flat.normal_stability.step_number, 1e-12);
+  EXPECT_THAT(describe(foot_stability), HasSubstr("the largest stable step is"));
+}
+
 TEST(TyreModelTest, BadInputIsAnErrorThatNamesIt) {
   const Terrain flat = tiltedSlab(0.0);
   const TyreModel model;

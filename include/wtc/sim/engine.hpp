@@ -76,7 +76,8 @@ class Engine {
   /// The last step's tyre result and state of a wheel body.
   virtual const WheelForces& wheelForces(int body) const = 0;
   virtual const WheelState& wheelState(int body) const = 0;
-  /// Called for each wheel at each step after its tyre model ran; null: none.
+  /// Called for each wheel at each step after its tyre model ran; null:
+  /// none. Its WheelId k is the k-th wheel of vehicle().wheels().
   virtual void setWheelListener(WheelListener* listener) = 0;
 
   const EngineSettings& settings() const { return settings_; }

@@ -24,6 +24,9 @@ struct RunOptions {
   std::function<void(double fraction)> progress;  ///< Called about every 1 % of the run.
   const std::atomic<bool>* stop = nullptr;        ///< Set (by a signal handler) to end the run early.
   Replay* replay = nullptr;                       ///< Given every step (Replay::observe), if set.
+  /// Told at once what the summary will warn of later, where waiting would
+  /// hide it (a wheel's first unstable tyre-spring step, with its numbers).
+  std::function<void(const std::string& warning)> warn;
 };
 
 struct DriveSummary {

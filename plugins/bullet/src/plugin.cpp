@@ -187,6 +187,9 @@ void Plugin::Impl::preTick(double h) {
     // rolling moment alone.
     applyWrench(w, k, toBullet(r.force), toBullet(r.torque), h);
     if (listener != nullptr) listener->onWheelStep(static_cast<WheelId>(id), w.mounted.forces(), h);
+    if (listener != nullptr && w.mounted.state().firstUnstableStep()) {
+      listener->onFirstUnstableStep(static_cast<WheelId>(id), w.mounted.forces().normal_stability);
+    }
   }
 }
 

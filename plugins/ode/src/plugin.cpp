@@ -131,6 +131,9 @@ void Plugin::Impl::beginStep(double h) {
     // Counted now, taken back when handlePair hands the contacts to ODE.
     if (!w.contacts.empty()) ++w.diagnostics.unhandled_steps;
     if (listener != nullptr) listener->onWheelStep(static_cast<WheelId>(id), w.mounted.forces(), h);
+    if (listener != nullptr && w.mounted.state().firstUnstableStep()) {
+      listener->onFirstUnstableStep(static_cast<WheelId>(id), w.mounted.forces().normal_stability);
+    }
   }
 }
 
