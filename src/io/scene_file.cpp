@@ -151,7 +151,8 @@ void readController(const YamlReader& in, const YAML::Node& node, sim::Scene& sc
           std::make_unique<vehicle::ScheduleController>(v, schedules, "controller"));
     };
   } else if (scene.controller_type == "path") {
-    in.checkKeys(node, {"type", "body", "left_drive", "right_drive", "lead", "x", "y", "gains", "max_tracking_error"});
+    in.checkKeys(node,
+                 {"type", "body", "left_drive", "right_drive", "lead", "x", "y", "gains", "max_tracking_error", "end_time"});
     vehicle::PathControllerParams p;
     p.body = in.string(in.require(node, "body"), "controller.body");
     p.left_drive = in.string(in.require(node, "left_drive"), "controller.left_drive");
@@ -172,6 +173,7 @@ void readController(const YamlReader& in, const YAML::Node& node, sim::Scene& sc
       p.gain_y = k.y();
     }
     p.max_tracking_error = in.number(node, "max_tracking_error", p.max_tracking_error);
+    if (YamlReader::get(node, "end_time")) p.end_time = in.number(node, "end_time", p.end_time);
     try {
       vehicle::PathController check(scene.vehicle, p, "controller");
     } catch (const InvalidInputError& e) {

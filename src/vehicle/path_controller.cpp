@@ -29,6 +29,9 @@ PathController::PathController(const VehicleDescription& v, const PathController
   if (!std::isfinite(p.gain_x) || !std::isfinite(p.gain_y) || p.gain_x < 0.0 || p.gain_y < 0.0) {
     throw InvalidInputError(where + ": gains must be finite and >= 0");
   }
+  if (std::isnan(p.end_time) || p.end_time <= 0.0) {
+    throw InvalidInputError(where + ": end_time " + formatNumber(p.end_time) + " s must be > 0");
+  }
   if (!std::isfinite(p.max_tracking_error) || p.max_tracking_error <= 0.0) {
     throw InvalidInputError(where + ": max_tracking_error must be > 0 m");
   }
@@ -80,9 +83,16 @@ void PathController::update(const VehicleState& state, std::span<DriveCommand> c
   const double psi = std::atan2(forward.y(), forward.x());
   const Eigen::Vector2d heading(std::cos(psi), std::sin(psi)), left(-std::sin(psi), std::cos(psi));
 
-  const Eigen::Vector2d error = desired(state.time) - pointC(pose);
+  // After the path's end, or once the path is lost, the drive wheels are
+  // told to stop (a tug that cannot follow must not chase; holding a point
+  // by steering C would turn the tug to and fro against the hitch). The
+  // error is then measured to the path's last point.
+  const double t = std::min(state.time, params_.end_time);
+  const Eigen::Vector2d error = desired(t) - pointC(pose);
+  const bool stop = lost_ || state.time >= params_.end_time;
   const Eigen::Vector2d u =
-      desiredVelocity(state.time) + Eigen::Vector2d(params_.gain_x, params_.gain_y).cwiseProduct(error);
+      stop ? Eigen::Vector2d::Zero()
+           : Eigen::Vector2d(desiredVelocity(t) + Eigen::Vector2d(params_.gain_x, params_.gain_y).cwiseProduct(error));
   const double speed = u.dot(heading);
   const double yaw_rate = u.dot(left) / params_.lead;
   commands[right_] = {.mode = DriveMode::kVelocity, .value = (speed + yaw_rate * half_track_) / radius_};

@@ -101,5 +101,26 @@ TEST(TowedSystemTest, LowestFrictionCaseFailsAndSaysSo) {
   }
 }
 
+// Polynomials run away outside the time they were made for: at the path's
+// end_time the tug stops near its last point and stands still; a tug that
+// lost its path stops instead of chasing it.
+TEST(TowedSystemTest, AtItsEndThePathStopsTheTugAndSoDoesALostPath) {
+  constexpr double kStillMps = 0.02;
+  for (const auto& [engine, mode] : kEngines) {
+    const std::string label = std::string(engine) + "/" + mode;
+    const sim::RunSummary held =
+        run(scene("towed_path", {{"engine", engine}, {"mode", mode}, {"path", "2"}, {"duration", "30"}}));
+    EXPECT_TRUE(held.success) << label;
+    EXPECT_LT(held.fields.at("final_speed_mps"), kStillMps) << label;
+    // Stopping from 0.8 m/s takes it past the last point by its braking
+    // distance (0.16-0.24 m measured), within the path's 0.5 m.
+    EXPECT_LT(held.fields.at("final_tracking_error_m"), 0.5) << label;
+    const sim::RunSummary lost =
+        run(scene("towed_incline", {{"engine", engine}, {"mode", mode}, {"friction_case", "3"}, {"duration", "20"}}));
+    EXPECT_FALSE(lost.success) << label;
+    EXPECT_LT(lost.fields.at("final_speed_mps"), kStillMps) << label;
+  }
+}
+
 }  // namespace
 }  // namespace wtc::testing

@@ -15,8 +15,12 @@
 // track, R the wheel radius); their motors hold these within their limits.
 //
 // The controller watches its own tracking error |C* - C|: once it exceeds
-// max_tracking_error the path is lost, and the run fails and says so.
+// max_tracking_error the path is lost, the drive wheels are told to stop,
+// and the run fails and says so. At end_time the path ends: the drive
+// wheels are told to stop there too (polynomials run away outside the time
+// they were made for).
 #include <array>
+#include <limits>
 #include <string>
 
 #include "wtc/vehicle/controller.hpp"
@@ -34,6 +38,8 @@ struct PathControllerParams {
   double gain_x = 1.0;                     ///< Kx (1/s), >= 0.
   double gain_y = 1.0;                     ///< Ky (1/s), >= 0.
   double max_tracking_error = 0.5;         ///< Beyond it the path is lost (m), > 0.
+  /// The path's end (s), > 0: from then on the drive wheels stop.
+  double end_time = std::numeric_limits<double>::infinity();
 };
 
 class PathController final : public Controller {
