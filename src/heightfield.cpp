@@ -62,8 +62,8 @@ ConvexPolyhedron makeTriangularPrism(const Eigen::Vector3d& a, const Eigen::Vect
 PieceRange addHeightfield(TerrainBuilder& builder, const Heightfield& f, MaterialId material) {
   validate(f);
   const double base_z = f.baseZ();
-  builder.requireRoomFor(f.pieceCount(), "wtc::addHeightfield (" + std::to_string(f.rows) + " x " +
-                                             std::to_string(f.cols) + " samples)");
+  builder.requireRoomFor(
+      f.pieceCount(), "wtc::addHeightfield (" + std::to_string(f.rows) + " x " + std::to_string(f.cols) + " samples)");
   PieceRange range{static_cast<PieceId>(builder.pieceCount()), 0};
   builder.reserve(f.pieceCount());
   for (int r = 0; r + 1 < f.rows; ++r) {

@@ -232,8 +232,7 @@ std::size_t Terrain::pieceMemoryBytes() const {
 }
 
 std::size_t Terrain::indexMemoryBytes() const {
-  return nodes_.capacity() * sizeof(Node) + order_.capacity() * sizeof(PieceId) +
-         leaf_boxes_.capacity() * sizeof(Aabb);
+  return nodes_.capacity() * sizeof(Node) + order_.capacity() * sizeof(PieceId) + leaf_boxes_.capacity() * sizeof(Aabb);
 }
 
 }  // namespace wtc

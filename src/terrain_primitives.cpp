@@ -91,8 +91,7 @@ PieceRange addSlab(TerrainBuilder& builder, const SlabParams& p, MaterialId mate
 PieceRange addIncline(TerrainBuilder& builder, const InclineParams& p, MaterialId material) {
   constexpr const char* kWhere = "wtc::addIncline";
   if (!(std::isfinite(p.angle) && p.angle > 0.0 && p.angle < 0.5 * std::numbers::pi)) {
-    throw InvalidInputError(std::string(kWhere) + ": angle = " + formatNumber(p.angle) +
-                            " must be in (0, pi/2) (rad)");
+    throw InvalidInputError(std::string(kWhere) + ": angle = " + formatNumber(p.angle) + " must be in (0, pi/2) (rad)");
   }
   requirePositive(p.length, kWhere, "length", "m");
   requirePositive(p.width, kWhere, "width", "m");

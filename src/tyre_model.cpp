@@ -58,9 +58,8 @@ const WheelForces& TyreModel::step(const Terrain& terrain, const WheelDescriptio
   return forces(terrain.materials(), wheel, pose, motion, step_seconds, contacts, state);
 }
 
-const WheelForces& TyreModel::stepInEngine(const Terrain& terrain, const WheelDescription& wheel,
-                                           const WheelPose& pose, const WheelMotion& motion, double step_seconds,
-                                           WheelState& state) const {
+const WheelForces& TyreModel::stepInEngine(const Terrain& terrain, const WheelDescription& wheel, const WheelPose& pose,
+                                           const WheelMotion& motion, double step_seconds, WheelState& state) const {
   const bool finite = isFinite(pose.center) && isFinite(pose.axle) && isFinite(motion.velocity) &&
                       isFinite(motion.angular_velocity) && isFinite(motion.hub_angular_velocity);
   state.last_skipped_ = !finite;

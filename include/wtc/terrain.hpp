@@ -6,8 +6,8 @@
 // Index: a static 4-wide bounding-volume hierarchy over the pieces' boxes,
 // built once (median splits along the widest axis of the centroids), its
 // child boxes in single precision rounded outward and tested four at a time;
-// leaves end with an exact test on the double boxes (docs/terrain.md). Chosen over FCL's DynamicAABBTreeCollisionManager and
-// Bullet's btDbvt by the benchmark bench/wheel_query_bench.cpp.
+// leaves end with an exact test on the double boxes (docs/terrain.md). Chosen over FCL's
+// DynamicAABBTreeCollisionManager and Bullet's btDbvt by the benchmark bench/wheel_query_bench.cpp.
 #include <cstdint>
 #include <span>
 #include <string>

@@ -26,9 +26,7 @@ class WheelListener {
   /// the step's stability limit (force mode): describe(stability) gives
   /// h sqrt(c/m) against the limit and the largest stable step. Later such
   /// steps are counted (WheelState::unstableSteps), not reported again.
-  virtual void onFirstUnstableStep(WheelId wheel, const SpringStability& stability) {
-    (void)wheel, (void)stability;
-  }
+  virtual void onFirstUnstableStep(WheelId wheel, const SpringStability& stability) { (void)wheel, (void)stability; }
 };
 
 }  // namespace wtc

@@ -151,8 +151,8 @@ void readController(const YamlReader& in, const YAML::Node& node, sim::Scene& sc
           std::make_unique<vehicle::ScheduleController>(v, schedules, "controller"));
     };
   } else if (scene.controller_type == "path") {
-    in.checkKeys(node,
-                 {"type", "body", "left_drive", "right_drive", "lead", "x", "y", "gains", "max_tracking_error", "end_time"});
+    in.checkKeys(node, {"type", "body", "left_drive", "right_drive", "lead", "x", "y", "gains", "max_tracking_error",
+                        "end_time"});
     vehicle::PathControllerParams p;
     p.body = in.string(in.require(node, "body"), "controller.body");
     p.left_drive = in.string(in.require(node, "left_drive"), "controller.left_drive");

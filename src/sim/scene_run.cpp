@@ -44,7 +44,8 @@ class UnstableSpringWatch final : public WheelListener {
   }
   void onFirstUnstableStep(WheelId wheel, const SpringStability& s) override {
     first_[static_cast<std::size_t>(wheel)] = describe(s);
-    if (warn_) warn_("wheel " + names_[static_cast<std::size_t>(wheel)] + ": " + first_[wheel] + ", first at this step");
+    if (warn_)
+      warn_("wheel " + names_[static_cast<std::size_t>(wheel)] + ": " + first_[wheel] + ", first at this step");
   }
   /// describe() of the wheel's first unstable step ("" if none).
   const std::string& first(std::size_t k) const { return first_[k]; }
@@ -140,8 +141,8 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
   for (const int w : v.wheels()) {
     const std::uint64_t skipped = engine.wheelState(w).nonFiniteSteps();
     if (skipped > 0) {
-      summary.warnings.push_back("wheel " + v.bodies[w].name + ": body state not finite in " +
-                                 std::to_string(skipped) + " steps (no tyre force applied in those)");
+      summary.warnings.push_back("wheel " + v.bodies[w].name + ": body state not finite in " + std::to_string(skipped) +
+                                 " steps (no tyre force applied in those)");
     }
     const std::uint64_t unstable = engine.wheelState(w).unstableSteps();
     if (unstable > 0) {

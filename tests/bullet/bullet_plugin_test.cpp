@@ -354,7 +354,6 @@ TEST(BulletPluginTest, ListenerHearsEveryWheelAtEveryInternalStep) {
   EXPECT_GT(recorder.last_force[1], 0.0);
 }
 
-
 // Case: a tyre spring too stiff for the step is said once per wheel, with
 // its numbers (h sqrt(c/m) = 0.02 sqrt(1e5 / 3.7) = 3.3 against the limit
 // 2 (sqrt(1 + zeta^2) - zeta)), then only counted.

@@ -328,7 +328,8 @@ TEST(TyreModelTest, StabilityCountsTheStiffnessOfEveryContact) {
   const Terrain ground = ledge();
   const TyreModel model;
   WheelState foot_state, flat_state;
-  const WheelForces& foot = model.step(ground, kWheel, inLedgeFoot(), motion(Vector3d::Zero()), kStepSeconds, foot_state);
+  const WheelForces& foot =
+      model.step(ground, kWheel, inLedgeFoot(), motion(Vector3d::Zero()), kStepSeconds, foot_state);
   ASSERT_EQ(foot.contacts.size(), 2u);
   double shares = 0.0;
   for (const ContactForce& c : foot.contacts) shares += c.contact.load_share;

@@ -27,8 +27,8 @@ struct Wheel {
   btRigidBody* hub = nullptr;
   btCollisionObject* collider = nullptr;
   btVector3 axle_local, centre_local;
-  MountedWheel mounted;                         // tyre model, state, this step's result and engine contacts
-  std::unique_ptr<WheelShape> shape;            // replaces the collider's shape while registered
+  MountedWheel mounted;                                 // tyre model, state, this step's result and engine contacts
+  std::unique_ptr<WheelShape> shape;                    // replaces the collider's shape while registered
   btVector3 link_force{0, 0, 0}, link_torque{0, 0, 0};  // multibody: what this substep added
 };
 

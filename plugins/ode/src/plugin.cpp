@@ -215,9 +215,7 @@ WheelId Plugin::addWheel(const RigidWheel& wheel) { return impl_->add(wheel); }
 void Plugin::beginStep(double step_seconds) { impl_->beginStep(step_seconds); }
 bool Plugin::handlePair(dGeomID a, dGeomID b, dJointGroupID contacts) { return impl_->handlePair(a, b, contacts); }
 
-const WheelForces& Plugin::forces(WheelId wheel) const {
-  return impl_->wheel(wheel).mounted.forces();
-}
+const WheelForces& Plugin::forces(WheelId wheel) const { return impl_->wheel(wheel).mounted.forces(); }
 
 const WheelState& Plugin::state(WheelId wheel) const { return impl_->wheel(wheel).mounted.state(); }
 std::span<const SolvedContact> Plugin::solvedContacts(WheelId wheel) const { return impl_->wheel(wheel).contacts; }
