@@ -94,23 +94,25 @@ bool hasOffExtension(const std::filesystem::path& path) {
   return ext == ".off";
 }
 
-// The OFF keyword at the start of `token`, possibly with the next number
-// glued to it ("OFF3585235358": assimp reads the keyword's three letters
-// and then the count, with or without a space between). A file named *.off
-// without any keyword is still read by assimp's OFF reader, from its first
-// number ("3535235358 6 0"). Both found by fuzzing. Returns the keyword
-// ("OFF" for a bare *.off file; "" if not OFF), the rest of the token that
-// is the first count in `rest`.
+// What assimp's OFF reader takes for the keyword and the first count in a
+// header's first token: it skips the keyword's letters ([ST][C][N][4][n]OFF)
+// and reads the count from what follows them, glued or not ("OFF3585235358",
+// "ST353523355"); a file named *.off is read by it even without a keyword
+// ("3535235358 6 0"). All three found by fuzzing (assimp asked for 4-43 GB).
+// Returns the keyword ("OFF" when there is none but the name says OFF; ""
+// if the file is not OFF) and the first count's text in `rest` ("" when it
+// is the next token).
 std::string_view offKeywordOf(const std::filesystem::path& path, std::string_view token, std::string_view& rest) {
   rest = {};
   const std::size_t off = token.find("OFF");
-  if (off != std::string_view::npos && isOffKeyword(token.substr(0, off + 3))) {
-    rest = token.substr(off + 3);
-    return token.substr(0, off + 3);
+  const bool keyword = off != std::string_view::npos && isOffKeyword(token.substr(0, off + 3));
+  if (!keyword && !hasOffExtension(path)) return {};
+  std::size_t letters = 0;  // the end of the token's last letter
+  for (std::size_t i = 0; i < token.size(); ++i) {
+    if (std::isalpha(static_cast<unsigned char>(token[i]))) letters = i + 1;
   }
-  if (!hasOffExtension(path)) return {};
-  rest = token;
-  return "OFF";
+  rest = token.substr(keyword ? off + 3 : letters);
+  return keyword ? token.substr(0, off + 3) : std::string_view("OFF");
 }
 
 void checkOff(const std::filesystem::path& path, std::string_view bytes, std::uint64_t file_size) {
@@ -215,23 +217,39 @@ std::uint64_t plyTypeBytes(std::string_view type) {
 }
 
 void checkPly(const std::filesystem::path& path, std::string_view bytes, std::uint64_t file_size) {
-  if (bytes.substr(0, 3) != "ply") return;
-  // A PLY header is lines of printable text ending in end_header (PLY's
-  // definition); assimp 5.2 loops forever on a header without one that holds
-  // control bytes (found by fuzzing: wtc_fuzz_mesh_ply hung), so refuse both.
+  // assimp takes "ply" in any case ("pLy" hung it too), and reads a *.ply
+  // file as PLY whatever its first bytes.
+  std::string magic(bytes.substr(0, 3));
+  std::transform(magic.begin(), magic.end(), magic.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (magic != "ply" && ext != ".ply") return;
+  // A PLY header is lines of printable ASCII ending in end_header (PLY's
+  // definition); assimp 5.2 loops forever on headers with control or
+  // non-ASCII bytes, with or without end_header (found by fuzzing:
+  // wtc_fuzz_mesh_ply hung twice), so refuse both.
   const std::size_t end = bytes.find("end_header");
   const std::size_t header_end = end == std::string_view::npos ? bytes.size() : end;
   for (std::size_t i = 0; i < header_end; ++i) {
     const auto c = static_cast<unsigned char>(bytes[i]);
-    if (c < 0x20 && c != '\n' && c != '\r' && c != '\t') {
-      throw InvalidInputError(where(path) + "PLY header holds a control byte (" + std::to_string(c) + ") at byte " +
-                              std::to_string(i) + ": not a PLY file");
+    if ((c < 0x20 && c != '\n' && c != '\r' && c != '\t') || c >= 0x7f) {
+      throw InvalidInputError(where(path) + "PLY header holds a byte that is not printable ASCII (" +
+                              std::to_string(c) + ") at byte " + std::to_string(i) + ": not a PLY file");
     }
   }
   if (end == std::string_view::npos) {
     if (file_size > bytes.size()) return;  // the header goes on past the head read: assimp decides
     throw InvalidInputError(where(path) + "PLY header has no end_header line: not a PLY file");
   }
+  // end_header ends its line (PLY's grammar; assimp 5.2 hangs on
+  // end_header followed by a byte: found by fuzzing). Other header lines
+  // are left to assimp: old exporters wrote free text there (Blender's
+  // "Created by ..." in assimp's own Wuson.ply), which it reads.
+  const std::size_t after = end + std::string_view("end_header").size();
+  if (!(after == bytes.size() || bytes[after] == '\n' || bytes.substr(after, 2) == "\r\n")) {
+    throw InvalidInputError(where(path) + "PLY header: end_header must end its line: not a PLY file");
+  }
+
   std::size_t body = bytes.find('\n', end);
   body = body == std::string_view::npos ? bytes.size() : body + 1;
   bool ascii = true;

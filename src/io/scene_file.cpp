@@ -264,7 +264,9 @@ Override parseOverride(const std::string& text) {
   return {.path = text.substr(0, eq), .value = text.substr(eq + 1)};
 }
 
-sim::Scene loadScene(const std::filesystem::path& path, std::span<const Override> overrides) {
+namespace {
+
+sim::Scene readSceneFile(const std::filesystem::path& path, std::span<const Override> overrides) {
   YAML::Node root = detail::loadYamlFile(path);
   const YamlReader in(path);
   in.requireMap(root, "scene file");
@@ -354,6 +356,12 @@ sim::Scene loadScene(const std::filesystem::path& path, std::span<const Override
     }
   }
   return scene;
+}
+
+}  // namespace
+
+sim::Scene loadScene(const std::filesystem::path& path, std::span<const Override> overrides) {
+  return detail::withYamlErrors(path, [&] { return readSceneFile(path, overrides); });
 }
 
 }  // namespace wtc::io

@@ -257,7 +257,8 @@ TerrainFileReport detail::addTerrainNode(TerrainBuilder& builder, const YamlRead
 }
 
 TerrainFileReport addTerrainFile(TerrainBuilder& builder, const std::filesystem::path& path) {
-  return detail::addTerrainNode(builder, YamlReader(path), detail::loadYamlFile(path));
+  return detail::withYamlErrors(
+      path, [&] { return detail::addTerrainNode(builder, YamlReader(path), detail::loadYamlFile(path)); });
 }
 
 Terrain loadTerrain(const std::filesystem::path& path) {

@@ -177,9 +177,8 @@ Hitch readHitch(const YamlReader& in, const YAML::Node& node, const VehicleDescr
   return h;
 }
 
-}  // namespace
 
-VehicleDescription loadVehicle(const std::filesystem::path& path) {
+VehicleDescription readVehicleFile(const std::filesystem::path& path) {
   const YAML::Node root = detail::loadYamlFile(path);
   const YamlReader in(path);
   in.requireMap(root, "vehicle file");
@@ -216,6 +215,12 @@ VehicleDescription loadVehicle(const std::filesystem::path& path) {
     in.fail(root, e.what());
   }
   return v;
+}
+
+}  // namespace
+
+VehicleDescription loadVehicle(const std::filesystem::path& path) {
+  return detail::withYamlErrors(path, [&] { return readVehicleFile(path); });
 }
 
 }  // namespace wtc::io

@@ -25,6 +25,23 @@ class YamlError : public InvalidInputError {
 /// unreadable file and "<path>:<line>:<col>: YAML syntax error: ..." .
 YAML::Node loadYamlFile(const std::filesystem::path& path);
 
+/// Runs `read` (a loader's reading of `path`) and turns any yaml-cpp
+/// exception that escapes it (a conversion of a node whose shape no check
+/// foresaw: a tagged key, a mapping used as a key; found by fuzzing) into
+/// "<path>:<line>:<col>: <yaml-cpp's message>".
+template <class Read>
+auto withYamlErrors(const std::filesystem::path& path, Read&& read) {
+  try {
+    return read();
+  } catch (const YAML::Exception& e) {
+    throw InvalidInputError(path.string() + ":" +
+                            (e.mark.line >= 0 ? std::to_string(e.mark.line + 1) + ":" +
+                                                    std::to_string(e.mark.column + 1) + ":"
+                                              : std::string()) +
+                            " " + e.msg);
+  }
+}
+
 class YamlReader {
  public:
   /// `context` prefixes messages (e.g. "pieces[2] (ledge): ").

@@ -214,7 +214,11 @@ TEST_F(MeshFileTest, BrokenFilesWrittenHereGiveErrorsWithThePath) {
       {write("no_end_header.ply", "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\n"),
        "PLY header has no end_header line"},
       {write("control_bytes.ply", std::string("ply\nformat ascii 1.0\nelement verte\x03\0\0\0\x03\x07 4\n", 40)),
-       "PLY header holds a control byte (3)"},
+       "PLY header holds a byte that is not printable ASCII (3)"},
+      {write("high_bytes.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float \xff\xff\nend_header\n0\n"),
+       "PLY header holds a byte that is not printable ASCII (255)"},
+      {write("glued_end.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\x10" "5\n"),
+       "PLY header: end_header must end its line"},
       {write("bad_number.stl", "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0\n"),
        "cannot read the mesh file: "},
       {write("unknown.xyz123", "1 2 3\n"), "cannot read the mesh file: "},
@@ -248,6 +252,8 @@ TEST_F(MeshFileTest, DeclaredCountsBeyondTheFileSizeAreRefusedBeforeAssimpReads)
       // No keyword at all: assimp's OFF reader, chosen by the extension, reads
       // the counts from the first line (also found by wtc_fuzz_mesh_off).
       {write("bare.off", "3535235358 6 0\n-0.5 0.5\n"), "OFF header declares 3535235358 vertices and 6 faces"},
+      // Keyword letters that do not spell OFF, then the count (wtc_fuzz_mesh_off).
+      {write("letters.off", "ST353523355 85\n"), "OFF header declares 353523355 vertices and 85 faces"},
       {write("huge.ply",
              "ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\nproperty float x\n"
              "property float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\n"

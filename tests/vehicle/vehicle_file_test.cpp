@@ -79,6 +79,11 @@ TEST(VehicleFileTest, BadFilesAreRefusedWithFileLineBodyAndProblem) {
   // "operator[] call on a scalar" escaped as a YAML::Exception).
   EXPECT_THAT(errorOfFile(head + "  - namee ground is z = 0\n"),
               HasSubstr("wtc_vehicle_file_test.yaml:6:5: bodies[1] must be a mapping (key: value lines)"));
+  // Case: a tagged key inside a flow mapping (found by wtc_fuzz_vehicle with a
+  // fixed seed: yaml-cpp's "bad conversion" escaped as a YAML::Exception).
+  EXPECT_THAT(errorOfFile(head + "  - name: w\n    parent: base\n    mass: 5\n"
+                                 "    wheel: {radius: 0.15, width: 0.30,!tyre: {radial_stiffness: 2.0e5}}\n"),
+              HasSubstr("wtc_vehicle_file_test.yaml:"));
   // Case: a value of the wrong type.
   EXPECT_THAT(errorOfFile("name: v\nbodies:\n  - name: base\n    mass: heavy\n    shape: {sphere: 1}\n"),
               HasSubstr(":4:11: bodies[0] (base): mass: 'heavy' is not a number"));
