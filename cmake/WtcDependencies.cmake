@@ -29,6 +29,10 @@ endif()
 # `yaml-cpp` (no namespace) in 0.7.
 find_package(assimp CONFIG REQUIRED)
 find_package(yaml-cpp CONFIG REQUIRED)
+# summary.json of a run (wtc::io), wtc-sim and wtc-study.
+find_package(nlohmann_json 3 CONFIG REQUIRED)
+# wtc::study runs a study's simulations on a TBB worker pool.
+find_package(TBB CONFIG REQUIRED)
 
 # A package's CMake config can name files that only another package installs:
 # Debian's assimp config links /usr/lib/<arch>/libz.so, and libassimp-dev does

@@ -1,6 +1,6 @@
 # Installs the library and a relocatable CMake package:
 #   find_package(wtc CONFIG REQUIRED)  ->  wtc::core, wtc::vehicle, wtc::sim, wtc::io, wtc::bullet, wtc::ode,
-#   wtc::bullet_sim, wtc::ode_sim, wtc::sim_engines
+#   wtc::bullet_sim, wtc::ode_sim, wtc::sim_engines, wtc::study
 include(CMakePackageConfigHelpers)
 
 install(TARGETS wtc_core EXPORT wtcTargets
@@ -15,7 +15,8 @@ install(TARGETS wtc_vehicle wtc_sim wtc_io EXPORT wtcTargets
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 # The engine adapters.
-foreach(adapter IN ITEMS wtc_bullet wtc_ode wtc_bullet_sim wtc_ode_sim wtc_sim_engines)
+# And the accuracy study (wtc::study), which needs every engine.
+foreach(adapter IN ITEMS wtc_bullet wtc_ode wtc_bullet_sim wtc_ode_sim wtc_sim_engines wtc_study)
   if(TARGET ${adapter})
     install(TARGETS ${adapter} EXPORT wtcTargets
       ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}

@@ -14,6 +14,7 @@ packages=(
   python3 python3-matplotlib                    # wtc-sim's figures
   libjs-three chromium-headless-shell           # the replay page (three.js) and its test (headless Chromium)
   clang-14 libclang-rt-14-dev                   # libFuzzer, ASan, UBSan for fuzz/ (ctest -L fuzz)
+  libtbb-dev parallel                           # the accuracy study: runs on all cores (TBB), or as a job list (GNU parallel)
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -11,9 +11,9 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <nlohmann/json.hpp>
 
 #include "wtc/error.hpp"
+#include "wtc/io/run_summary_file.hpp"
 #include "wtc/io/scene_file.hpp"
 #include "wtc/sim/make_engine.hpp"
 #include "wtc/sim/replay.hpp"
@@ -27,13 +27,17 @@ std::atomic<bool> g_stop{false};
 extern "C" void onSignal(int) { g_stop = true; }
 
 // A directory for this run that no earlier run used: `requested` if given
-// (it must not exist or be empty), else runs/<scene>_<engine>_<mode>[_N].
-fs::path outputDirectory(const std::string& requested, const wtc::sim::RunSummary& names) {
+// (it must not exist or be empty; with `redo_unfinished`, one an unfinished
+// run left is emptied), else runs/<scene>_<engine>_<mode>[_N].
+fs::path outputDirectory(const std::string& requested, bool redo_unfinished, const wtc::sim::RunSummary& names) {
   if (!requested.empty()) {
     const fs::path dir(requested);
     if (fs::exists(dir) && !fs::is_empty(dir)) {
-      throw wtc::InvalidInputError("--out " + requested +
-                                   ": the directory exists and is not empty (an earlier run's?)");
+      if (!redo_unfinished) {
+        throw wtc::InvalidInputError("--out " + requested +
+                                     ": the directory exists and is not empty (an earlier run's?)");
+      }
+      for (const fs::directory_entry& e : fs::directory_iterator(dir)) fs::remove_all(e.path());
     }
     fs::create_directories(dir);
     return dir;
@@ -43,47 +47,6 @@ fs::path outputDirectory(const std::string& requested, const wtc::sim::RunSummar
   for (int n = 2; fs::exists(dir); ++n) dir = base + "_" + std::to_string(n);
   fs::create_directories(dir);
   return dir;
-}
-
-nlohmann::json toJson(const wtc::sim::RunSummary& s) {
-  nlohmann::json j = {{"scene", s.scene},
-                      {"status", s.interrupted ? "interrupted" : "completed"},
-                      {"engine", s.engine},
-                      {"mode", s.mode},
-                      {"dt", s.dt},
-                      {"sim_time", s.sim_time},
-                      {"wall_time", s.wall_time},
-                      {"real_time_factor", s.real_time_factor},
-                      {"steps", s.steps},
-                      {"success", s.success},
-                      {"nan", s.nan},
-                      {"interrupted", s.interrupted},
-                      {"max_penetration", s.max_penetration},
-                      {"max_joint_gap_m", s.max_joint_gap},
-                      {"max_joint_angle_deg", s.max_joint_angle * 180.0 / 3.14159265358979323846},
-                      {"saturation_steps", s.saturation_steps},
-                      {"warnings", s.warnings},
-                      {"parameters", s.parameters}};
-  for (const auto& [key, value] : s.fields) j[key] = value;
-  for (const wtc::sim::DriveSummary& d : s.drives) {
-    j["drives"][d.name] = {{"steps", d.steps},
-                           {"saturated_steps", d.saturated_steps},
-                           {"peak_effort", d.peak_effort},
-                           {"mean_effort", d.mean_effort}};
-  }
-  for (const auto& [name, slip] : s.wheel_peak_slip) j["wheels"][name]["peak_slip"] = slip;
-  return j;
-}
-
-// Written whole, then renamed: a reader never sees half a summary.
-void writeJson(const fs::path& path, const nlohmann::json& j) {
-  const fs::path tmp = path.string() + ".tmp";
-  {
-    std::ofstream out(tmp);
-    out << j.dump(2) << '\n';
-    if (!out) throw wtc::InvalidInputError("cannot write " + tmp.string());
-  }
-  fs::rename(tmp, path);
 }
 
 // A file of wtc-sim's own (the plotting script, the replay page): beside
@@ -116,7 +79,7 @@ int main(int argc, char** argv) {
   std::string scene_file, engine, mode, out;
   double dt = 0.0, duration = 0.0;
   std::vector<std::string> sets;
-  bool quiet = false, no_plots = false;
+  bool quiet = false, no_plots = false, skip_done = false;
   app.add_option("scene", scene_file, "scene file (YAML)")->required();
   app.add_option("--engine", engine, "bullet, ode or ode_quick (overrides the scene's)");
   app.add_option("--mode", mode, "force or constraint");
@@ -126,7 +89,18 @@ int main(int argc, char** argv) {
   app.add_option("--set", sets, "key.path=value: override any value of the scene (repeatable)");
   app.add_flag("--quiet", quiet, "no progress bar, no summary on stdout");
   app.add_flag("--no-plots", no_plots, "skip the figures");
+  app.add_flag("--skip-done", skip_done,
+               "with --out: do nothing if that directory holds a finished run, redo an unfinished one "
+               "(job lists: a batch resumes where it stopped)");
   CLI11_PARSE(app, argc, argv);
+  if (skip_done && out.empty()) {
+    std::cerr << "wtc-sim: --skip-done needs --out (the directory that holds the run)\n";
+    return 2;
+  }
+  if (skip_done && wtc::io::runCompleted(out)) {
+    if (!quiet) std::printf("%s: finished earlier, skipped\n", out.c_str());
+    return 0;
+  }
 
   wtc::sim::Scene scene;
   try {
@@ -148,7 +122,7 @@ int main(int argc, char** argv) {
     names.scene = scene.name;
     names.engine = std::string(wtc::sim::engineName(scene.engine.kind));
     names.mode = scene.engine.mode == wtc::ContactMode::kForce ? "force" : "constraint";
-    const fs::path dir = outputDirectory(out, names);
+    const fs::path dir = outputDirectory(out, skip_done, names);
 
     std::signal(SIGINT, onSignal);
     std::signal(SIGTERM, onSignal);
@@ -165,14 +139,7 @@ int main(int argc, char** argv) {
     }
     // A summary from the start: a run killed before its end (SIGKILL, a
     // power cut) leaves one that says so; the end replaces it whole.
-    writeJson(dir / "summary.json", {{"scene", names.scene},
-                                     {"engine", names.engine},
-                                     {"mode", names.mode},
-                                     {"dt", scene.engine.step_seconds},
-                                     {"status", "running"},
-                                     {"interrupted", true},
-                                     {"success", false},
-                                     {"note", "written when the run started; a run that ends replaces it"}});
+    wtc::io::writeRunStarted(dir / "summary.json", scene);
     // Said on stderr when it happens, even with --quiet (a warning, not progress).
     options.warn = [bar](const std::string& warning) {
       std::fprintf(stderr, "%swtc-sim: warning: %s\n", bar ? "\n" : "", warning.c_str());
@@ -181,7 +148,7 @@ int main(int argc, char** argv) {
     options.replay = &replay;
     const wtc::sim::RunSummary summary = wtc::sim::runScene(scene, *engine_ptr, options);
     if (bar) std::fprintf(stderr, "\n");
-    writeJson(dir / "summary.json", toJson(summary));
+    wtc::io::writeRunSummary(dir / "summary.json", summary);
     replay.write(dir / "replay_data.js", summary);
     if (const std::string problem = writeReplayPage(dir); !problem.empty()) {
       std::cerr << "wtc-sim: warning: replay page not written: " << problem << '\n';

@@ -1,9 +1,11 @@
 #include "wtc/ode/sim_engine.hpp"
 
 #include <array>
+#include <mutex>
 #include <vector>
 
 #include <ode/ode.h>
+#include <ode/threading_impl.h>
 
 #include "wtc/constants.hpp"
 #include "wtc/error.hpp"
@@ -17,6 +19,18 @@ using vehicle::JointType;
 using vehicle::Shape;
 
 constexpr int kMaxBodyContacts = 8;  // per body-ground pair, for ODE's own colliders
+
+// Debian's ODE is built without its thread-local storage (dGetConfiguration
+// lacks ODE_EXT_ou), so two of its states are process-wide: the init counter
+// of dInitODE2/dCloseODE and the seed of dRandInt, which dWorldQuickStep
+// uses to reorder the constraints every 8 iterations. Engines in several
+// threads (a study's parallel runs) take this lock around both, and each
+// quickstep world keeps its own seed: its run is then the same whatever
+// else runs beside it, in this thread or another.
+std::mutex& odeGlobalsLock() {
+  static std::mutex lock;
+  return lock;
+}
 
 Eigen::Vector3d toEigen(const dReal* v) { return {v[0], v[1], v[2]}; }
 
@@ -79,8 +93,16 @@ class SimEngine final : public sim::Engine {
   SimEngine(const sim::EngineSettings& settings, const Terrain& terrain, const vehicle::VehicleDescription& v,
             const Eigen::Isometry3d& placement)
       : sim::Engine(settings, v), terrain_(terrain), refs_(v.bodies.size()) {
-    dInitODE2(0);  // counted: matched by dCloseODE in the destructor
+    {
+      const std::lock_guard<std::mutex> lock(odeGlobalsLock());
+      dInitODE2(0);  // counted: matched by dCloseODE in the destructor
+    }
     world_ = dWorldCreate();
+    // A world steps through a threading implementation; without one of its
+    // own it uses ODE's process-wide default, whose wake-up flags two worlds
+    // stepping in two threads trip over (an assertion in WaitWakeup).
+    threading_ = dThreadingAllocateSelfThreadedImplementation();
+    dWorldSetStepThreadingImplementation(world_, dThreadingImplementationGetFunctions(threading_), threading_);
     dWorldSetGravity(world_, 0, 0, -kGravityMps2);
     dWorldSetQuickStepNumIterations(world_, settings.solver_iterations);
     space_ = dHashSpaceCreate(nullptr);
@@ -105,6 +127,8 @@ class SimEngine final : public sim::Engine {
     dJointGroupDestroy(contacts_);
     dSpaceDestroy(space_);  // destroys the bodies' geoms (cleanup mode on)
     dWorldDestroy(world_);  // and the bodies and joints
+    dThreadingFreeImplementation(threading_);
+    const std::lock_guard<std::mutex> lock(odeGlobalsLock());
     dCloseODE();
   }
 
@@ -126,7 +150,10 @@ class SimEngine final : public sim::Engine {
     plugin_->beginStep(h);
     dSpaceCollide(space_, this, &SimEngine::nearCallback);
     if (settings().kind == sim::EngineKind::kOdeQuick) {
+      const std::lock_guard<std::mutex> lock(odeGlobalsLock());
+      dRandSetSeed(quickstep_seed_);
       dWorldQuickStep(world_, h);
+      quickstep_seed_ = dRandGetSeed();
     } else {
       dWorldStep(world_, h);
     }
@@ -313,6 +340,8 @@ class SimEngine final : public sim::Engine {
   const Terrain& terrain_;
   std::vector<PieceId> near_pieces_;  // scratch
   dWorldID world_ = nullptr;
+  dThreadingImplementationID threading_ = nullptr;  // this world's own (see the constructor)
+  unsigned long quickstep_seed_ = 0;  // this world's dRandInt stream (see odeGlobalsLock)
   dSpaceID space_ = nullptr;
   dJointGroupID contacts_ = nullptr;
   std::unique_ptr<Plugin> plugin_;

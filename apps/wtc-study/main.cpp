@@ -1,0 +1,100 @@
+// wtc-study: what accuracy costs in time. Runs a study file's settings
+// (bench/accuracy_study.yaml) on all cores, or writes them as a job list
+// for GNU parallel or a Slurm array, and gathers the finished runs into
+// tables and a figure. It parses, runs and writes; the study is wtc::study.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <thread>
+
+#include "wtc/error.hpp"
+#include "wtc/io/study_file.hpp"
+#include "wtc/study/study_results.hpp"
+#include "wtc/study/study_runner.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// A file of wtc-study's own: beside the sources in a build tree, else where it is installed.
+fs::path ownFile(const std::string& name) {
+  const fs::path source = fs::path(WTC_SOURCE_DIR) / "apps/wtc-study" / name;
+  if (fs::exists(source)) return source;
+  return fs::path(WTC_INSTALL_DATADIR) / name;
+}
+
+// Tables and the figure from the finished runs in `out`.
+int gather(const wtc::study::StudyPlan& plan, const fs::path& out, bool plots) {
+  const std::vector<wtc::study::RunResult> results = wtc::study::gatherResults(plan, out);
+  wtc::study::writeResultsCsv(out / "results.csv", results);
+  wtc::study::writeResultsMarkdown(out / "results.md", plan, results);
+  std::printf("wtc-study: %zu runs gathered: %s, %s\n", results.size(), (out / "results.md").c_str(),
+              (out / "results.csv").c_str());
+  if (plots) {
+    const std::string args = " '" + ownFile("plot_study.py").string() + "' '" + out.string() + "'";
+    int rc = std::system(("python3" + args + " 2>/dev/null").c_str());
+    if (rc != 0) rc = std::system(("/usr/bin/python3" + args).c_str());
+    if (rc != 0) std::fprintf(stderr, "wtc-study: warning: figure not drawn (python3 with matplotlib is needed)\n");
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"wtc-study: what accuracy costs in time (a study file's runs against a reference)"};
+  app.require_subcommand(1);
+  std::string study_file, out, wtc_sim;
+  int workers = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  bool no_plots = false;
+  for (CLI::App* sub : {app.add_subcommand("run", "make the runs not finished yet, on --workers threads, then gather"),
+                        app.add_subcommand("jobs", "write <out>/jobs.txt: one wtc-sim command per run"),
+                        app.add_subcommand("gather", "tables and figure from the finished runs in <out>")}) {
+    sub->add_option("study", study_file, "study file (YAML)")->required();
+    sub->add_option("--out", out, "the study's directory (default study/<name>)");
+    sub->add_flag("--no-plots", no_plots, "skip the figure");
+  }
+  app.get_subcommand("run")->add_option("--workers", workers, "simulations at once (default: the cores)")
+      ->check(CLI::PositiveNumber);
+  app.get_subcommand("jobs")->add_option("--wtc-sim", wtc_sim, "the wtc-sim the lines call (default: the one beside)");
+  CLI11_PARSE(app, argc, argv);
+
+  try {
+    const wtc::study::StudyPlan plan = wtc::io::loadStudyPlan(study_file);
+    const fs::path dir = out.empty() ? fs::path("study") / plan.name : fs::path(out);
+    fs::create_directories(dir);
+    if (app.got_subcommand("run")) {
+      std::printf("wtc-study: %s: %zu runs on %d workers into %s\n", plan.name.c_str(), plan.runs.size(), workers,
+                  dir.c_str());
+      wtc::study::runPlan(plan, dir, workers, [](const wtc::study::RunDone& d) {
+        if (d.summary == nullptr) {
+          std::printf("[%zu/%zu] %s %s: finished earlier\n", d.done, d.total, d.run.scenario.c_str(),
+                      d.run.label.c_str());
+        } else {
+          std::printf("[%zu/%zu] %s %s: %s, %.1f s wall, %.1fx real time\n", d.done, d.total, d.run.scenario.c_str(),
+                      d.run.label.c_str(), d.summary->success ? "success" : "FAILED", d.summary->wall_time,
+                      d.summary->real_time_factor);
+        }
+        std::fflush(stdout);
+      });
+      return gather(plan, dir, !no_plots);
+    }
+    if (app.got_subcommand("jobs")) {
+      // By default the wtc-sim installed or built beside this program, else the one on PATH.
+      const fs::path beside = fs::canonical("/proc/self/exe").parent_path() / "wtc-sim";
+      const fs::path chosen = !wtc_sim.empty() ? fs::path(wtc_sim) : fs::exists(beside) ? beside : "wtc-sim";
+      std::ofstream lines(dir / "jobs.txt");
+      for (const std::string& line : wtc::study::jobLines(plan, fs::absolute(dir), chosen)) lines << line << '\n';
+      if (!lines) throw wtc::InvalidInputError("cannot write " + (dir / "jobs.txt").string());
+      std::printf("wtc-study: %zu jobs in %s\n", plan.runs.size(), (dir / "jobs.txt").c_str());
+      return 0;
+    }
+    return gather(plan, dir, !no_plots);
+  } catch (const std::exception& e) {
+    std::cerr << "wtc-study: " << e.what() << '\n';
+    return 2;
+  }
+}

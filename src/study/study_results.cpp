@@ -1,0 +1,253 @@
+#include "wtc/study/study_results.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <numbers>
+#include <set>
+
+#include <Eigen/Core>
+
+#include "series.hpp"
+#include "wtc/error.hpp"
+#include "wtc/io/run_summary_file.hpp"
+#include "wtc/study/study_runner.hpp"
+
+namespace wtc::study {
+namespace {
+
+namespace fs = std::filesystem;
+using detail::Series;
+
+constexpr double kDegPerRad = 180.0 / std::numbers::pi;
+
+// A run's series, with the columns the measures need.
+struct RunSeries {
+  Series bodies, wheels;
+  std::size_t x = 0;                         // the first body's x; y, z follow
+  std::vector<std::size_t> pitched_qw;       // qw of each body that is not a wheel; qx qy qz follow
+  std::vector<std::size_t> wheel_fx;         // fx of each wheel; fy fz follow
+};
+
+RunSeries readRun(const fs::path& dir) {
+  RunSeries r;
+  r.bodies = detail::readSeries(dir / "bodies.csv");
+  r.wheels = detail::readSeries(dir / "wheels.csv");
+  std::set<std::string> wheels;
+  for (const std::string& n : r.wheels.names) {
+    if (n.ends_with(".contacts")) {
+      const std::string name = n.substr(0, n.size() - 9);
+      wheels.insert(name);
+      r.wheel_fx.push_back(r.wheels.column(name + ".fx_N"));
+    }
+  }
+  if (r.bodies.names.size() < 2) throw InvalidInputError((dir / "bodies.csv").string() + ": no body");
+  r.x = 1;
+  for (std::size_t c = 1; c < r.bodies.names.size(); ++c) {
+    const std::string& n = r.bodies.names[c];
+    if (n.ends_with(".qw") && !wheels.contains(n.substr(0, n.size() - 3))) r.pitched_qw.push_back(c);
+  }
+  return r;
+}
+
+Eigen::Vector3d vec(const std::vector<double>& row, std::size_t c) { return {row[c], row[c + 1], row[c + 2]}; }
+Eigen::Vector3d vecAt(const Series& s, std::size_t c, double t) {
+  return {detail::valueAt(s, c, t), detail::valueAt(s, c + 1, t), detail::valueAt(s, c + 2, t)};
+}
+
+// The angle of the body's x axis above the horizontal: asin(R_20), R_20 = 2 (qx qz - qw qy).
+double pitchDeg(const std::vector<double>& row, std::size_t qw) {
+  const double w = row[qw], x = row[qw + 1], y = row[qw + 2], z = row[qw + 3];
+  return std::asin(std::clamp(2.0 * (x * z - w * y), -1.0, 1.0)) * kDegPerRad;
+}
+
+double peakPitch(const RunSeries& r) {
+  double peak = 0.0;
+  for (const auto& row : r.bodies.rows) {
+    for (const std::size_t qw : r.pitched_qw) peak = std::max(peak, std::abs(pitchDeg(row, qw)));
+  }
+  return peak;
+}
+
+void measure(RunResult& out, const RunSeries& run, const RunSeries& ref) {
+  const double t_end = std::min(run.bodies.rows.back()[0], ref.bodies.rows.back()[0]);
+  double sum_sq = 0.0;
+  std::size_t n = 0;
+  for (const auto& row : run.bodies.rows) {
+    if (row[0] > t_end) break;
+    sum_sq += (vec(row, run.x) - vecAt(ref.bodies, ref.x, row[0])).squaredNorm();
+    ++n;
+  }
+  out.rms_position_error = n > 0 ? std::sqrt(sum_sq / static_cast<double>(n)) : 0.0;
+  out.final_position_error = (vecAt(run.bodies, run.x, t_end) - vecAt(ref.bodies, ref.x, t_end)).norm();
+  out.peak_pitch_deg = peakPitch(run);
+  out.peak_pitch_error_deg = std::abs(out.peak_pitch_deg - peakPitch(ref));
+
+  double force_sq = 0.0;
+  std::size_t m = 0;
+  for (const auto& row : run.wheels.rows) {
+    for (std::size_t w = 0; w < run.wheel_fx.size(); ++w) {
+      const double f = vec(row, run.wheel_fx[w]).norm();
+      out.peak_wheel_force = std::max(out.peak_wheel_force, f);
+      if (row[0] > t_end || w >= ref.wheel_fx.size()) continue;
+      const double f_ref = vecAt(ref.wheels, ref.wheel_fx[w], row[0]).norm();
+      force_sq += (f - f_ref) * (f - f_ref);
+      ++m;
+    }
+  }
+  out.rms_wheel_force_error = m > 0 ? std::sqrt(force_sq / static_cast<double>(m)) : 0.0;
+}
+
+bool succeeded(const RunResult& r) { return r.summary.success && !r.summary.nan; }
+
+void markFront(std::vector<RunResult>& results) {
+  std::map<std::string, std::vector<RunResult*>> by_scenario;
+  for (RunResult& r : results) {
+    if (succeeded(r)) by_scenario[r.run->scenario].push_back(&r);
+  }
+  for (auto& [scenario, runs] : by_scenario) {
+    std::sort(runs.begin(), runs.end(), [](const RunResult* a, const RunResult* b) {
+      return a->summary.wall_time != b->summary.wall_time ? a->summary.wall_time < b->summary.wall_time
+                                                          : a->rms_position_error < b->rms_position_error;
+    });
+    double best = std::numeric_limits<double>::infinity();
+    for (RunResult* r : runs) {
+      if (r->rms_position_error < best) {
+        r->on_front = true;
+        best = r->rms_position_error;
+      }
+    }
+  }
+}
+
+std::string number(double v, const char* format = "%.6g") {
+  char text[40];
+  std::snprintf(text, sizeof text, format, v);
+  return text;
+}
+
+std::string csvText(std::string text) {
+  if (text.find_first_of(",\"") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+std::string join(const std::vector<std::string>& cells, const char* separator) {
+  std::string text;
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    if (i > 0) text.append(separator);
+    text.append(cells[i]);
+  }
+  return text;
+}
+
+void writeOrThrow(const fs::path& file, const std::string& text) {
+  const fs::path tmp = file.string() + ".tmp";
+  {
+    std::ofstream out(tmp);
+    out << text;
+    if (!out) throw InvalidInputError("cannot write " + tmp.string());
+  }
+  fs::rename(tmp, file);
+}
+
+}  // namespace
+
+std::vector<RunResult> gatherResults(const StudyPlan& plan, const fs::path& out) {
+  std::string unfinished;
+  for (const PlannedRun& run : plan.runs) {
+    if (!io::runCompleted(runDirectory(out, run))) unfinished += "\n  " + run.key + " (" + run.label + ")";
+  }
+  if (!unfinished.empty()) {
+    throw InvalidInputError("study " + plan.name + ": runs not finished in " + (out / "runs").string() + ":" +
+                            unfinished);
+  }
+  std::map<std::string, RunSeries> references;
+  for (const PlannedRun& run : plan.runs) {
+    if (run.reference) references.emplace(run.scenario, readRun(runDirectory(out, run)));
+  }
+  std::vector<RunResult> results;
+  for (const PlannedRun& run : plan.runs) {
+    RunResult r;
+    r.run = &run;
+    const fs::path dir = runDirectory(out, run);
+    r.summary = io::readRunSummary(dir / "summary.json");
+    measure(r, readRun(dir), references.at(run.scenario));
+    if (const auto it = r.summary.fields.find("rms_tracking_error_m"); it != r.summary.fields.end()) {
+      r.path_error = it->second;
+    }
+    results.push_back(std::move(r));
+  }
+  markFront(results);
+  return results;
+}
+
+void writeResultsCsv(const fs::path& file, const std::vector<RunResult>& results) {
+  std::string text =
+      "scenario,key,sweep,label,engine,mode,dt_s,reference,success,nan,wall_time_s,real_time_factor,steps,"
+      "rms_position_error_m,final_position_error_m,peak_pitch_deg,peak_pitch_error_deg,peak_wheel_force_N,"
+      "rms_wheel_force_error_N,path_error_m,warnings,on_front\n";
+  for (const RunResult& r : results) {
+    const sim::RunSummary& s = r.summary;
+    text += join({csvText(r.run->scenario), r.run->key, csvText(r.run->sweep), csvText(r.run->label), s.engine,
+                  s.mode, number(s.dt), r.run->reference ? "1" : "0", s.success ? "1" : "0", s.nan ? "1" : "0",
+                  number(s.wall_time), number(s.real_time_factor), std::to_string(s.steps),
+                  number(r.rms_position_error), number(r.final_position_error), number(r.peak_pitch_deg),
+                  number(r.peak_pitch_error_deg), number(r.peak_wheel_force), number(r.rms_wheel_force_error),
+                  r.path_error ? number(*r.path_error) : std::string(), std::to_string(s.warnings.size()),
+                  r.on_front ? "1" : "0"},
+                 ",");
+    text += "\n";
+  }
+  writeOrThrow(file, text);
+}
+
+void writeResultsMarkdown(const fs::path& file, const StudyPlan& plan, const std::vector<RunResult>& results) {
+  std::string text = "<!-- written by wtc-study from " + plan.source.filename().string() + "; do not edit -->\n";
+  for (const std::string& scenario : plan.scenarios) {
+    std::vector<const RunResult*> rows;
+    const RunResult* reference = nullptr;
+    for (const RunResult& r : results) {
+      if (r.run->scenario != scenario) continue;
+      rows.push_back(&r);
+      if (r.run->reference) reference = &r;
+    }
+    std::sort(rows.begin(), rows.end(),
+              [](const RunResult* a, const RunResult* b) { return a->summary.wall_time < b->summary.wall_time; });
+    const bool paths = std::any_of(rows.begin(), rows.end(), [](const RunResult* r) { return r->path_error; });
+    std::vector<std::string> header = {"setting", "success", "wall (s)", "× real time", "RMS position error (mm)",
+                                       "final error (mm)", "peak pitch (°)", "its error (°)",
+                                       "peak wheel force (N)", "RMS force error (N)"};
+    if (paths) header.push_back("path error RMS (mm)");
+    header.insert(header.end(), {"warnings", "front"});
+    text.append("\n### ").append(scenario).append(" (reference: ");
+    text.append(reference ? reference->run->label : std::string("?")).append(")\n\n");
+    text.append("| ").append(join(header, " | ")).append(" |\n|");
+    for (std::size_t i = 0; i < header.size(); ++i) text += "---|";
+    text += "\n";
+    for (const RunResult* r : rows) {
+      const sim::RunSummary& s = r->summary;
+      std::vector<std::string> cells = {
+          r->run->label + (r->run->reference ? " (reference)" : ""),
+          s.nan ? "non-finite" : s.success ? "yes" : "no",
+          number(s.wall_time, "%.2f"),
+          number(s.real_time_factor, "%.1f"),
+          number(r->rms_position_error * 1e3, "%.2f"),
+          number(r->final_position_error * 1e3, "%.2f"),
+          number(r->peak_pitch_deg, "%.1f"),
+          number(r->peak_pitch_error_deg, "%.1f"),
+          number(r->peak_wheel_force, "%.0f"),
+          number(r->rms_wheel_force_error, "%.1f")};
+      if (paths) cells.push_back(r->path_error ? number(*r->path_error * 1e3, "%.2f") : std::string("–"));
+      cells.push_back(std::to_string(s.warnings.size()));
+      cells.push_back(r->on_front ? "●" : "");
+      text.append("| ").append(join(cells, " | ")).append(" |\n");
+    }
+  }
+  writeOrThrow(file, text);
+}
+
+}  // namespace wtc::study

@@ -1,0 +1,197 @@
+// wtc::study: the plan a study file expands to, runs on one and on two
+// workers (the same results), the job list through GNU parallel (the same
+// table as in process), resuming after an interruption, and bad files.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+#include "wtc/error.hpp"
+#include "wtc/io/run_summary_file.hpp"
+#include "wtc/io/study_file.hpp"
+#include "wtc/study/study_results.hpp"
+#include "wtc/study/study_runner.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using testing::HasSubstr;
+using wtc::study::PlannedRun;
+using wtc::study::RunResult;
+using wtc::study::StudyPlan;
+
+const fs::path kTinyStudy = fs::path(WTC_SOURCE_DIR) / "tests/study/tiny_study.yaml";
+
+fs::path freshDirectory(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("wtc_study_test_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+fs::path writeFile(const fs::path& dir, const std::string& name, const std::string& text) {
+  std::ofstream(dir / name) << text;
+  return dir / name;
+}
+
+// Every figure of a result that is a function of the run's settings (not
+// the wall time, the real-time factor, nor the front, which depends on them).
+void expectSameResults(const std::vector<RunResult>& a, const std::vector<RunResult>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    SCOPED_TRACE(a[i].run->key + " " + a[i].run->label);
+    EXPECT_EQ(a[i].run->key, b[i].run->key);
+    EXPECT_EQ(a[i].summary.steps, b[i].summary.steps);
+    EXPECT_EQ(a[i].summary.success, b[i].summary.success);
+    EXPECT_EQ(a[i].summary.fields, b[i].summary.fields);
+    EXPECT_EQ(a[i].rms_position_error, b[i].rms_position_error);
+    EXPECT_EQ(a[i].final_position_error, b[i].final_position_error);
+    EXPECT_EQ(a[i].peak_pitch_deg, b[i].peak_pitch_deg);
+    EXPECT_EQ(a[i].peak_wheel_force, b[i].peak_wheel_force);
+    EXPECT_EQ(a[i].rms_wheel_force_error, b[i].rms_wheel_force_error);
+    EXPECT_EQ(a[i].path_error, b[i].path_error);
+  }
+}
+
+TEST(StudyPlanTest, ExpandsSweepsIntoDistinctRunsWithTheReferenceFirst) {
+  const StudyPlan plan = wtc::io::loadStudyPlan(kTinyStudy);
+  EXPECT_EQ(plan.name, "tiny");
+  EXPECT_EQ(plan.scenarios, (std::vector<std::string>{"towed", "robot"}));
+  // Per scenario: the reference, 2 engines x 2 steps, and one effect set.
+  ASSERT_EQ(plan.runs.size(), 12u);
+  std::set<std::string> keys;
+  for (const PlannedRun& r : plan.runs) keys.insert(r.key);
+  EXPECT_EQ(keys.size(), plan.runs.size());
+  EXPECT_TRUE(plan.runs[0].reference);
+  EXPECT_EQ(plan.runs[0].label, "ode force 0.2 ms");
+  EXPECT_EQ(plan.runs[1].label, "bullet force 0.4 ms");
+  EXPECT_EQ(plan.runs[5].label, "bullet force 0.4 ms effects=coulomb");
+  EXPECT_THAT(plan.runs[0].key, testing::StartsWith("towed-"));
+  // The key is the settings', not the file order's nor the load's.
+  EXPECT_EQ(wtc::io::loadStudyPlan(kTinyStudy).runs[3].key, plan.runs[3].key);
+}
+
+TEST(StudyPlanTest, ASweptSettingEqualToTheReferenceIsTheReferenceRunOnce) {
+  const fs::path dir = freshDirectory("dedupe");
+  const fs::path file = writeFile(dir, "s.yaml",
+                                  "name: d\nbase: {engine: bullet, mode: force, dt: 0.0004}\n"
+                                  "scenarios: {towed: {scene: " WTC_SOURCE_DIR "/scenes/towed_incline.yaml}}\n"
+                                  "reference: {engine: ode, dt: 0.0002}\n"
+                                  "sweeps: {step: {engine: [ode, bullet], dt: [0.0002]}}\n");
+  const StudyPlan plan = wtc::io::loadStudyPlan(file);
+  ASSERT_EQ(plan.runs.size(), 2u);
+  EXPECT_TRUE(plan.runs[0].reference);
+  EXPECT_EQ(plan.runs[0].label, "ode force 0.2 ms");
+  EXPECT_FALSE(plan.runs[1].reference);
+  fs::remove_all(dir);
+}
+
+TEST(StudyPlanTest, BadStudyFilesAreNamedWithTheirPlace) {
+  const fs::path dir = freshDirectory("bad");
+  const std::string head = "name: b\nbase: {engine: bullet, mode: force, dt: 0.0004}\nreference: {dt: 0.0002}\n";
+  const std::string scene = "scenarios: {t: {scene: " WTC_SOURCE_DIR "/scenes/towed_incline.yaml}}\n";
+  const auto error = [&](const std::string& text) {
+    try {
+      wtc::io::loadStudyPlan(writeFile(dir, "bad.yaml", text));
+    } catch (const wtc::InvalidInputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_THAT(error(head + "scenarios: {t: {scene: nowhere.yaml}}\nsweeps: {}\n"),
+              testing::AllOf(HasSubstr("bad.yaml:4:"), HasSubstr("no such file")));
+  EXPECT_THAT(error(head + scene + "sweeps: {step: {dt: []}}\n"),
+              testing::AllOf(HasSubstr("bad.yaml:5:"), HasSubstr("sweeps.step.dt: no values")));
+  EXPECT_THAT(error(head + scene + "sweeps: {step: {dt: 0.001}}\n"), HasSubstr("expected a list of values"));
+  EXPECT_THAT(error(head + scene + "sweeps: {}\nsweep: {}\n"), HasSubstr("sweep"));
+  EXPECT_THAT(error("name: b\nbase: {engine: bullet}\nreference: {}\n" + scene + "sweeps: {}\n"),
+              HasSubstr("base: must give mode"));
+  EXPECT_THAT(error(head + scene + "sweeps: {s: {dt: [0.0004"), HasSubstr("bad.yaml:"));
+  fs::remove_all(dir);
+}
+
+TEST(StudyRunTest, ResultsDoNotDependOnTheNumberOfWorkers) {
+  const StudyPlan plan = wtc::io::loadStudyPlan(kTinyStudy);
+  const fs::path one = freshDirectory("one"), two = freshDirectory("two");
+  std::size_t made = 0;
+  wtc::study::runPlan(plan, one, 1, [&](const wtc::study::RunDone& d) { made += d.summary != nullptr; });
+  EXPECT_EQ(made, plan.runs.size());
+  wtc::study::runPlan(plan, two, 2);
+  const std::vector<RunResult> a = wtc::study::gatherResults(plan, one);
+  expectSameResults(a, wtc::study::gatherResults(plan, two));
+  // Against the reference: zero for itself, not for a coarser step.
+  EXPECT_EQ(a[0].rms_position_error, 0.0);
+  EXPECT_TRUE(a[0].on_front);
+  EXPECT_GT(a[2].rms_position_error, 0.0);  // bullet at 1 ms
+  EXPECT_TRUE(a[0].path_error.has_value());
+  // The robot runs are 0.4 s long, short of their scene's distance: failed, so never on the front.
+  for (const RunResult& r : a) {
+    if (r.run->scenario == "robot") {
+      EXPECT_FALSE(r.on_front) << r.run->label;
+    }
+  }
+  fs::remove_all(one);
+  fs::remove_all(two);
+}
+
+TEST(StudyRunTest, AJobListThroughGnuParallelGathersToTheSameTable) {
+  const StudyPlan plan = wtc::io::loadStudyPlan(kTinyStudy);
+  const fs::path local = freshDirectory("local"), jobs = freshDirectory("jobs");
+  wtc::study::runPlan(plan, local, 2);
+  {
+    std::ofstream list(jobs / "jobs.txt");
+    for (const std::string& line : wtc::study::jobLines(plan, jobs, WTC_SIM_EXE)) list << line << '\n';
+  }
+  // Exit 1 of a line is a run whose scene failed (the short robot runs), not an error: parallel counts them.
+  const std::string command = std::string(WTC_GNU_PARALLEL) + " -j 2 < '" + (jobs / "jobs.txt").string() + "'";
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 6) << "the 6 robot runs fail their scene, nothing else";
+  expectSameResults(wtc::study::gatherResults(plan, local), wtc::study::gatherResults(plan, jobs));
+  // Every line is idempotent: run again, nothing is made and the results stay.
+  const auto before = fs::last_write_time(jobs / "runs" / plan.runs[1].key / "summary.json");
+  ASSERT_EQ(std::system((command + " > /dev/null").c_str()) >> 8, 0);
+  EXPECT_EQ(fs::last_write_time(jobs / "runs" / plan.runs[1].key / "summary.json"), before);
+  fs::remove_all(local);
+  fs::remove_all(jobs);
+}
+
+TEST(StudyRunTest, AnInterruptedRunIsMadeAgainAndOnlyIt) {
+  const StudyPlan plan = wtc::io::loadStudyPlan(kTinyStudy);
+  const fs::path out = freshDirectory("resume");
+  wtc::study::runPlan(plan, out, 2);
+  const std::vector<RunResult> first = wtc::study::gatherResults(plan, out);
+  // A run killed mid-way leaves its "running" summary and partial series.
+  const fs::path killed = wtc::study::runDirectory(out, plan.runs[4]);
+  const wtc::sim::Scene scene = wtc::io::loadScene(plan.runs[4].scene_file, plan.runs[4].overrides);
+  wtc::io::writeRunStarted(killed / "summary.json", scene);
+  fs::resize_file(killed / "bodies.csv", fs::file_size(killed / "bodies.csv") / 2);
+  EXPECT_THAT([&] { wtc::study::gatherResults(plan, out); },
+              testing::ThrowsMessage<wtc::InvalidInputError>(HasSubstr(plan.runs[4].key)));
+  std::vector<std::string> made;
+  wtc::study::runPlan(plan, out, 2, [&](const wtc::study::RunDone& d) {
+    if (d.summary != nullptr) made.push_back(d.run.key);
+  });
+  EXPECT_EQ(made, std::vector<std::string>{plan.runs[4].key});
+  expectSameResults(first, wtc::study::gatherResults(plan, out));
+  fs::remove_all(out);
+}
+
+TEST(StudyRunTest, ARunThatCannotLoadIsNamed) {
+  const fs::path dir = freshDirectory("badrun");
+  const fs::path file = writeFile(dir, "s.yaml",
+                                  "name: e\nbase: {engine: bullet, mode: force, dt: 0.0004}\n"
+                                  "scenarios: {towed: {scene: " WTC_SOURCE_DIR "/scenes/towed_incline.yaml}}\n"
+                                  "reference: {dt: 0.0002}\n"
+                                  "sweeps: {bad: {engine: [bulet]}}\n");
+  const StudyPlan plan = wtc::io::loadStudyPlan(file);
+  EXPECT_THAT([&] { wtc::study::runPlan(plan, dir / "out", 2); },
+              testing::ThrowsMessage<wtc::InvalidInputError>(
+                  testing::AllOf(HasSubstr("bulet force 0.4 ms"), HasSubstr("engine"))));
+  fs::remove_all(dir);
+}
+
+}  // namespace
