@@ -29,7 +29,7 @@ void writeJson(const std::filesystem::path& path, const nlohmann::json& j) {
 const std::set<std::string>& fixedKeys() {
   static const std::set<std::string> keys = {
       "scene",         "status",          "engine",    "mode",     "dt",       "sim_time",
-      "wall_time",     "real_time_factor", "steps",    "success",  "nan",      "interrupted",
+      "wall_time",     "real_time_factor", "steps",    "success",  "nan",      "diverged",  "interrupted",
       "max_penetration", "max_joint_gap_m", "max_joint_angle_deg", "saturation_steps", "warnings",
       "parameters",    "drives",          "wheels",    "note"};
   return keys;
@@ -49,6 +49,7 @@ void writeRunSummary(const std::filesystem::path& file, const sim::RunSummary& s
                       {"steps", s.steps},
                       {"success", s.success},
                       {"nan", s.nan},
+                      {"diverged", s.diverged},
                       {"interrupted", s.interrupted},
                       {"max_penetration", s.max_penetration},
                       {"max_joint_gap_m", s.max_joint_gap},
@@ -97,6 +98,7 @@ sim::RunSummary readRunSummary(const std::filesystem::path& file) {
     s.real_time_factor = j.at("real_time_factor").get<double>();
     s.steps = j.at("steps").get<std::uint64_t>();
     s.nan = j.at("nan").get<bool>();
+    s.diverged = j.at("diverged").get<bool>();
     s.max_penetration = j.at("max_penetration").get<double>();
     s.max_joint_gap = j.at("max_joint_gap_m").get<double>();
     s.max_joint_angle = j.at("max_joint_angle_deg").get<double>() / kDegPerRad;

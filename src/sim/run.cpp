@@ -3,11 +3,18 @@
 #include <algorithm>
 #include <cmath>
 
+#include "wtc/constants.hpp"
+
 namespace wtc::sim {
 namespace {
 
 bool finite(const vehicle::BodyKinematics& k) {
   return k.pose.matrix().allFinite() && k.linear_velocity.allFinite() && k.angular_velocity.allFinite();
+}
+
+bool beyondBounds(const vehicle::BodyKinematics& k) {
+  return k.linear_velocity.norm() > kDivergedSpeedMps || k.angular_velocity.norm() > kDivergedAngularSpeedRadps ||
+         k.pose.translation().norm() > kDivergedDistanceM;
 }
 
 }  // namespace
@@ -53,6 +60,7 @@ void Run::sense() {
     const int b = static_cast<int>(i);
     state_.bodies[i] = engine_.body(b);
     non_finite_ = non_finite_ || !finite(state_.bodies[i]);
+    diverged_ = diverged_ || beyondBounds(state_.bodies[i]);
     state_.joint_position[i] = engine_.jointPosition(b);
     state_.joint_rate[i] = engine_.jointRate(b);
     if (!v.bodies[i].wheel) continue;

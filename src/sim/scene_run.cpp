@@ -88,7 +88,7 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
   while (run.steps() < steps) {
     if (options.stop != nullptr && options.stop->load()) break;
     run.step();
-    if (run.nonFinite()) break;
+    if (run.nonFinite() || run.diverged()) break;
     const Eigen::Isometry3d& pose = run.state().bodies.front().pose;
     for (std::size_t i = 0; i < v.bodies.size(); ++i) {
       if (v.bodies[i].parent < 0) max_tilt = std::max(max_tilt, tiltRad(run.state().bodies[i].pose));
@@ -120,7 +120,8 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
   summary.sim_time = run.time();
   summary.real_time_factor = summary.wall_time > 0.0 ? summary.sim_time / summary.wall_time : 0.0;
   summary.nan = run.nonFinite();
-  summary.interrupted = run.steps() < steps;
+  summary.diverged = run.diverged() && !run.nonFinite();
+  summary.interrupted = run.steps() < steps && !summary.nan && !summary.diverged;
   summary.max_penetration = run.maxDeflection();
   summary.max_joint_gap = run.maxJointError().distance;
   summary.max_joint_angle = run.maxJointError().angle;
@@ -157,6 +158,10 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
                                mmOrDeg(summary.max_joint_angle * kDegPerRad, 3) + " deg (bound: 1 mm, 0.1 deg)");
   }
   if (summary.nan) summary.warnings.push_back("a body state went non-finite at t = " + mmOrDeg(run.time(), 4) + " s");
+  if (summary.diverged) {
+    summary.warnings.push_back("the run diverged at t = " + mmOrDeg(run.time(), 4) +
+                               " s (a body beyond 1 km/s, 1e4 rad/s or 1000 km; stopped there)");
+  }
 
   const vehicle::BodyKinematics& end = run.state().bodies.front();
   const double distance = (end.pose.translation() - start.translation()).head<2>().norm();
@@ -176,7 +181,7 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
   double lowest_wheel = std::numeric_limits<double>::infinity();
   for (const int w : v.wheels()) lowest_wheel = std::min(lowest_wheel, run.state().bodies[w].pose.translation().z());
   if (!v.wheels().empty()) summary.fields["lowest_wheel_height_m"] = lowest_wheel;
-  summary.success = !summary.nan && !summary.interrupted && !controller_failed &&
+  summary.success = !summary.nan && !summary.diverged && !summary.interrupted && !controller_failed &&
                     (!c.min_wheel_height || lowest_wheel >= *c.min_wheel_height) &&
                     max_tilt * kDegPerRad <= c.max_tilt_deg && (!c.min_distance || distance >= *c.min_distance) &&
                     (!c.max_distance || distance <= *c.max_distance);

@@ -100,7 +100,7 @@ void measure(RunResult& out, const RunSeries& run, const RunSeries& ref) {
   out.rms_wheel_force_error = m > 0 ? std::sqrt(force_sq / static_cast<double>(m)) : 0.0;
 }
 
-bool succeeded(const RunResult& r) { return r.summary.success && !r.summary.nan; }
+bool succeeded(const RunResult& r) { return r.summary.success; }
 
 void markFront(std::vector<RunResult>& results) {
   std::map<std::string, std::vector<RunResult*>> by_scenario;
@@ -187,13 +187,13 @@ std::vector<RunResult> gatherResults(const StudyPlan& plan, const fs::path& out)
 
 void writeResultsCsv(const fs::path& file, const std::vector<RunResult>& results) {
   std::string text =
-      "scenario,key,sweep,label,engine,mode,dt_s,reference,success,nan,wall_time_s,real_time_factor,steps,"
+      "scenario,key,sweep,label,engine,mode,dt_s,reference,success,nan,diverged,wall_time_s,real_time_factor,steps,"
       "rms_position_error_m,final_position_error_m,peak_pitch_deg,peak_pitch_error_deg,peak_wheel_force_N,"
       "rms_wheel_force_error_N,path_error_m,warnings,on_front\n";
   for (const RunResult& r : results) {
     const sim::RunSummary& s = r.summary;
     text += join({csvText(r.run->scenario), r.run->key, csvText(r.run->sweep), csvText(r.run->label), s.engine,
-                  s.mode, number(s.dt), r.run->reference ? "1" : "0", s.success ? "1" : "0", s.nan ? "1" : "0",
+                  s.mode, number(s.dt), r.run->reference ? "1" : "0", s.success ? "1" : "0", s.nan ? "1" : "0", s.diverged ? "1" : "0",
                   number(s.wall_time), number(s.real_time_factor), std::to_string(s.steps),
                   number(r.rms_position_error), number(r.final_position_error), number(r.peak_pitch_deg),
                   number(r.peak_pitch_error_deg), number(r.peak_wheel_force), number(r.rms_wheel_force_error),
@@ -232,7 +232,7 @@ void writeResultsMarkdown(const fs::path& file, const StudyPlan& plan, const std
       const sim::RunSummary& s = r->summary;
       std::vector<std::string> cells = {
           r->run->label + (r->run->reference ? " (reference)" : ""),
-          s.nan ? "non-finite" : s.success ? "yes" : "no",
+          s.nan ? "non-finite" : s.diverged ? "diverged" : s.success ? "yes" : "no",
           number(s.wall_time, "%.2f"),
           number(s.real_time_factor, "%.1f"),
           number(r->rms_position_error * 1e3, "%.2f"),

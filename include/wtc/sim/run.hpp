@@ -42,6 +42,10 @@ class Run {
   const vehicle::JointError& maxJointError() const { return max_joint_error_; }
   double maxDeflection() const { return max_deflection_; }
   bool nonFinite() const { return non_finite_; }
+  /// Whether any body state went beyond kDivergedSpeedMps,
+  /// kDivergedAngularSpeedRadps or kDivergedDistanceM (wtc/constants.hpp):
+  /// the run should stop, as at a non-finite state.
+  bool diverged() const { return diverged_; }
 
   const Engine& engine() const { return engine_; }
 
@@ -60,6 +64,7 @@ class Run {
   vehicle::JointError max_joint_error_;
   double max_deflection_ = 0.0;
   bool non_finite_ = false;
+  bool diverged_ = false;
   std::uint64_t steps_ = 0;
 };
 

@@ -45,7 +45,8 @@ struct RunSummary {
   std::uint64_t steps = 0;
   bool success = false;
   bool nan = false;                    ///< A body state went non-finite (the run stopped there).
-  bool interrupted = false;            ///< Stopped before its duration.
+  bool diverged = false;               ///< A body went beyond Run::diverged's bounds (the run stopped there).
+  bool interrupted = false;            ///< Stopped on request (RunOptions::stop) before its duration.
   double max_penetration = 0.0;        ///< The deepest tyre deflection Z of any contact (m).
   double max_joint_gap = 0.0;          ///< (m), vehicle::jointError over the run.
   double max_joint_angle = 0.0;        ///< (rad).
