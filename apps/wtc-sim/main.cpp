@@ -90,14 +90,14 @@ int main(int argc, char** argv) {
   app.add_flag("--quiet", quiet, "no progress bar, no summary on stdout");
   app.add_flag("--no-plots", no_plots, "skip the figures");
   app.add_flag("--skip-done", skip_done,
-               "with --out: do nothing if that directory holds a finished run, redo an unfinished one "
+               "with --out: do nothing if that directory holds a run that ended, redo an unfinished one "
                "(job lists: a batch resumes where it stopped)");
   CLI11_PARSE(app, argc, argv);
   if (skip_done && out.empty()) {
     std::cerr << "wtc-sim: --skip-done needs --out (the directory that holds the run)\n";
     return 2;
   }
-  if (skip_done && wtc::io::runCompleted(out)) {
+  if (skip_done && wtc::io::runEnded(out)) {
     if (!quiet) std::printf("%s: finished earlier, skipped\n", out.c_str());
     return 0;
   }

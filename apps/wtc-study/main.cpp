@@ -42,6 +42,15 @@ int gather(const wtc::study::StudyPlan& plan, const fs::path& out, bool plots) {
   return 0;
 }
 
+// The wtc-sim the runs use: `given`, else the one installed or built beside
+// this program.
+fs::path wtcSim(const std::string& given) {
+  if (!given.empty()) return fs::absolute(given);
+  const fs::path beside = fs::canonical("/proc/self/exe").parent_path() / "wtc-sim";
+  if (!fs::exists(beside)) throw wtc::InvalidInputError("no wtc-sim beside wtc-study (" + beside.string() + "): give --wtc-sim");
+  return beside;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -59,7 +68,9 @@ int main(int argc, char** argv) {
   }
   app.get_subcommand("run")->add_option("--workers", workers, "simulations at once (default: the cores)")
       ->check(CLI::PositiveNumber);
-  app.get_subcommand("jobs")->add_option("--wtc-sim", wtc_sim, "the wtc-sim the lines call (default: the one beside)");
+  for (const char* name : {"run", "jobs"}) {
+    app.get_subcommand(name)->add_option("--wtc-sim", wtc_sim, "the wtc-sim that makes the runs (default: the one beside)");
+  }
   CLI11_PARSE(app, argc, argv);
 
   try {
@@ -69,25 +80,22 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("run")) {
       std::printf("wtc-study: %s: %zu runs on %d workers into %s\n", plan.name.c_str(), plan.runs.size(), workers,
                   dir.c_str());
-      wtc::study::runPlan(plan, dir, workers, [](const wtc::study::RunDone& d) {
+      wtc::study::runPlan(plan, dir, workers, wtcSim(wtc_sim), [](const wtc::study::RunDone& d) {
         if (d.summary == nullptr) {
           std::printf("[%zu/%zu] %s %s: finished earlier\n", d.done, d.total, d.run.scenario.c_str(),
                       d.run.label.c_str());
         } else {
+          const char* outcome = d.summary->crashed ? "CRASHED" : d.summary->success ? "success" : "FAILED";
           std::printf("[%zu/%zu] %s %s: %s, %.1f s wall, %.1fx real time\n", d.done, d.total, d.run.scenario.c_str(),
-                      d.run.label.c_str(), d.summary->success ? "success" : "FAILED", d.summary->wall_time,
-                      d.summary->real_time_factor);
+                      d.run.label.c_str(), outcome, d.summary->wall_time, d.summary->real_time_factor);
         }
         std::fflush(stdout);
       });
       return gather(plan, dir, !no_plots);
     }
     if (app.got_subcommand("jobs")) {
-      // By default the wtc-sim installed or built beside this program, else the one on PATH.
-      const fs::path beside = fs::canonical("/proc/self/exe").parent_path() / "wtc-sim";
-      const fs::path chosen = !wtc_sim.empty() ? fs::path(wtc_sim) : fs::exists(beside) ? beside : "wtc-sim";
       std::ofstream lines(dir / "jobs.txt");
-      for (const std::string& line : wtc::study::jobLines(plan, fs::absolute(dir), chosen)) lines << line << '\n';
+      for (const std::string& line : wtc::study::jobLines(plan, fs::absolute(dir), wtcSim(wtc_sim))) lines << line << '\n';
       if (!lines) throw wtc::InvalidInputError("cannot write " + (dir / "jobs.txt").string());
       std::printf("wtc-study: %zu jobs in %s\n", plan.runs.size(), (dir / "jobs.txt").c_str());
       return 0;

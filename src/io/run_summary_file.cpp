@@ -79,6 +79,22 @@ void writeRunStarted(const std::filesystem::path& file, const sim::Scene& scene)
                    {"note", "written when the run started; a run that ends replaces it"}});
 }
 
+void writeRunCrashed(const std::filesystem::path& file, const std::string& reason) {
+  nlohmann::json j;
+  if (std::ifstream in(file); in) j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (!j.is_object()) j = nlohmann::json::object();
+  j["status"] = "crashed";
+  j["success"] = false;
+  j["interrupted"] = false;
+  j["warnings"] = std::vector<std::string>{reason};
+  j["note"] = "the run's process died; written by the study's runner";
+  for (const char* key : {"scene", "engine", "mode"}) {
+    if (!j.contains(key)) j[key] = "?";
+  }
+  if (!j.contains("dt")) j["dt"] = 0.0;
+  writeJson(file, j);
+}
+
 sim::RunSummary readRunSummary(const std::filesystem::path& file) {
   std::ifstream in(file);
   if (!in) throw InvalidInputError(file.string() + ": cannot read the run's summary");
@@ -91,8 +107,11 @@ sim::RunSummary readRunSummary(const std::filesystem::path& file) {
     s.mode = j.at("mode").get<std::string>();
     s.dt = j.at("dt").get<double>();
     s.success = j.at("success").get<bool>();
-    s.interrupted = j.at("status").get<std::string>() != "completed";
-    if (s.interrupted) return s;
+    const std::string status = j.at("status").get<std::string>();
+    s.crashed = status == "crashed";
+    s.interrupted = status != "completed" && !s.crashed;
+    if (s.crashed) s.warnings = j.at("warnings").get<std::vector<std::string>>();
+    if (status != "completed") return s;
     s.sim_time = j.at("sim_time").get<double>();
     s.wall_time = j.at("wall_time").get<double>();
     s.real_time_factor = j.at("real_time_factor").get<double>();
@@ -126,12 +145,12 @@ sim::RunSummary readRunSummary(const std::filesystem::path& file) {
   }
 }
 
-bool runCompleted(const std::filesystem::path& dir) {
+bool runEnded(const std::filesystem::path& dir) {
   const std::filesystem::path file = dir / "summary.json";
   if (!std::filesystem::exists(file)) return false;
   std::ifstream in(file);
   const nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
-  return j.is_object() && j.value("status", "") == "completed";
+  return j.is_object() && (j.value("status", "") == "completed" || j.value("status", "") == "crashed");
 }
 
 }  // namespace wtc::io

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <set>
@@ -159,7 +160,7 @@ void writeOrThrow(const fs::path& file, const std::string& text) {
 std::vector<RunResult> gatherResults(const StudyPlan& plan, const fs::path& out) {
   std::string unfinished;
   for (const PlannedRun& run : plan.runs) {
-    if (!io::runCompleted(runDirectory(out, run))) unfinished += "\n  " + run.key + " (" + run.label + ")";
+    if (!io::runEnded(runDirectory(out, run))) unfinished += "\n  " + run.key + " (" + run.label + ")";
   }
   if (!unfinished.empty()) {
     throw InvalidInputError("study " + plan.name + ": runs not finished in " + (out / "runs").string() + ":" +
@@ -167,7 +168,14 @@ std::vector<RunResult> gatherResults(const StudyPlan& plan, const fs::path& out)
   }
   std::map<std::string, RunSeries> references;
   for (const PlannedRun& run : plan.runs) {
-    if (run.reference) references.emplace(run.scenario, readRun(runDirectory(out, run)));
+    if (!run.reference) continue;
+    const fs::path dir = runDirectory(out, run);
+    const sim::RunSummary s = io::readRunSummary(dir / "summary.json");
+    if (s.crashed) {
+      throw InvalidInputError("study " + plan.name + ": the reference of " + run.scenario + " (" + run.label +
+                              ") crashed: " + s.warnings.front() + "; nothing can be measured against it");
+    }
+    references.emplace(run.scenario, readRun(dir));
   }
   std::vector<RunResult> results;
   for (const PlannedRun& run : plan.runs) {
@@ -175,7 +183,14 @@ std::vector<RunResult> gatherResults(const StudyPlan& plan, const fs::path& out)
     r.run = &run;
     const fs::path dir = runDirectory(out, run);
     r.summary = io::readRunSummary(dir / "summary.json");
-    measure(r, readRun(dir), references.at(run.scenario));
+    if (r.summary.crashed) {
+      // Nothing it recorded can be trusted to its end: no figures.
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      r.rms_position_error = r.final_position_error = r.peak_pitch_deg = r.peak_pitch_error_deg = nan;
+      r.peak_wheel_force = r.rms_wheel_force_error = nan;
+    } else {
+      measure(r, readRun(dir), references.at(run.scenario));
+    }
     if (const auto it = r.summary.fields.find("rms_tracking_error_m"); it != r.summary.fields.end()) {
       r.path_error = it->second;
     }
@@ -187,13 +202,13 @@ std::vector<RunResult> gatherResults(const StudyPlan& plan, const fs::path& out)
 
 void writeResultsCsv(const fs::path& file, const std::vector<RunResult>& results) {
   std::string text =
-      "scenario,key,sweep,label,engine,mode,dt_s,reference,success,nan,diverged,wall_time_s,real_time_factor,steps,"
+      "scenario,key,sweep,label,engine,mode,dt_s,reference,success,crashed,nan,diverged,wall_time_s,real_time_factor,steps,"
       "rms_position_error_m,final_position_error_m,peak_pitch_deg,peak_pitch_error_deg,peak_wheel_force_N,"
       "rms_wheel_force_error_N,path_error_m,warnings,on_front\n";
   for (const RunResult& r : results) {
     const sim::RunSummary& s = r.summary;
     text += join({csvText(r.run->scenario), r.run->key, csvText(r.run->sweep), csvText(r.run->label), s.engine,
-                  s.mode, number(s.dt), r.run->reference ? "1" : "0", s.success ? "1" : "0", s.nan ? "1" : "0", s.diverged ? "1" : "0",
+                  s.mode, number(s.dt), r.run->reference ? "1" : "0", s.success ? "1" : "0", s.crashed ? "1" : "0", s.nan ? "1" : "0", s.diverged ? "1" : "0",
                   number(s.wall_time), number(s.real_time_factor), std::to_string(s.steps),
                   number(r.rms_position_error), number(r.final_position_error), number(r.peak_pitch_deg),
                   number(r.peak_pitch_error_deg), number(r.peak_wheel_force), number(r.rms_wheel_force_error),
@@ -232,7 +247,7 @@ void writeResultsMarkdown(const fs::path& file, const StudyPlan& plan, const std
       const sim::RunSummary& s = r->summary;
       std::vector<std::string> cells = {
           r->run->label + (r->run->reference ? " (reference)" : ""),
-          s.nan ? "non-finite" : s.diverged ? "diverged" : s.success ? "yes" : "no",
+          s.crashed ? "crashed" : s.nan ? "non-finite" : s.diverged ? "diverged" : s.success ? "yes" : "no",
           number(s.wall_time, "%.2f"),
           number(s.real_time_factor, "%.1f"),
           number(r->rms_position_error * 1e3, "%.2f"),

@@ -117,9 +117,9 @@ TEST(StudyRunTest, ResultsDoNotDependOnTheNumberOfWorkers) {
   const StudyPlan plan = wtc::io::loadStudyPlan(kTinyStudy);
   const fs::path one = freshDirectory("one"), two = freshDirectory("two");
   std::size_t made = 0;
-  wtc::study::runPlan(plan, one, 1, [&](const wtc::study::RunDone& d) { made += d.summary != nullptr; });
+  wtc::study::runPlan(plan, one, 1, WTC_SIM_EXE, [&](const wtc::study::RunDone& d) { made += d.summary != nullptr; });
   EXPECT_EQ(made, plan.runs.size());
-  wtc::study::runPlan(plan, two, 2);
+  wtc::study::runPlan(plan, two, 2, WTC_SIM_EXE);
   const std::vector<RunResult> a = wtc::study::gatherResults(plan, one);
   expectSameResults(a, wtc::study::gatherResults(plan, two));
   // Against the reference: zero for itself, not for a coarser step.
@@ -140,7 +140,7 @@ TEST(StudyRunTest, ResultsDoNotDependOnTheNumberOfWorkers) {
 TEST(StudyRunTest, AJobListThroughGnuParallelGathersToTheSameTable) {
   const StudyPlan plan = wtc::io::loadStudyPlan(kTinyStudy);
   const fs::path local = freshDirectory("local"), jobs = freshDirectory("jobs");
-  wtc::study::runPlan(plan, local, 2);
+  wtc::study::runPlan(plan, local, 2, WTC_SIM_EXE);
   {
     std::ofstream list(jobs / "jobs.txt");
     for (const std::string& line : wtc::study::jobLines(plan, jobs, WTC_SIM_EXE)) list << line << '\n';
@@ -162,7 +162,7 @@ TEST(StudyRunTest, AJobListThroughGnuParallelGathersToTheSameTable) {
 TEST(StudyRunTest, AnInterruptedRunIsMadeAgainAndOnlyIt) {
   const StudyPlan plan = wtc::io::loadStudyPlan(kTinyStudy);
   const fs::path out = freshDirectory("resume");
-  wtc::study::runPlan(plan, out, 2);
+  wtc::study::runPlan(plan, out, 2, WTC_SIM_EXE);
   const std::vector<RunResult> first = wtc::study::gatherResults(plan, out);
   // A run killed mid-way leaves its "running" summary and partial series.
   const fs::path killed = wtc::study::runDirectory(out, plan.runs[4]);
@@ -172,7 +172,7 @@ TEST(StudyRunTest, AnInterruptedRunIsMadeAgainAndOnlyIt) {
   EXPECT_THAT([&] { wtc::study::gatherResults(plan, out); },
               testing::ThrowsMessage<wtc::InvalidInputError>(HasSubstr(plan.runs[4].key)));
   std::vector<std::string> made;
-  wtc::study::runPlan(plan, out, 2, [&](const wtc::study::RunDone& d) {
+  wtc::study::runPlan(plan, out, 2, WTC_SIM_EXE, [&](const wtc::study::RunDone& d) {
     if (d.summary != nullptr) made.push_back(d.run.key);
   });
   EXPECT_EQ(made, std::vector<std::string>{plan.runs[4].key});
@@ -188,9 +188,29 @@ TEST(StudyRunTest, ARunThatCannotLoadIsNamed) {
                                   "reference: {dt: 0.0002}\n"
                                   "sweeps: {bad: {engine: [bulet]}}\n");
   const StudyPlan plan = wtc::io::loadStudyPlan(file);
-  EXPECT_THAT([&] { wtc::study::runPlan(plan, dir / "out", 2); },
+  EXPECT_THAT([&] { wtc::study::runPlan(plan, dir / "out", 2, WTC_SIM_EXE); },
               testing::ThrowsMessage<wtc::InvalidInputError>(
                   testing::AllOf(HasSubstr("bulet force 0.4 ms"), HasSubstr("engine"))));
+  fs::remove_all(dir);
+}
+
+TEST(StudyRunTest, ARunWhoseProcessDiesIsRecordedAsCrashedAndTheStudyGoesOn) {
+  const StudyPlan plan = wtc::io::loadStudyPlan(kTinyStudy);
+  const fs::path dir = freshDirectory("crash");
+  // A wtc-sim that dies as an engine's failed assertion does.
+  const fs::path fake = writeFile(dir, "dying-wtc-sim",
+                                  "#!/bin/sh\necho 'ODE INTERNAL ERROR 1: assertion failed' >&2\nkill -ABRT $$\n");
+  fs::permissions(fake, fs::perms::owner_all);
+  std::size_t crashed = 0;
+  wtc::study::runPlan(plan, dir / "out", 2, fake, [&](const wtc::study::RunDone& d) {
+    ASSERT_NE(d.summary, nullptr);
+    crashed += d.summary->crashed && !d.summary->success;
+    EXPECT_THAT(d.summary->warnings.at(0), testing::AllOf(HasSubstr("signal 6"), HasSubstr("ODE INTERNAL ERROR")));
+  });
+  EXPECT_EQ(crashed, plan.runs.size());
+  EXPECT_TRUE(wtc::io::runEnded(wtc::study::runDirectory(dir / "out", plan.runs[3])));
+  EXPECT_THAT([&] { wtc::study::gatherResults(plan, dir / "out"); },
+              testing::ThrowsMessage<wtc::InvalidInputError>(HasSubstr("the reference of towed")));
   fs::remove_all(dir);
 }
 

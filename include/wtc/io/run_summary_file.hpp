@@ -16,11 +16,17 @@ void writeRunSummary(const std::filesystem::path& file, const sim::RunSummary& s
 /// the end replaces it.
 void writeRunStarted(const std::filesystem::path& file, const sim::Scene& scene);
 
+/// Over the summary a run left when its process died of `signal`:
+/// status "crashed", success false, `reason` as its warning.
+void writeRunCrashed(const std::filesystem::path& file, const std::string& reason);
+
 /// The summary in `file`; a run that did not end reads as interrupted.
 /// InvalidInputError naming the file if it is missing or not a summary.
 sim::RunSummary readRunSummary(const std::filesystem::path& file);
 
-/// Whether `dir` holds a run that ended (its summary.json says "completed").
-bool runCompleted(const std::filesystem::path& dir);
+/// Whether `dir` holds a run that ended: its summary.json says "completed",
+/// or "crashed" (made again, it would crash again; delete the directory to
+/// retry).
+bool runEnded(const std::filesystem::path& dir);
 
 }  // namespace wtc::io

@@ -47,6 +47,9 @@ struct RunSummary {
   bool nan = false;                    ///< A body state went non-finite (the run stopped there).
   bool diverged = false;               ///< A body went beyond Run::diverged's bounds (the run stopped there).
   bool interrupted = false;            ///< Stopped on request (RunOptions::stop) before its duration.
+  /// Its process died (a signal: an engine's assertion); written by a
+  /// study's runner over the summary the run left (wtc::study::runPlan).
+  bool crashed = false;
   double max_penetration = 0.0;        ///< The deepest tyre deflection Z of any contact (m).
   double max_joint_gap = 0.0;          ///< (m), vehicle::jointError over the run.
   double max_joint_angle = 0.0;        ///< (rad).
