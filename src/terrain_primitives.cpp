@@ -4,12 +4,14 @@
 // (lo + length * i / n) so adjacent tiles share bit-identical faces.
 #include "wtc/terrain_primitives.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <vector>
 
 #include "builder_support.hpp"
 #include "wtc/error.hpp"
+#include "wtc/heightfield.hpp"
 
 namespace wtc {
 namespace {
@@ -118,6 +120,41 @@ PieceRange addIncline(TerrainBuilder& builder, const InclineParams& p, MaterialI
   return addPieces(builder, std::move(pieces), material);
 }
 
+namespace {
+
+// LedgeParams::heightfield_spacing > 0: the ledge sampled into a heightfield.
+PieceRange addSampledLedge(TerrainBuilder& builder, const LedgeParams& p, MaterialId material) {
+  constexpr const char* kWhere = "wtc::addLedge";
+  const double s = p.heightfield_spacing;
+  if (!p.pose_WL.linear().isIdentity(0.0)) {
+    throw InvalidInputError(std::string(kWhere) +
+                            ": heightfield_spacing needs a pose without rotation (a heightfield is axis-aligned)");
+  }
+  const double front_cells = std::max(1.0, std::round(p.approach_length / s));
+  const double back_cells = std::max(1.0, std::round(p.top_length / s));
+  const double side_cells = std::max(1.0, std::round(p.width / s));
+  const double pieces = 2.0 * (front_cells + back_cells) * side_cells;
+  if (!(pieces < 4e9)) throw InvalidInputError(std::string(kWhere) + ": heightfield_spacing " + formatNumber(s) +
+                                               " m makes " + formatNumber(pieces) + " pieces");
+  builder.requireRoomFor(static_cast<std::uint64_t>(pieces), std::string(kWhere) + " (heightfield_spacing)");
+  Heightfield field;
+  field.cols = static_cast<int>(front_cells + back_cells) + 1;
+  field.rows = static_cast<int>(side_cells) + 1;
+  field.spacing_x = s;
+  field.spacing_y = p.width / side_cells;
+  field.origin = p.pose_WL.translation() + Eigen::Vector3d(-front_cells * s, -0.5 * p.width, 0.0);
+  field.base_depth = p.thickness;
+  field.heights.resize(static_cast<std::size_t>(field.rows) * static_cast<std::size_t>(field.cols));
+  for (int r = 0; r < field.rows; ++r) {
+    for (int c = 0; c < field.cols; ++c) {
+      field.heights[static_cast<std::size_t>(r) * field.cols + c] = c >= static_cast<int>(front_cells) ? p.height : 0.0;
+    }
+  }
+  return addHeightfield(builder, field, material);
+}
+
+}  // namespace
+
 PieceRange addLedge(TerrainBuilder& builder, const LedgeParams& p, MaterialId material) {
   constexpr const char* kWhere = "wtc::addLedge";
   requireNonNegative(p.height, kWhere, "height", "m");
@@ -128,6 +165,8 @@ PieceRange addLedge(TerrainBuilder& builder, const LedgeParams& p, MaterialId ma
   requireAtLeast(p.approach_tiles, 1, kWhere, "approach_tiles");
   builder.requireRoomFor(static_cast<std::uint64_t>(p.approach_tiles) + 1, std::string(kWhere) + " (approach_tiles)");
   requireRigid(p.pose_WL, kWhere, "pose_WL");
+  requireNonNegative(p.heightfield_spacing, kWhere, "heightfield_spacing", "m");
+  if (p.heightfield_spacing > 0.0) return addSampledLedge(builder, p, material);
   const double y = 0.5 * p.width;
   std::vector<ConvexPolyhedron> pieces;
   for (int i = 0; i < p.approach_tiles; ++i) {

@@ -66,6 +66,13 @@ struct LedgeParams {
   double width = 3.0;            ///< Along y, centred on y = 0 (m, > 0).
   double thickness = 0.5;        ///< Depth below the ground top z = 0 (m, > 0).
   int approach_tiles = 1;        ///< Boxes the ground is split into along x (>= 1).
+  /// 0: boxes. > 0: the same ledge as a heightfield of square cells of
+  /// this size (m), as a scan of it would be: samples every spacing from
+  /// x = 0 (approach_length and top_length rounded to whole cells), those
+  /// at x >= 0 on the top, so the face becomes a slope across the cell in
+  /// front of x = 0. Needs a pose without rotation (heightfields are
+  /// axis-aligned).
+  double heightfield_spacing = 0.0;
   Eigen::Isometry3d pose_WL = Eigen::Isometry3d::Identity();
 };
 

@@ -1,6 +1,8 @@
 #include "wtc/io/study_file.hpp"
 
+#include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -19,6 +21,9 @@ using study::StudyPlan;
 
 // The settings every run names explicitly, so a label always says them.
 constexpr const char* kBaseKeys[] = {"engine", "mode", "dt"};
+
+// A sweep's key that is not a setting: the scenarios it applies to (all if absent).
+constexpr const char* kOnlyKey = "only";
 
 // One value a sweep tries: the override's YAML text and its label.
 struct Choice {
@@ -68,6 +73,7 @@ std::vector<Setting> expandSweep(const YamlReader& in, const YAML::Node& node, c
   std::vector<Setting> product{Setting{}};
   for (const auto& entry : node) {
     const std::string path = entry.first.Scalar();
+    if (path == kOnlyKey) continue;
     std::vector<Choice> choices;
     if (entry.second.IsSequence()) {
       for (const auto& v : entry.second) choices.push_back({flowYaml(v), flowYaml(v)});
@@ -133,7 +139,13 @@ StudyPlan readStudy(const std::filesystem::path& file) {
   Setting reference = base;
   for (const auto& [path, c] : readFixed(in, in.require(root, "reference"), "reference")) reference[path] = c;
 
-  std::vector<std::pair<std::string, std::vector<Setting>>> sweeps;
+  struct Sweep {
+    std::string name;
+    std::vector<Setting> settings;
+    std::optional<std::vector<std::string>> only;
+    YAML::Node node;
+  };
+  std::vector<Sweep> sweeps;
   const YAML::Node sweep_node = in.require(root, "sweeps");
   in.requireMap(sweep_node, "sweeps");
   for (const auto& entry : sweep_node) {
@@ -142,7 +154,14 @@ StudyPlan readStudy(const std::filesystem::path& file) {
       for (const auto& [path, c] : base) s.try_emplace(path, c);
       settings.push_back(std::move(s));
     }
-    sweeps.emplace_back(entry.first.Scalar(), std::move(settings));
+    Sweep sweep{entry.first.Scalar(), std::move(settings), std::nullopt, entry.second};
+    if (entry.second.IsMap() && entry.second[kOnlyKey]) {
+      const YAML::Node only = entry.second[kOnlyKey];
+      if (!only.IsSequence()) in.fail(only, "sweeps." + sweep.name + ".only: expected a list of scenario names");
+      sweep.only.emplace();
+      for (const auto& n : only) sweep.only->push_back(in.string(n, "sweeps." + sweep.name + ".only"));
+    }
+    sweeps.push_back(std::move(sweep));
   }
 
   const YAML::Node scenarios = in.require(root, "scenarios");
@@ -173,8 +192,16 @@ StudyPlan readStudy(const std::filesystem::path& file) {
       }
     };
     add(reference, "reference", true);
-    for (const auto& [sweep, settings] : sweeps) {
-      for (const Setting& s : settings) add(s, sweep, false);
+    for (const Sweep& sweep : sweeps) {
+      if (sweep.only && std::find(sweep.only->begin(), sweep.only->end(), name) == sweep.only->end()) continue;
+      for (const Setting& s : sweep.settings) add(s, sweep.name, false);
+    }
+  }
+  for (const Sweep& sweep : sweeps) {
+    for (const std::string& name : sweep.only.value_or(std::vector<std::string>{})) {
+      if (std::find(plan.scenarios.begin(), plan.scenarios.end(), name) == plan.scenarios.end()) {
+        in.fail(sweep.node[kOnlyKey], "sweeps." + sweep.name + ".only: no scenario '" + name + "'");
+      }
     }
   }
   return plan;

@@ -132,7 +132,8 @@ std::int64_t addPiece(TerrainBuilder& builder, const YamlReader& in, const YAML:
     s.pose_WL = in.pose(p);
     addIncline(builder, s, material);
   } else if (type == "ledge") {
-    in.checkKeys(p, kCommonKeys, {"height", "approach_length", "top_length", "width", "thickness", "approach_tiles"});
+    in.checkKeys(p, kCommonKeys, {"height", "approach_length", "top_length", "width", "thickness", "approach_tiles",
+                                     "heightfield_spacing"});
     LedgeParams s;
     s.height = in.number(in.require(p, "height"), "height");
     s.approach_length = in.number(p, "approach_length", s.approach_length);
@@ -140,6 +141,7 @@ std::int64_t addPiece(TerrainBuilder& builder, const YamlReader& in, const YAML:
     s.width = in.number(p, "width", s.width);
     s.thickness = in.number(p, "thickness", s.thickness);
     s.approach_tiles = toInt(in, p, "approach_tiles", s.approach_tiles);
+    s.heightfield_spacing = in.number(p, "heightfield_spacing", s.heightfield_spacing);
     s.pose_WL = in.pose(p);
     addLedge(builder, s, material);
   } else if (type == "stairs") {

@@ -89,6 +89,25 @@ TEST(StudyPlanTest, ASweptSettingEqualToTheReferenceIsTheReferenceRunOnce) {
   fs::remove_all(dir);
 }
 
+TEST(StudyPlanTest, OnlyLimitsASweepToTheScenariosItNames) {
+  const fs::path dir = freshDirectory("only");
+  const std::string head =
+      "name: o\nbase: {engine: bullet, mode: force, dt: 0.0004}\nreference: {dt: 0.0002}\n"
+      "scenarios: {towed: {scene: " WTC_SOURCE_DIR "/scenes/towed_incline.yaml}, robot: {scene: " WTC_SOURCE_DIR
+      "/scenes/robot_straight.yaml}}\n";
+  const StudyPlan plan = wtc::io::loadStudyPlan(
+      writeFile(dir, "s.yaml", head + "sweeps: {step: {dt: [0.001]}, solver: {only: [robot], solver_iterations: [5]}}\n"));
+  std::vector<std::string> labels;
+  for (const PlannedRun& r : plan.runs) labels.push_back(r.scenario + ": " + r.label);
+  EXPECT_EQ(labels, (std::vector<std::string>{"towed: bullet force 0.2 ms", "towed: bullet force 1 ms",
+                                              "robot: bullet force 0.2 ms", "robot: bullet force 1 ms",
+                                              "robot: bullet force 0.4 ms solver_iterations=5"}));
+  EXPECT_THAT([&] { wtc::io::loadStudyPlan(writeFile(dir, "t.yaml", head + "sweeps: {s: {only: [robt], dt: [1]}}\n")); },
+              testing::ThrowsMessage<wtc::InvalidInputError>(
+                  testing::AllOf(HasSubstr("t.yaml:5:"), HasSubstr("only: no scenario 'robt'"))));
+  fs::remove_all(dir);
+}
+
 TEST(StudyPlanTest, BadStudyFilesAreNamedWithTheirPlace) {
   const fs::path dir = freshDirectory("bad");
   const std::string head = "name: b\nbase: {engine: bullet, mode: force, dt: 0.0004}\nreference: {dt: 0.0002}\n";

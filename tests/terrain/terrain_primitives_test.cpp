@@ -143,6 +143,45 @@ TEST(TerrainPrimitivesTest, LedgeOfAnyHeightWithATiledApproach) {
   }
 }
 
+TEST(TerrainPrimitivesTest, ALedgeAsAHeightfieldIsTheSameGroundAwayFromItsFace) {
+  Fixture f;
+  LedgeParams ledge;
+  ledge.height = 0.6;
+  ledge.width = 1.0;
+  ledge.heightfield_spacing = 0.05;
+  ledge.pose_WL.translation() = Eigen::Vector3d(1.0, 2.0, 0.0);
+  const PieceRange range = addLedge(f.builder, ledge, f.material);
+  // (4 + 4) / 0.05 = 160 cells along x, 20 along y, two prisms each.
+  ASSERT_EQ(range.count, 2 * 160 * 20);
+  const Terrain terrain = std::move(f.builder).build();
+  const Aabb all = unionOf(terrain, range);
+  expectBox(all, {-3.0, 1.5, -0.5}, {5.0, 2.5, 0.6});
+  // Nearest ground of a point: the smallest distance over every piece.
+  const auto ground = [&](const Eigen::Vector3d& p) {
+    double d = std::numeric_limits<double>::infinity();
+    for (PieceId id = range.first; id < range.end(); ++id) d = std::min(d, distance(terrain, id, p));
+    return d;
+  };
+  EXPECT_NEAR(ground({-1.0, 2.1, 0.19}), 0.19, kTolerance);   // above the approach
+  EXPECT_NEAR(ground({3.0, 1.9, 0.6 + 0.19}), 0.19, kTolerance);  // above the top
+  // The face is a slope across the cell in front of x = 0 (here x = 1):
+  // the top edge is where the box's is, its foot one cell earlier.
+  EXPECT_NEAR(ground({1.0 - 0.1, 2.0, 0.75}), std::hypot(0.1, 0.15), kTolerance);
+  const double slope = std::atan2(0.6, 0.05);
+  const Eigen::Vector3d foot(1.0 - 0.05, 2.0, 0.0), along(std::cos(slope), 0.0, std::sin(slope)),
+      out(-std::sin(slope), 0.0, std::cos(slope));
+  EXPECT_NEAR(ground(foot + 0.3 * along + 0.01 * out), 0.01, 1e-12);
+
+  LedgeParams turned = ledge;
+  turned.pose_WL.linear() = Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  EXPECT_THAT([&] { addLedge(f.builder, turned, f.material); },
+              testing::ThrowsMessage<InvalidInputError>(HasSubstr("heightfield_spacing needs a pose without rotation")));
+  LedgeParams negative = ledge;
+  negative.heightfield_spacing = -0.01;
+  EXPECT_THAT([&] { addLedge(f.builder, negative, f.material); },
+              testing::ThrowsMessage<InvalidInputError>(HasSubstr("heightfield_spacing")));
+}
+
 TEST(TerrainPrimitivesTest, StairsClimbOneRisePerRun) {
   Fixture f;
   StairsParams stairs;
