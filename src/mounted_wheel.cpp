@@ -2,11 +2,14 @@
 // include/wtc/mounted_wheel.hpp).
 #include "wtc/mounted_wheel.hpp"
 
+#include "wtc/scratch_capacity.hpp"
+
 namespace wtc {
 
 MountedWheel::MountedWheel(const WheelDescription& description, EffectSet effects, ContactMode mode)
     : description_(description), model_(effects, mode) {
   validate(description_, "wtc::MountedWheel");
+  contacts_.reserve(kReservedContacts);
 }
 
 const MountedWheelStep& MountedWheel::step(const Terrain& terrain, const WheelPose& pose, const WheelMotion& motion,

@@ -7,6 +7,7 @@
 #include <limits>
 #include <string>
 
+#include "wtc/scratch_capacity.hpp"
 #include "tyre_kernels.hpp"
 #include "wtc/error.hpp"
 #include "wtc/tolerances.hpp"
@@ -36,6 +37,12 @@ Eigen::Vector3d unitAxle(const Eigen::Vector3d& axle, const char* where) {
 }
 
 }  // namespace
+
+WheelState::WheelState() {
+  forces_.reserve(kReservedContacts);
+  tread_.reserve(kReservedContacts);
+  next_tread_.reserve(kReservedContacts);
+}
 
 TyreModel::TyreModel(EffectSet effects, ContactMode mode) : effects_(effects), mode_(mode) {
   const bool slip = effects.has(Effect::kSlipTraction);

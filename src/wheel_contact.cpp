@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "builder_support.hpp"
+#include "wtc/scratch_capacity.hpp"
 #include "wtc/error.hpp"
 
 namespace wtc {
@@ -11,6 +12,16 @@ namespace wtc {
 void validate(const WheelGeometry& wheel, const char* where) {
   detail::requirePositive(wheel.free_radius, where, "wheel free_radius", "m");
   detail::requirePositive(wheel.tread_width, where, "wheel tread_width", "m");
+}
+
+WheelContactFinder::WheelContactFinder() {
+  candidates_.reserve(kReservedCandidates);
+  caches_.reserve(kReservedCandidates);
+  next_caches_.reserve(kReservedCandidates);
+  // Every touching piece is a contact until the seam rule: as many as candidates.
+  contacts_.reserve(kReservedCandidates);
+  caps_.reserve(kReservedCandidates);
+  shares_.reserve(kReservedCandidates);
 }
 
 std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, const WheelGeometry& wheel,
@@ -36,11 +47,15 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
   query.max_distance = r;
   contacts_.clear();
   next_caches_.clear();
+  // Candidates in piece order, so that caches_ (last call's, in the same
+  // order) is matched in one merge walk: a search per candidate made a fine
+  // heightfield's few hundred candidates quadratic.
+  std::sort(candidates_.begin(), candidates_.end());
+  auto previous = caches_.begin();
   for (const PieceId id : candidates_) {
     QueryCache cache;
-    for (const auto& [piece, previous] : caches_) {
-      if (piece == id) cache = previous;
-    }
+    while (previous != caches_.end() && previous->first < id) ++previous;
+    if (previous != caches_.end() && previous->first == id) cache = previous->second;
     const PointQuery q = queryPoint(terrain.piece(id), o, query, cache);
     next_caches_.emplace_back(id, cache);
     if (q.status == QueryStatus::kBeyond || !(q.signed_distance < r)) continue;

@@ -57,6 +57,9 @@ struct TreadState {
 /// nothing once warm.
 class WheelState {
  public:
+  /// Reserves the memory a step needs (see wtc/scratch_capacity.hpp).
+  WheelState();
+
   /// The last step's result (no contacts before the first step).
   const WheelForces& result() const { return result_; }
   /// The tread deflections after the last step (empty without traction).

@@ -81,6 +81,9 @@ struct WheelContact {
 /// steps so that a step allocates nothing once warmed up.
 class WheelContactFinder {
  public:
+  /// Reserves the scratch memory a step needs (see wtc/scratch_capacity.hpp).
+  WheelContactFinder();
+
   /// The contacts of `wheel` at `pose`, valid until the next call. Throws
   /// InvalidInputError for a non-finite pose, a zero axle or invalid
   /// geometry.

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "wtc/constants.hpp"
+#include "wtc/scratch_capacity.hpp"
 
 namespace wtc::sim {
 namespace {
@@ -26,6 +27,7 @@ Run::Run(Engine& engine, vehicle::Controller* controller, const vehicle::Vehicle
   state_.joint_position.resize(n);
   state_.joint_rate.resize(n);
   state_.wheels.resize(n);
+  for (const int w : engine.vehicle().wheels()) state_.wheels[w].points.reserve(kReservedContacts);
   commands_.resize(n);
   targets_.resize(n);
   drives_.resize(n);

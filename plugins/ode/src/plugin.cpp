@@ -10,6 +10,7 @@
 #include "contact_joint.hpp"
 #include "plugin_impl.hpp"
 #include "wtc/error.hpp"
+#include "wtc/scratch_capacity.hpp"
 #include "wtc/tolerances.hpp"
 
 namespace wtc::ode {
@@ -89,6 +90,7 @@ WheelId Plugin::Impl::add(const RigidWheel& spec) {
   w->hub = spec.hub;
   w->axle_local = spec.axle_local;
   w->centre_local = spec.centre_local;
+  w->contacts.reserve(kReservedContacts);
   dBodySetAutoDisableFlag(spec.body, 0);  // the tread state needs every step
   const auto id = static_cast<WheelId>(wheels.size());
   wheel_of.emplace(spec.geom, id);
