@@ -33,7 +33,7 @@ namespace {
 using namespace wtc::bench;
 
 struct Scene {
-  explicit Scene(const std::string& kind) {
+  Scene(const std::string& kind, int wheels) {
     world.setGravity(btVector3(0, 0, -9.81));
     if (kind == "native") {
       native_terrain = std::make_unique<wtc::bullet::TerrainObject>(roughGround());
@@ -41,8 +41,8 @@ struct Scene {
                                btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
     }
     const double inertia = 0.5 * kMass * kRadius * kRadius;
-    for (int i = 0; i < kWheels; ++i) {
-      const btVector3 start(kStartX, laneY(i), kStartZ);
+    for (int i = 0; i < wheels; ++i) {
+      const btVector3 start(startX(i), laneY(i, wheels), kStartZ);
       motions.push_back(std::make_unique<btDefaultMotionState>(btTransform(btQuaternion::getIdentity(), start)));
       btRigidBody::btRigidBodyConstructionInfo info(kMass, motions.back().get(), &shape,
                                                     btVector3(inertia, inertia, inertia));
@@ -101,7 +101,7 @@ struct Scene {
 }  // namespace
 
 int main(int argc, char** argv) {
-  registerScenes<Scene>("BulletStep");
+  registerScenes<Scene>("Bullet");
   benchmark::Initialize(&argc, argv);
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();

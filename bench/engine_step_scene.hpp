@@ -3,9 +3,12 @@
 // wheels (cylinders r = 0.19 m, w = 0.12 m, upright), each on its own line
 // across the rough ground of scenario 3 (terrains/rough_ground.yaml), driven
 // by 3 N m from rest; 2 s of warm-up, then 10 s of timed 1 ms steps. An
-// engine's scene class provides step(), contacts() and speed(); runScene
-// times it and registers the three runs <Engine>Step/{native, wtc_force,
-// wtc_constraint}.
+// engine's scene class, made as Scene(kind, wheels), provides step(),
+// contacts() and speed(); runScene times it. Registered runs:
+// <Engine>Step/{native, wtc_force, wtc_constraint} with the six wheels, and
+// <Engine>Wheels/<kind>/<n> with n = 1 ... 64 wheels on the same ground (8
+// lines 1.5 m apart, rows 1 m apart along them): how a step's cost grows
+// with the number of wheels.
 #include <benchmark/benchmark.h>
 
 #include <string>
@@ -25,8 +28,17 @@ inline constexpr double kStartZ = 0.15 + kRadius + kDropM;  // above the ground'
 inline constexpr int kWarmupSteps = 2000;                   // settle and spin up
 inline constexpr int kTimedSteps = 10000;                   // 10 s: every wheel stays on the 30 m ground
 
-/// The y of wheel i's line (m).
-inline double laneY(int i) { return (i - 0.5 * (kWheels - 1)) * kLaneSpacingM; }
+inline constexpr int kMaxLanes = 8;                         // lines side by side; more wheels start in rows
+inline constexpr double kRowSpacingM = 1.0;                 // between rows along a line (m)
+inline constexpr int kMaxWheels = 64;
+
+/// Where wheel i of n starts: its line's y, and x a row further for every
+/// kMaxLanes wheels (m).
+inline double laneY(int i, int n) {
+  const int lanes = n < kMaxLanes ? n : kMaxLanes;
+  return ((i % kMaxLanes) - 0.5 * (lanes - 1)) * kLaneSpacingM;
+}
+inline double startX(int i) { return kStartX + (i / kMaxLanes) * kRowSpacingM; }
 
 inline const Terrain& roughGround() {
   static const Terrain terrain = io::loadTerrain(WTC_SOURCE_DIR "/terrains/rough_ground.yaml");
@@ -36,8 +48,8 @@ inline const Terrain& roughGround() {
 /// Times Scene(kind) over kTimedSteps steps; counters: wheels, contacts per
 /// step (over all wheels), the first wheel's final speed.
 template <typename Scene>
-void runScene(benchmark::State& state, const std::string& kind) {
-  Scene scene(kind);
+void runScene(benchmark::State& state, const std::string& kind, int wheels) {
+  Scene scene(kind, wheels);
   for (int k = 0; k < kWarmupSteps; ++k) scene.step();
   long contacts = 0, steps = 0;
   for (auto _ : state) {
@@ -46,18 +58,27 @@ void runScene(benchmark::State& state, const std::string& kind) {
     ++steps;
   }
   state.SetItemsProcessed(steps);
-  state.counters["wheels"] = kWheels;
+  state.counters["wheels"] = wheels;
   state.counters["contacts"] = steps > 0 ? static_cast<double>(contacts) / steps : 0.0;
   state.counters["speed_mps"] = scene.speed();
 }
 
-/// Registers <prefix>/native, <prefix>/wtc_force, <prefix>/wtc_constraint.
+/// Registers <engine>Step/<kind> (six wheels) and <engine>Wheels/<kind>/<n>
+/// for kind in native, wtc_force, wtc_constraint.
 template <typename Scene>
-void registerScenes(const std::string& prefix) {
+void registerScenes(const std::string& engine) {
   for (const char* kind : {"native", "wtc_force", "wtc_constraint"}) {
-    benchmark::RegisterBenchmark((prefix + "/" + kind).c_str(), &runScene<Scene>, std::string(kind))
+    benchmark::RegisterBenchmark((engine + "Step/" + kind).c_str(), &runScene<Scene>, std::string(kind), kWheels)
         ->Iterations(kTimedSteps)
         ->Unit(benchmark::kMicrosecond);
+  }
+  for (const char* kind : {"native", "wtc_force", "wtc_constraint"}) {
+    for (int n = 1; n <= kMaxWheels; n *= 2) {
+      benchmark::RegisterBenchmark((engine + "Wheels/" + kind + "/" + std::to_string(n)).c_str(), &runScene<Scene>,
+                                   std::string(kind), n)
+          ->Iterations(kTimedSteps)
+          ->Unit(benchmark::kMicrosecond);
+    }
   }
 }
 

@@ -36,7 +36,7 @@ constexpr double kNativeMu = 0.8;      // ODE's Coulomb friction for its own con
 
 class Scene {
  public:
-  explicit Scene(const std::string& kind) : native_(kind == "native") {
+  Scene(const std::string& kind, int wheels) : native_(kind == "native") {
     world_ = dWorldCreate();
     dWorldSetGravity(world_, 0, 0, -9.81);
     space_ = dHashSpaceCreate(nullptr);
@@ -51,13 +51,13 @@ class Scene {
     }
     // ODE's cylinder axis is local z: turn it to the world's y.
     const dQuaternion turn = {std::numbers::sqrt2 / 2, -std::numbers::sqrt2 / 2, 0, 0};
-    for (int i = 0; i < kWheels; ++i) {
+    for (int i = 0; i < wheels; ++i) {
       const dBodyID body = dBodyCreate(world_);
       dMass mass;
       dMassSetCylinderTotal(&mass, kMass, 3, kRadius, kWidth);
       dBodySetMass(body, &mass);
       dBodySetQuaternion(body, turn);
-      dBodySetPosition(body, kStartX, laneY(i), kStartZ);
+      dBodySetPosition(body, startX(i), laneY(i, wheels), kStartZ);
       dBodySetAutoDisableFlag(body, 0);
       const dGeomID geom = dCreateCylinder(space_, kRadius, kWidth);
       dGeomSetBody(geom, body);
@@ -138,7 +138,7 @@ class Scene {
 
 int main(int argc, char** argv) {
   dInitODE2(0);
-  registerScenes<Scene>("OdeStep");
+  registerScenes<Scene>("Ode");
   benchmark::Initialize(&argc, argv);
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
