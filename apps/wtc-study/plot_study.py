@@ -7,8 +7,9 @@ Reads STUDY_DIR/results.csv (written by wtc-study) and draws, per scenario,
 each run's RMS position error against its wall time on log axes: colour by
 engine, filled for force mode and hollow for constraint mode, a cross for a
 run that failed its scene's criterion, and the Pareto front (runs no other
-successful run beats on both) as a line. The reference has no error by
-definition and is drawn on the bottom edge. Writes STUDY_DIR/pareto.png.
+successful run beats on both) as a line. Errors below 1 micrometre (the
+reference's own is zero) are drawn on the 1 micrometre line, the reference
+as a star. Writes STUDY_DIR/pareto.png.
 Exits 3 (and says so) when matplotlib is missing.
 """
 import csv
@@ -24,6 +25,7 @@ except ImportError:
     sys.exit(3)
 
 COLOURS = {"bullet": "tab:blue", "ode": "tab:orange", "ode_quick": "tab:green"}
+FLOOR_MM = 1e-3  # errors below a micrometre are drawn on this line
 
 
 def main(study_dir):
@@ -33,13 +35,14 @@ def main(study_dir):
     fig, axes = plt.subplots(1, len(scenarios), figsize=(6.5 * len(scenarios), 5.2), squeeze=False)
     for ax, scenario in zip(axes[0], scenarios):
         runs = [r for r in rows if r["scenario"] == scenario]
-        errors = [float(r["rms_position_error_m"]) * 1e3 for r in runs if float(r["rms_position_error_m"]) > 0]
-        floor = min(errors) / 3 if errors else 1e-3
+        floor = FLOOR_MM
         for r in runs:
             x = float(r["wall_time_s"])
             y = max(float(r["rms_position_error_m"]) * 1e3, floor)
             colour = COLOURS.get(r["engine"], "k")
-            if r["success"] != "1":
+            if r["reference"] == "1":
+                ax.scatter(x, y, marker="*", color="k", s=90, zorder=3)
+            elif r["success"] != "1":
                 ax.scatter(x, y, marker="x", color=colour, s=28)
             else:
                 face = colour if r["mode"] == "force" else "none"
@@ -55,13 +58,14 @@ def main(study_dir):
             ax.scatter([], [], color=colour, label=engine)
         ax.scatter([], [], facecolors="none", edgecolors="k", label="constraint mode (hollow)")
         ax.scatter([], [], marker="x", color="k", label="failed the scene's criterion")
+        ax.scatter([], [], marker="*", color="k", s=90, label="the reference (error 0)")
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_xlabel("wall time of the run (s)")
         ax.set_ylabel("RMS position error against the reference (mm)")
         ax.set_title(scenario)
         ax.grid(True, which="both", lw=0.3)
-        ax.legend(fontsize=7, loc="upper right")
+        ax.legend(fontsize=7, loc="lower left")
     fig.tight_layout()
     fig.savefig(os.path.join(study_dir, "pareto.png"), dpi=120)
 
