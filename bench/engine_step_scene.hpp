@@ -28,8 +28,8 @@ inline constexpr double kStartZ = 0.15 + kRadius + kDropM;  // above the ground'
 inline constexpr int kWarmupSteps = 2000;                   // settle and spin up
 inline constexpr int kTimedSteps = 10000;                   // 10 s: every wheel stays on the 30 m ground
 
-inline constexpr int kMaxLanes = 8;                         // lines side by side; more wheels start in rows
-inline constexpr double kRowSpacingM = 1.0;                 // between rows along a line (m)
+inline constexpr int kMaxLanes = 8;          // lines side by side; more wheels start in rows
+inline constexpr double kRowSpacingM = 1.0;  // between rows along a line (m)
 inline constexpr int kMaxWheels = 64;
 
 /// Where wheel i of n starts: its line's y, and x a row further for every

@@ -134,8 +134,9 @@ PieceRange addSampledLedge(TerrainBuilder& builder, const LedgeParams& p, Materi
   const double back_cells = std::max(1.0, std::round(p.top_length / s));
   const double side_cells = std::max(1.0, std::round(p.width / s));
   const double pieces = 2.0 * (front_cells + back_cells) * side_cells;
-  if (!(pieces < 4e9)) throw InvalidInputError(std::string(kWhere) + ": heightfield_spacing " + formatNumber(s) +
-                                               " m makes " + formatNumber(pieces) + " pieces");
+  if (!(pieces < 4e9))
+    throw InvalidInputError(std::string(kWhere) + ": heightfield_spacing " + formatNumber(s) + " m makes " +
+                            formatNumber(pieces) + " pieces");
   builder.requireRoomFor(static_cast<std::uint64_t>(pieces), std::string(kWhere) + " (heightfield_spacing)");
   Heightfield field;
   field.cols = static_cast<int>(front_cells + back_cells) + 1;

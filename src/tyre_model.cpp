@@ -7,9 +7,9 @@
 #include <limits>
 #include <string>
 
-#include "wtc/scratch_capacity.hpp"
 #include "tyre_kernels.hpp"
 #include "wtc/error.hpp"
+#include "wtc/scratch_capacity.hpp"
 #include "wtc/tolerances.hpp"
 
 namespace wtc {

@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "builder_support.hpp"
-#include "wtc/scratch_capacity.hpp"
 #include "wtc/error.hpp"
+#include "wtc/scratch_capacity.hpp"
 
 namespace wtc {
 

@@ -47,7 +47,8 @@ int gather(const wtc::study::StudyPlan& plan, const fs::path& out, bool plots) {
 fs::path wtcSim(const std::string& given) {
   if (!given.empty()) return fs::absolute(given);
   const fs::path beside = fs::canonical("/proc/self/exe").parent_path() / "wtc-sim";
-  if (!fs::exists(beside)) throw wtc::InvalidInputError("no wtc-sim beside wtc-study (" + beside.string() + "): give --wtc-sim");
+  if (!fs::exists(beside))
+    throw wtc::InvalidInputError("no wtc-sim beside wtc-study (" + beside.string() + "): give --wtc-sim");
   return beside;
 }
 
@@ -66,10 +67,12 @@ int main(int argc, char** argv) {
     sub->add_option("--out", out, "the study's directory (default study/<name>)");
     sub->add_flag("--no-plots", no_plots, "skip the figure");
   }
-  app.get_subcommand("run")->add_option("--workers", workers, "simulations at once (default: the cores)")
+  app.get_subcommand("run")
+      ->add_option("--workers", workers, "simulations at once (default: the cores)")
       ->check(CLI::PositiveNumber);
   for (const char* name : {"run", "jobs"}) {
-    app.get_subcommand(name)->add_option("--wtc-sim", wtc_sim, "the wtc-sim that makes the runs (default: the one beside)");
+    app.get_subcommand(name)->add_option("--wtc-sim", wtc_sim,
+                                         "the wtc-sim that makes the runs (default: the one beside)");
   }
   CLI11_PARSE(app, argc, argv);
 
@@ -95,7 +98,8 @@ int main(int argc, char** argv) {
     }
     if (app.got_subcommand("jobs")) {
       std::ofstream lines(dir / "jobs.txt");
-      for (const std::string& line : wtc::study::jobLines(plan, fs::absolute(dir), wtcSim(wtc_sim))) lines << line << '\n';
+      for (const std::string& line : wtc::study::jobLines(plan, fs::absolute(dir), wtcSim(wtc_sim)))
+        lines << line << '\n';
       if (!lines) throw wtc::InvalidInputError("cannot write " + (dir / "jobs.txt").string());
       std::printf("wtc-study: %zu jobs in %s\n", plan.runs.size(), (dir / "jobs.txt").c_str());
       return 0;

@@ -1,8 +1,8 @@
 #include "wtc/io/run_summary_file.hpp"
 
 #include <fstream>
-#include <numbers>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <set>
 
 #include "wtc/error.hpp"
@@ -27,11 +27,28 @@ void writeJson(const std::filesystem::path& path, const nlohmann::json& j) {
 
 // Top-level keys that are not the scene's own figures (RunSummary::fields).
 const std::set<std::string>& fixedKeys() {
-  static const std::set<std::string> keys = {
-      "scene",         "status",          "engine",    "mode",     "dt",       "sim_time",
-      "wall_time",     "real_time_factor", "steps",    "success",  "nan",      "diverged",  "interrupted",
-      "max_penetration", "max_joint_gap_m", "max_joint_angle_deg", "saturation_steps", "warnings",
-      "parameters",    "drives",          "wheels",    "note"};
+  static const std::set<std::string> keys = {"scene",
+                                             "status",
+                                             "engine",
+                                             "mode",
+                                             "dt",
+                                             "sim_time",
+                                             "wall_time",
+                                             "real_time_factor",
+                                             "steps",
+                                             "success",
+                                             "nan",
+                                             "diverged",
+                                             "interrupted",
+                                             "max_penetration",
+                                             "max_joint_gap_m",
+                                             "max_joint_angle_deg",
+                                             "saturation_steps",
+                                             "warnings",
+                                             "parameters",
+                                             "drives",
+                                             "wheels",
+                                             "note"};
   return keys;
 }
 

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <optional>
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <utility>
 
@@ -172,9 +172,8 @@ StudyPlan readStudy(const std::filesystem::path& file) {
     const YamlReader at = in.with("scenarios." + name);
     at.requireMap(entry.second, "scenario");
     at.checkKeys(entry.second, {"scene", "set"});
-    const std::filesystem::path scene =
-        std::filesystem::weakly_canonical(std::filesystem::absolute(file).parent_path() /
-                                          at.string(at.require(entry.second, "scene"), "scene"));
+    const std::filesystem::path scene = std::filesystem::weakly_canonical(
+        std::filesystem::absolute(file).parent_path() / at.string(at.require(entry.second, "scene"), "scene"));
     if (!std::filesystem::is_regular_file(scene)) {
       at.fail(entry.second["scene"], "scenarios." + name + ".scene: no such file " + scene.string());
     }

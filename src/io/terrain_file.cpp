@@ -132,8 +132,9 @@ std::int64_t addPiece(TerrainBuilder& builder, const YamlReader& in, const YAML:
     s.pose_WL = in.pose(p);
     addIncline(builder, s, material);
   } else if (type == "ledge") {
-    in.checkKeys(p, kCommonKeys, {"height", "approach_length", "top_length", "width", "thickness", "approach_tiles",
-                                     "heightfield_spacing"});
+    in.checkKeys(
+        p, kCommonKeys,
+        {"height", "approach_length", "top_length", "width", "thickness", "approach_tiles", "heightfield_spacing"});
     LedgeParams s;
     s.height = in.number(in.require(p, "height"), "height");
     s.approach_length = in.number(p, "approach_length", s.approach_length);

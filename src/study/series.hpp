@@ -8,8 +8,8 @@
 namespace wtc::study::detail {
 
 struct Series {
-  std::vector<std::string> names;          ///< The header.
-  std::vector<std::vector<double>> rows;   ///< rows[i][column]
+  std::vector<std::string> names;         ///< The header.
+  std::vector<std::vector<double>> rows;  ///< rows[i][column]
   /// The column named `name`; InvalidInputError naming the file otherwise.
   std::size_t column(const std::string& name) const;
   std::filesystem::path file;

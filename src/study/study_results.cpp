@@ -27,9 +27,9 @@ constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 // A run's series, with the columns the measures need.
 struct RunSeries {
   Series bodies, wheels;
-  std::size_t x = 0;                         // the first body's x; y, z follow
-  std::vector<std::size_t> pitched_qw;       // qw of each body that is not a wheel; qx qy qz follow
-  std::vector<std::size_t> wheel_fx;         // fx of each wheel; fy fz follow
+  std::size_t x = 0;                    // the first body's x; y, z follow
+  std::vector<std::size_t> pitched_qw;  // qw of each body that is not a wheel; qx qy qz follow
+  std::vector<std::size_t> wheel_fx;    // fx of each wheel; fy fz follow
 };
 
 RunSeries readRun(const fs::path& dir) {
@@ -202,17 +202,35 @@ std::vector<RunResult> gatherResults(const StudyPlan& plan, const fs::path& out)
 
 void writeResultsCsv(const fs::path& file, const std::vector<RunResult>& results) {
   std::string text =
-      "scenario,key,sweep,label,engine,mode,dt_s,reference,success,crashed,nan,diverged,wall_time_s,real_time_factor,steps,"
+      "scenario,key,sweep,label,engine,mode,dt_s,reference,success,crashed,nan,diverged,wall_time_s,real_time_factor,"
+      "steps,"
       "rms_position_error_m,final_position_error_m,peak_pitch_deg,peak_pitch_error_deg,peak_wheel_force_N,"
       "rms_wheel_force_error_N,path_error_m,warnings,on_front\n";
   for (const RunResult& r : results) {
     const sim::RunSummary& s = r.summary;
-    text += join({csvText(r.run->scenario), r.run->key, csvText(r.run->sweep), csvText(r.run->label), s.engine,
-                  s.mode, number(s.dt), r.run->reference ? "1" : "0", s.success ? "1" : "0", s.crashed ? "1" : "0", s.nan ? "1" : "0", s.diverged ? "1" : "0",
-                  number(s.wall_time), number(s.real_time_factor), std::to_string(s.steps),
-                  number(r.rms_position_error), number(r.final_position_error), number(r.peak_pitch_deg),
-                  number(r.peak_pitch_error_deg), number(r.peak_wheel_force), number(r.rms_wheel_force_error),
-                  r.path_error ? number(*r.path_error) : std::string(), std::to_string(s.warnings.size()),
+    text += join({csvText(r.run->scenario),
+                  r.run->key,
+                  csvText(r.run->sweep),
+                  csvText(r.run->label),
+                  s.engine,
+                  s.mode,
+                  number(s.dt),
+                  r.run->reference ? "1" : "0",
+                  s.success ? "1" : "0",
+                  s.crashed ? "1" : "0",
+                  s.nan ? "1" : "0",
+                  s.diverged ? "1" : "0",
+                  number(s.wall_time),
+                  number(s.real_time_factor),
+                  std::to_string(s.steps),
+                  number(r.rms_position_error),
+                  number(r.final_position_error),
+                  number(r.peak_pitch_deg),
+                  number(r.peak_pitch_error_deg),
+                  number(r.peak_wheel_force),
+                  number(r.rms_wheel_force_error),
+                  r.path_error ? number(*r.path_error) : std::string(),
+                  std::to_string(s.warnings.size()),
                   r.on_front ? "1" : "0"},
                  ",");
     text += "\n";
@@ -233,9 +251,9 @@ void writeResultsMarkdown(const fs::path& file, const StudyPlan& plan, const std
     std::sort(rows.begin(), rows.end(),
               [](const RunResult* a, const RunResult* b) { return a->summary.wall_time < b->summary.wall_time; });
     const bool paths = std::any_of(rows.begin(), rows.end(), [](const RunResult* r) { return r->path_error; });
-    std::vector<std::string> header = {"setting", "success", "wall (s)", "× real time", "RMS position error (mm)",
-                                       "final error (mm)", "peak pitch (°)", "its error (°)",
-                                       "peak wheel force (N)", "RMS force error (N)"};
+    std::vector<std::string> header = {
+        "setting",          "success",        "wall (s)",      "× real time",          "RMS position error (mm)",
+        "final error (mm)", "peak pitch (°)", "its error (°)", "peak wheel force (N)", "RMS force error (N)"};
     if (paths) header.push_back("path error RMS (mm)");
     header.insert(header.end(), {"warnings", "front"});
     text.append("\n### ").append(scenario).append(" (reference: ");
@@ -245,17 +263,20 @@ void writeResultsMarkdown(const fs::path& file, const StudyPlan& plan, const std
     text += "\n";
     for (const RunResult* r : rows) {
       const sim::RunSummary& s = r->summary;
-      std::vector<std::string> cells = {
-          r->run->label + (r->run->reference ? " (reference)" : ""),
-          s.crashed ? "crashed" : s.nan ? "non-finite" : s.diverged ? "diverged" : s.success ? "yes" : "no",
-          number(s.wall_time, "%.2f"),
-          number(s.real_time_factor, "%.1f"),
-          number(r->rms_position_error * 1e3, "%.2f"),
-          number(r->final_position_error * 1e3, "%.2f"),
-          number(r->peak_pitch_deg, "%.1f"),
-          number(r->peak_pitch_error_deg, "%.1f"),
-          number(r->peak_wheel_force, "%.0f"),
-          number(r->rms_wheel_force_error, "%.1f")};
+      std::vector<std::string> cells = {r->run->label + (r->run->reference ? " (reference)" : ""),
+                                        s.crashed    ? "crashed"
+                                        : s.nan      ? "non-finite"
+                                        : s.diverged ? "diverged"
+                                        : s.success  ? "yes"
+                                                     : "no",
+                                        number(s.wall_time, "%.2f"),
+                                        number(s.real_time_factor, "%.1f"),
+                                        number(r->rms_position_error * 1e3, "%.2f"),
+                                        number(r->final_position_error * 1e3, "%.2f"),
+                                        number(r->peak_pitch_deg, "%.1f"),
+                                        number(r->peak_pitch_error_deg, "%.1f"),
+                                        number(r->peak_wheel_force, "%.0f"),
+                                        number(r->rms_wheel_force_error, "%.1f")};
       if (paths) cells.push_back(r->path_error ? number(*r->path_error * 1e3, "%.2f") : std::string("–"));
       cells.push_back(std::to_string(s.warnings.size()));
       cells.push_back(r->on_front ? "●" : "");

@@ -4,15 +4,15 @@
 #include <spawn.h>
 #include <sys/wait.h>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
 #include <mutex>
 #include <optional>
 #include <sstream>
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
 #include "wtc/error.hpp"
 #include "wtc/io/run_summary_file.hpp"
@@ -93,8 +93,8 @@ sim::RunSummary makeRun(const PlannedRun& run, const fs::path& out, const fs::pa
 fs::path runDirectory(const fs::path& out, const PlannedRun& run) { return out / "runs" / run.key; }
 
 std::vector<std::string> wtcSimArguments(const PlannedRun& run, const fs::path& out) {
-  std::vector<std::string> args = {run.scene_file.string(),   "--out",   runDirectory(out, run).string(),
-                                   "--skip-done", "--quiet", "--no-plots"};
+  std::vector<std::string> args = {run.scene_file.string(), "--out",   runDirectory(out, run).string(),
+                                   "--skip-done",           "--quiet", "--no-plots"};
   for (const io::Override& o : run.overrides) {
     args.push_back("--set");
     args.push_back(o.path + "=" + o.value);
@@ -119,8 +119,8 @@ void runPlan(const StudyPlan& plan, const fs::path& out, int workers, const fs::
           try {
             summary = makeRun(run, out, wtc_sim);
           } catch (const std::exception& e) {
-            throw InvalidInputError("study " + plan.name + ", run " + run.key + " (" + run.scenario + ", " +
-                                    run.label + "): " + e.what());
+            throw InvalidInputError("study " + plan.name + ", run " + run.key + " (" + run.scenario + ", " + run.label +
+                                    "): " + e.what());
           }
         }
         const std::lock_guard<std::mutex> guard(lock);

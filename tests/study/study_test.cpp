@@ -78,7 +78,8 @@ TEST(StudyPlanTest, ASweptSettingEqualToTheReferenceIsTheReferenceRunOnce) {
   const fs::path dir = freshDirectory("dedupe");
   const fs::path file = writeFile(dir, "s.yaml",
                                   "name: d\nbase: {engine: bullet, mode: force, dt: 0.0004}\n"
-                                  "scenarios: {towed: {scene: " WTC_SOURCE_DIR "/scenes/towed_incline.yaml}}\n"
+                                  "scenarios: {towed: {scene: " WTC_SOURCE_DIR
+                                  "/scenes/towed_incline.yaml}}\n"
                                   "reference: {engine: ode, dt: 0.0002}\n"
                                   "sweeps: {step: {engine: [ode, bullet], dt: [0.0002]}}\n");
   const StudyPlan plan = wtc::io::loadStudyPlan(file);
@@ -95,16 +96,17 @@ TEST(StudyPlanTest, OnlyLimitsASweepToTheScenariosItNames) {
       "name: o\nbase: {engine: bullet, mode: force, dt: 0.0004}\nreference: {dt: 0.0002}\n"
       "scenarios: {towed: {scene: " WTC_SOURCE_DIR "/scenes/towed_incline.yaml}, robot: {scene: " WTC_SOURCE_DIR
       "/scenes/robot_straight.yaml}}\n";
-  const StudyPlan plan = wtc::io::loadStudyPlan(
-      writeFile(dir, "s.yaml", head + "sweeps: {step: {dt: [0.001]}, solver: {only: [robot], solver_iterations: [5]}}\n"));
+  const StudyPlan plan = wtc::io::loadStudyPlan(writeFile(
+      dir, "s.yaml", head + "sweeps: {step: {dt: [0.001]}, solver: {only: [robot], solver_iterations: [5]}}\n"));
   std::vector<std::string> labels;
   for (const PlannedRun& r : plan.runs) labels.push_back(r.scenario + ": " + r.label);
   EXPECT_EQ(labels, (std::vector<std::string>{"towed: bullet force 0.2 ms", "towed: bullet force 1 ms",
                                               "robot: bullet force 0.2 ms", "robot: bullet force 1 ms",
                                               "robot: bullet force 0.4 ms solver_iterations=5"}));
-  EXPECT_THAT([&] { wtc::io::loadStudyPlan(writeFile(dir, "t.yaml", head + "sweeps: {s: {only: [robt], dt: [1]}}\n")); },
-              testing::ThrowsMessage<wtc::InvalidInputError>(
-                  testing::AllOf(HasSubstr("t.yaml:5:"), HasSubstr("only: no scenario 'robt'"))));
+  EXPECT_THAT(
+      [&] { wtc::io::loadStudyPlan(writeFile(dir, "t.yaml", head + "sweeps: {s: {only: [robt], dt: [1]}}\n")); },
+      testing::ThrowsMessage<wtc::InvalidInputError>(
+          testing::AllOf(HasSubstr("t.yaml:5:"), HasSubstr("only: no scenario 'robt'"))));
   fs::remove_all(dir);
 }
 
@@ -203,7 +205,8 @@ TEST(StudyRunTest, ARunThatCannotLoadIsNamed) {
   const fs::path dir = freshDirectory("badrun");
   const fs::path file = writeFile(dir, "s.yaml",
                                   "name: e\nbase: {engine: bullet, mode: force, dt: 0.0004}\n"
-                                  "scenarios: {towed: {scene: " WTC_SOURCE_DIR "/scenes/towed_incline.yaml}}\n"
+                                  "scenarios: {towed: {scene: " WTC_SOURCE_DIR
+                                  "/scenes/towed_incline.yaml}}\n"
                                   "reference: {dt: 0.0002}\n"
                                   "sweeps: {bad: {engine: [bulet]}}\n");
   const StudyPlan plan = wtc::io::loadStudyPlan(file);
@@ -217,8 +220,8 @@ TEST(StudyRunTest, ARunWhoseProcessDiesIsRecordedAsCrashedAndTheStudyGoesOn) {
   const StudyPlan plan = wtc::io::loadStudyPlan(kTinyStudy);
   const fs::path dir = freshDirectory("crash");
   // A wtc-sim that dies as an engine's failed assertion does.
-  const fs::path fake = writeFile(dir, "dying-wtc-sim",
-                                  "#!/bin/sh\necho 'ODE INTERNAL ERROR 1: assertion failed' >&2\nkill -ABRT $$\n");
+  const fs::path fake =
+      writeFile(dir, "dying-wtc-sim", "#!/bin/sh\necho 'ODE INTERNAL ERROR 1: assertion failed' >&2\nkill -ABRT $$\n");
   fs::permissions(fake, fs::perms::owner_all);
   std::size_t crashed = 0;
   wtc::study::runPlan(plan, dir / "out", 2, fake, [&](const wtc::study::RunDone& d) {

@@ -162,7 +162,7 @@ TEST(TerrainPrimitivesTest, ALedgeAsAHeightfieldIsTheSameGroundAwayFromItsFace) 
     for (PieceId id = range.first; id < range.end(); ++id) d = std::min(d, distance(terrain, id, p));
     return d;
   };
-  EXPECT_NEAR(ground({-1.0, 2.1, 0.19}), 0.19, kTolerance);   // above the approach
+  EXPECT_NEAR(ground({-1.0, 2.1, 0.19}), 0.19, kTolerance);       // above the approach
   EXPECT_NEAR(ground({3.0, 1.9, 0.6 + 0.19}), 0.19, kTolerance);  // above the top
   // The face is a slope across the cell in front of x = 0 (here x = 1):
   // the top edge is where the box's is, its foot one cell earlier.
@@ -174,8 +174,9 @@ TEST(TerrainPrimitivesTest, ALedgeAsAHeightfieldIsTheSameGroundAwayFromItsFace) 
 
   LedgeParams turned = ledge;
   turned.pose_WL.linear() = Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-  EXPECT_THAT([&] { addLedge(f.builder, turned, f.material); },
-              testing::ThrowsMessage<InvalidInputError>(HasSubstr("heightfield_spacing needs a pose without rotation")));
+  EXPECT_THAT(
+      [&] { addLedge(f.builder, turned, f.material); },
+      testing::ThrowsMessage<InvalidInputError>(HasSubstr("heightfield_spacing needs a pose without rotation")));
   LedgeParams negative = ledge;
   negative.heightfield_spacing = -0.01;
   EXPECT_THAT([&] { addLedge(f.builder, negative, f.material); },

@@ -44,9 +44,9 @@ struct RunSummary {
   double real_time_factor = 0.0;  ///< sim_time / wall_time.
   std::uint64_t steps = 0;
   bool success = false;
-  bool nan = false;                    ///< A body state went non-finite (the run stopped there).
-  bool diverged = false;               ///< A body went beyond Run::diverged's bounds (the run stopped there).
-  bool interrupted = false;            ///< Stopped on request (RunOptions::stop) before its duration.
+  bool nan = false;          ///< A body state went non-finite (the run stopped there).
+  bool diverged = false;     ///< A body went beyond Run::diverged's bounds (the run stopped there).
+  bool interrupted = false;  ///< Stopped on request (RunOptions::stop) before its duration.
   /// Its process died (a signal: an engine's assertion); written by a
   /// study's runner over the summary the run left (wtc::study::runPlan).
   bool crashed = false;

@@ -41,8 +41,8 @@ struct RunDone {
 /// (a failed run; its summary says how). A run wtc-sim refuses (exit 2: a
 /// scene that does not load) is an InvalidInputError naming the run and
 /// wtc-sim's message, after the runs under way end.
-void runPlan(const StudyPlan& plan, const std::filesystem::path& out, int workers,
-             const std::filesystem::path& wtc_sim, const std::function<void(const RunDone&)>& done = {});
+void runPlan(const StudyPlan& plan, const std::filesystem::path& out, int workers, const std::filesystem::path& wtc_sim,
+             const std::function<void(const RunDone&)>& done = {});
 
 /// wtc-sim's arguments for one run (after the program): its scene, its
 /// directory, --skip-done --quiet --no-plots and its overrides.

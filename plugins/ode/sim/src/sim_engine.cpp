@@ -344,7 +344,7 @@ class SimEngine final : public sim::Engine {
   std::vector<PieceId> near_pieces_;  // scratch
   dWorldID world_ = nullptr;
   dThreadingImplementationID threading_ = nullptr;  // this world's own (see the constructor)
-  unsigned long quickstep_seed_ = 0;  // this world's dRandInt stream (see odeGlobalsLock)
+  unsigned long quickstep_seed_ = 0;                // this world's dRandInt stream (see odeGlobalsLock)
   dSpaceID space_ = nullptr;
   dJointGroupID contacts_ = nullptr;
   std::unique_ptr<Plugin> plugin_;
