@@ -1,32 +1,18 @@
 // "The step loop allocates nothing" (issue 15), counted: this executable
-// replaces the global operator new with a counting one and runs the ledge
+// links the counting operator new (tests/support/allocation_counter.hpp) and runs the ledge
 // climb's vehicle, controller and run loop (sim::Run) in every engine and
 // mode. Once warm, a step of WTC, the vehicle layer and the run loop makes
 // no C++ allocation. The engines allocate through malloc (btAlignedAlloc,
 // ODE's dAlloc), which this does not count: their allocations are theirs.
 // Its own executable, so the counter sees only these tests.
-#include <atomic>
-#include <cstdlib>
 #include <filesystem>
-#include <new>
 
 #include <gtest/gtest.h>
 
+#include "allocation_counter.hpp"
 #include "wtc/io/scene_file.hpp"
 #include "wtc/sim/make_engine.hpp"
 #include "wtc/sim/run.hpp"
-
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-  ++g_allocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace wtc::testing {
 namespace {
@@ -47,9 +33,9 @@ TEST(StepAllocationTest, AWarmStepOfTheLedgeClimbAllocatesNothingInAnyEngineOrMo
       const auto controller = s.make_controller();
       sim::Run run(*e, controller.get(), s.vehicle_effects);
       for (int i = 0; i < kWarmSteps; ++i) run.step();
-      const long before = g_allocations.load();
+      const long before = allocationCount();
       for (int i = 0; i < kCountedSteps; ++i) run.step();
-      EXPECT_EQ(g_allocations.load() - before, 0) << engine << ", " << mode << " mode";
+      EXPECT_EQ(allocationCount() - before, 0) << engine << ", " << mode << " mode";
       EXPECT_FALSE(run.nonFinite());
     }
   }

@@ -37,6 +37,13 @@ fs::path writeFile(const fs::path& dir, const std::string& name, const std::stri
   return dir / name;
 }
 
+// A study of the towed incline alone, with its reference and sweeps (YAML flow maps).
+std::string towedStudy(const std::string& name, const std::string& reference, const std::string& sweeps) {
+  return "name: " + name + "\nbase: {engine: bullet, mode: force, dt: 0.0004}\n" +
+         "scenarios: {towed: {scene: " WTC_SOURCE_DIR "/scenes/towed_incline.yaml}}\n" + "reference: " + reference +
+         "\nsweeps: " + sweeps + "\n";
+}
+
 // Every figure of a result that is a function of the run's settings (not
 // the wall time, the real-time factor, nor the front, which depends on them).
 void expectSameResults(const std::vector<RunResult>& a, const std::vector<RunResult>& b) {
@@ -76,12 +83,8 @@ TEST(StudyPlanTest, ExpandsSweepsIntoDistinctRunsWithTheReferenceFirst) {
 
 TEST(StudyPlanTest, ASweptSettingEqualToTheReferenceIsTheReferenceRunOnce) {
   const fs::path dir = freshDirectory("dedupe");
-  const fs::path file = writeFile(dir, "s.yaml",
-                                  "name: d\nbase: {engine: bullet, mode: force, dt: 0.0004}\n"
-                                  "scenarios: {towed: {scene: " WTC_SOURCE_DIR
-                                  "/scenes/towed_incline.yaml}}\n"
-                                  "reference: {engine: ode, dt: 0.0002}\n"
-                                  "sweeps: {step: {engine: [ode, bullet], dt: [0.0002]}}\n");
+  const fs::path file = writeFile(
+      dir, "s.yaml", towedStudy("d", "{engine: ode, dt: 0.0002}", "{step: {engine: [ode, bullet], dt: [0.0002]}}"));
   const StudyPlan plan = wtc::io::loadStudyPlan(file);
   ASSERT_EQ(plan.runs.size(), 2u);
   EXPECT_TRUE(plan.runs[0].reference);
@@ -203,12 +206,7 @@ TEST(StudyRunTest, AnInterruptedRunIsMadeAgainAndOnlyIt) {
 
 TEST(StudyRunTest, ARunThatCannotLoadIsNamed) {
   const fs::path dir = freshDirectory("badrun");
-  const fs::path file = writeFile(dir, "s.yaml",
-                                  "name: e\nbase: {engine: bullet, mode: force, dt: 0.0004}\n"
-                                  "scenarios: {towed: {scene: " WTC_SOURCE_DIR
-                                  "/scenes/towed_incline.yaml}}\n"
-                                  "reference: {dt: 0.0002}\n"
-                                  "sweeps: {bad: {engine: [bulet]}}\n");
+  const fs::path file = writeFile(dir, "s.yaml", towedStudy("e", "{dt: 0.0002}", "{bad: {engine: [bulet]}}"));
   const StudyPlan plan = wtc::io::loadStudyPlan(file);
   EXPECT_THAT([&] { wtc::study::runPlan(plan, dir / "out", 2, WTC_SIM_EXE); },
               testing::ThrowsMessage<wtc::InvalidInputError>(

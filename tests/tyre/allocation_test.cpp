@@ -1,27 +1,12 @@
 // "A step allocates nothing once warm" (tyre_model.hpp), checked: this
-// executable replaces the global operator new with a counting one, then runs
+// executable links the counting operator new (tests/support/allocation_counter.hpp), then runs
 // warmed-up wheel steps for every effect set over ground with one and two
 // contacts. Its own executable, so the counter sees only these tests.
-#include <atomic>
-#include <cstdlib>
-#include <new>
-
 #include <gtest/gtest.h>
 
+#include "allocation_counter.hpp"
 #include "wheel_sim.hpp"
 #include "wtc/terrain_primitives.hpp"
-
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-  ++g_allocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace wtc {
 namespace {
@@ -56,14 +41,14 @@ TEST(TyreAllocationTest, WarmStepsAllocateNothingForAnyEffectSet) {
       return contacts;
     };
     drive();  // warm up: buffers reach their sizes
-    const long before = g_allocations.load();
+    const long before = testing::allocationCount();
     const std::size_t last = drive();
-    EXPECT_EQ(g_allocations.load() - before, 0) << effects.toString();
+    EXPECT_EQ(testing::allocationCount() - before, 0) << effects.toString();
     EXPECT_EQ(last, effects.has(Effect::kMultipleContacts) ? 2u : 1u) << "the foot of the ledge";
     // The counter works: a fresh state must allocate.
     WheelState fresh;
     model.step(ledge, WheelDescription{}, {{-0.188, 0.0, r - 0.002}, Vector3d::UnitY()}, motion, 1e-3, fresh);
-    EXPECT_GT(g_allocations.load() - before, 0);
+    EXPECT_GT(testing::allocationCount() - before, 0);
   }
 }
 
