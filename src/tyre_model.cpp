@@ -99,9 +99,16 @@ const WheelForces& TyreModel::forces(std::span<const Material> materials, const 
   in.step = h;
   in.transport_speed = motion.velocity.norm();
   in.slip_speed_floor = tyre.slip_speed_floor;
-  // k_t <= (kappa/h)^2 m keeps h sqrt(k_t/m) <= kappa; tau = 2 zeta_t / w_t.
+  // Force mode: k_t <= (kappa/h)^2 m keeps h sqrt(k_t/m) <= kappa, the
+  // tread force being applied explicitly. Constraint mode: the engine's
+  // friction holds the wheel within the step and the tread state only sets
+  // its coefficient (integrated exactly), so the tread keeps its own k_t:
+  // capped, its relaxation length grew as h^2 and a parked wheel slid 108 mm
+  // at 50 ms before it held (issue 11, defect 2). tau = 2 zeta_t / w_t.
   const double kappa = tyre.stability_fraction;
-  in.tread_stiffness = std::min(tyre.tangential_stiffness, kappa * kappa * inertia.effective_mass / (h * h));
+  in.tread_stiffness = mode_ == ContactMode::kConstraint
+                           ? tyre.tangential_stiffness
+                           : std::min(tyre.tangential_stiffness, kappa * kappa * inertia.effective_mass / (h * h));
   const double fade = std::max(0.0, 1.0 - in.transport_speed / tyre.standstill_speed);
   in.tread_damping_time =
       2.0 * tyre.standstill_damping_ratio * std::sqrt(inertia.effective_mass / in.tread_stiffness) * fade;

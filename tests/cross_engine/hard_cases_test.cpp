@@ -6,9 +6,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "engine_sim.hpp"
+#include "wtc/constants.hpp"
 #include "wheel_sim.hpp"
 
 namespace wtc::testing {
@@ -52,6 +54,54 @@ TEST(HardCasesTest, DISABLED_FreeWheelRollingSlowlyComesToRest) {
           EXPECT_LT(sign_changes, 10) << label;
         }
       }
+    }
+  }
+}
+
+// Issue 11, defect 2: constraint mode exists for large steps, so a parked
+// wheel must hold there as well as at 1 ms. The tread spring's explicit-
+// stability cap k_t <= (kappa/h)^2 m also ran in constraint mode, where
+// nothing integrates the spring explicitly (the engine's friction holds the
+// wheel within a step), so the relaxation length grew as h^2 and the wheel
+// slid before the tread held it. A locked 21 kg wheel on 15 deg (mu_max
+// 0.8), both engines, from where it is put down, 10 s: the creep in mm.
+// Before the fix: 1.07 at 1 ms, 2.39 at 10 ms, 108 at 50 ms, 431 at 100 ms.
+// After: 1.07, 1.07, 6.35, 25.4.
+double parkedCreep(Engine engine, double h) {
+  constexpr double kSlope = 15.0 * std::numbers::pi / 180.0, kMass = 21.0, kParkedS = 10.0;
+  const Terrain incline = tiltedSlab(kSlope);
+  const double deflection = kMass * kGravityMps2 * std::cos(kSlope) / 1e5;
+  auto sim = makeEngineSim(engine, ContactMode::kConstraint, incline, kMass,
+                           (kRadius - deflection) * slabNormal(kSlope), Hold::kLocked);
+  const Eigen::Vector3d start = sim->position();
+  for (long k = 0; k < std::lround(kParkedS / h); ++k) sim->step(h);
+  return std::abs((sim->position() - start).dot(downhill(kSlope)));
+}
+
+// Up to 10 ms: at most twice the creep at 1 ms, or half a millimetre.
+TEST(HardCasesTest, AParkedWheelHoldsInConstraintModeAtLargeSteps) {
+  for (const Engine engine : {Engine::kBullet, Engine::kOde}) {
+    const double at_1ms = parkedCreep(engine, 1e-3);
+    for (const double h : {2e-3, 5e-3, 1e-2}) {
+      const double creep = parkedCreep(engine, h);
+      RecordProperty(engineName(engine) + "_creep_mm_at_" + std::to_string(std::lround(h * 1e3)) + "ms",
+                     std::to_string(creep * 1e3));
+      EXPECT_LT(creep, std::max(2.0 * at_1ms, 0.5e-3))
+          << engineName(engine) << ", h = " << h << " s: " << creep * 1e3 << " mm (at 1 ms: " << at_1ms * 1e3
+          << " mm)";
+    }
+  }
+}
+
+// Open: at 50 and 100 ms the wheel still slides g sin(15 deg) h^2 (6.3 and
+// 25 mm) before it holds: the engine's friction coefficient is the tread
+// state's, zero when the wheel is put down, so the first step slides free.
+// Holding from the first step needs the sticking state of defect 6.
+TEST(HardCasesTest, DISABLED_AParkedWheelHoldsInConstraintModeAtVeryLargeSteps) {
+  for (const Engine engine : {Engine::kBullet, Engine::kOde}) {
+    const double at_1ms = parkedCreep(engine, 1e-3);
+    for (const double h : {5e-2, 1e-1}) {
+      EXPECT_LT(parkedCreep(engine, h), std::max(2.0 * at_1ms, 0.5e-3)) << engineName(engine) << ", h = " << h;
     }
   }
 }
