@@ -49,6 +49,25 @@ fs::path outputDirectory(const std::string& requested, bool redo_unfinished, con
   return dir;
 }
 
+// This build of wtc-sim: FNV-1a over its own executable (16 hex digits),
+// recorded in each summary so that results of different builds are not
+// mixed unnoticed; empty if the file cannot be read.
+std::string programIdentity() {
+  std::ifstream in("/proc/self/exe", std::ios::binary);
+  if (!in) return {};
+  std::uint64_t h = 14695981039346656037ull;
+  char buffer[1 << 16];
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+    for (std::streamsize i = 0; i < in.gcount(); ++i) {
+      h ^= static_cast<unsigned char>(buffer[i]);
+      h *= 1099511628211ull;
+    }
+  }
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+  return hex;
+}
+
 // A file of wtc-sim's own (the plotting script, the replay page): beside
 // the sources in a build tree, else where it is installed.
 fs::path ownFile(const std::string& name) {
@@ -146,7 +165,8 @@ int main(int argc, char** argv) {
     };
     wtc::sim::Replay replay(scene, scene.output.replay_fps);
     options.replay = &replay;
-    const wtc::sim::RunSummary summary = wtc::sim::runScene(scene, *engine_ptr, options);
+    wtc::sim::RunSummary summary = wtc::sim::runScene(scene, *engine_ptr, options);
+    summary.program = programIdentity();
     if (bar) std::fprintf(stderr, "\n");
     wtc::io::writeRunSummary(dir / "summary.json", summary);
     replay.write(dir / "replay_data.js", summary);

@@ -33,6 +33,12 @@ int gather(const wtc::study::StudyPlan& plan, const fs::path& out, bool plots) {
   wtc::study::writeResultsMarkdown(out / "results.md", plan, results);
   std::printf("wtc-study: %zu runs gathered: %s, %s\n", results.size(), (out / "results.md").c_str(),
               (out / "results.csv").c_str());
+  if (const auto programs = wtc::study::programsOf(results); programs.size() > 1) {
+    std::fprintf(stderr,
+                 "wtc-study: warning: the runs were made by %zu different builds of wtc-sim; delete %s and make "
+                 "them again with one (results.md says which)\n",
+                 programs.size(), (out / "runs").c_str());
+  }
   if (plots) {
     const std::string args = " '" + ownFile("plot_study.py").string() + "' '" + out.string() + "'";
     int rc = std::system(("python3" + args + " 2>/dev/null").c_str());

@@ -56,6 +56,7 @@ const std::set<std::string>& fixedKeys() {
 
 void writeRunSummary(const std::filesystem::path& file, const sim::RunSummary& s) {
   nlohmann::json j = {{"scene", s.scene},
+                      {"program", s.program},
                       {"status", s.interrupted ? "interrupted" : "completed"},
                       {"engine", s.engine},
                       {"mode", s.mode},
@@ -122,6 +123,7 @@ sim::RunSummary readRunSummary(const std::filesystem::path& file) {
     s.scene = j.at("scene").get<std::string>();
     s.engine = j.at("engine").get<std::string>();
     s.mode = j.at("mode").get<std::string>();
+    s.program = j.value("program", std::string());
     s.dt = j.at("dt").get<double>();
     s.success = j.at("success").get<bool>();
     const std::string status = j.at("status").get<std::string>();

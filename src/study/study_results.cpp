@@ -200,6 +200,14 @@ std::vector<RunResult> gatherResults(const StudyPlan& plan, const fs::path& out)
   return results;
 }
 
+std::map<std::string, int> programsOf(const std::vector<RunResult>& results) {
+  std::map<std::string, int> programs;
+  for (const RunResult& r : results) {
+    if (!r.summary.program.empty()) ++programs[r.summary.program];
+  }
+  return programs;
+}
+
 void writeResultsCsv(const fs::path& file, const std::vector<RunResult>& results) {
   std::string text =
       "scenario,key,sweep,label,engine,mode,dt_s,reference,success,crashed,nan,diverged,wall_time_s,real_time_factor,"
@@ -240,6 +248,17 @@ void writeResultsCsv(const fs::path& file, const std::vector<RunResult>& results
 
 void writeResultsMarkdown(const fs::path& file, const StudyPlan& plan, const std::vector<RunResult>& results) {
   std::string text = "<!-- written by wtc-study from " + plan.source.filename().string() + "; do not edit -->\n";
+  if (const auto programs = programsOf(results); programs.size() > 1) {
+    // Built with append: GCC 12 warns falsely (-Wrestrict) on chains of std::string +.
+    text.append("\n**These runs were made by ").append(std::to_string(programs.size()));
+    text.append(" different builds of wtc-sim (");
+    for (const auto& [program, runs] : programs) {
+      text.append(program).append(": ").append(std::to_string(runs)).append(" runs; ");
+    }
+    text.resize(text.size() - 2);
+    text.append(").** A run's key covers its settings, not the program: delete `runs/` and make them again with ");
+    text.append("one build.\n");
+  }
   for (const std::string& scenario : plan.scenarios) {
     std::vector<const RunResult*> rows;
     const RunResult* reference = nullptr;

@@ -183,6 +183,32 @@ TEST(StudyRunTest, AJobListThroughGnuParallelGathersToTheSameTable) {
   fs::remove_all(jobs);
 }
 
+TEST(StudyRunTest, RunsOfDifferentBuildsAreSaidToBeMixed) {
+  const StudyPlan plan = wtc::io::loadStudyPlan(kTinyStudy);
+  const fs::path out = freshDirectory("builds");
+  wtc::study::runPlan(plan, out, 2, WTC_SIM_EXE);
+  std::vector<RunResult> results = wtc::study::gatherResults(plan, out);
+  // Every run names the build that made it, and here it is one build.
+  const auto one = wtc::study::programsOf(results);
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_EQ(one.begin()->first.size(), 16u);
+  EXPECT_EQ(one.begin()->second, static_cast<int>(plan.runs.size()));
+  // As if run 3 had been made by another build (and read back from its file).
+  const fs::path file = wtc::study::runDirectory(out, plan.runs[3]) / "summary.json";
+  wtc::sim::RunSummary other = wtc::io::readRunSummary(file);
+  EXPECT_EQ(other.program, one.begin()->first);
+  other.program = "0123456789abcdef";
+  wtc::io::writeRunSummary(file, other);
+  results = wtc::study::gatherResults(plan, out);
+  EXPECT_EQ(wtc::study::programsOf(results).size(), 2u);
+  wtc::study::writeResultsMarkdown(out / "results.md", plan, results);
+  std::ifstream in(out / "results.md");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_THAT(
+      text, testing::AllOf(HasSubstr("made by 2 different builds of wtc-sim"), HasSubstr("0123456789abcdef: 1 runs")));
+  fs::remove_all(out);
+}
+
 TEST(StudyRunTest, AnInterruptedRunIsMadeAgainAndOnlyIt) {
   const StudyPlan plan = wtc::io::loadStudyPlan(kTinyStudy);
   const fs::path out = freshDirectory("resume");

@@ -39,6 +39,11 @@ struct DriveSummary {
 
 struct RunSummary {
   std::string scene, engine, mode;
+  /// Which build of the program made the run (wtc-sim: FNV-1a of its own
+  /// executable, 16 hex digits); empty when unknown. A study's run key
+  /// covers the settings, not the program: wtc::study warns when the runs
+  /// it gathers come from different builds.
+  std::string program;
   double dt = 0.0, sim_time = 0.0;
   double wall_time = 0.0;         ///< Of the stepping loop, recording included (s).
   double real_time_factor = 0.0;  ///< sim_time / wall_time.

@@ -4,6 +4,7 @@
 // against wall time, and the tables. The same whether the runs were made in
 // this process or by a job list on other machines.
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <vector>
 
@@ -40,6 +41,12 @@ struct RunResult {
 /// Reads every run of `plan` from `out` (runs/<key>/). Throws
 /// InvalidInputError naming each run that has not finished.
 std::vector<RunResult> gatherResults(const StudyPlan& plan, const std::filesystem::path& out);
+
+/// The builds of wtc-sim that made `results` (RunSummary::program; runs
+/// without one are left out), with their run counts. More than one: the
+/// figures mix program versions (a run's key covers its settings, not the
+/// program), and the tables say so.
+std::map<std::string, int> programsOf(const std::vector<RunResult>& results);
 
 /// results.csv: one row per run, every figure (for plots and scripts).
 void writeResultsCsv(const std::filesystem::path& file, const std::vector<RunResult>& results);
