@@ -9,10 +9,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 
 #include "wtc/error.hpp"
+#include "wtc/io/content_hash.hpp"
 #include "wtc/io/run_summary_file.hpp"
 #include "wtc/io/scene_file.hpp"
 #include "wtc/sim/make_engine.hpp"
@@ -49,23 +49,15 @@ fs::path outputDirectory(const std::string& requested, bool redo_unfinished, con
   return dir;
 }
 
-// This build of wtc-sim: FNV-1a over its own executable (16 hex digits),
-// recorded in each summary so that results of different builds are not
-// mixed unnoticed; empty if the file cannot be read.
+// This build of wtc-sim (its executable's digest), recorded in each summary
+// so that results of different builds are not mixed unnoticed; empty if the
+// file cannot be read.
 std::string programIdentity() {
-  std::ifstream in("/proc/self/exe", std::ios::binary);
-  if (!in) return {};
-  std::uint64_t h = 14695981039346656037ull;
-  char buffer[1 << 16];
-  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
-    for (std::streamsize i = 0; i < in.gcount(); ++i) {
-      h ^= static_cast<unsigned char>(buffer[i]);
-      h *= 1099511628211ull;
-    }
+  try {
+    return wtc::io::fileDigest("/proc/self/exe");
+  } catch (const wtc::InvalidInputError&) {
+    return {};
   }
-  char hex[17];
-  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
-  return hex;
 }
 
 // A file of wtc-sim's own (the plotting script, the replay page): beside

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "wtc/error.hpp"
+#include "wtc/io/atomic_file.hpp"
 
 namespace wtc::io {
 namespace {
@@ -16,13 +17,7 @@ std::string engineText(const sim::Scene& scene) { return std::string(sim::engine
 std::string modeText(ContactMode mode) { return mode == ContactMode::kForce ? "force" : "constraint"; }
 
 void writeJson(const std::filesystem::path& path, const nlohmann::json& j) {
-  const std::filesystem::path tmp = path.string() + ".tmp";
-  {
-    std::ofstream out(tmp);
-    out << j.dump(2) << '\n';
-    if (!out) throw InvalidInputError("cannot write " + tmp.string());
-  }
-  std::filesystem::rename(tmp, path);
+  writeFileAtomically(path, j.dump(2) + '\n');
 }
 
 // Top-level keys that are not the scene's own figures (RunSummary::fields).

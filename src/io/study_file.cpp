@@ -3,13 +3,13 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
-#include <fstream>
 #include <map>
 #include <optional>
-#include <sstream>
 #include <utility>
 
+#include "file_support.hpp"
 #include "wtc/error.hpp"
+#include "wtc/io/content_hash.hpp"
 #include "yaml_reader.hpp"
 
 namespace wtc::io {
@@ -37,22 +37,6 @@ std::string flowYaml(const YAML::Node& node) {
   out.SetSeqFormat(YAML::Flow);
   out << node;
   return out.c_str();
-}
-
-// FNV-1a, 64 bits: a stable key (std::hash is not stable across builds).
-std::uint64_t fnv1a(std::string_view bytes, std::uint64_t h = 14695981039346656037ull) {
-  for (const unsigned char c : bytes) {
-    h ^= c;
-    h *= 1099511628211ull;
-  }
-  return h;
-}
-
-std::string fileBytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 // A setting read from a map of path -> one value (base, reference, a scenario's `set`).
@@ -118,9 +102,7 @@ PlannedRun plannedRun(const std::string& scenario, const std::filesystem::path& 
     const bool base = path == kBaseKeys[0] || path == kBaseKeys[1] || path == kBaseKeys[2];
     if (!base && !scenario_set.contains(path)) run.label += " " + path + "=" + choice.label;
   }
-  char hex[17];
-  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
-  run.key = scenario + "-" + hex;
+  run.key = scenario + "-" + hexDigits(h);
   return run;
 }
 
@@ -179,7 +161,7 @@ StudyPlan readStudy(const std::filesystem::path& file) {
     }
     const Setting set =
         entry.second["set"] ? readFixed(at, entry.second["set"], ("scenarios." + name + ".set").c_str()) : Setting{};
-    const std::string bytes = fileBytes(scene);
+    const std::string bytes = detail::readWholeFile(scene);
     plan.scenarios.push_back(name);
     auto add = [&](const Setting& s, const std::string& sweep, bool is_reference) {
       PlannedRun run = plannedRun(name, scene, bytes, set, s, sweep);

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <limits>
 #include <map>
 #include <numbers>
@@ -13,6 +12,7 @@
 
 #include "series.hpp"
 #include "wtc/error.hpp"
+#include "wtc/io/atomic_file.hpp"
 #include "wtc/io/run_summary_file.hpp"
 #include "wtc/study/study_runner.hpp"
 
@@ -145,16 +145,6 @@ std::string join(const std::vector<std::string>& cells, const char* separator) {
   return text;
 }
 
-void writeOrThrow(const fs::path& file, const std::string& text) {
-  const fs::path tmp = file.string() + ".tmp";
-  {
-    std::ofstream out(tmp);
-    out << text;
-    if (!out) throw InvalidInputError("cannot write " + tmp.string());
-  }
-  fs::rename(tmp, file);
-}
-
 }  // namespace
 
 std::vector<RunResult> gatherResults(const StudyPlan& plan, const fs::path& out) {
@@ -243,7 +233,7 @@ void writeResultsCsv(const fs::path& file, const std::vector<RunResult>& results
                  ",");
     text += "\n";
   }
-  writeOrThrow(file, text);
+  io::writeFileAtomically(file, text);
 }
 
 void writeResultsMarkdown(const fs::path& file, const StudyPlan& plan, const std::vector<RunResult>& results) {
@@ -302,7 +292,7 @@ void writeResultsMarkdown(const fs::path& file, const StudyPlan& plan, const std
       text.append("| ").append(join(cells, " | ")).append(" |\n");
     }
   }
-  writeOrThrow(file, text);
+  io::writeFileAtomically(file, text);
 }
 
 }  // namespace wtc::study
