@@ -7,6 +7,8 @@
 
 namespace wtc {
 
+std::string_view contactModeName(ContactMode mode) { return mode == ContactMode::kForce ? "force" : "constraint"; }
+
 EngineContact toEngineContact(const ContactForce& f, const TyreParameters& tyre, const TyreModel& model) {
   const double stiffness = tyre.radial_stiffness;
   const double damping = model.effects().has(Effect::kNormalDamping) ? tyre.radial_damping : 0.0;

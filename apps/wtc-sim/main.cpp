@@ -132,7 +132,7 @@ int main(int argc, char** argv) {
     wtc::sim::RunSummary names;
     names.scene = scene.name;
     names.engine = std::string(wtc::sim::engineName(scene.engine.kind));
-    names.mode = scene.engine.mode == wtc::ContactMode::kForce ? "force" : "constraint";
+    names.mode = std::string(wtc::contactModeName(scene.engine.mode));
     const fs::path dir = outputDirectory(out, skip_done, names);
 
     std::signal(SIGINT, onSignal);

@@ -15,6 +15,8 @@
 // direction along the traction: within a step, friction is Coulomb-like (it
 // stops the slip if it can), so the slip law acts from step to step.
 // Rolling resistance stays an explicit moment in both modes.
+#include <string_view>
+
 #include <Eigen/Core>
 
 #include "wtc/wheel_forces.hpp"
@@ -30,6 +32,9 @@ enum class ContactMode {
   kForce,       ///< The tyre model's forces, applied explicitly.
   kConstraint,  ///< Engine contacts with the tyre's stiffness, damping and friction.
 };
+
+/// "force" or "constraint": the name scenes, summaries and reports use.
+std::string_view contactModeName(ContactMode mode);
 
 /// One contact as an engine constraint (constraint mode).
 struct EngineContact {

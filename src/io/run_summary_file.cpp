@@ -14,7 +14,6 @@ namespace {
 constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 
 std::string engineText(const sim::Scene& scene) { return std::string(sim::engineName(scene.engine.kind)); }
-std::string modeText(ContactMode mode) { return mode == ContactMode::kForce ? "force" : "constraint"; }
 
 void writeJson(const std::filesystem::path& path, const nlohmann::json& j) {
   writeFileAtomically(path, j.dump(2) + '\n');
@@ -84,7 +83,7 @@ void writeRunSummary(const std::filesystem::path& file, const sim::RunSummary& s
 void writeRunStarted(const std::filesystem::path& file, const sim::Scene& scene) {
   writeJson(file, {{"scene", scene.name},
                    {"engine", engineText(scene)},
-                   {"mode", modeText(scene.engine.mode)},
+                   {"mode", contactModeName(scene.engine.mode)},
                    {"dt", scene.engine.step_seconds},
                    {"status", "running"},
                    {"interrupted", true},

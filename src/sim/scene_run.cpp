@@ -7,6 +7,8 @@
 #include <limits>
 #include <numbers>
 
+#include "wtc/constants.hpp"
+#include "wtc/error.hpp"
 #include "wtc/sim/recorder.hpp"
 #include "wtc/sim/replay.hpp"
 #include "wtc/sim/run.hpp"
@@ -61,7 +63,7 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
   RunSummary summary;
   summary.scene = scene.name;
   summary.engine = std::string(engineName(scene.engine.kind));
-  summary.mode = scene.engine.mode == ContactMode::kForce ? "force" : "constraint";
+  summary.mode = std::string(contactModeName(scene.engine.mode));
   summary.dt = scene.engine.step_seconds;
   summary.parameters = scene.parameters;
 
@@ -159,8 +161,9 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
   }
   if (summary.nan) summary.warnings.push_back("a body state went non-finite at t = " + mmOrDeg(run.time(), 4) + " s");
   if (summary.diverged) {
-    summary.warnings.push_back("the run diverged at t = " + mmOrDeg(run.time(), 4) +
-                               " s (a body beyond 1 km/s, 1e4 rad/s or 1000 km; stopped there)");
+    summary.warnings.push_back("the run diverged at t = " + mmOrDeg(run.time(), 4) + " s (a body beyond " +
+                               formatNumber(kDivergedSpeedMps) + " m/s, " + formatNumber(kDivergedAngularSpeedRadps) +
+                               " rad/s or " + formatNumber(kDivergedDistanceM) + " m; stopped there)");
   }
 
   const vehicle::BodyKinematics& end = run.state().bodies.front();
