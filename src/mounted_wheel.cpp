@@ -30,4 +30,14 @@ const MountedWheelStep& MountedWheel::step(const Terrain& terrain, const WheelPo
   return step_;
 }
 
+void MountedWheel::tell(WheelListener* listener, WheelId id, double h) const {
+  if (listener == nullptr) return;
+  if (step_.skipped) {
+    listener->onWheelSkipped(id, h);
+    return;
+  }
+  listener->onWheelStep(id, forces(), h);
+  if (state_.firstUnstableStep()) listener->onFirstUnstableStep(id, forces().normal_stability);
+}
+
 }  // namespace wtc

@@ -23,18 +23,15 @@ struct SpringStability {
   bool stable() const { return step_number < limit; }
 };
 
-/// describe() with the stiffness, damping, mass and step the report holds,
-/// and the largest stable step: "... ; the largest stable step is 0.0031 s".
+/// The report in words, with the stiffness, damping, mass and step it holds
+/// and the largest stable step: "tyre spring c = 1e5 N/m, b = 900 N s/m on
+/// m = 3.7 kg at h = 0.002 s: h sqrt(c/m) = 0.33 < limit 1.49 (damping
+/// ratio 0.74); the largest stable step is 0.0031 s".
 std::string describe(const SpringStability& stability);
 
 /// The explicit stability of spring c (N/m), damper b (N s/m) on mass m (kg)
 /// at step h (s). Preconditions: c, m, h > 0, b >= 0.
 SpringStability explicitSpringStability(double stiffness, double damping, double mass, double step_seconds);
-
-/// "tyre spring c = 1e5 N/m, b = 900 N s/m on m = 3.7 kg at h = 0.002 s:
-/// h sqrt(c/m) = 0.33, limit 1.49 (damping ratio 0.74)", for reports.
-std::string describe(const SpringStability& stability, double stiffness, double damping, double mass,
-                     double step_seconds);
 
 /// The largest step that keeps h sqrt(c/m) below `fraction` of the limit.
 double largestStableStep(double stiffness, double damping, double mass, double fraction = 1.0);

@@ -7,8 +7,8 @@
 // contact mode: in force mode the whole tyre wrench about the wheel centre
 // O; in constraint mode the engine contacts (engine_contact.hpp) plus the
 // rolling-resistance moment, which stays explicit. That lives here once; an
-// adapter reads the wheel's kinematics from its engine, calls step, and
-// writes the result to its bodies and solver.
+// adapter reads the wheel's kinematics from its engine, calls step, writes
+// the result to its bodies and solver, and calls tell for its listener.
 #include <span>
 #include <vector>
 
@@ -19,6 +19,7 @@
 #include "wtc/terrain.hpp"
 #include "wtc/tyre_model.hpp"
 #include "wtc/wheel_forces.hpp"
+#include "wtc/wheel_listener.hpp"
 
 namespace wtc {
 
@@ -56,6 +57,10 @@ class MountedWheel {
   WheelState& state() { return state_; }
   /// The last step's result for the engine.
   const MountedWheelStep& last() const { return step_; }
+  /// Tells `listener` (none if null) what the last step did, for wheel
+  /// `id`: onWheelSkipped; or onWheelStep, and onFirstUnstableStep on the
+  /// wheel's first step beyond its explicit stability limit.
+  void tell(WheelListener* listener, WheelId id, double h) const;
 
  private:
   WheelDescription description_;

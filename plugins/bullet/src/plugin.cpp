@@ -179,17 +179,14 @@ void Plugin::Impl::preTick(double h) {
     if (r.skipped) {
       // Its body's state is not finite: no force and no contact this step
       // (an exception here would leave Bullet's world half-stepped).
-      if (listener != nullptr) listener->onWheelSkipped(static_cast<WheelId>(id), h);
+      w.mounted.tell(listener, static_cast<WheelId>(id), h);
       continue;
     }
     // Constraint mode: the contacts reach Bullet through the collision
     // algorithm (wheel_terrain_algorithm.cpp); the wrench is then the
     // rolling moment alone.
     applyWrench(w, k, toBullet(r.force), toBullet(r.torque), h);
-    if (listener != nullptr) listener->onWheelStep(static_cast<WheelId>(id), w.mounted.forces(), h);
-    if (listener != nullptr && w.mounted.state().firstUnstableStep()) {
-      listener->onFirstUnstableStep(static_cast<WheelId>(id), w.mounted.forces().normal_stability);
-    }
+    w.mounted.tell(listener, static_cast<WheelId>(id), h);
   }
 }
 

@@ -121,7 +121,7 @@ void Plugin::Impl::beginStep(double h) {
     if (r.skipped) {
       // Its body's state is not finite: no force and no contact joint this
       // step (an exception here would leave the caller's step half-done).
-      if (listener != nullptr) listener->onWheelSkipped(static_cast<WheelId>(id), h);
+      w.mounted.tell(listener, static_cast<WheelId>(id), h);
       continue;
     }
     // The wrench about O: F through O, then the torque (in constraint mode
@@ -132,10 +132,7 @@ void Plugin::Impl::beginStep(double h) {
     for (const EngineContact& contact : r.contacts) w.contacts.push_back({contact});
     // Counted now, taken back when handlePair hands the contacts to ODE.
     if (!w.contacts.empty()) ++w.diagnostics.unhandled_steps;
-    if (listener != nullptr) listener->onWheelStep(static_cast<WheelId>(id), w.mounted.forces(), h);
-    if (listener != nullptr && w.mounted.state().firstUnstableStep()) {
-      listener->onFirstUnstableStep(static_cast<WheelId>(id), w.mounted.forces().normal_stability);
-    }
+    w.mounted.tell(listener, static_cast<WheelId>(id), h);
   }
 }
 
