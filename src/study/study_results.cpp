@@ -24,13 +24,26 @@ using detail::Series;
 
 constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 
-// A run's series, with the columns the measures need.
+// bodies.csv: t, then the first body's x y z (Recorder).
+constexpr std::size_t kFirstBodyX = 1;
+
+// A run's series, with the columns and figures the measures need.
 struct RunSeries {
   Series bodies, wheels;
-  std::size_t x = 0;                    // the first body's x; y, z follow
-  std::vector<std::size_t> pitched_qw;  // qw of each body that is not a wheel; qx qy qz follow
-  std::vector<std::size_t> wheel_fx;    // fx of each wheel; fy fz follow
+  std::vector<std::size_t> wheel_fx;  // fx of each wheel; fy fz follow
+  double peak_pitch_deg = 0.0;        // the largest |pitch| of a body that is not a wheel
 };
+
+Eigen::Vector3d vec(const std::vector<double>& row, std::size_t c) { return {row[c], row[c + 1], row[c + 2]}; }
+Eigen::Vector3d vecAt(const Series& s, std::size_t c, double t) {
+  return {detail::valueAt(s, c, t), detail::valueAt(s, c + 1, t), detail::valueAt(s, c + 2, t)};
+}
+
+// The angle of the body's x axis above the horizontal: asin(R_20), R_20 = 2 (qx qz - qw qy).
+double pitchDeg(const std::vector<double>& row, std::size_t qw) {
+  const double w = row[qw], x = row[qw + 1], y = row[qw + 2], z = row[qw + 3];
+  return std::asin(std::clamp(2.0 * (x * z - w * y), -1.0, 1.0)) * kDegPerRad;
+}
 
 RunSeries readRun(const fs::path& dir) {
   RunSeries r;
@@ -45,31 +58,15 @@ RunSeries readRun(const fs::path& dir) {
     }
   }
   if (r.bodies.names.size() < 2) throw InvalidInputError((dir / "bodies.csv").string() + ": no body");
-  r.x = 1;
-  for (std::size_t c = 1; c < r.bodies.names.size(); ++c) {
+  std::vector<std::size_t> pitched_qw;  // qw of each body that is not a wheel; qx qy qz follow
+  for (std::size_t c = kFirstBodyX; c < r.bodies.names.size(); ++c) {
     const std::string& n = r.bodies.names[c];
-    if (n.ends_with(".qw") && !wheels.contains(n.substr(0, n.size() - 3))) r.pitched_qw.push_back(c);
+    if (n.ends_with(".qw") && !wheels.contains(n.substr(0, n.size() - 3))) pitched_qw.push_back(c);
+  }
+  for (const auto& row : r.bodies.rows) {
+    for (const std::size_t qw : pitched_qw) r.peak_pitch_deg = std::max(r.peak_pitch_deg, std::abs(pitchDeg(row, qw)));
   }
   return r;
-}
-
-Eigen::Vector3d vec(const std::vector<double>& row, std::size_t c) { return {row[c], row[c + 1], row[c + 2]}; }
-Eigen::Vector3d vecAt(const Series& s, std::size_t c, double t) {
-  return {detail::valueAt(s, c, t), detail::valueAt(s, c + 1, t), detail::valueAt(s, c + 2, t)};
-}
-
-// The angle of the body's x axis above the horizontal: asin(R_20), R_20 = 2 (qx qz - qw qy).
-double pitchDeg(const std::vector<double>& row, std::size_t qw) {
-  const double w = row[qw], x = row[qw + 1], y = row[qw + 2], z = row[qw + 3];
-  return std::asin(std::clamp(2.0 * (x * z - w * y), -1.0, 1.0)) * kDegPerRad;
-}
-
-double peakPitch(const RunSeries& r) {
-  double peak = 0.0;
-  for (const auto& row : r.bodies.rows) {
-    for (const std::size_t qw : r.pitched_qw) peak = std::max(peak, std::abs(pitchDeg(row, qw)));
-  }
-  return peak;
 }
 
 void measure(RunResult& out, const RunSeries& run, const RunSeries& ref) {
@@ -78,13 +75,13 @@ void measure(RunResult& out, const RunSeries& run, const RunSeries& ref) {
   std::size_t n = 0;
   for (const auto& row : run.bodies.rows) {
     if (row[0] > t_end) break;
-    sum_sq += (vec(row, run.x) - vecAt(ref.bodies, ref.x, row[0])).squaredNorm();
+    sum_sq += (vec(row, kFirstBodyX) - vecAt(ref.bodies, kFirstBodyX, row[0])).squaredNorm();
     ++n;
   }
   out.rms_position_error = n > 0 ? std::sqrt(sum_sq / static_cast<double>(n)) : 0.0;
-  out.final_position_error = (vecAt(run.bodies, run.x, t_end) - vecAt(ref.bodies, ref.x, t_end)).norm();
-  out.peak_pitch_deg = peakPitch(run);
-  out.peak_pitch_error_deg = std::abs(out.peak_pitch_deg - peakPitch(ref));
+  out.final_position_error = (vecAt(run.bodies, kFirstBodyX, t_end) - vecAt(ref.bodies, kFirstBodyX, t_end)).norm();
+  out.peak_pitch_deg = run.peak_pitch_deg;
+  out.peak_pitch_error_deg = std::abs(run.peak_pitch_deg - ref.peak_pitch_deg);
 
   double force_sq = 0.0;
   std::size_t m = 0;
@@ -101,12 +98,10 @@ void measure(RunResult& out, const RunSeries& run, const RunSeries& ref) {
   out.rms_wheel_force_error = m > 0 ? std::sqrt(force_sq / static_cast<double>(m)) : 0.0;
 }
 
-bool succeeded(const RunResult& r) { return r.summary.success; }
-
 void markFront(std::vector<RunResult>& results) {
   std::map<std::string, std::vector<RunResult*>> by_scenario;
   for (RunResult& r : results) {
-    if (succeeded(r)) by_scenario[r.run->scenario].push_back(&r);
+    if (r.summary.success) by_scenario[r.run->scenario].push_back(&r);
   }
   for (auto& [scenario, runs] : by_scenario) {
     std::sort(runs.begin(), runs.end(), [](const RunResult* a, const RunResult* b) {
@@ -178,6 +173,8 @@ std::vector<RunResult> gatherResults(const StudyPlan& plan, const fs::path& out)
       const double nan = std::numeric_limits<double>::quiet_NaN();
       r.rms_position_error = r.final_position_error = r.peak_pitch_deg = r.peak_pitch_error_deg = nan;
       r.peak_wheel_force = r.rms_wheel_force_error = nan;
+    } else if (run.reference) {
+      measure(r, references.at(run.scenario), references.at(run.scenario));  // read once, above
     } else {
       measure(r, readRun(dir), references.at(run.scenario));
     }
