@@ -7,10 +7,10 @@
 #include <atomic>
 #include <csignal>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 
+#include "app_files.hpp"
 #include "wtc/error.hpp"
 #include "wtc/io/content_hash.hpp"
 #include "wtc/io/run_summary_file.hpp"
@@ -60,19 +60,11 @@ std::string programIdentity() {
   }
 }
 
-// A file of wtc-sim's own (the plotting script, the replay page): beside
-// the sources in a build tree, else where it is installed.
-fs::path ownFile(const std::string& name) {
-  const fs::path source = fs::path(WTC_SOURCE_DIR) / "apps/wtc-sim" / name;
-  if (fs::exists(source)) return source;
-  return fs::path(WTC_INSTALL_DATADIR) / name;
-}
-
 // The replay page beside the run's data, with three.js copied in so the
 // directory can be moved. Returns what went wrong, or "".
 std::string writeReplayPage(const fs::path& dir) {
   const fs::path three = WTC_THREE_JS_DIR;
-  const fs::path files[][2] = {{ownFile("replay.html"), dir / "replay.html"},
+  const fs::path files[][2] = {{wtc::apps::ownFile("wtc-sim", "replay.html"), dir / "replay.html"},
                                {three / "build/three.min.js", dir / "three.min.js"},
                                {three / "examples/js/controls/OrbitControls.js", dir / "OrbitControls.js"}};
   for (const auto& [from, to] : files) {
@@ -169,11 +161,9 @@ int main(int argc, char** argv) {
 
     std::string figures = "skipped (--no-plots)";
     if (!no_plots && scene.output.plots) {
-      // The first Python on PATH, else Debian's (where python3-matplotlib puts it).
-      const std::string args = " '" + ownFile("plot_run.py").string() + "' '" + dir.string() + "'";
-      int rc = std::system(("python3" + args + " 2>/dev/null").c_str());
-      if (rc != 0) rc = std::system(("/usr/bin/python3" + args).c_str());
-      figures = rc == 0 ? "drawn" : "not drawn (python3 with matplotlib is needed; see above)";
+      figures = wtc::apps::runPlotScript(wtc::apps::ownFile("wtc-sim", "plot_run.py"), dir)
+                    ? "drawn"
+                    : "not drawn (python3 with matplotlib is needed; see above)";
     }
     if (!quiet) {
       std::printf("%s in %s (%s mode, dt %g s): %s\n", summary.scene.c_str(), summary.engine.c_str(),

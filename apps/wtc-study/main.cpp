@@ -4,12 +4,12 @@
 // tables and a figure. It parses, runs and writes; the study is wtc::study.
 #include <CLI/CLI.hpp>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <thread>
 
+#include "app_files.hpp"
 #include "wtc/error.hpp"
 #include "wtc/io/study_file.hpp"
 #include "wtc/study/study_results.hpp"
@@ -18,13 +18,6 @@
 namespace {
 
 namespace fs = std::filesystem;
-
-// A file of wtc-study's own: beside the sources in a build tree, else where it is installed.
-fs::path ownFile(const std::string& name) {
-  const fs::path source = fs::path(WTC_SOURCE_DIR) / "apps/wtc-study" / name;
-  if (fs::exists(source)) return source;
-  return fs::path(WTC_INSTALL_DATADIR) / name;
-}
 
 // Tables and the figure from the finished runs in `out`.
 int gather(const wtc::study::StudyPlan& plan, const fs::path& out, bool plots) {
@@ -39,11 +32,8 @@ int gather(const wtc::study::StudyPlan& plan, const fs::path& out, bool plots) {
                  "them again with one (results.md says which)\n",
                  programs.size(), (out / "runs").c_str());
   }
-  if (plots) {
-    const std::string args = " '" + ownFile("plot_study.py").string() + "' '" + out.string() + "'";
-    int rc = std::system(("python3" + args + " 2>/dev/null").c_str());
-    if (rc != 0) rc = std::system(("/usr/bin/python3" + args).c_str());
-    if (rc != 0) std::fprintf(stderr, "wtc-study: warning: figure not drawn (python3 with matplotlib is needed)\n");
+  if (plots && !wtc::apps::runPlotScript(wtc::apps::ownFile("wtc-study", "plot_study.py"), out)) {
+    std::fprintf(stderr, "wtc-study: warning: figure not drawn (python3 with matplotlib is needed)\n");
   }
   return 0;
 }
