@@ -8,11 +8,12 @@ namespace {
 
 class BulletSim : public EngineSim {
  public:
-  BulletSim(ContactMode mode, const Terrain& terrain, double mass, const Eigen::Vector3d& c, Hold hold)
+  BulletSim(ContactMode mode, const Terrain& terrain, double mass, const Eigen::Vector3d& c, Hold hold,
+            const TyreParameters& tyre)
       : world_(terrain, mode), wheel_(world_.addWheelBody(mass, btVector3(c.x(), c.y(), c.z()))) {
     if (hold == Hold::kUpright) wheel_.body->setAngularFactor(btVector3(0, 1, 0));
     if (hold == Hold::kLocked) wheel_.body->setAngularFactor(btVector3(0, 0, 0));
-    id_ = addWheel(world_, wheel_);
+    id_ = addWheel(world_, wheel_, EffectSet::full(), tyre);
   }
   void push(const Eigen::Vector3d& f, double torque_y) override {
     wheel_.body->applyCentralForce(btVector3(f.x(), f.y(), f.z()));
@@ -41,11 +42,12 @@ class BulletSim : public EngineSim {
 
 class OdeSim : public EngineSim {
  public:
-  OdeSim(ContactMode mode, const Terrain& terrain, double mass, const Eigen::Vector3d& c, Hold hold, Stepper stepper)
+  OdeSim(ContactMode mode, const Terrain& terrain, double mass, const Eigen::Vector3d& c, Hold hold, Stepper stepper,
+         const TyreParameters& tyre)
       : world_(terrain, mode, stepper), wheel_(world_.addWheelBody(mass, c)) {
     if (hold == Hold::kUpright) keepUpright(world_, wheel_.body);
     if (hold == Hold::kLocked) lockRotation(world_, wheel_.body);
-    id_ = addWheel(world_, wheel_);
+    id_ = addWheel(world_, wheel_, EffectSet::full(), tyre);
   }
   void push(const Eigen::Vector3d& f, double torque_y) override {
     dBodyAddForce(wheel_.body, f.x(), f.y(), f.z());
@@ -81,10 +83,10 @@ std::string engineName(Engine engine) {
 }
 
 std::unique_ptr<EngineSim> makeEngineSim(Engine engine, ContactMode mode, const Terrain& terrain, double mass,
-                                         const Eigen::Vector3d& centre, Hold hold) {
-  if (engine == Engine::kBullet) return std::make_unique<BulletSim>(mode, terrain, mass, centre, hold);
+                                         const Eigen::Vector3d& centre, Hold hold, const TyreParameters& tyre) {
+  if (engine == Engine::kBullet) return std::make_unique<BulletSim>(mode, terrain, mass, centre, hold, tyre);
   return std::make_unique<OdeSim>(mode, terrain, mass, centre, hold,
-                                  engine == Engine::kOde ? Stepper::kStep : Stepper::kQuickStep);
+                                  engine == Engine::kOde ? Stepper::kStep : Stepper::kQuickStep, tyre);
 }
 
 }  // namespace wtc::testing

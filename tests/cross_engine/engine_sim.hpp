@@ -10,6 +10,7 @@
 
 #include "wtc/engine_contact.hpp"
 #include "wtc/terrain.hpp"
+#include "wtc/tyre_parameters.hpp"
 #include "wtc/wheel_forces.hpp"
 
 namespace wtc::testing {
@@ -35,8 +36,9 @@ class EngineSim {
   virtual const WheelForces& forces() const = 0;
 };
 
-/// A wheel of `mass` (kg) at `centre` on `terrain` (which must outlive it).
+/// A wheel of `mass` (kg) at `centre` on `terrain` (which must outlive it),
+/// with `tyre` (the robot's by default).
 std::unique_ptr<EngineSim> makeEngineSim(Engine engine, ContactMode mode, const Terrain& terrain, double mass,
-                                         const Eigen::Vector3d& centre, Hold hold);
+                                         const Eigen::Vector3d& centre, Hold hold, const TyreParameters& tyre = {});
 
 }  // namespace wtc::testing

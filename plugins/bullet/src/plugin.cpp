@@ -107,6 +107,15 @@ Plugin::Impl::Impl(btDiscreteDynamicsWorld& w, const Terrain& t, ContactMode m)
   // one (measured: no grip along the wheel's travel). Both flags are
   // world-wide (docs/bullet-plugin.md).
   if (mode == ContactMode::kConstraint) {
+    // A split threshold at or above zero splits every penetrating contact:
+    // no contact could keep the tyre's spring (wheel_terrain_algorithm.cpp).
+    const btContactSolverInfo& info = world.getSolverInfo();
+    if (info.m_splitImpulse && !(info.m_splitImpulsePenetrationThreshold < 0.0)) {
+      fail("wtc::bullet::Plugin", "constraint mode needs the world's split impulse off or its penetration threshold "
+                                  "below zero (m_splitImpulsePenetrationThreshold = " +
+                                      std::to_string(info.m_splitImpulsePenetrationThreshold) +
+                                      " m): a split contact loses the tyre's spring");
+    }
     world.getSolverInfo().m_solverMode |= SOLVER_ENABLE_FRICTION_DIRECTION_CACHING;
     if (dynamic_cast<btMultiBodyDynamicsWorld*>(&world) == nullptr) {
       world.getSolverInfo().m_solverMode &= ~SOLVER_USE_2_FRICTION_DIRECTIONS;

@@ -84,11 +84,39 @@ void WheelTerrainAlgorithm::writeWtcContacts(int wheel, bool wheel_is_body0, con
       p.m_lateralFrictionDir2 = normal.cross(p.m_lateralFrictionDir1);
       p.m_contactPointFlags |= BT_CONTACT_FLAG_LATERAL_FRICTION_INITIALIZED;
     }
-    p.m_contactPointFlags &= ~(BT_CONTACT_FLAG_HAS_CONTACT_CFM | BT_CONTACT_FLAG_HAS_CONTACT_ERP);
+    setSpring(p, c, dispatch_info.m_timeStep);
+  }
+}
+
+// The tyre's spring-damper on a contact point: Bullet derives ERP and CFM
+// from its stiffness and damping (wtc::softConstraint's pair). Bullet's
+// split impulse (btContactSolverInfo::m_splitImpulse, on by default) solves
+// a contact whose distance plus linear slop lies below
+// m_splitImpulsePenetrationThreshold (-0.04 m) as a position-only push-out:
+// its velocity row then drops the spring's positional error, no longer acts
+// as c Z + b v_z, and a soft tyre sinks through (issue 11, defect 4). Such
+// a contact goes to Bullet at half the threshold's depth with the same CFM
+// and the ERP that keeps the positional error (Z - slop) erp / h: the same
+// row as the true depth's without the split. (The multibody solver has no
+// split; the same row holds there.)
+void WheelTerrainAlgorithm::setSpring(btManifoldPoint& p, const EngineContact& c, double step_seconds) const {
+  const btContactSolverInfo& info = impl_.world.getSolverInfo();
+  const double slop = info.m_linearSlop, threshold = info.m_splitImpulsePenetrationThreshold;
+  const bool split = info.m_splitImpulse && threshold < 0.0 && -c.depth + slop <= threshold;
+  p.m_contactPointFlags &= ~(BT_CONTACT_FLAG_HAS_CONTACT_CFM | BT_CONTACT_FLAG_HAS_CONTACT_ERP |
+                             BT_CONTACT_FLAG_CONTACT_STIFFNESS_DAMPING);
+  if (!split) {
     p.m_combinedContactStiffness1 = c.stiffness;
     p.m_combinedContactDamping1 = c.damping;
     p.m_contactPointFlags |= BT_CONTACT_FLAG_CONTACT_STIFFNESS_DAMPING;
+    return;
   }
+  const double reported = 0.5 * threshold - slop;  // distance + slop = threshold / 2 < 0: not split
+  const SoftConstraint soft = softConstraint(c.stiffness, c.damping, step_seconds);
+  p.m_distance1 = reported;
+  p.m_contactERP = soft.erp * (c.depth - slop) / (-(reported + slop));
+  p.m_contactCFM = soft.cfm;
+  p.m_contactPointFlags |= BT_CONTACT_FLAG_HAS_CONTACT_CFM | BT_CONTACT_FLAG_HAS_CONTACT_ERP;
 }
 
 // The ground touches a cut cap (a fallen wheel): WTC gives no force there,

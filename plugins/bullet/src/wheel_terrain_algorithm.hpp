@@ -41,6 +41,7 @@ class WheelTerrainAlgorithm : public btCollisionAlgorithm {
   void writeWtcContacts(int wheel, bool wheel_is_body0, const btCollisionObjectWrapper* body0,
                         const btCollisionObjectWrapper* body1, const btDispatcherInfo& dispatch_info,
                         btManifoldResult* result);
+  void setSpring(btManifoldPoint& point, const EngineContact& contact, double step_seconds) const;
   void writeCapContacts(const Wheel& wheel, const btCollisionObjectWrapper* body0,
                         const btCollisionObjectWrapper* body1, const btDispatcherInfo& dispatch_info,
                         btManifoldResult* result);
