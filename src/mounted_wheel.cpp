@@ -2,6 +2,9 @@
 // include/wtc/mounted_wheel.hpp).
 #include "wtc/mounted_wheel.hpp"
 
+#include <string>
+
+#include "wtc/error.hpp"
 #include "wtc/scratch_capacity.hpp"
 
 namespace wtc {
@@ -10,6 +13,7 @@ MountedWheel::MountedWheel(const WheelDescription& description, EffectSet effect
     : description_(description), model_(effects, mode) {
   validate(description_, "wtc::MountedWheel");
   contacts_.reserve(kReservedContacts);
+  solved_contacts_.reserve(kReservedContacts);
 }
 
 const MountedWheelStep& MountedWheel::step(const Terrain& terrain, const WheelPose& pose, const WheelMotion& motion,
@@ -17,6 +21,8 @@ const MountedWheelStep& MountedWheel::step(const Terrain& terrain, const WheelPo
   const WheelForces& f = model_.stepInEngine(terrain, description_, pose, motion, h, state_);
   contacts_.clear();  // keeps its capacity: no allocation once warm
   step_ = MountedWheelStep{};
+  pose_ = pose;
+  solved_valid_ = false;
   step_.skipped = state_.lastStepSkipped();
   if (step_.skipped) return step_;
   if (model_.mode() == ContactMode::kForce) {
@@ -28,6 +34,36 @@ const MountedWheelStep& MountedWheel::step(const Terrain& terrain, const WheelPo
     step_.contacts = contacts_;
   }
   return step_;
+}
+
+// Each contact's force R = -R_z e + R_xy as the solver applied it, at the
+// model's P; the wrench about O splits as in wheel_forces.hpp.
+void MountedWheel::setSolvedForces(std::span<const Eigen::Vector3d> forces) {
+  const WheelForces& model = this->forces();
+  if (forces.size() != model.contacts.size()) {
+    throw InvalidInputError("wtc::MountedWheel::setSolvedForces: " + std::to_string(forces.size()) +
+                                " forces for " + std::to_string(model.contacts.size()) + " contacts");
+  }
+  solved_contacts_.assign(model.contacts.begin(), model.contacts.end());
+  const Eigen::Vector3d a = pose_.axle.normalized();
+  Eigen::Vector3d total = Eigen::Vector3d::Zero(), moment = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < forces.size(); ++i) {
+    ContactForce& c = solved_contacts_[i];
+    const Eigen::Vector3d& e = c.contact.e;
+    c.force = forces[i];
+    c.normal_force = -forces[i].dot(e);
+    c.tangential_force = forces[i] + c.normal_force * e;
+    c.mu = c.normal_force > 0.0 ? c.tangential_force.norm() / c.normal_force : 0.0;
+    total += c.force;
+    moment += (c.contact.point - pose_.center).cross(c.force);
+  }
+  solved_ = model;
+  solved_.contacts = solved_contacts_;
+  solved_.force = total;
+  solved_.torque = moment + model.rolling_moment;
+  solved_.axial_moment = a * a.dot(moment) + model.rolling_moment;
+  solved_.bearing_moment = moment - a * a.dot(moment);
+  solved_valid_ = true;
 }
 
 void MountedWheel::tell(WheelListener* listener, WheelId id, double h) const {

@@ -123,11 +123,15 @@ void contactForces(const Inputs& in, std::span<const WheelContact> contacts, std
     }
     f.force = f.tangential_force - f.normal_force * c.e;
     if constexpr (kRolling) {
-      // M_r = -f_r R_z r_0 sign(omega_rel . a) a, sign ramped over a width
-      // that bounds the gain by kappa I / h (and never below spin_floor).
+      // M_r = -f_r R_z r_0 sign(omega . a) a, sign ramped over a width that
+      // bounds the gain by kappa I / h (and never below spin_floor). The
+      // rate is the tread's rolling over the (static) ground, the wheel's
+      // absolute spin about its axle, not its spin relative to the hub:
+      // M_r acts on the wheel, so its power M_r . omega =
+      // -f_r R_z r_0 clamp(s / w) s <= 0 whatever the hub does.
       const double resisting = in.materials[c.material].rolling_resistance * f.normal_force * in.rolling_radius;
       const double width = std::max(in.spin_floor, resisting * in.spin_ramp_gain);
-      const double spin = (motion.angular_velocity - motion.hub_angular_velocity).dot(in.axle);
+      const double spin = motion.angular_velocity.dot(in.axle);
       f.rolling_moment = (-resisting * std::clamp(spin / width, -1.0, 1.0)) * in.axle;
     } else {
       f.rolling_moment.setZero();

@@ -16,11 +16,10 @@ namespace wtc {
 namespace {
 
 void requireFiniteMotion(const WheelMotion& motion, double step_seconds, const char* where) {
-  if (!isFinite(motion.velocity) || !isFinite(motion.angular_velocity) || !isFinite(motion.hub_angular_velocity)) {
+  if (!isFinite(motion.velocity) || !isFinite(motion.angular_velocity)) {
     throw InvalidInputError(std::string(where) +
                             ": wheel motion is not finite: velocity = " + formatVector(motion.velocity) +
-                            ", angular_velocity = " + formatVector(motion.angular_velocity) +
-                            ", hub_angular_velocity = " + formatVector(motion.hub_angular_velocity));
+                            ", angular_velocity = " + formatVector(motion.angular_velocity));
   }
   if (!(std::isfinite(step_seconds) && step_seconds > 0.0)) {
     throw InvalidInputError(std::string(where) + ": step_seconds = " + formatNumber(step_seconds) +
@@ -68,7 +67,7 @@ const WheelForces& TyreModel::step(const Terrain& terrain, const WheelDescriptio
 const WheelForces& TyreModel::stepInEngine(const Terrain& terrain, const WheelDescription& wheel, const WheelPose& pose,
                                            const WheelMotion& motion, double step_seconds, WheelState& state) const {
   const bool finite = isFinite(pose.center) && isFinite(pose.axle) && isFinite(motion.velocity) &&
-                      isFinite(motion.angular_velocity) && isFinite(motion.hub_angular_velocity);
+                      isFinite(motion.angular_velocity);
   state.last_skipped_ = !finite;
   if (finite) return step(terrain, wheel, pose, motion, step_seconds, state);
   ++state.non_finite_steps_;

@@ -57,6 +57,18 @@ class MountedWheel {
   WheelState& state() { return state_; }
   /// The last step's result for the engine.
   const MountedWheelStep& last() const { return step_; }
+  /// Constraint mode, once the engine has solved the step: the force its
+  /// solver applied on the wheel at each of last().contacts (N, world;
+  /// impulse / h), in their order. Throws InvalidInputError for a
+  /// count that is not theirs.
+  void setSolvedForces(std::span<const Eigen::Vector3d> forces);
+  /// What acted on the wheel in the last step. Force mode: forces(). In
+  /// constraint mode the tyre model's contacts with the engine's solved
+  /// forces (force, normal_force, tangential_force, mu) and their wrench
+  /// about O, plus the explicit rolling moment: what the engine applied,
+  /// which the explicit model only approximates (issue 11, defect 7);
+  /// forces() until setSolvedForces is called for the step.
+  const WheelForces& applied() const { return solved_valid_ ? solved_ : forces(); }
   /// Tells `listener` (none if null) what the last step did, for wheel
   /// `id`: onWheelSkipped; or onWheelStep, and onFirstUnstableStep on the
   /// wheel's first step beyond its explicit stability limit.
@@ -68,6 +80,10 @@ class MountedWheel {
   WheelState state_;
   std::vector<EngineContact> contacts_;
   MountedWheelStep step_;
+  WheelPose pose_;
+  std::vector<ContactForce> solved_contacts_;
+  WheelForces solved_;
+  bool solved_valid_ = false;
 };
 
 }  // namespace wtc

@@ -16,7 +16,6 @@ namespace wtc {
 struct WheelMotion {
   Eigen::Vector3d velocity{Eigen::Vector3d::Zero()};              ///< V_O (m/s).
   Eigen::Vector3d angular_velocity{Eigen::Vector3d::Zero()};      ///< omega of the wheel: spin + carrier (rad/s).
-  Eigen::Vector3d hub_angular_velocity{Eigen::Vector3d::Zero()};  ///< omega of the body carrying the axle (rad/s).
 };
 
 /// One contact's breakdown, for logging and controllers.

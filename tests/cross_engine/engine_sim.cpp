@@ -33,6 +33,7 @@ class BulletSim : public EngineSim {
     return {v.x(), v.y(), v.z()};
   }
   const WheelForces& forces() const override { return world_.plugin->forces(id_); }
+  const WheelForces& applied() const override { return world_.plugin->applied(id_); }
 
  private:
   BulletWorld world_;
@@ -61,6 +62,7 @@ class OdeSim : public EngineSim {
   Eigen::Vector3d position() const override { return testing::position(wheel_.body); }
   Eigen::Vector3d velocity() const override { return testing::velocity(wheel_.body); }
   const WheelForces& forces() const override { return world_.plugin->forces(id_); }
+  const WheelForces& applied() const override { return world_.plugin->applied(id_); }
 
  private:
   OdeWorld world_;

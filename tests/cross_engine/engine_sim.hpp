@@ -33,7 +33,10 @@ class EngineSim {
   virtual void step(double step_seconds) = 0;
   virtual Eigen::Vector3d position() const = 0;
   virtual Eigen::Vector3d velocity() const = 0;
+  /// The tyre model's result of the last step.
   virtual const WheelForces& forces() const = 0;
+  /// What acted on the wheel in the last step (the plugin's applied()).
+  virtual const WheelForces& applied() const = 0;
 };
 
 /// A wheel of `mass` (kg) at `centre` on `terrain` (which must outlive it),

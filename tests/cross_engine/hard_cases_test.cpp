@@ -137,5 +137,38 @@ TEST(HardCasesTest, ASoftTyreRestsAtItsStaticDeflectionInEveryEngineAndMode) {
   }
 }
 
+// Issue 11, defect 7: in constraint mode the engine's solver, not the
+// explicit model, decides the contact forces; the plugins report what it
+// applied. Newton's second law checks it: a locked wheel (gravity and the
+// contacts only) dropped 1 cm onto flat ground while sliding at 0.5 m/s has
+// m (v' - v) / h - m g = the applied contact force at every step, in both
+// engines. The explicit model's forces differ on this landing (recorded).
+TEST(HardCasesTest, ConstraintModeReportsTheContactForcesTheSolverApplied) {
+  constexpr double kMass = 21.0, kH = 1e-3;
+  const Eigen::Vector3d gravity(0, 0, -kGravityMps2);
+  const Terrain ground = flatGround();
+  for (const Engine engine : {Engine::kBullet, Engine::kOde}) {
+    auto sim = makeEngineSim(engine, ContactMode::kConstraint, ground, kMass, {0, 0, kRadius + 0.01}, Hold::kLocked);
+    sim->setMotion({0.5, 0, 0}, 0.0);
+    double worst = 0.0, model_gap = 0.0, peak = 0.0;
+    for (int k = 0; k < 400; ++k) {
+      const Eigen::Vector3d before = sim->velocity();
+      sim->step(kH);
+      const Eigen::Vector3d felt = kMass * ((sim->velocity() - before) / kH - gravity);
+      const WheelForces& applied = sim->applied();
+      worst = std::max(worst, (applied.force - felt).norm());
+      model_gap = std::max(model_gap, (sim->forces().force - felt).norm());
+      peak = std::max(peak, felt.norm());
+      double sum = 0.0;
+      for (const ContactForce& c : applied.contacts) sum += c.normal_force;
+      if (!applied.contacts.empty()) EXPECT_NEAR(sum, -applied.force.dot(applied.contacts[0].contact.e), 1e-9 * peak);
+    }
+    RecordProperty(engineName(engine) + "_explicit_model_error_N", std::to_string(model_gap));
+    EXPECT_GT(peak, kMass * kGravityMps2) << engineName(engine) << ": the wheel never landed";
+    EXPECT_LT(worst, 1e-6 * peak) << engineName(engine) << ": applied force off Newton's law by " << worst
+                                  << " N (peak " << peak << " N; the explicit model's off by " << model_gap << " N)";
+  }
+}
+
 }  // namespace
 }  // namespace wtc::testing

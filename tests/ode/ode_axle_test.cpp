@@ -24,7 +24,7 @@ constexpr double kStiffness = 1e5;     // c (N/m)
 constexpr double kStepSeconds = 1e-3;  // (s)
 
 // The axle body (kept level by an angular motor: the rest of its vehicle)
-// and its two wheels on hinges about y, registered with the axle as hub.
+// and its two wheels on hinges about y.
 struct Axle {
   Axle(OdeWorld& w, double height) {
     body = dBodyCreate(w.world);
@@ -46,7 +46,6 @@ struct Axle {
       ode::RigidWheel spec;
       spec.body = wheel.body;
       spec.geom = wheel.geom;
-      spec.hub = body;
       spec.description.inertia = {kWheelMass, 0.5 * kWheelMass * kRadius * kRadius};
       w.plugin->addWheel(spec);
     }

@@ -73,7 +73,9 @@ class Engine {
   virtual double jointRate(int body) const = 0;
   /// The effort `body`'s motor applied in the last step (N m or N).
   virtual double motorEffort(int body) const = 0;
-  /// The last step's tyre result and state of a wheel body.
+  /// What acted on a wheel body in the last step (the plugins' applied():
+  /// the tyre model's forces in force mode, the forces the engine's solver
+  /// applied at WTC's contacts in constraint mode), and its tyre state.
   virtual const WheelForces& wheelForces(int body) const = 0;
   virtual const WheelState& wheelState(int body) const = 0;
   /// Called for each wheel at each step after its tyre model ran; null:

@@ -11,6 +11,7 @@
 #include "plugin_impl.hpp"
 #include "wheel_terrain_algorithm.hpp"
 #include "wtc/error.hpp"
+#include "wtc/scratch_capacity.hpp"
 
 namespace wtc::bullet {
 namespace {
@@ -23,8 +24,8 @@ void preTickCallback(btDynamicsWorld* world, btScalar step_seconds) {
   static_cast<Plugin::Impl*>(world->getWorldUserInfo())->preTick(step_seconds);
 }
 
-void postTickCallback(btDynamicsWorld* world, btScalar) {
-  static_cast<Plugin::Impl*>(world->getWorldUserInfo())->postTick();
+void postTickCallback(btDynamicsWorld* world, btScalar step_seconds) {
+  static_cast<Plugin::Impl*>(world->getWorldUserInfo())->postTick(step_seconds);
 }
 
 // Where the wheel is and how it moves, in the world frame.
@@ -41,7 +42,6 @@ Kinematics rigidKinematics(const Wheel& w) {
   k.axle = t.getBasis() * w.axle_local;
   k.motion.velocity = toEigen(w.body->getVelocityInLocalPoint(k.centre - k.com));
   k.motion.angular_velocity = toEigen(w.body->getAngularVelocity());
-  if (w.hub != nullptr) k.motion.hub_angular_velocity = toEigen(w.hub->getAngularVelocity());
   return k;
 }
 
@@ -60,8 +60,6 @@ Kinematics multiBodyKinematics(const Wheel& w, btAlignedObjectArray<btVector3>& 
   const btVector3 com_velocity = mb.localDirToWorld(w.link, velocity[w.link + 1]);
   k.motion.velocity = toEigen(com_velocity + spin.cross(k.centre - k.com));
   k.motion.angular_velocity = toEigen(spin);
-  const int parent = mb.getParent(w.link);
-  k.motion.hub_angular_velocity = toEigen(mb.localDirToWorld(parent, omega[parent + 1]));
   return k;
 }
 
@@ -167,6 +165,8 @@ WheelId Plugin::Impl::add(std::unique_ptr<Wheel> w, const char* where) {
                     ") excludes the static terrain; add the wheel's collider with btBroadphaseProxy::DefaultFilter "
                     "and AllFilter (btDiscreteDynamicsWorld::addCollisionObject defaults to the static group)");
   }
+  w->manifold_point.reserve(kReservedContacts);  // no allocation in the step loop
+  w->solved_forces.reserve(kReservedContacts);
   w->shape = std::make_unique<WheelShape>(w->mounted.description().geometry.free_radius, original);
   w->collider->setCollisionShape(w->shape.get());
   w->collider->setActivationState(DISABLE_DEACTIVATION);
@@ -182,6 +182,8 @@ void Plugin::Impl::preTick(double h) {
   const Terrain& ground = terrain.terrain();
   for (std::size_t id = 0; id < wheels.size(); ++id) {
     Wheel& w = *wheels[id];
+    w.manifold = nullptr;
+    w.manifold_point.clear();
     const Kinematics k =
         w.body != nullptr ? rigidKinematics(w) : multiBodyKinematics(w, omega_scratch, velocity_scratch);
     const MountedWheelStep& r = w.mounted.step(ground, {toEigen(k.centre), toEigen(k.axle)}, k.motion, h);
@@ -199,7 +201,10 @@ void Plugin::Impl::preTick(double h) {
   }
 }
 
-void Plugin::Impl::postTick() {
+void Plugin::Impl::postTick(double h) {
+  if (mode == ContactMode::kConstraint) {
+    for (const auto& w : wheels) readSolvedForces(*w, h);
+  }
 #ifdef BT_USE_VIRTUAL_CLEARFORCES_AND_GRAVITY
   // This Bullet clears multibody forces once per stepSimulation, not per
   // substep (btMultiBodyDynamicsWorld.h defines the macro, as Debian's does):
@@ -214,6 +219,26 @@ void Plugin::Impl::postTick() {
 #endif
 }
 
+// What Bullet's solver applied at each WTC contact this substep, on the
+// wheel: (n m_appliedImpulse + d1 m_appliedImpulseLateral1
+// [+ d2 m_appliedImpulseLateral2]) / h, with n the manifold's normal on B
+// (toward A) and d1, d2 its friction directions (both solvers write the
+// impulses and directions they used back to the point).
+void Plugin::Impl::readSolvedForces(Wheel& w, double h) {
+  if (w.mounted.last().skipped) return;
+  const std::size_t n = w.mounted.last().contacts.size();
+  w.solved_forces.assign(n, Eigen::Vector3d::Zero());
+  const bool second = (world.getSolverInfo().m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS) != 0;
+  for (std::size_t i = 0; i < n && i < w.manifold_point.size() && w.manifold != nullptr; ++i) {
+    if (w.manifold_point[i] < 0 || w.manifold_point[i] >= w.manifold->getNumContacts()) continue;
+    const btManifoldPoint& p = w.manifold->getContactPoint(w.manifold_point[i]);
+    btVector3 impulse_on_a = p.m_normalWorldOnB * p.m_appliedImpulse + p.m_lateralFrictionDir1 * p.m_appliedImpulseLateral1;
+    if (second) impulse_on_a += p.m_lateralFrictionDir2 * p.m_appliedImpulseLateral2;
+    w.solved_forces[i] = toEigen(w.wheel_is_body0 ? impulse_on_a : -impulse_on_a) / h;
+  }
+  w.mounted.setSolvedForces(w.solved_forces);
+}
+
 Plugin::Plugin(btDiscreteDynamicsWorld& world, const Terrain& terrain, ContactMode mode)
     : impl_(std::make_unique<Impl>(world, terrain, mode)) {}
 
@@ -225,7 +250,6 @@ WheelId Plugin::addWheel(const RigidWheel& spec) {
   validate(spec.description, kWhere);
   auto w = std::make_unique<Wheel>(spec.description, spec.effects, impl_->mode);
   w->body = spec.body;
-  w->hub = spec.hub;
   w->collider = spec.body;
   w->axle_local = spec.axle_local;
   w->centre_local = spec.centre_local;
@@ -253,6 +277,10 @@ WheelId Plugin::addWheel(const MultiBodyWheel& spec) {
 
 const WheelForces& Plugin::forces(WheelId wheel) const {
   return impl_->wheels.at(static_cast<std::size_t>(wheel))->mounted.forces();
+}
+
+const WheelForces& Plugin::applied(WheelId wheel) const {
+  return impl_->wheels.at(static_cast<std::size_t>(wheel))->mounted.applied();
 }
 
 const WheelState& Plugin::state(WheelId wheel) const {

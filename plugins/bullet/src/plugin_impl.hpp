@@ -24,12 +24,19 @@ struct Wheel {
   btRigidBody* body = nullptr;       // a rigid wheel, or
   btMultiBody* multibody = nullptr;  // a multibody link
   int link = -1;
-  btRigidBody* hub = nullptr;
   btCollisionObject* collider = nullptr;
   btVector3 axle_local, centre_local;
   MountedWheel mounted;                                 // tyre model, state, this step's result and engine contacts
   std::unique_ptr<WheelShape> shape;                    // replaces the collider's shape while registered
   btVector3 link_force{0, 0, 0}, link_torque{0, 0, 0};  // multibody: what this substep added
+  // Constraint mode: the manifold the collision algorithm wrote this
+  // substep's contacts into (null until it runs), and the manifold point of
+  // each of mounted.last().contacts (-1: none, or one an earlier contact
+  // of the step already took); the post-tick reads the impulses there.
+  btPersistentManifold* manifold = nullptr;
+  bool wheel_is_body0 = true;
+  std::vector<int> manifold_point;
+  std::vector<Eigen::Vector3d> solved_forces;  // scratch for MountedWheel::setSolvedForces
 };
 
 struct Plugin::Impl {
@@ -37,7 +44,8 @@ struct Plugin::Impl {
   ~Impl();
   WheelId add(std::unique_ptr<Wheel> wheel, const char* where);
   void preTick(double step_seconds);
-  void postTick();
+  void postTick(double step_seconds);
+  void readSolvedForces(Wheel& wheel, double step_seconds);
   int wheelOf(const btCollisionObject* object) const;
 
   btDiscreteDynamicsWorld& world;

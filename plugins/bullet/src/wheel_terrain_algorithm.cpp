@@ -1,5 +1,6 @@
 #include "wheel_terrain_algorithm.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <new>
 
@@ -49,10 +50,13 @@ void WheelTerrainAlgorithm::writeWtcContacts(int wheel, bool wheel_is_body0, con
   result->setPersistentManifold(manifold_);
   // The contacts are WTC's, found afresh each step: nothing carries over.
   manifold_->clearManifold();
-  const Wheel& w = *impl_.wheels[wheel];
+  Wheel& w = *impl_.wheels[wheel];
   if (!w.mounted.state().capContacts().empty()) writeCapContacts(w, body0, body1, dispatch_info, result);
   if (impl_.mode == ContactMode::kForce) return;
-  for (const EngineContact& c : impl_.wheels[wheel]->mounted.last().contacts) {
+  w.manifold = manifold_;
+  w.wheel_is_body0 = manifold_->getBody0() == (wheel_is_body0 ? body0 : body1)->getCollisionObject();
+  w.manifold_point.clear();
+  for (const EngineContact& c : w.mounted.last().contacts) {
     // Bullet's normal on B points from B to A; the point is on B; a
     // negative distance is a penetration.
     const btVector3 normal_on_b = toBullet(wheel_is_body0 ? c.normal : Eigen::Vector3d(-c.normal));
@@ -68,6 +72,10 @@ void WheelTerrainAlgorithm::writeWtcContacts(int wheel, bool wheel_is_body0, con
               .distance2(point_on_b);
       if (d < nearest) nearest = d, index = k;
     }
+    // A point another contact of this step already took (Bullet merged
+    // the two): its impulse is reported once.
+    const bool taken = std::find(w.manifold_point.begin(), w.manifold_point.end(), index) != w.manifold_point.end();
+    w.manifold_point.push_back(index < 0 || taken ? -1 : index);
     if (index < 0) continue;
     btManifoldPoint& p = manifold_->getContactPoint(index);
     p.m_combinedFriction = c.friction;

@@ -87,10 +87,10 @@ WheelId Plugin::Impl::add(const RigidWheel& spec) {
   auto w = std::make_unique<Wheel>(spec.description, spec.effects, mode);
   w->body = spec.body;
   w->geom = spec.geom;
-  w->hub = spec.hub;
   w->axle_local = spec.axle_local;
   w->centre_local = spec.centre_local;
   w->contacts.reserve(kReservedContacts);
+  w->solved_forces.reserve(kReservedContacts);
   dBodySetAutoDisableFlag(spec.body, 0);  // the tread state needs every step
   const auto id = static_cast<WheelId>(wheels.size());
   wheel_of.emplace(spec.geom, id);
@@ -114,7 +114,6 @@ void Plugin::Impl::beginStep(double h) {
     WheelMotion motion;
     motion.velocity = toEigen(velocity);
     motion.angular_velocity = toEigen(dBodyGetAngularVel(w.body));
-    if (w.hub != nullptr) motion.hub_angular_velocity = toEigen(dBodyGetAngularVel(w.hub));
     const MountedWheelStep& r = w.mounted.step(ground, {toEigen(centre), toEigen(axle)}, motion, h);
     w.handled = false;
     w.contacts.clear();
@@ -205,6 +204,21 @@ void Plugin::Impl::collideCaps(Wheel& w, dGeomID ground, dJointGroupID group) {
   }
 }
 
+// The joints' feedback f1 is their force on the wheel body (the joint's
+// first body) over the last world step; a wheel whose pair ODE never handled
+// had no joints and felt none. Read on demand: ODE has no hook after its
+// step, and the feedback changes only inside it.
+const WheelForces& Plugin::Impl::applied(WheelId id) {
+  wheel(id);  // throws for an id that is not registered
+  Wheel& w = *wheels[static_cast<std::size_t>(id)];
+  if (mode == ContactMode::kConstraint && !w.mounted.last().skipped) {
+    w.solved_forces.clear();
+    for (const SolvedContact& c : w.contacts) w.solved_forces.push_back(c.force());
+    w.mounted.setSolvedForces(w.solved_forces);
+  }
+  return w.mounted.applied();
+}
+
 Plugin::Plugin(dWorldID world, dSpaceID space, const Terrain& terrain, ContactMode mode, TerrainShape shape)
     : impl_(std::make_unique<Impl>(world, space, terrain, mode, shape)) {}
 
@@ -215,6 +229,7 @@ void Plugin::beginStep(double step_seconds) { impl_->beginStep(step_seconds); }
 bool Plugin::handlePair(dGeomID a, dGeomID b, dJointGroupID contacts) { return impl_->handlePair(a, b, contacts); }
 
 const WheelForces& Plugin::forces(WheelId wheel) const { return impl_->wheel(wheel).mounted.forces(); }
+const WheelForces& Plugin::applied(WheelId wheel) const { return impl_->applied(wheel); }
 
 const WheelState& Plugin::state(WheelId wheel) const { return impl_->wheel(wheel).mounted.state(); }
 std::span<const SolvedContact> Plugin::solvedContacts(WheelId wheel) const { return impl_->wheel(wheel).contacts; }

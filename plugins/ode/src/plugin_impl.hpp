@@ -15,7 +15,6 @@ struct Wheel {
 
   dBodyID body = nullptr;
   dGeomID geom = nullptr;
-  dBodyID hub = nullptr;
   Eigen::Vector3d axle_local, centre_local;
   MountedWheel mounted;  // tyre model, state, this step's result and engine contacts
   // Constraint mode: this step's contacts with their joints' feedback. ODE
@@ -23,6 +22,7 @@ struct Wheel {
   // changes only in beginStep (the previous step's joints are gone by then:
   // dJointGroupEmpty).
   std::vector<SolvedContact> contacts;
+  std::vector<Eigen::Vector3d> solved_forces;  // scratch for MountedWheel::setSolvedForces
   bool handled = false;  // handlePair has seen this wheel against the terrain this step
   WheelDiagnostics diagnostics;
 };
@@ -34,6 +34,7 @@ struct Plugin::Impl {
   bool handlePair(dGeomID a, dGeomID b, dJointGroupID contacts);
   void collideCaps(Wheel& wheel, dGeomID ground, dJointGroupID contacts);
   const Wheel& wheel(WheelId id) const;
+  const WheelForces& applied(WheelId id);
 
   dWorldID world;
   TerrainGeoms terrain;

@@ -177,7 +177,7 @@ class SimEngine final : public sim::Engine {
     return motor == nullptr ? 0.0
                             : const_cast<btMultiBodyJointMotor*>(motor)->getAppliedImpulse(0) / settings().step_seconds;
   }
-  const WheelForces& wheelForces(int body) const override { return plugin_->forces(wheelId(body)); }
+  const WheelForces& wheelForces(int body) const override { return plugin_->applied(wheelId(body)); }
   const WheelState& wheelState(int body) const override { return plugin_->state(wheelId(body)); }
   void setWheelListener(WheelListener* listener) override { plugin_->setListener(listener); }
 

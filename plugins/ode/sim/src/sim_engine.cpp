@@ -211,7 +211,7 @@ class SimEngine final : public sim::Engine {
     dJointGetLMotorAxis(r.motor, 0, a);
     return toEigen(r.feedback.f1).dot(toEigen(a));
   }
-  const WheelForces& wheelForces(int body) const override { return plugin_->forces(wheelId(body)); }
+  const WheelForces& wheelForces(int body) const override { return plugin_->applied(wheelId(body)); }
   const WheelState& wheelState(int body) const override { return plugin_->state(wheelId(body)); }
   void setWheelListener(WheelListener* listener) override { plugin_->setListener(listener); }
 

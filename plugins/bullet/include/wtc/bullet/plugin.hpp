@@ -48,14 +48,13 @@ using WheelListener = wtc::WheelListener;
 /// A wheel that is its own btRigidBody (on a hinge to its carrier, typically).
 struct RigidWheel {
   btRigidBody* body = nullptr;      ///< The wheel (not owned).
-  btRigidBody* hub = nullptr;       ///< The body carrying the axle, or null (for omega_rel).
   btVector3 axle_local{0, 1, 0};    ///< Axle direction in the body frame.
   btVector3 centre_local{0, 0, 0};  ///< Wheel centre O in the body frame (m).
   WheelDescription description;     ///< Geometry, tyre, inertia.
   EffectSet effects = EffectSet::full();
 };
 
-/// A wheel that is link `link` of a btMultiBody; its hub is the parent link.
+/// A wheel that is link `link` of a btMultiBody.
 struct MultiBodyWheel {
   btMultiBody* multibody = nullptr;  ///< Not owned; the link must have a collider.
   int link = -1;
@@ -81,6 +80,12 @@ class Plugin {
 
   /// The last internal step's result and state of a wheel.
   const WheelForces& forces(WheelId wheel) const;
+  /// What acted on the wheel in the last internal step: forces() in force
+  /// mode; in constraint mode the forces Bullet's solver applied at each
+  /// contact (impulse / h), their wrench and the rolling moment
+  /// (wtc::MountedWheel::applied). Report these, not forces(), as the
+  /// contact forces of a constraint-mode run.
+  const WheelForces& applied(WheelId wheel) const;
   const WheelState& state(WheelId wheel) const;
   int wheelCount() const;
 

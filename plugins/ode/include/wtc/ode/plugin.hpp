@@ -67,7 +67,6 @@ using WheelListener = wtc::WheelListener;
 struct RigidWheel {
   dBodyID body = nullptr;                                 ///< The wheel (not owned).
   dGeomID geom = nullptr;                                 ///< Its geom, attached to `body` (not owned).
-  dBodyID hub = nullptr;                                  ///< The body carrying the axle, or null (for omega_rel).
   Eigen::Vector3d axle_local{Eigen::Vector3d::UnitZ()};   ///< Axle in the body frame: z, ODE's cylinder axis.
   Eigen::Vector3d centre_local{Eigen::Vector3d::Zero()};  ///< Wheel centre O in the body frame (m).
   WheelDescription description;                           ///< Geometry, tyre, inertia.
@@ -133,6 +132,12 @@ class Plugin {
   /// throw std::out_of_range for an id that is not registered).
   const WheelForces& forces(WheelId wheel) const;
   const WheelState& state(WheelId wheel) const;
+  /// What acted on the wheel in the last world step (call it after the
+  /// step): forces() in force mode; in constraint mode the forces ODE's
+  /// solver applied at each contact (the joints' feedback), their wrench
+  /// and the rolling moment (wtc::MountedWheel::applied). Report these, not
+  /// forces(), as the contact forces of a constraint-mode run.
+  const WheelForces& applied(WheelId wheel) const;
   /// The wheel's contacts as ODE solved them in the last world step
   /// (constraint mode; empty in force mode).
   std::span<const SolvedContact> solvedContacts(WheelId wheel) const;
