@@ -22,6 +22,8 @@ WheelContactFinder::WheelContactFinder() {
   contacts_.reserve(kReservedCandidates);
   caps_.reserve(kReservedCandidates);
   shares_.reserve(kReservedCandidates);
+  exits_.reserve(kReservedCandidates);
+  next_exits_.reserve(kReservedCandidates);
 }
 
 std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, const WheelGeometry& wheel,
@@ -47,6 +49,7 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
   query.max_distance = r;
   contacts_.clear();
   next_caches_.clear();
+  next_exits_.clear();
   // Candidates in piece order, so that caches_ (last call's, in the same
   // order) is matched in one merge walk: a search per candidate made a fine
   // heightfield's few hundred candidates quadratic.
@@ -67,9 +70,13 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
     c.deflection = r - q.signed_distance;
     c.piece = id;
     c.material = terrain.materialId(id);
+    if (q.signed_distance < 0.0) exitWhereEntered(terrain.piece(id), id, o, r, c);
     contacts_.push_back(c);
   }
   std::swap(caches_, next_caches_);
+  std::swap(exits_, next_exits_);
+  previous_centre_ = o;
+  has_previous_ = true;
 
   // 3. Seam rule.
   if (options.seam_rule && contacts_.size() > 1) applySeamRule(terrain, tolerance::kSeamGapRelative * r, r);
@@ -97,6 +104,43 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
     contacts_.resize(1);
   }
   return contacts_;
+}
+
+// The centre is inside the piece: it leaves by the face it came in through.
+// The nearest face is not always that one: a large step can carry the centre
+// past the middle of a thin piece, and pushing out by the far face pushes it
+// on through (issue 11). The faces whose planes the last call's centre was
+// in front of are the ones it crossed; of those, the shallowest. A centre
+// that was already inside keeps the face it was pushed out by then; with
+// neither (a first call, a teleport), the nearest face stays.
+void WheelContactFinder::exitWhereEntered(const ConvexPolyhedron& piece, PieceId id, const Eigen::Vector3d& o,
+                                          double r, WheelContact& c) {
+  const auto previous_exit = std::find_if(exits_.begin(), exits_.end(), [id](const auto& e) { return e.first == id; });
+  const bool came_in = has_previous_ && piece.planeBound(previous_centre_) > 0.0;
+  int best = -1;
+  double best_depth = 0.0, best_alignment = -2.0;
+  for (int f = 0; f < piece.faceCount(); ++f) {
+    const Eigen::Vector3d n = piece.faceNormal(f);
+    const double depth = piece.faceOffset(f) - n.dot(o);
+    if (came_in) {
+      if (n.dot(previous_centre_) - piece.faceOffset(f) <= 0.0) continue;  // not crossed
+      if (best < 0 || depth < best_depth) best = f, best_depth = depth;
+    } else if (previous_exit != exits_.end()) {
+      const double alignment = n.dot(previous_exit->second);
+      if (alignment > best_alignment) best = f, best_depth = depth, best_alignment = alignment;
+    }
+  }
+  if (best >= 0) {
+    const Eigen::Vector3d n = piece.faceNormal(best);
+    if (n.dot(-c.e) < tolerance::kSameFaceNormalCos) {  // another face than the nearest
+      c.e = -n;
+      c.point = o + r * c.e;
+      c.ground_point = o + best_depth * n;
+      c.signed_distance = -best_depth;
+      c.deflection = r + best_depth;
+    }
+  }
+  next_exits_.emplace_back(id, -c.e);
 }
 
 void WheelContactFinder::applySeamRule(const Terrain& terrain, double gap, double radius) {

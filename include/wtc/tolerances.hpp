@@ -75,5 +75,9 @@ inline constexpr double kTractionSaturation = 1e-4;
 /// well under a degree per step) continuous, and keeps the face and ground
 /// contacts of a ledge foot (e 90 deg apart) apart.
 inline constexpr double kTreadStateMatchCos = 0.8660254037844387;
+// Two face normals of one piece within this cosine are the same face: the
+// pushed-out face of a centre inside a piece is then the query's own
+// (wheel_contact.cpp), and the query's values are kept bit for bit.
+inline constexpr double kSameFaceNormalCos = 1.0 - 1e-12;
 
 }  // namespace wtc::tolerance

@@ -102,10 +102,17 @@ class WheelContactFinder {
 
  private:
   void applySeamRule(const Terrain& terrain, double gap, double radius);
+  void exitWhereEntered(const ConvexPolyhedron& piece, PieceId id, const Eigen::Vector3d& centre, double radius,
+                        WheelContact& c);
   std::vector<PieceId> candidates_;
   std::vector<WheelContact> contacts_, caps_;
   std::vector<std::pair<PieceId, QueryCache>> caches_, next_caches_;
   std::vector<double> shares_;
+  // The centre of the last call, and for each piece the centre was inside
+  // then, the outward normal of the face it was pushed out by.
+  Eigen::Vector3d previous_centre_{Eigen::Vector3d::Zero()};
+  bool has_previous_ = false;
+  std::vector<std::pair<PieceId, Eigen::Vector3d>> exits_, next_exits_;
 };
 
 }  // namespace wtc

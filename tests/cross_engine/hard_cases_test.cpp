@@ -6,10 +6,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <string>
 
 #include "engine_sim.hpp"
+#include "wtc/terrain_primitives.hpp"
+#include "wtc/traction_law.hpp"
 #include "wtc/constants.hpp"
 #include "wheel_sim.hpp"
 
@@ -67,15 +70,22 @@ TEST(HardCasesTest, DISABLED_FreeWheelRollingSlowlyComesToRest) {
 // 0.8), both engines, from where it is put down, 10 s: the creep in mm.
 // Before the fix: 1.07 at 1 ms, 2.39 at 10 ms, 108 at 50 ms, 431 at 100 ms.
 // After: 1.07, 1.07, 6.35, 25.4.
-double parkedCreep(Engine engine, double h) {
+double parkedCreep(Engine engine, ContactMode mode, const std::function<double(long)>& step_of) {
   constexpr double kSlope = 15.0 * std::numbers::pi / 180.0, kMass = 21.0, kParkedS = 10.0;
   const Terrain incline = tiltedSlab(kSlope);
   const double deflection = kMass * kGravityMps2 * std::cos(kSlope) / 1e5;
-  auto sim = makeEngineSim(engine, ContactMode::kConstraint, incline, kMass,
-                           (kRadius - deflection) * slabNormal(kSlope), Hold::kLocked);
+  auto sim = makeEngineSim(engine, mode, incline, kMass, (kRadius - deflection) * slabNormal(kSlope), Hold::kLocked);
   const Eigen::Vector3d start = sim->position();
-  for (long k = 0; k < std::lround(kParkedS / h); ++k) sim->step(h);
+  double t = 0.0;
+  for (long k = 0; t < kParkedS - 1e-9; ++k) {
+    const double h = step_of(k);
+    sim->step(h);
+    t += h;
+  }
   return std::abs((sim->position() - start).dot(downhill(kSlope)));
+}
+double parkedCreep(Engine engine, double h) {
+  return parkedCreep(engine, ContactMode::kConstraint, [h](long) { return h; });
 }
 
 // Up to 10 ms: at most twice the creep at 1 ms, or half a millimetre.
@@ -161,12 +171,144 @@ TEST(HardCasesTest, ConstraintModeReportsTheContactForcesTheSolverApplied) {
       peak = std::max(peak, felt.norm());
       double sum = 0.0;
       for (const ContactForce& c : applied.contacts) sum += c.normal_force;
-      if (!applied.contacts.empty()) EXPECT_NEAR(sum, -applied.force.dot(applied.contacts[0].contact.e), 1e-9 * peak);
+      if (!applied.contacts.empty()) {
+        EXPECT_NEAR(sum, -applied.force.dot(applied.contacts[0].contact.e), 1e-9 * peak);
+      }
     }
     RecordProperty(engineName(engine) + "_explicit_model_error_N", std::to_string(model_gap));
     EXPECT_GT(peak, kMass * kGravityMps2) << engineName(engine) << ": the wheel never landed";
     EXPECT_LT(worst, 1e-6 * peak) << engineName(engine) << ": applied force off Newton's law by " << worst
                                   << " N (peak " << peak << " N; the explicit model's off by " << model_gap << " N)";
+  }
+}
+
+// Issue 11: the step switched between 0.5 and 3 ms every 7 steps. A locked
+// 21 kg wheel parked on 15 deg creeps no more than at a fixed 1 ms (within
+// 5 %; the tread loading up when it is put down plus the law's creep:
+// 1.07 mm at 1 ms, 1.05 mm switching), in both engines and modes.
+TEST(HardCasesTest, AParkedWheelHoldsWhenTheStepChangesEveryFewSteps) {
+  for (const Engine engine : {Engine::kBullet, Engine::kOde}) {
+    for (const ContactMode mode : {ContactMode::kForce, ContactMode::kConstraint}) {
+      const double fixed = parkedCreep(engine, mode, [](long) { return 1e-3; });
+      const double switching = parkedCreep(engine, mode, [](long k) { return (k / 7) % 2 == 0 ? 5e-4 : 3e-3; });
+      RecordProperty(engineName(engine) + "_" + std::string(contactModeName(mode)) + "_switching_creep_mm",
+                     std::to_string(switching * 1e3));
+      EXPECT_LT(switching, 1.05 * fixed) << engineName(engine) << ", " << contactModeName(mode) << ": "
+                                         << switching * 1e3 << " mm against " << fixed * 1e3 << " mm at 1 ms";
+    }
+  }
+}
+
+// Issue 11: a large step drops the wheel's centre into a thin plate (2 cm,
+// nothing under it), nearer its bottom face than its top: the nearest face
+// pushed it on through (it fell 40-60 m in 2 s, both engines, both modes).
+// It must come out on the side it entered, never go below the plate's top
+// again, and (constraint mode) rest on it. h = 20 ms, 10.25 m/s down from
+// 5 mm above the plate.
+TEST(HardCasesTest, AWheelDroppedIntoAThinPlateComesOutWhereItEntered) {
+  constexpr double kMass = 21.0, kH = 0.02, kThick = 0.02;
+  TerrainBuilder builder;
+  BoxParams plate;
+  plate.size = {4.0, 4.0, kThick};
+  plate.pose_WL.translation() = Eigen::Vector3d(0, 0, -0.5 * kThick);
+  addBox(builder, plate, builder.addMaterial({}));
+  const Terrain deck = std::move(builder).build();
+  for (const Engine engine : {Engine::kBullet, Engine::kOde}) {
+    for (const ContactMode mode : {ContactMode::kForce, ContactMode::kConstraint}) {
+      auto sim = makeEngineSim(engine, mode, deck, kMass, {0, 0, kRadius + 0.005}, Hold::kLocked);
+      sim->setMotion({0, 0, -10.25}, 0.0);
+      sim->step(kH);
+      const double entered = sim->position().z();
+      double lowest = 1e9;
+      for (int k = 0; k < 150; ++k) {
+        sim->step(kH);
+        if (k > 0) lowest = std::min(lowest, sim->position().z());
+      }
+      const std::string label = engineName(engine) + ", " + std::string(contactModeName(mode));
+      EXPECT_LT(entered, -0.5 * kThick) << label << ": the centre did not reach the plate's lower half";
+      EXPECT_GT(lowest, 0.0) << label << ": after entering at z = " << entered;
+      // Constraint mode rests on the top; force mode's explicit spring,
+      // compressed 0.2 m in one 20 ms step, throws the wheel up (its
+      // accuracy at such a step, not its side) and it lands on the top.
+      if (mode == ContactMode::kConstraint) {
+        EXPECT_NEAR(sim->position().z(), kRadius - kMass * kGravityMps2 / 1e5, 0.01) << label;
+      }
+    }
+  }
+}
+
+// A locked wheel put down sliding at 3.5 m/s on flat ground: where it
+// passes 2 m/s (by then its tread has settled to steady sliding: the
+// transient from the unloaded tread decays over its relaxation length, 90 mm
+// here, and it has slid six of them), where it stops (the farthest point it
+// reaches) and how far back from there it is 1 s later.
+struct Braking {
+  double from = -1.0;   // m, where it passed 2 m/s
+  double stop = 0.0;    // m
+  double spring = 0.0;  // m, back from the stop at the end
+};
+constexpr double kBrakingFromMps = 2.0;
+Braking brake(Engine engine, ContactMode mode, const Terrain& ground, double h) {
+  constexpr double kMass = 21.0, kSpeed = 3.5;
+  auto sim = makeEngineSim(engine, mode, ground, kMass, {0, 0, kRadius - kMass * kGravityMps2 / 1e5}, Hold::kLocked);
+  sim->setMotion({kSpeed, 0, 0}, 0.0);
+  Braking b;
+  for (long k = 0; k < std::lround(1.5 / h); ++k) {
+    const double before = sim->velocity().x();
+    sim->step(h);
+    const double v = sim->velocity().x();
+    if (b.from < 0.0 && v <= kBrakingFromMps) {  // interpolated within the step
+      b.from = sim->position().x() - 0.5 * (kBrakingFromMps - v) * (kBrakingFromMps + v) / ((before - v) / h);
+    }
+    b.stop = std::max(b.stop, sim->position().x());
+  }
+  b.spring = b.stop - sim->position().x();
+  return b;
+}
+
+// A material whose mu(s) falls past its peak (s2 = 4.44: about 2.3 mu_max
+// near s = 0.16, falling to mu(1) at the locked wheel's s = 1).
+Terrain fallingGround() {
+  Material falling;
+  falling.name = "falling";
+  falling.s2 = 4.44;
+  return flatGround(1, falling);
+}
+
+// Issue 11: locked-wheel braking on the falling branch of mu(s). From
+// 2 m/s, sliding steadily, the wheel stops after v^2 / (2 g mu(1)) within
+// 2 %, in both engines and modes, at 1 and 2 ms.
+TEST(HardCasesTest, ALockedWheelBrakesOnTheFallingBranch) {
+  const Terrain ground = fallingGround();
+  const double expected =
+      kBrakingFromMps * kBrakingFromMps / (2.0 * kGravityMps2 * tractionCoefficient(ground.materials()[0], 1.0));
+  for (const Engine engine : {Engine::kBullet, Engine::kOde}) {
+    for (const ContactMode mode : {ContactMode::kForce, ContactMode::kConstraint}) {
+      for (const double h : {1e-3, 2e-3}) {
+        const Braking b = brake(engine, mode, ground, h);
+        EXPECT_NEAR(b.stop - b.from, expected, 0.02 * expected)
+            << engineName(engine) << ", " << contactModeName(mode) << ", h = " << h;
+      }
+    }
+  }
+}
+
+// Open: once stopped, a braked wheel must stay (within 1 mm). Constraint
+// mode does (the engine's friction holds it); force mode springs back: the
+// tread state holds sigma s (16 mm at s = 1 for this wheel) after a slide,
+// and its force mu(u / sigma) R_z stays on after the stop until the wheel has
+// moved that far back. Measured (both engines, 1 ms): 14 mm back on the
+// default asphalt (at up to 0.35 m/s), 82 mm with s2 = 4.44. The elastic energy of a real tread
+// is (mu R_z)^2 / (2 k_t): it needs the tread's deflection kept apart from
+// its slip memory, the same change as the sticking state (defect 6).
+TEST(HardCasesTest, DISABLED_ABrakedWheelStaysWhereItStopped) {
+  for (const Terrain& ground : {flatGround(), fallingGround()}) {
+    for (const Engine engine : {Engine::kBullet, Engine::kOde}) {
+      for (const ContactMode mode : {ContactMode::kForce, ContactMode::kConstraint}) {
+        EXPECT_LT(brake(engine, mode, ground, 1e-3).spring, 1e-3)
+            << ground.materials()[0].name << ", " << engineName(engine) << ", " << contactModeName(mode);
+      }
+    }
   }
 }
 
