@@ -41,8 +41,8 @@ const MountedWheelStep& MountedWheel::step(const Terrain& terrain, const WheelPo
 void MountedWheel::setSolvedForces(std::span<const Eigen::Vector3d> forces) {
   const WheelForces& model = this->forces();
   if (forces.size() != model.contacts.size()) {
-    throw InvalidInputError("wtc::MountedWheel::setSolvedForces: " + std::to_string(forces.size()) +
-                                " forces for " + std::to_string(model.contacts.size()) + " contacts");
+    throw InvalidInputError("wtc::MountedWheel::setSolvedForces: " + std::to_string(forces.size()) + " forces for " +
+                            std::to_string(model.contacts.size()) + " contacts");
   }
   solved_contacts_.assign(model.contacts.begin(), model.contacts.end());
   const Eigen::Vector3d a = pose_.axle.normalized();

@@ -66,8 +66,8 @@ const WheelForces& TyreModel::step(const Terrain& terrain, const WheelDescriptio
 
 const WheelForces& TyreModel::stepInEngine(const Terrain& terrain, const WheelDescription& wheel, const WheelPose& pose,
                                            const WheelMotion& motion, double step_seconds, WheelState& state) const {
-  const bool finite = isFinite(pose.center) && isFinite(pose.axle) && isFinite(motion.velocity) &&
-                      isFinite(motion.angular_velocity);
+  const bool finite =
+      isFinite(pose.center) && isFinite(pose.axle) && isFinite(motion.velocity) && isFinite(motion.angular_velocity);
   state.last_skipped_ = !finite;
   if (finite) return step(terrain, wheel, pose, motion, step_seconds, state);
   ++state.non_finite_steps_;

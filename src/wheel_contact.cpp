@@ -113,8 +113,8 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
 // in front of are the ones it crossed; of those, the shallowest. A centre
 // that was already inside keeps the face it was pushed out by then; with
 // neither (a first call, a teleport), the nearest face stays.
-void WheelContactFinder::exitWhereEntered(const ConvexPolyhedron& piece, PieceId id, const Eigen::Vector3d& o,
-                                          double r, WheelContact& c) {
+void WheelContactFinder::exitWhereEntered(const ConvexPolyhedron& piece, PieceId id, const Eigen::Vector3d& o, double r,
+                                          WheelContact& c) {
   const auto previous_exit = std::find_if(exits_.begin(), exits_.end(), [id](const auto& e) { return e.first == id; });
   const bool came_in = has_previous_ && piece.planeBound(previous_centre_) > 0.0;
   int best = -1;

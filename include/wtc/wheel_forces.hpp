@@ -14,8 +14,8 @@ namespace wtc {
 
 /// The wheel's motion, as the engine reports it at the start of the step.
 struct WheelMotion {
-  Eigen::Vector3d velocity{Eigen::Vector3d::Zero()};              ///< V_O (m/s).
-  Eigen::Vector3d angular_velocity{Eigen::Vector3d::Zero()};      ///< omega of the wheel: spin + carrier (rad/s).
+  Eigen::Vector3d velocity{Eigen::Vector3d::Zero()};          ///< V_O (m/s).
+  Eigen::Vector3d angular_velocity{Eigen::Vector3d::Zero()};  ///< omega of the wheel: spin + carrier (rad/s).
 };
 
 /// One contact's breakdown, for logging and controllers.

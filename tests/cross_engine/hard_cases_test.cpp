@@ -11,10 +11,10 @@
 #include <string>
 
 #include "engine_sim.hpp"
+#include "wheel_sim.hpp"
+#include "wtc/constants.hpp"
 #include "wtc/terrain_primitives.hpp"
 #include "wtc/traction_law.hpp"
-#include "wtc/constants.hpp"
-#include "wheel_sim.hpp"
 
 namespace wtc::testing {
 namespace {
@@ -97,8 +97,7 @@ TEST(HardCasesTest, AParkedWheelHoldsInConstraintModeAtLargeSteps) {
       RecordProperty(engineName(engine) + "_creep_mm_at_" + std::to_string(std::lround(h * 1e3)) + "ms",
                      std::to_string(creep * 1e3));
       EXPECT_LT(creep, std::max(2.0 * at_1ms, 0.5e-3))
-          << engineName(engine) << ", h = " << h << " s: " << creep * 1e3 << " mm (at 1 ms: " << at_1ms * 1e3
-          << " mm)";
+          << engineName(engine) << ", h = " << h << " s: " << creep * 1e3 << " mm (at 1 ms: " << at_1ms * 1e3 << " mm)";
     }
   }
 }

@@ -181,7 +181,9 @@ TEST(TyreModelTest, RollingResistanceNeverFeedsEnergyIn) {
   EXPECT_LT(braked.rolling_moment.dot(Vector3d(0, -0.9, 0)), 0.0);
   std::mt19937_64 random(11);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  auto any = [&](double scale) -> Vector3d { return Vector3d(uniform(random), uniform(random), uniform(random)) * scale; };
+  auto any = [&](double scale) -> Vector3d {
+    return Vector3d(uniform(random), uniform(random), uniform(random)) * scale;
+  };
   int contacts = 0;
   for (int k = 0; k < 20000; ++k) {
     const Terrain& ground = k % 2 == 0 ? flat : steps;

@@ -109,10 +109,11 @@ Plugin::Impl::Impl(btDiscreteDynamicsWorld& w, const Terrain& t, ContactMode m)
     // no contact could keep the tyre's spring (wheel_terrain_algorithm.cpp).
     const btContactSolverInfo& info = world.getSolverInfo();
     if (info.m_splitImpulse && !(info.m_splitImpulsePenetrationThreshold < 0.0)) {
-      fail("wtc::bullet::Plugin", "constraint mode needs the world's split impulse off or its penetration threshold "
-                                  "below zero (m_splitImpulsePenetrationThreshold = " +
-                                      std::to_string(info.m_splitImpulsePenetrationThreshold) +
-                                      " m): a split contact loses the tyre's spring");
+      fail("wtc::bullet::Plugin",
+           "constraint mode needs the world's split impulse off or its penetration threshold "
+           "below zero (m_splitImpulsePenetrationThreshold = " +
+               std::to_string(info.m_splitImpulsePenetrationThreshold) +
+               " m): a split contact loses the tyre's spring");
     }
     world.getSolverInfo().m_solverMode |= SOLVER_ENABLE_FRICTION_DIRECTION_CACHING;
     if (dynamic_cast<btMultiBodyDynamicsWorld*>(&world) == nullptr) {
@@ -232,7 +233,8 @@ void Plugin::Impl::readSolvedForces(Wheel& w, double h) {
   for (std::size_t i = 0; i < n && i < w.manifold_point.size() && w.manifold != nullptr; ++i) {
     if (w.manifold_point[i] < 0 || w.manifold_point[i] >= w.manifold->getNumContacts()) continue;
     const btManifoldPoint& p = w.manifold->getContactPoint(w.manifold_point[i]);
-    btVector3 impulse_on_a = p.m_normalWorldOnB * p.m_appliedImpulse + p.m_lateralFrictionDir1 * p.m_appliedImpulseLateral1;
+    btVector3 impulse_on_a =
+        p.m_normalWorldOnB * p.m_appliedImpulse + p.m_lateralFrictionDir1 * p.m_appliedImpulseLateral1;
     if (second) impulse_on_a += p.m_lateralFrictionDir2 * p.m_appliedImpulseLateral2;
     w.solved_forces[i] = toEigen(w.wheel_is_body0 ? impulse_on_a : -impulse_on_a) / h;
   }

@@ -111,8 +111,8 @@ void WheelTerrainAlgorithm::setSpring(btManifoldPoint& p, const EngineContact& c
   const btContactSolverInfo& info = impl_.world.getSolverInfo();
   const double slop = info.m_linearSlop, threshold = info.m_splitImpulsePenetrationThreshold;
   const bool split = info.m_splitImpulse && threshold < 0.0 && -c.depth + slop <= threshold;
-  p.m_contactPointFlags &= ~(BT_CONTACT_FLAG_HAS_CONTACT_CFM | BT_CONTACT_FLAG_HAS_CONTACT_ERP |
-                             BT_CONTACT_FLAG_CONTACT_STIFFNESS_DAMPING);
+  p.m_contactPointFlags &=
+      ~(BT_CONTACT_FLAG_HAS_CONTACT_CFM | BT_CONTACT_FLAG_HAS_CONTACT_ERP | BT_CONTACT_FLAG_CONTACT_STIFFNESS_DAMPING);
   if (!split) {
     p.m_combinedContactStiffness1 = c.stiffness;
     p.m_combinedContactDamping1 = c.damping;

@@ -23,7 +23,7 @@ struct Wheel {
   // dJointGroupEmpty).
   std::vector<SolvedContact> contacts;
   std::vector<Eigen::Vector3d> solved_forces;  // scratch for MountedWheel::setSolvedForces
-  bool handled = false;  // handlePair has seen this wheel against the terrain this step
+  bool handled = false;                        // handlePair has seen this wheel against the terrain this step
   WheelDiagnostics diagnostics;
 };
 
