@@ -46,7 +46,12 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
 
   // 2. Point queries, warm-started from the previous call's simplices.
   QueryOptions query;
-  query.max_distance = r;
+  // Right after a call that saw the ground at a cap, the caps are looked for
+  // a little farther (hysteresis): an engine holding the wheel on a cap's
+  // rim holds it at about r_f, and the cap contacts must not come and go
+  // with every micrometre (they switch the engine's cap collision).
+  const double cap_reach = caps_last_ ? r * (1.0 + tolerance::kCapHysteresisRelative) : r;
+  query.max_distance = cap_reach;
   contacts_.clear();
   next_caches_.clear();
   next_exits_.clear();
@@ -61,7 +66,7 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
     if (previous != caches_.end() && previous->first == id) cache = previous->second;
     const PointQuery q = queryPoint(terrain.piece(id), o, query, cache);
     next_caches_.emplace_back(id, cache);
-    if (q.status == QueryStatus::kBeyond || !(q.signed_distance < r)) continue;
+    if (q.status == QueryStatus::kBeyond || !(q.signed_distance < cap_reach)) continue;
     WheelContact c;
     c.e = -q.normal;
     c.point = o + r * c.e;
@@ -71,6 +76,10 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
     c.piece = id;
     c.material = terrain.materialId(id);
     if (q.signed_distance < 0.0) exitWhereEntered(terrain.piece(id), id, o, r, c);
+    if (q.signed_distance >= r) {  // within the caps' hysteresis only
+      if (options.tread_truncation && onCap(wheel, c.e, pose.axle / axle_norm)) caps_.push_back(c);
+      continue;
+    }
     contacts_.push_back(c);
   }
   std::swap(caches_, next_caches_);
@@ -103,6 +112,7 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
     std::swap(contacts_.front(), *deepest);
     contacts_.resize(1);
   }
+  caps_last_ = !caps_.empty();
   return contacts_;
 }
 

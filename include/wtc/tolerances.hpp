@@ -80,4 +80,11 @@ inline constexpr double kTreadStateMatchCos = 0.8660254037844387;
 // (wheel_contact.cpp), and the query's values are kept bit for bit.
 inline constexpr double kSameFaceNormalCos = 1.0 - 1e-12;
 
+/// After a call that found the ground at a wheel's cut cap, the next looks
+/// for cap contacts out to r_f (1 + this) (dimensionless): 2 % (3.8 mm on
+/// the robot's wheel), above the millimetre an engine's contact on the cap's
+/// rim lets the wheel rise and fall, so that the engine's cap collision
+/// (which these contacts switch on) does not come and go.
+inline constexpr double kCapHysteresisRelative = 0.02;
+
 }  // namespace wtc::tolerance

@@ -96,8 +96,10 @@ class WheelContactFinder {
   /// The contacts of the last call that the tread filter dropped: the ground
   /// touches a cut cap (a wheel cambered beyond asin(w / 2 r_f) against its
   /// ground, or lying on its side). They carry no tyre force; an engine
-  /// adapter can let the engine collide the wheel's rigid shape there, so
-  /// that a fallen wheel does not sink (docs/wheel-contact.md).
+  /// adapter can let the engine collide the caps (a rigid cylinder of radius
+  /// sqrt(r_f^2 - (w/2)^2) and width w) there, so that a fallen wheel does
+  /// not sink (docs/wheel-contact.md). After a call with cap contacts, the
+  /// next reports them out to r_f (1 + kCapHysteresisRelative).
   std::span<const WheelContact> capContacts() const { return caps_; }
 
  private:
@@ -112,6 +114,7 @@ class WheelContactFinder {
   // then, the outward normal of the face it was pushed out by.
   Eigen::Vector3d previous_centre_{Eigen::Vector3d::Zero()};
   bool has_previous_ = false;
+  bool caps_last_ = false;  // the last call saw the ground at a cap
   std::vector<std::pair<PieceId, Eigen::Vector3d>> exits_, next_exits_;
 };
 

@@ -3,6 +3,8 @@
 // note in include/wtc/bullet/plugin.hpp.
 #include "wtc/bullet/plugin.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
@@ -15,6 +17,11 @@
 
 namespace wtc::bullet {
 namespace {
+
+// Bullet rounds a convex shape's edges by its margin (0.04 m by default):
+// the caps' cylinder keeps 0.5 % of r_f (1 mm on the robot's wheel), so its
+// rims are the caps' edges within that.
+constexpr double kCapShapeMarginRatio = 0.005;
 
 [[noreturn]] void fail(const char* where, const std::string& what) {
   throw InvalidInputError(std::string(where) + ": " + what);
@@ -168,6 +175,17 @@ WheelId Plugin::Impl::add(std::unique_ptr<Wheel> w, const char* where) {
   }
   w->manifold_point.reserve(kReservedContacts);  // no allocation in the step loop
   w->solved_forces.reserve(kReservedContacts);
+  // The caps' cylinder (btCylinderShape's axis is y) at centre_local along
+  // axle_local; a small margin, so that its rims stay sharp.
+  const WheelGeometry& g = w->mounted.description().geometry;
+  const double half_width = 0.5 * std::min(g.tread_width, 2.0 * g.free_radius);
+  const double cap_radius = std::sqrt(std::max(g.free_radius * g.free_radius - half_width * half_width, 0.0));
+  w->cap_cylinder = std::make_unique<btCylinderShape>(btVector3(cap_radius, half_width, cap_radius));
+  w->cap_cylinder->setMargin(kCapShapeMarginRatio * g.free_radius);
+  w->cap_shape = std::make_unique<btCompoundShape>(true, 1);
+  w->cap_shape->addChildShape(
+      btTransform(shortestArcQuat(btVector3(0, 1, 0), w->axle_local.normalized()), w->centre_local),
+      w->cap_cylinder.get());
   w->shape = std::make_unique<WheelShape>(w->mounted.description().geometry.free_radius, original);
   w->collider->setCollisionShape(w->shape.get());
   w->collider->setActivationState(DISABLE_DEACTIVATION);

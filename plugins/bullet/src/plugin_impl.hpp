@@ -28,6 +28,8 @@ struct Wheel {
   btVector3 axle_local, centre_local;
   MountedWheel mounted;                                 // tyre model, state, this step's result and engine contacts
   std::unique_ptr<WheelShape> shape;                    // replaces the collider's shape while registered
+  std::unique_ptr<btCylinderShape> cap_cylinder;        // the cut sphere's caps (wheel_terrain_algorithm.cpp)
+  std::unique_ptr<btCompoundShape> cap_shape;           // cap_cylinder at the wheel's centre, along its axle
   btVector3 link_force{0, 0, 0}, link_torque{0, 0, 0};  // multibody: what this substep added
   // Constraint mode: the manifold the collision algorithm wrote this
   // substep's contacts into (null until it runs), and the manifold point of

@@ -128,13 +128,19 @@ void WheelTerrainAlgorithm::setSpring(btManifoldPoint& p, const EngineContact& c
 }
 
 // The ground touches a cut cap (a fallen wheel): WTC gives no force there,
-// so Bullet collides the wheel's own shape with the terrain, and the points
-// whose normal is a cap's (wtc::onCap, the tread filter's test) are kept; tread points are WTC's and are dropped. Rare:
-// only when the finder saw a cap contact, so the GJK/EPA cost is not paid while rolling.
+// so Bullet collides the cut sphere's cap discs with the terrain (the
+// wheel's cap cylinder: radius sqrt(r_f^2 - (w/2)^2), width w, whose rims
+// are the caps' edges), and the points whose normal is a cap's (wtc::onCap,
+// the tread filter's test) are kept; tread points are WTC's and are dropped.
+// Not the wheel's own shape: a cylinder of radius r_f reaches
+// r_f cos + w/2 sin beyond the centre, 9 mm past the tread at the tread's
+// limit of 18.4 deg, so the wheel was thrown off a side slope as the cap
+// took over (issue 11). Rare: only when the finder saw a cap contact, so
+// the GJK/EPA cost is not paid while rolling.
 void WheelTerrainAlgorithm::writeCapContacts(const Wheel& w, const btCollisionObjectWrapper* body0,
                                              const btCollisionObjectWrapper* body1,
                                              const btDispatcherInfo& dispatch_info, btManifoldResult* result) {
-  collideOriginals(cap_child_, manifold_, body0, body1, dispatch_info, result);
+  collideOriginals(cap_child_, manifold_, body0, body1, dispatch_info, result, w.collider, w.cap_shape.get());
   const Eigen::Vector3d axle = toEigen(w.collider->getWorldTransform().getBasis() * w.axle_local).normalized();
   const double friction = impl_.terrain.terrain().materials()[w.mounted.state().capContacts().front().material].mu_max;
   for (int k = manifold_->getNumContacts() - 1; k >= 0; --k) {
@@ -154,18 +160,20 @@ void WheelTerrainAlgorithm::delegate(const btCollisionObjectWrapper* body0, cons
 }
 
 // Bullet's own algorithm for the pair with every WheelShape unwrapped to the
-// shape it wraps, created on first use into `child` (writing into `shared`,
-// or its own manifold when null).
+// shape it wraps (or, for `replaced`, to `replacement`), created on first
+// use into `child` (writing into `shared`, or its own manifold when null).
 void WheelTerrainAlgorithm::collideOriginals(btCollisionAlgorithm*& child, btPersistentManifold* shared,
                                              const btCollisionObjectWrapper* body0,
                                              const btCollisionObjectWrapper* body1,
-                                             const btDispatcherInfo& dispatch_info, btManifoldResult* result) {
-  const btCollisionObjectWrapper original0(body0->m_parent, unwrap(body0->getCollisionShape()),
-                                           body0->getCollisionObject(), body0->getWorldTransform(), body0->m_partId,
-                                           body0->m_index);
-  const btCollisionObjectWrapper original1(body1->m_parent, unwrap(body1->getCollisionShape()),
-                                           body1->getCollisionObject(), body1->getWorldTransform(), body1->m_partId,
-                                           body1->m_index);
+                                             const btDispatcherInfo& dispatch_info, btManifoldResult* result,
+                                             const btCollisionObject* replaced, const btCollisionShape* replacement) {
+  const auto shape = [&](const btCollisionObjectWrapper* body) {
+    return body->getCollisionObject() == replaced ? replacement : unwrap(body->getCollisionShape());
+  };
+  const btCollisionObjectWrapper original0(body0->m_parent, shape(body0), body0->getCollisionObject(),
+                                           body0->getWorldTransform(), body0->m_partId, body0->m_index);
+  const btCollisionObjectWrapper original1(body1->m_parent, shape(body1), body1->getCollisionObject(),
+                                           body1->getWorldTransform(), body1->m_partId, body1->m_index);
   if (child == nullptr)
     child = m_dispatcher->findAlgorithm(&original0, &original1, shared, BT_CONTACT_POINT_ALGORITHMS);
   const btCollisionObjectWrapper* saved0 = result->getBody0Wrap();

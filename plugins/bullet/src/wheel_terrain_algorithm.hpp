@@ -49,7 +49,8 @@ class WheelTerrainAlgorithm : public btCollisionAlgorithm {
                 const btDispatcherInfo& dispatch_info, btManifoldResult* result);
   void collideOriginals(btCollisionAlgorithm*& child, btPersistentManifold* shared,
                         const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
-                        const btDispatcherInfo& dispatch_info, btManifoldResult* result);
+                        const btDispatcherInfo& dispatch_info, btManifoldResult* result,
+                        const btCollisionObject* replaced = nullptr, const btCollisionShape* replacement = nullptr);
 
   Plugin::Impl& impl_;
   btPersistentManifold* manifold_ = nullptr;

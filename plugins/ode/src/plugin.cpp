@@ -3,6 +3,7 @@
 // Design note in include/wtc/ode/plugin.hpp.
 #include "wtc/ode/plugin.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -91,6 +92,18 @@ WheelId Plugin::Impl::add(const RigidWheel& spec) {
   w->centre_local = spec.centre_local;
   w->contacts.reserve(kReservedContacts);
   w->solved_forces.reserve(kReservedContacts);
+  // The caps' cylinder (ODE's along its z axis) at centre_local along
+  // axle_local: radius sqrt(r_f^2 - (w/2)^2), width w (collideCaps).
+  const WheelGeometry& g = spec.description.geometry;
+  const double half_width = 0.5 * std::min(g.tread_width, 2.0 * g.free_radius);
+  w->cap_geom = dCreateCylinder(
+      nullptr, std::sqrt(std::max(g.free_radius * g.free_radius - half_width * half_width, 0.0)), 2.0 * half_width);
+  dGeomSetBody(w->cap_geom, spec.body);
+  dGeomSetOffsetPosition(w->cap_geom, spec.centre_local.x(), spec.centre_local.y(), spec.centre_local.z());
+  dMatrix3 rotation;
+  const Eigen::Vector3d a = spec.axle_local.normalized();
+  dRFromZAxis(rotation, a.x(), a.y(), a.z());
+  dGeomSetOffsetRotation(w->cap_geom, rotation);
   dBodySetAutoDisableFlag(spec.body, 0);  // the tread state needs every step
   const auto id = static_cast<WheelId>(wheels.size());
   wheel_of.emplace(spec.geom, id);
@@ -175,23 +188,26 @@ struct CapPass {
 }  // namespace
 
 // The ground touches a cut cap (a fallen wheel): WTC gives no force there,
-// so ODE collides the wheel's own geom with `ground` (a piece, or the
-// terrain space), and the contacts whose normal is a cap's
-// (wtc::onCap, the tread filter's test) become rigid contact
-// joints; tread contacts are WTC's and are dropped. Rare: only when the
+// so ODE collides the cut sphere's cap discs (the wheel's cap cylinder,
+// whose rims are the caps' edges) with `ground` (a piece, or the terrain
+// space), and the contacts whose normal is a cap's (wtc::onCap, the tread
+// filter's test) become rigid contact joints; tread contacts are WTC's and
+// are dropped. Not the wheel's own geom: a cylinder of radius r_f reaches
+// 9 mm past the tread at the tread's limit (18.4 deg), and threw the wheel
+// off a side slope as the cap took over (issue 11). Rare: only when the
 // finder saw a cap contact.
 void Plugin::Impl::collideCaps(Wheel& w, dGeomID ground, dJointGroupID group) {
   if (dGeomIsSpace(ground)) {
     CapPass pass{this, &w, group};
-    dSpaceCollide2(w.geom, ground, &pass, [](void* data, dGeomID a, dGeomID b) {
+    dSpaceCollide2(w.cap_geom, ground, &pass, [](void* data, dGeomID a, dGeomID b) {
       CapPass& p = *static_cast<CapPass*>(data);
-      p.impl->collideCaps(*p.wheel, a == p.wheel->geom ? b : a, p.group);
+      p.impl->collideCaps(*p.wheel, a == p.wheel->cap_geom ? b : a, p.group);
     });
     return;
   }
   constexpr int kMaxCapContacts = 8;  // per piece: a cylinder's face on a triangle mesh
   dContact contacts[kMaxCapContacts] = {};
-  const int n = dCollide(w.geom, ground, kMaxCapContacts, &contacts[0].geom, sizeof(dContact));
+  const int n = dCollide(w.cap_geom, ground, kMaxCapContacts, &contacts[0].geom, sizeof(dContact));
   dVector3 axle;
   dBodyVectorToWorld(w.body, w.axle_local.x(), w.axle_local.y(), w.axle_local.z(), axle);
   const Eigen::Vector3d a = toEigen(axle).normalized();

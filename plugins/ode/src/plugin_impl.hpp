@@ -12,9 +12,15 @@ namespace wtc::ode {
 struct Wheel {
   Wheel(const WheelDescription& description, EffectSet effects, ContactMode mode)
       : mounted(description, effects, mode) {}
+  ~Wheel() {
+    if (cap_geom != nullptr) dGeomDestroy(cap_geom);
+  }
+  Wheel(const Wheel&) = delete;
+  Wheel& operator=(const Wheel&) = delete;
 
   dBodyID body = nullptr;
   dGeomID geom = nullptr;
+  dGeomID cap_geom = nullptr;  // the cut sphere's caps, on the body, in no space (collideCaps)
   Eigen::Vector3d axle_local, centre_local;
   MountedWheel mounted;  // tyre model, state, this step's result and engine contacts
   // Constraint mode: this step's contacts with their joints' feedback. ODE
