@@ -64,7 +64,7 @@ void slipLawTraction(const Inputs& in, const Material& m, double normal_force, V
     u.setZero();
     return;
   }
-  const Relaxation r = relaxation(in.step, std::max(in.transport_speed, in.slip_speed_floor) * in.step / sigma);
+  const Relaxation r = relaxation(in.step, in.transport_speed * in.step / sigma);
   u = r.decay * u + r.weight * f.slip_velocity;
   // The cap sigma s_sat; s1 ln(1/kTractionSaturation) <= s_sat spares the
   // logarithm while the tread is below it (nearly always).

@@ -14,7 +14,7 @@ struct TyreParameters {
   double radial_stiffness = 1e5;       ///< c (N/m), > 0.
   double radial_damping = 900.0;       ///< b (N s/m), >= 0.
   double rolling_radius_ratio = 0.97;  ///< r_0 / r_f (dimensionless, in (0, 1]); spec: 0.97.
-  double slip_speed_floor = 1e-3;      ///< eps in s = |V_s| / max(V_t, eps) (m/s), > 0.
+  double slip_speed_floor = 1e-3;      ///< eps in the reported s = |V_s| / max(V_t, eps) (m/s), > 0.
 
   // Low speed (docs/tyre-model.md, "Standstill"). The slip law acts through
   // a tread deflection u with relaxation length sigma = mu'(0) R_z / k_t:

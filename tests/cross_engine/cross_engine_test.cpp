@@ -5,8 +5,7 @@
 //  - force mode: both engines step v += h F / m, x += h v with the same
 //    forces; the only differences are how each holds the wheel's rotation
 //    (Bullet: angular factors, exact; ODE: an angular motor, a constraint
-//    solved to roundoff by its LCP, whose residue adds up over 10^4 steps:
-//    4.7e-6 relative on the parked creep, 2 nm) and roundoff. Tolerance
+//    solved to roundoff by its LCP) and roundoff. Tolerance
 //    kForceModeRelative.
 //  - constraint mode: the engines' solvers differ (Bullet: sequential
 //    impulses, 10 iterations, its ERP/CFM from stiffness and damping; ODE:
@@ -164,6 +163,11 @@ struct NamedScene {
   Scene scene;
   double expected;
   double tolerance;  // absolute, in `unit`
+  // Values this close (absolute, in `unit`) agree whatever their ratio:
+  // the sticking tread holds a parked wheel to nanometres, where the
+  // engines' own holds of its rotation and their solvers differ by
+  // roundoff (measured: 2 nm in force mode, 55 nm in constraint mode).
+  double agreement_floor = 0.0;
 };
 
 constexpr double kNoClosedForm = std::numeric_limits<double>::quiet_NaN();
@@ -182,7 +186,7 @@ std::vector<NamedScene> scenes() {
       {"settle deflection", "m", settleDeflection, restDeflection(), 0.02 * restDeflection()},
       {"settle deflection of the light wheel", "m", settleDeflectionLight, light, 0.02 * light},
       {"rolling deceleration", "m/s^2", rollingDeceleration, rolling, 0.05 * rolling},
-      {"parked creep in 10 s", "m", parkedCreep, 0.0, 0.01},
+      {"parked creep in 10 s", "m", parkedCreep, 0.0, 1e-6, 1e-6},
       {"slide acceleration on 45 deg", "m/s^2", slideAcceleration, slide, 0.02 * slide},
       {"saturated traction acceleration", "m/s^2", saturatedAcceleration, 0.8 * kGravityMps2,
        0.02 * 0.8 * kGravityMps2},
@@ -212,7 +216,8 @@ TEST_P(CrossEngineTest, BulletAndOdeAgree) {
     for (const Engine other : {Engine::kOde, Engine::kOdeQuick}) {
       const double ode = s.scene(other, mode);
       const double scale = std::max(std::abs(bullet), std::abs(ode));
-      const double difference = scale > 0 ? std::abs(bullet - ode) / scale : 0.0;
+      const bool within_floor = std::abs(bullet - ode) <= s.agreement_floor;
+      const double difference = !within_floor && scale > 0 ? std::abs(bullet - ode) / scale : 0.0;
       std::printf("| %s | %s | %s | %.6g | %.6g | %.2g |\n", s.name, force ? "force" : "constraint",
                   engineName(other).c_str(), bullet, ode, difference);
       EXPECT_LE(difference, tolerance) << s.name << " (" << s.unit << ") in " << (force ? "force" : "constraint")

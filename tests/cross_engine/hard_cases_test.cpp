@@ -71,7 +71,9 @@ TEST(HardCasesTest, DISABLED_FreeWheelRollingSlowlyComesToRest) {
 // slid before the tread held it. A locked 21 kg wheel on 15 deg (mu_max
 // 0.8), both engines, from where it is put down, 10 s: the creep in mm.
 // Before the fix: 1.07 at 1 ms, 2.39 at 10 ms, 108 at 50 ms, 431 at 100 ms.
-// After: 1.07, 1.07, 6.35, 25.4.
+// After: 1.07, 1.07, 6.35, 25.4; with the sticking state (defect 6) what is
+// left at 1-10 ms is the slide while the empty tread loads up as the wheel
+// is put down: 0.68 at 1 ms, 0.66 at 10 ms.
 double parkedCreep(Engine engine, ContactMode mode, const std::function<double(long)>& step_of) {
   constexpr double kSlope = 15.0 * std::numbers::pi / 180.0, kMass = 21.0, kParkedS = 10.0;
   const Terrain incline = tiltedSlab(kSlope);
@@ -107,7 +109,7 @@ TEST(HardCasesTest, AParkedWheelHoldsInConstraintModeAtLargeSteps) {
 // Open: at 50 and 100 ms the wheel still slides g sin(15 deg) h^2 (6.3 and
 // 25 mm) before it holds: the engine's friction coefficient is the tread
 // state's, zero when the wheel is put down, so the first step slides free.
-// Holding from the first step needs the sticking state of defect 6.
+// The sticking state (defect 6) does not help: the state is empty then.
 TEST(HardCasesTest, DISABLED_AParkedWheelHoldsInConstraintModeAtVeryLargeSteps) {
   for (const Engine engine : {Engine::kBullet, Engine::kOde}) {
     const double at_1ms = parkedCreep(engine, 1e-3);
@@ -185,8 +187,8 @@ TEST(HardCasesTest, ConstraintModeReportsTheContactForcesTheSolverApplied) {
 
 // Issue 11: the step switched between 0.5 and 3 ms every 7 steps. A locked
 // 21 kg wheel parked on 15 deg creeps no more than at a fixed 1 ms (within
-// 5 %; the tread loading up when it is put down plus the law's creep:
-// 1.07 mm at 1 ms, 1.05 mm switching), in both engines and modes.
+// 5 %; the slide while the tread loads up as it is put down:
+// 0.68 mm at 1 ms, 0.65-0.67 mm switching), in both engines and modes.
 TEST(HardCasesTest, AParkedWheelHoldsWhenTheStepChangesEveryFewSteps) {
   for (const Engine engine : {Engine::kBullet, Engine::kOde}) {
     for (const ContactMode mode : {ContactMode::kForce, ContactMode::kConstraint}) {
@@ -301,7 +303,7 @@ TEST(HardCasesTest, ALockedWheelBrakesOnTheFallingBranch) {
 // moved that far back. Measured (both engines, 1 ms): 14 mm back on the
 // default asphalt (at up to 0.35 m/s), 82 mm with s2 = 4.44. The elastic energy of a real tread
 // is (mu R_z)^2 / (2 k_t): it needs the tread's deflection kept apart from
-// its slip memory, the same change as the sticking state (defect 6).
+// its slip memory.
 TEST(HardCasesTest, DISABLED_ABrakedWheelStaysWhereItStopped) {
   for (const Terrain& ground : {flatGround(), fallingGround()}) {
     for (const Engine engine : {Engine::kBullet, Engine::kOde}) {
@@ -432,6 +434,40 @@ TEST(HardCasesTest, ForceAndConstraintModeClimbASmallStepInAboutTheSameTime) {
     ASSERT_GT(force, 0.0) << engineName(engine) << ": force mode did not climb";
     ASSERT_GT(constraint, 0.0) << engineName(engine) << ": constraint mode did not climb";
     EXPECT_NEAR(constraint, force, 0.10 * force) << engineName(engine);
+  }
+}
+
+// Issue 11, defect 6: a robot parked for an hour on a slope must stay
+// within 1 mm. The spec's law has no force at zero slip, and its
+// regularization max(V_t, eps) made the tread relax at eps / sigma even at
+// rest: 0.41 mm in 10 s on 15 deg, 0.15 m per hour (0.46 m on 30 deg).
+// The tread state now relaxes only as the ground moves under it (rate
+// V_t / sigma): at rest it is a spring that holds while the load is below
+// the peak of mu(s) R_z (a sticking state). A locked 21 kg wheel on 15 and
+// 30 deg, both engines and modes, at 0.4 and 2 ms: after settling for 1 s,
+// an hour of parking moves it less than 1 mm.
+TEST(HardCasesTest, AParkedWheelHoldsForAnHourOn15And30Degrees) {
+  constexpr double kMass = 21.0, kHourS = 3600.0;
+  for (const double degrees : {15.0, 30.0}) {
+    const double slope = degrees * std::numbers::pi / 180.0;
+    const Terrain incline = tiltedSlab(slope);
+    const double deflection = kMass * kGravityMps2 * std::cos(slope) / 1e5;
+    for (const Engine engine : {Engine::kBullet, Engine::kOde}) {
+      for (const ContactMode mode : {ContactMode::kForce, ContactMode::kConstraint}) {
+        for (const double h : {4e-4, 2e-3}) {
+          auto sim =
+              makeEngineSim(engine, mode, incline, kMass, (kRadius - deflection) * slabNormal(slope), Hold::kLocked);
+          for (long k = 0; k < std::lround(1.0 / h); ++k) sim->step(h);
+          const Eigen::Vector3d start = sim->position();
+          for (long k = 0; k < std::lround(kHourS / h); ++k) sim->step(h);
+          const double creep = std::abs((sim->position() - start).dot(downhill(slope)));
+          const std::string label = std::to_string(degrees) + " deg, " + engineName(engine) + ", " +
+                                    std::string(contactModeName(mode)) + ", h = " + std::to_string(h);
+          RecordProperty(label, std::to_string(creep * 1e3) + " mm");
+          EXPECT_LT(creep, 1e-3) << label << ": " << creep * 1e3 << " mm in an hour";
+        }
+      }
+    }
   }
 }
 

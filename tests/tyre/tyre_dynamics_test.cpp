@@ -66,10 +66,15 @@ struct ParkedCase {
 };
 
 class ParkedOnSlopeTest : public ::testing::TestWithParam<ParkedCase> {};
+constexpr double kStillMps = 1e-5;  // a parked wheel moves slower than this
 
 // Case: a locked wheel carrying a sixth of the robot on 15 deg with
-// mu_max = 0.8 creeps < 1 cm in 10 s and does not oscillate.
-TEST_P(ParkedOnSlopeTest, CreepsLessThanOneCentimetreInTenSecondsWithoutOscillating) {
+// mu_max = 0.8 holds (the tread's sticking state: it relaxes only as the
+// ground moves under it): < 1 um in 10 s after it has settled, where the
+// spec's regularized law creeps at s_eq eps (0.41 mm), and no oscillation
+// above 10 um/s (a wheel whose effective mass is its own 3.7 kg while it
+// carries 21 kg rings at about 4 um/s).
+TEST_P(ParkedOnSlopeTest, HoldsWithinAMicrometreForTenSecondsWithoutOscillating) {
   const double slope = 15 * kDegree, h = GetParam().step_seconds;
   const Terrain incline = tiltedSlab(slope);
   SimWheel wheel;
@@ -85,15 +90,16 @@ TEST_P(ParkedOnSlopeTest, CreepsLessThanOneCentimetreInTenSecondsWithoutOscillat
   for (int k = 0; k < steps; ++k) {
     step(model, incline, h, wheel);
     const double v = wheel.velocity.dot(downhill(slope));
-    if (v * previous < 0.0) ++reversals;
-    if (v != 0.0) previous = v;
+    if (std::abs(v) > kStillMps) {
+      if (v * previous < 0.0) ++reversals;
+      previous = v;
+    }
     fastest = std::max(fastest, std::abs(v));
   }
   const double creep = (wheel.center - start).dot(downhill(slope));
-  EXPECT_LT(std::abs(creep), 0.01);
-  EXPECT_LT(std::abs(creep), 1e-3) << "expected s_eq eps x 10 s = 0.4 mm";
+  EXPECT_LT(std::abs(creep), 1e-6);
   EXPECT_EQ(reversals, 0);
-  EXPECT_LT(fastest, 1e-3);
+  EXPECT_LT(fastest, kStillMps);
   EXPECT_EQ(wheel.state.unstableSteps(), 0u);
 }
 
