@@ -59,7 +59,6 @@ struct Scene {
         wtc::bullet::RigidWheel spec;
         spec.body = body.get();
         spec.description.geometry = {kRadius, kWidth};
-        spec.description.inertia = {kMass, inertia};
         plugin->addWheel(spec);
       }
     }

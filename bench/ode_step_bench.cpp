@@ -76,7 +76,6 @@ class Scene {
         spec.body = body;
         spec.geom = geom;
         spec.description.geometry = {kRadius, kWidth};
-        spec.description.inertia = {kMass, 0.5 * kMass * kRadius * kRadius};
         plugin_->addWheel(spec);
       }
     }

@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
     wtc::bullet::Plugin wtc_plugin(world, ground, wtc::ContactMode::kForce);
     wtc::bullet::RigidWheel spec;
     spec.body = &wheel;                          // axle: the body's y axis (the default)
-    spec.description.inertia = {mass, inertia};  // r_f = 0.19 m, c = 1e5 N/m: the defaults
+    // r_f = 0.19 m, c = 1e5 N/m: the defaults; mass and inertia: read from the body
     const wtc::bullet::WheelId id = wtc_plugin.addWheel(spec);
 
     for (int k = 0; k < 5000; ++k) {                           // 5 s at 1 ms

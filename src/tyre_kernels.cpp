@@ -51,44 +51,79 @@ Vector3d inheritTread(std::span<const TreadState> previous, const Vector3d& e) {
   return best->u - best->u.dot(e) * e;
 }
 
-void clampNorm(Vector3d& v, double max_norm) {
-  const double norm = v.norm();
-  if (norm > max_norm) v *= max_norm / norm;
+// The tread's axes in the tangent plane of e: the axle projected onto it
+// (kLateral) and e x that (kRolling). A tread contact's e is within
+// asin(w / 2 r_f) of normal to the axle (the cut sphere), so the projection
+// is at least cos(18.4 deg) long; the fallback only keeps the axes finite.
+struct TreadAxes {
+  std::array<Vector3d, 2> t;
+};
+TreadAxes treadAxes(const Vector3d& axle, const Vector3d& e) {
+  Vector3d lateral = axle - axle.dot(e) * e;
+  const double length = lateral.norm();
+  lateral = length > 0.5 ? Vector3d(lateral / length) : e.unitOrthogonal();
+  return {{e.cross(lateral), lateral}};
 }
 
-// The slip law through the relaxing tread (tyre_model.hpp):
-// du/dt = V_s - (max(V_t, eps)/sigma) u, F = -R_z mu(|x|/sigma) x/|x|.
-void slipLawTraction(const Inputs& in, const Material& m, double normal_force, Vector3d& u, ContactForce& f) {
-  const double sigma = tractionInitialSlope(m) * normal_force / in.tread_stiffness;  // (m)
-  if (!(sigma > 0.0)) {  // unloaded, or a frictionless material
+// The slip law through the relaxing tread (tyre_model.hpp), per tread axis i
+// with sigma_i = mu'(0) R_z / k_i:
+//   du_i/dt = V_s,i - (V_t / sigma_i) u_i,  q_i = (u_i + tau_i V_s,i) / sigma_i,
+//   F = -R_z mu(|q|) q / |q|.
+// In steady state q_i = V_s,i / V_t on both axes: the spec's isotropic law.
+void slipLawTraction(const Inputs& in, const Material& m, double normal_force, const TreadAxes& axes, Vector3d& u,
+                     ContactForce& f) {
+  const double slope_load = tractionInitialSlope(m) * normal_force;  // mu'(0) R_z (N)
+  if (!(slope_load > 0.0)) {  // unloaded, or a frictionless material
     u.setZero();
     return;
   }
-  const Relaxation r = relaxation(in.step, in.transport_speed * in.step / sigma);
-  u = r.decay * u + r.weight * f.slip_velocity;
-  // The cap sigma s_sat; s1 ln(1/kTractionSaturation) <= s_sat spares the
-  // logarithm while the tread is below it (nearly always).
-  if (u.squaredNorm() > square(sigma * m.s1 * kSaturationLog)) clampNorm(u, sigma * tractionSaturationSlip(m));
-  const Vector3d x = u + in.tread_damping_time * f.slip_velocity;
-  const double slip = x.norm() / sigma;
-  const double secant = tractionSecant(m, slip);  // mu(s)/s, finite at 0
-  f.tangential_force = (-normal_force * secant / sigma) * x;
-  f.mu = secant * slip;
+  std::array<double, 2> sigma, slip_velocity, deflection, slip;
+  double squared = 0.0;  // |u_i / sigma_i|^2
+  for (int i = 0; i < 2; ++i) {
+    sigma[i] = slope_load / in.tread_stiffness[i];  // (m)
+    slip_velocity[i] = axes.t[i].dot(f.slip_velocity);
+    const Relaxation r = relaxation(in.step, in.transport_speed * in.step / sigma[i]);
+    deflection[i] = r.decay * axes.t[i].dot(u) + r.weight * slip_velocity[i];
+    squared += square(deflection[i] / sigma[i]);
+  }
+  // The cap s_sat on |u_i / sigma_i|; s1 ln(1/kTractionSaturation) <= s_sat
+  // spares the logarithm while the tread is below it (nearly always).
+  if (squared > square(m.s1 * kSaturationLog)) {
+    const double saturation = tractionSaturationSlip(m);
+    if (squared > square(saturation)) {
+      const double scale = saturation / std::sqrt(squared);
+      for (double& d : deflection) d *= scale;
+    }
+  }
+  for (int i = 0; i < 2; ++i) slip[i] = (deflection[i] + in.tread_damping_time[i] * slip_velocity[i]) / sigma[i];
+  const double ratio = std::hypot(slip[0], slip[1]);
+  const double secant = tractionSecant(m, ratio);  // mu(s)/s, finite at 0
+  f.tangential_force = (-normal_force * secant) * (slip[0] * axes.t[0] + slip[1] * axes.t[1]);
+  f.mu = secant * ratio;
+  u = deflection[0] * axes.t[0] + deflection[1] * axes.t[1];
 }
 
 // Coulomb's law through the same tread spring: elastic up to mu_max R_z,
 // then sliding at it.
-void coulombTraction(const Inputs& in, const Material& m, double normal_force, Vector3d& u, ContactForce& f) {
+void coulombTraction(const Inputs& in, const Material& m, double normal_force, const TreadAxes& axes, Vector3d& u,
+                     ContactForce& f) {
   const double limit = m.mu_max * normal_force;  // (N)
   if (!(limit > 0.0)) {
     u.setZero();
     return;
   }
-  u += in.step * f.slip_velocity;
-  clampNorm(u, limit / in.tread_stiffness);
-  f.tangential_force = -in.tread_stiffness * (u + in.tread_damping_time * f.slip_velocity);
-  clampNorm(f.tangential_force, limit);
-  f.mu = f.tangential_force.norm() / normal_force;
+  Eigen::Vector2d spring, damper;  // k_i u_i and k_i tau_i V_s,i (N)
+  for (int i = 0; i < 2; ++i) {
+    const double slip_velocity = axes.t[i].dot(f.slip_velocity);
+    spring[i] = in.tread_stiffness[i] * (axes.t[i].dot(u) + in.step * slip_velocity);
+    damper[i] = in.tread_stiffness[i] * in.tread_damping_time[i] * slip_velocity;
+  }
+  if (spring.norm() > limit) spring *= limit / spring.norm();
+  Eigen::Vector2d force = -(spring + damper);
+  if (force.norm() > limit) force *= limit / force.norm();
+  f.tangential_force = force[0] * axes.t[0] + force[1] * axes.t[1];
+  f.mu = force.norm() / normal_force;
+  u = (spring[0] / in.tread_stiffness[0]) * axes.t[0] + (spring[1] / in.tread_stiffness[1]) * axes.t[1];
 }
 
 template <bool kDamping, Traction kTraction, bool kRolling>
@@ -114,10 +149,11 @@ void contactForces(const Inputs& in, std::span<const WheelContact> contacts, std
     if constexpr (kTraction != Traction::kNone) {
       const Material& m = in.materials[c.material];
       Vector3d u = inheritTread(tread_in, c.e);
+      const TreadAxes axes = treadAxes(in.axle, c.e);
       if constexpr (kTraction == Traction::kSlipLaw) {
-        slipLawTraction(in, m, f.normal_force, u, f);
+        slipLawTraction(in, m, f.normal_force, axes, u, f);
       } else {
-        coulombTraction(in, m, f.normal_force, u, f);
+        coulombTraction(in, m, f.normal_force, axes, u, f);
       }
       tread_out.push_back({c.e, u});
     }

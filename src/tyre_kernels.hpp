@@ -1,6 +1,7 @@
 #pragma once
 // The per-contact force kernels of the tyre model, one compiled per
 // combination of force effects (internal to wtc; see tyre_model.hpp).
+#include <array>
 #include <span>
 
 #include <Eigen/Core>
@@ -22,13 +23,19 @@ struct TyreModel::KernelInputs {
   double step = 0.0;                               ///< h (s).
   double transport_speed = 0.0;                    ///< V_t = |V_O| (m/s).
   double slip_speed_floor = 0.0;                   ///< eps (m/s).
-  double tread_stiffness = 0.0;                    ///< k_t, capped to the step (N/m).
-  double tread_damping_time = 0.0;                 ///< tau (s), faded with V_t.
+  /// The tread's spring along its two axes, the rolling direction and the
+  /// axle's (index kRolling, kLateral): each capped for the mass its
+  /// contact moves that way (tyre_model.hpp).
+  std::array<double, 2> tread_stiffness{};    ///< k_t (N/m).
+  std::array<double, 2> tread_damping_time{};  ///< tau (s), faded with V_t.
   double spin_ramp_gain = 0.0;                     ///< h / (kappa I) (s / (kg m^2)): ramp width per N m.
   double spin_floor = 0.0;                         ///< Smallest ramp width (rad/s).
 };
 
 namespace detail {
+
+/// The tread axes: along the ground under the rolling wheel, and along the axle.
+inline constexpr int kRolling = 0, kLateral = 1;
 
 enum class Traction { kNone, kSlipLaw, kCoulomb };
 

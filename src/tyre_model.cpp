@@ -3,6 +3,7 @@
 #include "wtc/tyre_model.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -98,19 +99,34 @@ const WheelForces& TyreModel::forces(std::span<const Material> materials, const 
   in.step = h;
   in.transport_speed = motion.velocity.norm();
   in.slip_speed_floor = tyre.slip_speed_floor;
-  // Force mode: k_t <= (kappa/h)^2 m keeps h sqrt(k_t/m) <= kappa, the
-  // tread force being applied explicitly. Constraint mode: the engine's
-  // friction holds the wheel within the step and the tread state only sets
-  // its coefficient (integrated exactly), so the tread keeps its own k_t:
-  // capped, its relaxation length grew as h^2 and a parked wheel slid 108 mm
-  // at 50 ms before it held (issue 11, defect 2). tau = 2 zeta_t / w_t.
-  const double kappa = tyre.stability_fraction;
-  in.tread_stiffness = mode_ == ContactMode::kConstraint
-                           ? tyre.tangential_stiffness
-                           : std::min(tyre.tangential_stiffness, kappa * kappa * inertia.effective_mass / (h * h));
+  // The mass the tread moves along each axis: along the axle the wheel's,
+  // m; along the ground an unbraked wheel's contact moves the wheel and
+  // turns it, 1 / (1/m + r_f^2 / I) (m/3 for a disc; 1.7 kg for the robot's
+  // wheel even under 21 kg); one whose spin a drive or brake holds moves m
+  // or more. Capped for m, the free wheel chattered (issue 11, defect 1).
+  const double r_f = wheel.geometry.free_radius;
+  const double m = inertia.effective_mass;
+  const double free_spin = 1.0 / (1.0 / m + r_f * r_f / inertia.axial_inertia);
+  const std::array<double, 2> light = {inertia.spin_held ? m : free_spin, m};
+  // Force mode: k_i <= (kappa/h)^2 m_i keeps h sqrt(k_i/m_i) <= kappa, the
+  // tread force being applied explicitly; the damping b_i = k_i tau_i is
+  // critical for m, 2 zeta_t sqrt(k_i m), but at most 2 zeta_t kappa m_i / h:
+  // h^2 k_i + 2 h b_i <= (kappa^2 + 4 zeta_t kappa) m_i < 4 m_i, the explicit
+  // step's stability for the lighter mass, while a braked wheel keeps its
+  // damping. Constraint mode: the engine's friction holds the wheel within
+  // the step and the tread state only sets its coefficient (integrated
+  // exactly), so the tread keeps its own k_t: capped, its relaxation length
+  // grew as h^2 and a parked wheel slid 108 mm at 50 ms (issue 11, defect 2).
+  const double kappa = tyre.stability_fraction, zeta = tyre.standstill_damping_ratio;
   const double fade = std::max(0.0, 1.0 - in.transport_speed / tyre.standstill_speed);
-  in.tread_damping_time =
-      2.0 * tyre.standstill_damping_ratio * std::sqrt(inertia.effective_mass / in.tread_stiffness) * fade;
+  for (const int i : {detail::kRolling, detail::kLateral}) {
+    const bool force_mode = mode_ == ContactMode::kForce;
+    const double k = force_mode ? std::min(tyre.tangential_stiffness, kappa * kappa * light[i] / (h * h))
+                                : tyre.tangential_stiffness;
+    const double root_km = force_mode ? std::min(std::sqrt(k * m), kappa * light[i] / h) : std::sqrt(k * m);
+    in.tread_stiffness[i] = k;
+    in.tread_damping_time[i] = 2.0 * zeta * root_km / k * fade;
+  }
   in.spin_ramp_gain = h / (kappa * inertia.axial_inertia);
   in.spin_floor = tyre.spin_floor;
 

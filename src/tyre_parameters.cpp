@@ -1,5 +1,6 @@
 #include "wtc/tyre_parameters.hpp"
 
+#include <cmath>
 #include <string>
 
 #include "builder_support.hpp"
@@ -33,6 +34,20 @@ void validate(const TyreParameters& t, const char* where) {
 void validate(const WheelInertia& inertia, const char* where) {
   detail::requirePositive(inertia.effective_mass, where, "wheel effective_mass", "kg");
   detail::requirePositive(inertia.axial_inertia, where, "wheel axial_inertia", "kg m^2");
+}
+
+WheelInertia bodyInertia(double mass, const Eigen::Matrix3d& inertia_local, const Eigen::Vector3d& axle_local,
+                         bool spin_held, const char* where) {
+  const Eigen::Vector3d a = axle_local.normalized();
+  const WheelInertia inertia{
+      .effective_mass = mass, .axial_inertia = a.dot(inertia_local * a), .spin_held = spin_held};
+  if (!std::isfinite(inertia.effective_mass) || !std::isfinite(inertia.axial_inertia)) {
+    throw InvalidInputError(std::string(where) + ": the wheel body's mass " + formatNumber(mass) +
+                            " kg or moment about the axle " + formatNumber(inertia.axial_inertia) +
+                            " kg m^2 is not finite (a static body?)");
+  }
+  validate(inertia, where);
+  return inertia;
 }
 
 void validate(const WheelDescription& wheel, const char* where) {

@@ -34,7 +34,25 @@ struct TyreParameters {
 struct WheelInertia {
   double effective_mass = 3.7;    ///< m (kg), > 0.
   double axial_inertia = 0.0668;  ///< I about the axle (kg m^2), > 0; 0.5 m r_f^2 for a disc.
+  /// Whether a drive or a brake holds the wheel's spin to its carrier (an
+  /// engine's velocity motor). Along the ground a held wheel's contact moves
+  /// at least m; a free wheel's moves 1 / (1/m + r_f^2 / I), m/3 for a disc,
+  /// and the tread is capped for that (docs/tyre-model.md, "Stability").
+  bool spin_held = false;
 };
+
+/// Where an engine adapter takes a wheel's WheelInertia from.
+enum class InertiaSource {
+  kBody,         ///< The body's mass and moment about the axle (the engine knows them); spin_held as given.
+  kDescription,  ///< WheelDescription::inertia as given (for contacts that move more than the wheel body).
+};
+
+/// The inertia of a wheel that is its own body: its mass (kg) and the moment
+/// a^T I a about the axle (I in the body frame (kg m^2), a = axle_local
+/// normalized), with `spin_held` as given. Throws InvalidInputError naming
+/// `where` unless both are finite and > 0 (a static body has no mass).
+WheelInertia bodyInertia(double mass, const Eigen::Matrix3d& inertia_local, const Eigen::Vector3d& axle_local,
+                         bool spin_held, const char* where);
 
 struct WheelDescription {
   WheelGeometry geometry;

@@ -43,9 +43,10 @@ WheelDescription wheelDescription(const vehicle::Body& body) {
   WheelDescription w;
   w.geometry = body.wheel->geometry;
   w.tyre = body.wheel->tyre;
-  // The moment about the axle: a^T I a with I diagonal in the body frame.
-  const Eigen::Vector3d& a = body.wheel->axle;
-  w.inertia = {.effective_mass = body.mass, .axial_inertia = a.cwiseAbs2().dot(body.inertia)};
+  // A drive on the wheel's joint is an engine velocity motor: it holds the
+  // spin to the carrier, and the contact moves the carrier too.
+  const bool held = body.joint.actuator.has_value();
+  w.inertia = bodyInertia(body.mass, body.inertia.asDiagonal(), body.wheel->axle, held, "wtc::sim: wheel body");
   return w;
 }
 

@@ -63,6 +63,7 @@ double valueAt(const Series& s, std::size_t c, double t) {
   if (t <= rows.front()[0]) return rows.front()[c];
   if (t >= rows.back()[0]) return rows.back()[c];
   const auto hi = std::lower_bound(rows.begin(), rows.end(), t, [](const auto& row, double v) { return row[0] < v; });
+  if ((*hi)[0] == t) return (*hi)[c];  // a sample's own value, exactly (lo + 1 (hi - lo) need not be hi)
   const auto lo = hi - 1;
   const double w = ((*hi)[0] - (*lo)[0]) > 0.0 ? (t - (*lo)[0]) / ((*hi)[0] - (*lo)[0]) : 0.0;
   return (*lo)[c] + w * ((*hi)[c] - (*lo)[c]);

@@ -28,8 +28,6 @@ bullet::WheelId addWheel(BulletWorld& w, BulletWheel& wheel, EffectSet effects, 
   bullet::RigidWheel spec;
   spec.body = wheel.body.get();
   spec.description.tyre = tyre;
-  spec.description.inertia.effective_mass = 1.0 / wheel.body->getInvMass();
-  spec.description.inertia.axial_inertia = 1.0 / wheel.body->getInvInertiaDiagLocal().y();
   spec.effects = effects;
   return w.plugin->addWheel(spec);
 }

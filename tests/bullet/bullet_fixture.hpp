@@ -39,8 +39,8 @@ struct BulletWorld {
   std::unique_ptr<bullet::Plugin> plugin;
 };
 
-/// Registers `wheel` with the defaults of the robot's wheel, `mass` as its
-/// effective mass and the disc's axial inertia.
+/// Registers `wheel` with the defaults of the robot's wheel; the plugin reads
+/// its mass and axial inertia from the body (a free wheel's spin).
 bullet::WheelId addWheel(BulletWorld& w, BulletWheel& wheel, EffectSet effects = EffectSet::full(),
                          const TyreParameters& tyre = {});
 

@@ -202,6 +202,34 @@ TEST(BulletPluginTest, BadRegistrationIsAnErrorThatNamesIt) {
               ::testing::ThrowsMessage<InvalidInputError>(::testing::HasSubstr("already a registered wheel")));
 }
 
+// The tyre's stability bounds use the mass and the moment about the axle
+// the wheel's contacts move (issue 11, defect 1): the plugin reads them
+// from the body unless told to take the description's. A 21 kg body with
+// the description's default 3.7 kg: the stability report's mass says
+// which was used. A static body has none to give and is refused.
+TEST(BulletPluginTest, TheTyreTakesTheWheelBodysMassAndInertiaUnlessToldOtherwise) {
+  const Terrain ground = flatGround();
+  BulletWorld w(ground, ContactMode::kForce);
+  WheelBody& heavy = w.addWheelBody(21.0, btVector3(0, 0, kRadius - 0.002));
+  WheelBody& told = w.addWheelBody(21.0, btVector3(2, 0, kRadius - 0.002));
+  bullet::RigidWheel spec;
+  spec.body = heavy.body.get();
+  const bullet::WheelId from_body = w.plugin->addWheel(spec);
+  spec.body = told.body.get();
+  spec.inertia_source = InertiaSource::kDescription;
+  const bullet::WheelId from_description = w.plugin->addWheel(spec);
+  w.world.stepSimulation(1e-3, 1, 1e-3);
+  EXPECT_DOUBLE_EQ(w.plugin->forces(from_body).normal_stability.mass, 21.0);
+  EXPECT_DOUBLE_EQ(w.plugin->forces(from_description).normal_stability.mass, spec.description.inertia.effective_mass);
+
+  btRigidBody::btRigidBodyConstructionInfo info(0.0, nullptr, nullptr);
+  btRigidBody fixed(info);
+  spec.body = &fixed;
+  spec.inertia_source = InertiaSource::kBody;
+  EXPECT_THAT([&] { w.plugin->addWheel(spec); },
+              ::testing::ThrowsMessage<InvalidInputError>(::testing::HasSubstr("a static body")));
+}
+
 // A world whose split impulse would split every penetrating contact
 // (threshold >= 0) cannot keep the tyre's spring in constraint mode: refused
 // with the setting's name (issue 11, defect 4; deeper contacts under the

@@ -105,8 +105,6 @@ ode::WheelId addWheel(OdeWorld& w, const OdeWheel& wheel, EffectSet effects, con
   spec.body = wheel.body;
   spec.geom = wheel.geom;
   spec.description.tyre = tyre;
-  spec.description.inertia.effective_mass = wheel.mass;
-  spec.description.inertia.axial_inertia = 0.5 * wheel.mass * kRadiusM * kRadiusM;
   spec.effects = effects;
   return w.plugin->addWheel(spec);
 }

@@ -50,8 +50,8 @@ class OdeWorld {
   bool call_handle_pair = true;  ///< false: a near callback that forgot the plugin.
 };
 
-/// Registers `wheel` with the robot wheel's defaults, its mass as the
-/// effective mass and the disc's axial inertia.
+/// Registers `wheel` with the robot wheel's defaults; the plugin reads its
+/// mass and axial inertia from the body (a free wheel's spin).
 ode::WheelId addWheel(OdeWorld& w, const OdeWheel& wheel, EffectSet effects = EffectSet::full(),
                       const TyreParameters& tyre = {});
 

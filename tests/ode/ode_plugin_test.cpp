@@ -327,6 +327,28 @@ TEST(OdePluginTest, NonFiniteWheelIsSkippedCountedAndReportedWithoutThrowing) {
 }
 
 // Case: bad registrations and steps are errors that name the problem.
+// The tyre's stability bounds use the mass the wheel's contacts move
+// (issue 11, defect 1): the plugin reads it from the body unless told to
+// take the description's. A 21 kg body with the description's default
+// 3.7 kg: the stability report's mass says which was used.
+TEST(OdePluginTest, TheTyreTakesTheWheelBodysMassAndInertiaUnlessToldOtherwise) {
+  const Terrain ground = testing::flatGround();
+  OdeWorld w(ground, ContactMode::kForce);
+  const WheelBody heavy = w.addWheelBody(21.0, {0, 0, kRadius - 0.002});
+  const WheelBody told = w.addWheelBody(21.0, {2, 0, kRadius - 0.002});
+  ode::RigidWheel spec;
+  spec.body = heavy.body;
+  spec.geom = heavy.geom;
+  const ode::WheelId from_body = w.plugin->addWheel(spec);
+  spec.body = told.body;
+  spec.geom = told.geom;
+  spec.inertia_source = InertiaSource::kDescription;
+  const ode::WheelId from_description = w.plugin->addWheel(spec);
+  w.step(1e-3);
+  EXPECT_DOUBLE_EQ(w.plugin->forces(from_body).normal_stability.mass, 21.0);
+  EXPECT_DOUBLE_EQ(w.plugin->forces(from_description).normal_stability.mass, spec.description.inertia.effective_mass);
+}
+
 TEST(OdePluginTest, BadRegistrationIsAnErrorThatNamesIt) {
   const Terrain ground = testing::flatGround();
   OdeWorld w(ground, ContactMode::kConstraint);

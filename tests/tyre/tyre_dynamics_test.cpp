@@ -4,6 +4,7 @@
 // 0.1 to 2 ms), sliding above the friction limit, spinning in place, and
 // the stability report.
 #include <cmath>
+#include <string>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -72,8 +73,11 @@ constexpr double kStillMps = 1e-5;  // a parked wheel moves slower than this
 // mu_max = 0.8 holds (the tread's sticking state: it relaxes only as the
 // ground moves under it): < 1 um in 10 s after it has settled, where the
 // spec's regularized law creeps at s_eq eps (0.41 mm), and no oscillation
-// above 10 um/s (a wheel whose effective mass is its own 3.7 kg while it
-// carries 21 kg rings at about 4 um/s).
+// above 10 um/s. Settling takes up to 1.5 s: the tread's damping is
+// critical for the wheel's mass but bounded by the explicit stability of
+// the lighter mass an unbraked wheel's contact moves (1 / (1/m + r^2/I),
+// defect 1), so a braked 21 kg wheel rings at about 8 Hz with a damping
+// ratio of 0.15-0.3 at 1-2 ms (45 um of load-up at 2 ms), then holds.
 TEST_P(ParkedOnSlopeTest, HoldsWithinAMicrometreForTenSecondsWithoutOscillating) {
   const double slope = 15 * kDegree, h = GetParam().step_seconds;
   const Terrain incline = tiltedSlab(slope);
@@ -82,7 +86,7 @@ TEST_P(ParkedOnSlopeTest, HoldsWithinAMicrometreForTenSecondsWithoutOscillating)
   wheel.locked = true;
   restOnSlab(wheel, slope);
   const TyreModel model(EffectSet::full());
-  const int settle = static_cast<int>(std::lround(0.5 / h)), steps = static_cast<int>(std::lround(10.0 / h));
+  const int settle = static_cast<int>(std::lround(2.0 / h)), steps = static_cast<int>(std::lround(10.0 / h));
   for (int k = 0; k < settle; ++k) step(model, incline, h, wheel);
   const Vector3d start = wheel.center;
   int reversals = 0;
@@ -106,6 +110,55 @@ TEST_P(ParkedOnSlopeTest, HoldsWithinAMicrometreForTenSecondsWithoutOscillating)
 INSTANTIATE_TEST_SUITE_P(StepsAndMasses, ParkedOnSlopeTest,
                          ::testing::Values(ParkedCase{1e-4, 3.7}, ParkedCase{5e-4, 3.7}, ParkedCase{1e-3, 3.7},
                                            ParkedCase{2e-3, 3.7}, ParkedCase{2e-3, 21.0}, ParkedCase{1e-4, 21.0}));
+
+// Case (issue 11, defect 1): a free wheel rolling slowly comes to rest,
+// stopped by rolling resistance alone. Rolling without slip,
+// (M + I / r_f^2) dv/dt = -f_r R_z r_0 / r_f: it slows from 5 to 2 cm/s in
+// 0.03 m/s / that (0.19 s for the robot's wheel under 21 kg); below, the
+// moment's sign ramp (its width keeps the gain below kappa I / h) lets it
+// settle in a few tenths of a second more. The tread's caps must hold for
+// the mass its contact moves along the ground, 1 / (1/M + r_f^2 / I)
+// (1.7 kg here): capped for M, the speed changed sign at every step and
+// never settled (21 kg at 2 ms: 27 mm/s after 3 s). A 3.7 kg wheel alone
+// and a loaded one (21 kg on its axle, the tyre told the 21 kg), 0.4-2 ms.
+TEST(TyreDynamicsTest, AFreeWheelRollingSlowlySlowsAsRollingResistanceSaysAndComesToRest) {
+  constexpr double kStartMps = 0.05, kSlowMps = 0.02, kRestMps = 1e-4, kSeconds = 3.0;
+  const Terrain flat = tiltedSlab(0.0);
+  for (const double mass : {3.7, 21.0}) {
+    for (const double h : {4e-4, 1e-3, 2e-3}) {
+      SimWheel wheel;
+      wheel.mass = mass;
+      wheel.description.inertia.effective_mass = mass;
+      restOnSlab(wheel, 0.0);
+      const double r_f = wheel.description.geometry.free_radius, inertia = wheel.description.inertia.axial_inertia;
+      const double r_0 = wheel.description.tyre.rolling_radius_ratio * r_f;
+      wheel.velocity = {kStartMps, 0, 0};
+      wheel.spin = kStartMps / (r_f - mass * kGravityMps2 / 1e5);
+      const double deceleration =
+          Material{}.rolling_resistance * mass * kGravityMps2 * r_0 / r_f / (mass + inertia / (r_f * r_f));
+      const TyreModel model(EffectSet::full());
+      int reversals = 0;
+      double previous = kStartMps, slow_at = -1.0, fastest_late = 0.0;
+      const long steps = std::lround(kSeconds / h);
+      for (long k = 1; k <= steps; ++k) {
+        step(model, flat, h, wheel);
+        const double v = wheel.velocity.x();
+        if (std::abs(v) > kStillMps) {
+          if (v * previous < 0.0) ++reversals;
+          previous = v;
+        }
+        if (slow_at < 0.0 && v < kSlowMps) slow_at = k * h;
+        if (k * h > kSeconds - 1.0) fastest_late = std::max(fastest_late, std::abs(v));
+      }
+      const std::string label = std::to_string(mass) + " kg, h = " + std::to_string(h) + " s";
+      const double expected = (kStartMps - kSlowMps) / deceleration;
+      EXPECT_NEAR(slow_at, expected, 0.05 * expected) << label;
+      EXPECT_LE(reversals, 3) << label;  // the tread spring's rebound as it stops, damped
+      EXPECT_LT(fastest_late, kRestMps) << label;
+      EXPECT_EQ(wheel.state.unstableSteps(), 0u) << label;
+    }
+  }
+}
 
 // Case: on 45 deg (tan = 1 > mu_max = 0.8) a locked wheel slides with
 // a = g (sin - mu(1) cos): sliding without rolling has s = |V_s| / |V_O| = 1.

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
@@ -264,11 +265,21 @@ Plugin::Plugin(btDiscreteDynamicsWorld& world, const Terrain& terrain, ContactMo
 
 Plugin::~Plugin() = default;
 
+// A static body (inverse mass 0) has no mass to give: bodyInertia refuses it.
+constexpr double kStaticMass = std::numeric_limits<double>::infinity();
+
 WheelId Plugin::addWheel(const RigidWheel& spec) {
   static constexpr const char* kWhere = "wtc::bullet::Plugin::addWheel (rigid body)";
   if (spec.body == nullptr) fail(kWhere, "body is null");
-  validate(spec.description, kWhere);
-  auto w = std::make_unique<Wheel>(spec.description, spec.effects, impl_->mode);
+  validateMounting(toEigen(spec.axle_local), toEigen(spec.centre_local), kWhere);
+  WheelDescription description = spec.description;
+  if (spec.inertia_source == InertiaSource::kBody) {
+    description.inertia = bodyInertia(spec.body->getInvMass() > 0.0 ? 1.0 / spec.body->getInvMass() : kStaticMass,
+                                      toEigen(spec.body->getLocalInertia()).asDiagonal(),
+                                      toEigen(spec.axle_local), spec.description.inertia.spin_held, kWhere);
+  }
+  validate(description, kWhere);
+  auto w = std::make_unique<Wheel>(description, spec.effects, impl_->mode);
   w->body = spec.body;
   w->collider = spec.body;
   w->axle_local = spec.axle_local;
@@ -285,8 +296,15 @@ WheelId Plugin::addWheel(const MultiBodyWheel& spec) {
   }
   btMultiBodyLinkCollider* collider = spec.multibody->getLinkCollider(spec.link);
   if (collider == nullptr) fail(kWhere, "link " + std::to_string(spec.link) + " has no collider");
-  validate(spec.description, kWhere);
-  auto w = std::make_unique<Wheel>(spec.description, spec.effects, impl_->mode);
+  validateMounting(toEigen(spec.axle_local), toEigen(spec.centre_local), kWhere);
+  WheelDescription description = spec.description;
+  if (spec.inertia_source == InertiaSource::kBody) {
+    description.inertia =
+        bodyInertia(spec.multibody->getLinkMass(spec.link), toEigen(spec.multibody->getLinkInertia(spec.link)).asDiagonal(),
+                    toEigen(spec.axle_local), spec.description.inertia.spin_held, kWhere);
+  }
+  validate(description, kWhere);
+  auto w = std::make_unique<Wheel>(description, spec.effects, impl_->mode);
   w->multibody = spec.multibody;
   w->link = spec.link;
   w->collider = collider;

@@ -76,8 +76,18 @@ WheelId Plugin::Impl::add(const RigidWheel& spec) {
   if (spec.body == nullptr) fail(kWhere, "body is null");
   if (spec.geom == nullptr) fail(kWhere, "geom is null (the near callback knows a wheel by its geom)");
   if (dGeomGetBody(spec.geom) != spec.body) fail(kWhere, "geom is not attached to body (dGeomSetBody)");
-  validate(spec.description, kWhere);
   validateMounting(spec.axle_local, spec.centre_local, kWhere);
+  WheelDescription description = spec.description;
+  if (spec.inertia_source == InertiaSource::kBody) {
+    dMass m;
+    dBodyGetMass(spec.body, &m);
+    Eigen::Matrix3d inertia;  // dMass::I is 3 x 4, row-major (dMatrix3)
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) inertia(r, c) = m.I[4 * r + c];
+    }
+    description.inertia = bodyInertia(m.mass, inertia, spec.axle_local, spec.description.inertia.spin_held, kWhere);
+  }
+  validate(description, kWhere);
   if (wheel_of.count(spec.geom) != 0) fail(kWhere, "this geom is already a registered wheel");
   if (mode == ContactMode::kConstraint) {
     dVector3 centre, axle;
@@ -85,7 +95,7 @@ WheelId Plugin::Impl::add(const RigidWheel& spec) {
     dBodyVectorToWorld(spec.body, spec.axle_local.x(), spec.axle_local.y(), spec.axle_local.z(), axle);
     requireGeomHoldsTread(spec, toEigen(centre), toEigen(axle).normalized(), kWhere);
   }
-  auto w = std::make_unique<Wheel>(spec.description, spec.effects, mode);
+  auto w = std::make_unique<Wheel>(description, spec.effects, mode);
   w->body = spec.body;
   w->geom = spec.geom;
   w->axle_local = spec.axle_local;

@@ -52,6 +52,10 @@ struct RigidWheel {
   btVector3 centre_local{0, 0, 0};  ///< Wheel centre O in the body frame (m).
   WheelDescription description;     ///< Geometry, tyre, inertia.
   EffectSet effects = EffectSet::full();
+  /// kBody (the default): description.inertia's mass and moment about the
+  /// axle are read from the body (its spin_held is the caller's: whether a
+  /// drive or brake holds the spin); kDescription: all as given.
+  InertiaSource inertia_source = InertiaSource::kBody;
 };
 
 /// A wheel that is link `link` of a btMultiBody.
@@ -62,6 +66,10 @@ struct MultiBodyWheel {
   btVector3 centre_local{0, 0, 0};  ///< In the link frame (m).
   WheelDescription description;
   EffectSet effects = EffectSet::full();
+  /// kBody (the default): description.inertia's mass and moment about the
+  /// axle are read from the body (its spin_held is the caller's: whether a
+  /// drive or brake holds the spin); kDescription: all as given.
+  InertiaSource inertia_source = InertiaSource::kBody;
 };
 
 class Plugin {

@@ -71,6 +71,10 @@ struct RigidWheel {
   Eigen::Vector3d centre_local{Eigen::Vector3d::Zero()};  ///< Wheel centre O in the body frame (m).
   WheelDescription description;                           ///< Geometry, tyre, inertia.
   EffectSet effects = EffectSet::full();
+  /// kBody (the default): description.inertia's mass and moment about the
+  /// axle are read from the body (its spin_held is the caller's: whether a
+  /// drive or brake holds the spin); kDescription: all as given.
+  InertiaSource inertia_source = InertiaSource::kBody;
 };
 
 /// One WTC contact as ODE solved it (constraint mode). `feedback` is the
