@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "wtc/tolerances.hpp"
 #include "wtc/tyre_model.hpp"
 #include "wtc/tyre_parameters.hpp"
 
@@ -9,7 +10,8 @@ namespace wtc {
 
 std::string_view contactModeName(ContactMode mode) { return mode == ContactMode::kForce ? "force" : "constraint"; }
 
-EngineContact toEngineContact(const ContactForce& f, const TyreParameters& tyre, const TyreModel& model) {
+EngineContact toEngineContact(const ContactForce& f, const TyreParameters& tyre, const TyreModel& model,
+                              const Eigen::Vector3d& rest_load) {
   const double stiffness = tyre.radial_stiffness;
   const double damping = model.effects().has(Effect::kNormalDamping) ? tyre.radial_damping : 0.0;
   EngineContact c;
@@ -19,10 +21,14 @@ EngineContact toEngineContact(const ContactForce& f, const TyreParameters& tyre,
   c.depth = f.contact.deflection;
   c.stiffness = f.contact.load_share * stiffness;
   c.damping = f.contact.load_share * damping;
-  c.friction = f.mu;
-  // Along the traction if there is one, else against the slip, else any.
+  c.friction = f.friction_limit;
+  // Sticking: along the rest load's tangential part. Else along the
+  // traction if there is one, else against the slip, else any.
+  const Eigen::Vector3d load = rest_load - rest_load.dot(c.normal) * c.normal;
   const double traction = f.tangential_force.norm(), slip = f.slip_velocity.norm();
-  if (traction > 0.0 && std::isfinite(traction)) {
+  if (f.friction_limit > f.mu && load.norm() > tolerance::kRestLoadRelative * rest_load.norm()) {
+    c.friction_direction = load.normalized();
+  } else if (traction > 0.0 && std::isfinite(traction)) {
     c.friction_direction = f.tangential_force / traction;
   } else if (slip > 0.0 && std::isfinite(slip)) {
     c.friction_direction = -f.slip_velocity / slip;

@@ -146,6 +146,7 @@ void contactForces(const Inputs& in, std::span<const WheelContact> contacts, std
     f.normal_force = c.load_share * std::max(normal_force, 0.0);
     f.tangential_force.setZero();
     f.mu = 0.0;
+    f.friction_limit = 0.0;
     if constexpr (kTraction != Traction::kNone) {
       const Material& m = in.materials[c.material];
       Vector3d u = inheritTread(tread_in, c.e);
@@ -156,6 +157,9 @@ void contactForces(const Inputs& in, std::span<const WheelContact> contacts, std
         coulombTraction(in, m, f.normal_force, axes, u, f);
       }
       tread_out.push_back({c.e, u});
+      // At rest the tread sticks up to the peak of mu(s) R_z (tyre_model.hpp).
+      const double peak = kTraction == Traction::kSlipLaw ? tractionPeak(m) : m.mu_max;
+      f.friction_limit = std::max(f.mu, in.sticking * peak);
     }
     f.force = f.tangential_force - f.normal_force * c.e;
     if constexpr (kRolling) {

@@ -23,6 +23,7 @@ struct TyreModel::KernelInputs {
   double step = 0.0;                               ///< h (s).
   double transport_speed = 0.0;                    ///< V_t = |V_O| (m/s).
   double slip_speed_floor = 0.0;                   ///< eps (m/s).
+  double sticking = 0.0;                           ///< (1 - V_t / eps)+: 1 at rest, 0 from V_t = eps.
   /// The tread's spring along its two axes, the rolling direction and the
   /// axle's (index kRolling, kLateral): each capped for the mass its
   /// contact moves that way (tyre_model.hpp).

@@ -99,6 +99,7 @@ const WheelForces& TyreModel::forces(std::span<const Material> materials, const 
   in.step = h;
   in.transport_speed = motion.velocity.norm();
   in.slip_speed_floor = tyre.slip_speed_floor;
+  in.sticking = std::max(0.0, 1.0 - in.transport_speed / tyre.slip_speed_floor);
   // The mass the tread moves along each axis: along the axle the wheel's,
   // m; along the ground an unbraked wheel's contact moves the wheel and
   // turns it, 1 / (1/m + r_f^2 / I) (m/3 for a disc; 1.7 kg for the robot's

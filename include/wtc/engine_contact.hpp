@@ -13,7 +13,11 @@
 // Friction is the engine's Coulomb friction with the coefficient the slip
 // law gives this step (mu = |R_xy| / R_z of the tread state) and its first
 // direction along the traction: within a step, friction is Coulomb-like (it
-// stops the slip if it can), so the slip law acts from step to step.
+// stops the slip if it can), so the slip law acts from step to step. At
+// rest the tread sticks up to the peak of mu(s) (ContactForce::
+// friction_limit), along the load a vehicle at rest feels (gravity's part
+// in the tangent plane): an empty tread state (a wheel just put down) would
+// otherwise let the first step slide free, g sin(theta) h^2 on a slope.
 // Rolling resistance stays an explicit moment in both modes.
 #include <string_view>
 
@@ -50,8 +54,14 @@ struct EngineContact {
 
 /// The engine contact of one contact of `model`'s result for a wheel with
 /// `tyre`: stiffness c, damping b if the model has normal damping (else 0),
-/// both times the contact's load share.
-EngineContact toEngineContact(const ContactForce& force, const TyreParameters& tyre, const TyreModel& model);
+/// both times the contact's load share; friction ContactForce::
+/// friction_limit. While the tread sticks (the limit is above mu) its one
+/// friction direction is along the part of `rest_load` (the acceleration
+/// that loads a vehicle at rest: the world's gravity, m/s^2) in the contact's
+/// tangent plane, where a parked wheel needs it; else along the traction,
+/// else against the slip, else any.
+EngineContact toEngineContact(const ContactForce& force, const TyreParameters& tyre, const TyreModel& model,
+                              const Eigen::Vector3d& rest_load);
 
 /// ERP and CFM of an implicit spring-damper (ODE's convention: CFM in
 /// m/(N s) per unit of the constraint force; Bullet derives the same pair

@@ -47,6 +47,10 @@ class MountedWheel {
   /// non-finite pose or motion (TyreModel::stepInEngine); throws for a
   /// non-positive step.
   const MountedWheelStep& step(const Terrain& terrain, const WheelPose& pose, const WheelMotion& motion, double h);
+  /// The acceleration that loads a vehicle at rest: the world's gravity
+  /// (m/s^2; default 0, -9.81 along z is not assumed). Constraint mode holds
+  /// a sticking contact along its tangential part (toEngineContact).
+  void setRestLoad(const Eigen::Vector3d& acceleration) { rest_load_ = acceleration; }
 
   const WheelDescription& description() const { return description_; }
   const TyreModel& model() const { return model_; }
@@ -81,6 +85,7 @@ class MountedWheel {
   std::vector<EngineContact> contacts_;
   MountedWheelStep step_;
   WheelPose pose_;
+  Eigen::Vector3d rest_load_{Eigen::Vector3d::Zero()};
   std::vector<ContactForce> solved_contacts_;
   WheelForces solved_;
   bool solved_valid_ = false;

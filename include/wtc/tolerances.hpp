@@ -87,4 +87,9 @@ inline constexpr double kSameFaceNormalCos = 1.0 - 1e-12;
 /// (which these contacts switch on) does not come and go.
 inline constexpr double kCapHysteresisRelative = 0.02;
 
+/// A sticking contact's friction runs along the rest load's part in its
+/// tangent plane when that part is above this fraction of the load
+/// (dimensionless); on level ground (below it) its direction is the usual.
+inline constexpr double kRestLoadRelative = 1e-9;
+
 }  // namespace wtc::tolerance

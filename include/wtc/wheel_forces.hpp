@@ -26,6 +26,10 @@ struct ContactForce {
   Eigen::Vector3d slip_velocity{Eigen::Vector3d::Zero()};     ///< V_s = V_P - v_z e (m/s).
   double slip_ratio = 0.0;                                    ///< s = |V_s| / max(V_t, eps) (dimensionless).
   double mu = 0.0;                                            ///< |R_xy| / R_z applied (dimensionless).
+  /// The most |R_xy| / R_z the tread holds now: the peak of mu(s) while it
+  /// sticks, ramped out as V_t reaches eps, and mu beyond (dimensionless).
+  /// Constraint mode gives it to the engine as its friction coefficient.
+  double friction_limit = 0.0;
   Eigen::Vector3d tangential_force{Eigen::Vector3d::Zero()};  ///< R_xy, in the tangent plane (N).
   Eigen::Vector3d force{Eigen::Vector3d::Zero()};             ///< R = -R_z e + R_xy, applied at P (N).
   Eigen::Vector3d rolling_moment{Eigen::Vector3d::Zero()};    ///< M_r, along the axle (N m).

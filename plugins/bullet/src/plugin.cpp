@@ -200,8 +200,10 @@ WheelId Plugin::Impl::add(std::unique_ptr<Wheel> w, const char* where) {
 void Plugin::Impl::preTick(double h) {
   if (pre_tick) pre_tick(h);
   const Terrain& ground = terrain.terrain();
+  const Eigen::Vector3d gravity = toEigen(world.getGravity());
   for (std::size_t id = 0; id < wheels.size(); ++id) {
     Wheel& w = *wheels[id];
+    w.mounted.setRestLoad(gravity);
     w.manifold = nullptr;
     w.manifold_point.clear();
     const Kinematics k =

@@ -127,8 +127,11 @@ void Plugin::Impl::beginStep(double h) {
   }
   step_seconds = h;
   const Terrain& ground = terrain.terrain();
+  dVector3 gravity;
+  dWorldGetGravity(world, gravity);
   for (std::size_t id = 0; id < wheels.size(); ++id) {
     Wheel& w = *wheels[id];
+    w.mounted.setRestLoad(toEigen(gravity));
     const Eigen::Vector3d& c = w.centre_local;
     dVector3 centre, axle, velocity;
     dBodyGetRelPointPos(w.body, c.x(), c.y(), c.z(), centre);
