@@ -8,14 +8,17 @@
 #include <cmath>
 #include <functional>
 #include <initializer_list>
+#include <limits>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include <Eigen/Geometry>
 
 #include "engine_sim.hpp"
 #include "wheel_sim.hpp"
 #include "wtc/constants.hpp"
+#include "wtc/io/terrain_file.hpp"
 #include "wtc/terrain_primitives.hpp"
 #include "wtc/traction_law.hpp"
 
@@ -470,6 +473,74 @@ TEST(HardCasesTest, AParkedWheelHoldsForAnHourOn15And30Degrees) {
         }
       }
     }
+  }
+}
+
+// Issue 11, defect 9: the modes on a driven scene. wtc_bench_bullet and
+// wtc_bench_ode drive wheels across the rough ground of scenario 3 (21 kg,
+// 3 N m, dropped from above the highest bumps): after 12 s force mode is at
+// 2.42 m/s and constraint mode at 2.07 (Bullet) / 2.10 m/s (ODE), 14 %
+// apart. Both are converged in the step (force 2.419 / 2.4205 m/s at 1 /
+// 0.1 ms, constraint 2.074 / 2.084), and on flat soil the modes agree to
+// four digits (2.967 m/s, the rolling acceleration 0.247 m/s^2). Compared
+// where the wheel is, not when, they agree along the path: the 14 % is a
+// lag of 1.6 s gathered in the first half metre after the drop, where the
+// wheel crawls uphill at 0.1-0.2 m/s near its stall and constraint mode is
+// up to 30 % slower (open; hard-cases.md). From x = -11.4 m on, the speeds
+// at the same position agree within 2 % of the final speed (measured: 22
+// mm/s at most, at 0.25-0.6 m/s; under 0.9 % above 1 m/s); the lag is recorded.
+struct PathSample {
+  double x, v;  // (m), (m/s)
+};
+std::vector<PathSample> drivenAcrossRoughGround(Engine engine, ContactMode mode) {
+  constexpr double kH = 1e-3, kSeconds = 12.0, kTorqueNm = 3.0, kSampleS = 0.05;
+  static const Terrain ground = io::loadTerrain(WTC_SOURCE_DIR "/terrains/rough_ground.yaml");
+  auto sim = makeEngineSim(engine, mode, ground, 21.0, {-12.0, -3.75, 0.15 + kRadius + 0.05}, Hold::kUpright);
+  std::vector<PathSample> path;
+  const long steps = std::lround(kSeconds / kH), every = std::lround(kSampleS / kH);
+  for (long k = 1; k <= steps; ++k) {
+    sim->push(Eigen::Vector3d::Zero(), kTorqueNm);
+    sim->step(kH);
+    if (k % every == 0) path.push_back({sim->position().x(), sim->velocity().x()});
+  }
+  return path;
+}
+double speedAt(const std::vector<PathSample>& path, double x) {  // linear between samples; the path moves on
+  for (std::size_t i = 1; i < path.size(); ++i) {
+    if (path[i].x >= x) {
+      const double w = (x - path[i - 1].x) / (path[i].x - path[i - 1].x);
+      return path[i - 1].v + w * (path[i].v - path[i - 1].v);
+    }
+  }
+  return path.back().v;
+}
+double timeTo(const std::vector<PathSample>& path, double x) {
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    if (path[i].x >= x) return 0.05 * static_cast<double>(i + 1);
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
+TEST(HardCasesTest, ForceAndConstraintModeAgreeAlongADrivenRoughGroundPath) {
+  // From where the crawl is over to the end both reach; a speed difference
+  // a fiftieth of the run's final speed (the issue's 2 %).
+  constexpr double kFromX = -11.4, kAgreementMps = 0.02 * 2.42;
+  for (const Engine engine : {Engine::kBullet, Engine::kOde}) {
+    const std::vector<PathSample> force = drivenAcrossRoughGround(engine, ContactMode::kForce);
+    const std::vector<PathSample> constraint = drivenAcrossRoughGround(engine, ContactMode::kConstraint);
+    const double to_x = std::min(force.back().x, constraint.back().x);
+    ASSERT_GT(to_x, -5.0) << engineName(engine);
+    double worst = 0.0, worst_fast = 0.0;  // (m/s); relative where faster than 1 m/s
+    for (double x = kFromX; x <= to_x; x += 0.05) {
+      const double vf = speedAt(force, x), vc = speedAt(constraint, x);
+      worst = std::max(worst, std::abs(vc - vf));
+      if (vf > 1.0) worst_fast = std::max(worst_fast, std::abs(vc - vf) / vf);
+      EXPECT_NEAR(vc, vf, kAgreementMps) << engineName(engine) << " at x = " << x << " m";
+    }
+    RecordProperty(engineName(engine) + "_worst_speed_difference_mps", std::to_string(worst));
+    RecordProperty(engineName(engine) + "_worst_relative_above_1mps", std::to_string(worst_fast));
+    RecordProperty(engineName(engine) + "_lag_to_x_-10_s",
+                   std::to_string(timeTo(constraint, -10.0) - timeTo(force, -10.0)));
   }
 }
 
