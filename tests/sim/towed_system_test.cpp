@@ -64,6 +64,7 @@ TEST(TowedSystemTest, SteadyPullEqualsTheTowedBodysRollingResistance) {
     }
     pull /= static_cast<double>(n);
     resistance /= static_cast<double>(n);
+    RecordProperty(std::string(engine) + "_" + mode + "_pull_over_resistance", std::to_string(pull / resistance));
     EXPECT_NEAR(pull, resistance, kTolerance * resistance) << engine << "/" << mode;
   }
 }
