@@ -29,7 +29,9 @@ const MountedWheelStep& MountedWheel::step(const Terrain& terrain, const WheelPo
     step_.force = f.force;
     step_.torque = f.torque;
   } else {
-    for (const ContactForce& c : f.contacts) contacts_.push_back(toEngineContact(c, description_.tyre, model_, rest_load_));
+    for (const ContactForce& c : f.contacts) {
+      contacts_.push_back(toEngineContact(c, description_.tyre, model_, rest_load_));
+    }
     step_.torque = f.rolling_moment;
     step_.contacts = contacts_;
   }

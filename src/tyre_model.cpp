@@ -120,8 +120,8 @@ const WheelForces& TyreModel::forces(std::span<const Material> materials, const 
   // grew as h^2 and a parked wheel slid 108 mm at 50 ms (issue 11, defect 2).
   const double kappa = tyre.stability_fraction, zeta = tyre.standstill_damping_ratio;
   const double fade = std::max(0.0, 1.0 - in.transport_speed / tyre.standstill_speed);
+  const bool force_mode = mode_ == ContactMode::kForce;
   for (const int i : {detail::kRolling, detail::kLateral}) {
-    const bool force_mode = mode_ == ContactMode::kForce;
     const double k = force_mode ? std::min(tyre.tangential_stiffness, kappa * kappa * light[i] / (h * h))
                                 : tyre.tangential_stiffness;
     const double root_km = force_mode ? std::min(std::sqrt(k * m), kappa * light[i] / h) : std::sqrt(k * m);

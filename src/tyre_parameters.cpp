@@ -39,8 +39,7 @@ void validate(const WheelInertia& inertia, const char* where) {
 WheelInertia bodyInertia(double mass, const Eigen::Matrix3d& inertia_local, const Eigen::Vector3d& axle_local,
                          bool spin_held, const char* where) {
   const Eigen::Vector3d a = axle_local.normalized();
-  const WheelInertia inertia{
-      .effective_mass = mass, .axial_inertia = a.dot(inertia_local * a), .spin_held = spin_held};
+  const WheelInertia inertia{.effective_mass = mass, .axial_inertia = a.dot(inertia_local * a), .spin_held = spin_held};
   if (!std::isfinite(inertia.effective_mass) || !std::isfinite(inertia.axial_inertia)) {
     throw InvalidInputError(std::string(where) + ": the wheel body's mass " + formatNumber(mass) +
                             " kg or moment about the axle " + formatNumber(inertia.axial_inertia) +
@@ -48,6 +47,16 @@ WheelInertia bodyInertia(double mass, const Eigen::Matrix3d& inertia_local, cons
   }
   validate(inertia, where);
   return inertia;
+}
+
+WheelDescription mountedDescription(WheelDescription given, InertiaSource source, double body_mass,
+                                    const Eigen::Matrix3d& body_inertia_local, const Eigen::Vector3d& axle_local,
+                                    const char* where) {
+  if (source == InertiaSource::kBody) {
+    given.inertia = bodyInertia(body_mass, body_inertia_local, axle_local, given.inertia.spin_held, where);
+  }
+  validate(given, where);
+  return given;
 }
 
 void validate(const WheelDescription& wheel, const char* where) {

@@ -66,6 +66,13 @@ void validate(const TyreParameters& tyre, const char* where);
 void validate(const WheelInertia& inertia, const char* where);
 void validate(const WheelDescription& wheel, const char* where);
 
+/// What an engine adapter registers: `given`, its inertia read from the
+/// wheel body (bodyInertia, keeping given.inertia.spin_held) when `source`
+/// is kBody, then validated. Throws InvalidInputError naming `where`.
+WheelDescription mountedDescription(WheelDescription given, InertiaSource source, double body_mass,
+                                    const Eigen::Matrix3d& body_inertia_local, const Eigen::Vector3d& axle_local,
+                                    const char* where);
+
 /// How an adapter mounts a wheel on its body: the axle direction and the
 /// wheel centre in the body frame. Throws InvalidInputError unless the axle
 /// is finite and non-zero and the centre finite.

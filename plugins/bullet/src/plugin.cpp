@@ -159,7 +159,6 @@ int Plugin::Impl::wheelOf(const btCollisionObject* object) const {
 }
 
 WheelId Plugin::Impl::add(std::unique_ptr<Wheel> w, const char* where) {
-  validateMounting(toEigen(w->axle_local), toEigen(w->centre_local), where);
   if (wheel_of.count(w->collider) != 0) fail(where, "this body is already a registered wheel");
   btCollisionShape* original = w->collider->getCollisionShape();
   if (original == nullptr) fail(where, "the wheel body has no collision shape");
@@ -274,13 +273,10 @@ WheelId Plugin::addWheel(const RigidWheel& spec) {
   static constexpr const char* kWhere = "wtc::bullet::Plugin::addWheel (rigid body)";
   if (spec.body == nullptr) fail(kWhere, "body is null");
   validateMounting(toEigen(spec.axle_local), toEigen(spec.centre_local), kWhere);
-  WheelDescription description = spec.description;
-  if (spec.inertia_source == InertiaSource::kBody) {
-    description.inertia = bodyInertia(spec.body->getInvMass() > 0.0 ? 1.0 / spec.body->getInvMass() : kStaticMass,
-                                      toEigen(spec.body->getLocalInertia()).asDiagonal(),
-                                      toEigen(spec.axle_local), spec.description.inertia.spin_held, kWhere);
-  }
-  validate(description, kWhere);
+  const double mass = spec.body->getInvMass() > 0.0 ? 1.0 / spec.body->getInvMass() : kStaticMass;
+  const WheelDescription description =
+      mountedDescription(spec.description, spec.inertia_source, mass,
+                         toEigen(spec.body->getLocalInertia()).asDiagonal(), toEigen(spec.axle_local), kWhere);
   auto w = std::make_unique<Wheel>(description, spec.effects, impl_->mode);
   w->body = spec.body;
   w->collider = spec.body;
@@ -299,13 +295,9 @@ WheelId Plugin::addWheel(const MultiBodyWheel& spec) {
   btMultiBodyLinkCollider* collider = spec.multibody->getLinkCollider(spec.link);
   if (collider == nullptr) fail(kWhere, "link " + std::to_string(spec.link) + " has no collider");
   validateMounting(toEigen(spec.axle_local), toEigen(spec.centre_local), kWhere);
-  WheelDescription description = spec.description;
-  if (spec.inertia_source == InertiaSource::kBody) {
-    description.inertia =
-        bodyInertia(spec.multibody->getLinkMass(spec.link), toEigen(spec.multibody->getLinkInertia(spec.link)).asDiagonal(),
-                    toEigen(spec.axle_local), spec.description.inertia.spin_held, kWhere);
-  }
-  validate(description, kWhere);
+  const WheelDescription description = mountedDescription(
+      spec.description, spec.inertia_source, spec.multibody->getLinkMass(spec.link),
+      toEigen(spec.multibody->getLinkInertia(spec.link)).asDiagonal(), toEigen(spec.axle_local), kWhere);
   auto w = std::make_unique<Wheel>(description, spec.effects, impl_->mode);
   w->multibody = spec.multibody;
   w->link = spec.link;

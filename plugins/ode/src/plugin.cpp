@@ -77,17 +77,14 @@ WheelId Plugin::Impl::add(const RigidWheel& spec) {
   if (spec.geom == nullptr) fail(kWhere, "geom is null (the near callback knows a wheel by its geom)");
   if (dGeomGetBody(spec.geom) != spec.body) fail(kWhere, "geom is not attached to body (dGeomSetBody)");
   validateMounting(spec.axle_local, spec.centre_local, kWhere);
-  WheelDescription description = spec.description;
-  if (spec.inertia_source == InertiaSource::kBody) {
-    dMass m;
-    dBodyGetMass(spec.body, &m);
-    Eigen::Matrix3d inertia;  // dMass::I is 3 x 4, row-major (dMatrix3)
-    for (int r = 0; r < 3; ++r) {
-      for (int c = 0; c < 3; ++c) inertia(r, c) = m.I[4 * r + c];
-    }
-    description.inertia = bodyInertia(m.mass, inertia, spec.axle_local, spec.description.inertia.spin_held, kWhere);
+  dMass m;
+  dBodyGetMass(spec.body, &m);
+  Eigen::Matrix3d inertia;  // dMass::I is 3 x 4, row-major (dMatrix3)
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) inertia(r, c) = m.I[4 * r + c];
   }
-  validate(description, kWhere);
+  const WheelDescription description =
+      mountedDescription(spec.description, spec.inertia_source, m.mass, inertia, spec.axle_local, kWhere);
   if (wheel_of.count(spec.geom) != 0) fail(kWhere, "this geom is already a registered wheel");
   if (mode == ContactMode::kConstraint) {
     dVector3 centre, axle;
@@ -127,11 +124,12 @@ void Plugin::Impl::beginStep(double h) {
   }
   step_seconds = h;
   const Terrain& ground = terrain.terrain();
-  dVector3 gravity;
-  dWorldGetGravity(world, gravity);
+  dVector3 world_gravity;
+  dWorldGetGravity(world, world_gravity);
+  const Eigen::Vector3d gravity = toEigen(world_gravity);
   for (std::size_t id = 0; id < wheels.size(); ++id) {
     Wheel& w = *wheels[id];
-    w.mounted.setRestLoad(toEigen(gravity));
+    w.mounted.setRestLoad(gravity);
     const Eigen::Vector3d& c = w.centre_local;
     dVector3 centre, axle, velocity;
     dBodyGetRelPointPos(w.body, c.x(), c.y(), c.z(), centre);
