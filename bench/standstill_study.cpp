@@ -57,6 +57,10 @@ Outcome tread(const TyreModel& model, double h) {
   SimWheel wheel;
   wheel.mass = kMassKg;
   wheel.locked = true;
+  // Described as it is: the tread's caps are set for the mass its contact
+  // moves, here the whole locked wheel.
+  wheel.description.inertia.effective_mass = kMassKg;
+  wheel.description.inertia.spin_held = true;
   restOnSlab(wheel, kSlopeRad);
   for (long k = 0; k < std::lround(kSettleSeconds / h); ++k) step(model, incline, h, wheel);
   const Eigen::Vector3d start = wheel.center;

@@ -37,7 +37,7 @@ Relaxation relaxation(double step, double lambda_h) {
 
 // The tread state of the previous step's contact most aligned with e (within
 // 30 deg, kTreadStateMatchCos), moved into the tangent plane of e; else zero.
-Vector3d inheritTread(std::span<const TreadState> previous, const Vector3d& e) {
+TreadState inheritTread(std::span<const TreadState> previous, const Vector3d& e) {
   const TreadState* best = nullptr;
   double best_cos = tolerance::kTreadStateMatchCos;
   for (const TreadState& t : previous) {
@@ -47,8 +47,11 @@ Vector3d inheritTread(std::span<const TreadState> previous, const Vector3d& e) {
       best = &t;
     }
   }
-  if (best == nullptr) return Vector3d::Zero();
-  return best->u - best->u.dot(e) * e;
+  TreadState t{e, Vector3d::Zero(), Vector3d::Zero()};
+  if (best == nullptr) return t;
+  t.u = best->u - best->u.dot(e) * e;
+  t.elastic = best->elastic - best->elastic.dot(e) * e;
+  return t;
 }
 
 // The tread's axes in the tangent plane of e: the axle projected onto it
@@ -70,46 +73,83 @@ TreadAxes treadAxes(const Vector3d& axle, const Vector3d& e) {
 //   du_i/dt = V_s,i - (V_t / sigma_i) u_i,  q_i = (u_i + tau_i V_s,i) / sigma_i,
 //   F = -R_z mu(|q|) q / |q|.
 // In steady state q_i = V_s,i / V_t on both axes: the spec's isotropic law.
-void slipLawTraction(const Inputs& in, const Material& m, double normal_force, const TreadAxes& axes, Vector3d& u,
+//
+// u is the slip's memory: after a slide it holds sigma s, far more than the
+// tread's elastic deflection |F| / k_i (16 mm against 1.6 mm for a locked
+// 21 kg wheel), and a force taken from it alone stays on until the wheel has
+// moved u back (issue 11: a braked wheel sprang back 14 mm). So the tread
+// also keeps its elastic deflection d, as a brush tyre's bristles: it moves
+// with the slip and relaxes with the rolling as u does, and its force
+// G = -k_i (d_i + tau_i V_s,i) is what the tread gives while it is below the
+// law's: loading, d reaches the law and is held there (F = the law's force,
+// exactly as before); unloading, the force falls at k_i per metre.
+void slipLawTraction(const Inputs& in, const Material& m, double normal_force, const TreadAxes& axes, TreadState& t,
                      ContactForce& f) {
   const double slope_load = tractionInitialSlope(m) * normal_force;  // mu'(0) R_z (N)
-  if (!(slope_load > 0.0)) {  // unloaded, or a frictionless material
-    u.setZero();
+  if (!(slope_load > 0.0)) {                                         // unloaded, or a frictionless material
+    t.u.setZero();
+    t.elastic.setZero();
     return;
   }
-  std::array<double, 2> sigma, slip_velocity, deflection, slip;
-  double squared = 0.0;  // |u_i / sigma_i|^2
+  std::array<double, 2> sigma, slip_velocity, memory, elastic, slip;
   for (int i = 0; i < 2; ++i) {
     sigma[i] = slope_load / in.tread_stiffness[i];  // (m)
     slip_velocity[i] = axes.t[i].dot(f.slip_velocity);
     const Relaxation r = relaxation(in.step, in.transport_speed * in.step / sigma[i]);
-    deflection[i] = r.decay * axes.t[i].dot(u) + r.weight * slip_velocity[i];
-    squared += square(deflection[i] / sigma[i]);
+    memory[i] = r.decay * axes.t[i].dot(t.u) + r.weight * slip_velocity[i];
+    elastic[i] = r.decay * axes.t[i].dot(t.elastic) + r.weight * slip_velocity[i];
   }
-  // The cap s_sat on |u_i / sigma_i|; s1 ln(1/kTractionSaturation) <= s_sat
-  // spares the logarithm while the tread is below it (nearly always).
-  if (squared > square(m.s1 * kSaturationLog)) {
-    const double saturation = tractionSaturationSlip(m);
-    if (squared > square(saturation)) {
-      const double scale = saturation / std::sqrt(squared);
-      for (double& d : deflection) d *= scale;
+  // The law's force from the memory (per axis), after capping |u_i / sigma_i|
+  // at s_sat; s1 ln(1/kTractionSaturation) <= s_sat spares the logarithm
+  // while the tread is below it (nearly always).
+  const auto law = [&](std::array<double, 2>& deflection) {
+    const double squared = square(deflection[0] / sigma[0]) + square(deflection[1] / sigma[1]);
+    if (squared > square(m.s1 * kSaturationLog)) {
+      const double saturation = tractionSaturationSlip(m);
+      if (squared > square(saturation)) {
+        const double scale = saturation / std::sqrt(squared);
+        for (double& d : deflection) d *= scale;
+      }
     }
+    for (int i = 0; i < 2; ++i) slip[i] = (deflection[i] + in.tread_damping_time[i] * slip_velocity[i]) / sigma[i];
+    const double ratio = std::hypot(slip[0], slip[1]);
+    const double secant = tractionSecant(m, ratio);  // mu(s)/s, finite at 0
+    return Eigen::Vector2d(-normal_force * secant * slip[0], -normal_force * secant * slip[1]);
+  };
+  const auto spring = [&] {
+    return Eigen::Vector2d(-in.tread_stiffness[0] * (elastic[0] + in.tread_damping_time[0] * slip_velocity[0]),
+                           -in.tread_stiffness[1] * (elastic[1] + in.tread_damping_time[1] * slip_velocity[1]));
+  };
+  Eigen::Vector2d force = law(memory);
+  const Eigen::Vector2d tread = spring();
+  // The slip has turned against the memory: the memory restarts from the
+  // elastic deflection (the bristles' state), where the two agree.
+  if (tread.dot(force) < 0.0) {
+    memory = elastic;
+    force = law(memory);
   }
-  for (int i = 0; i < 2; ++i) slip[i] = (deflection[i] + in.tread_damping_time[i] * slip_velocity[i]) / sigma[i];
-  const double ratio = std::hypot(slip[0], slip[1]);
-  const double secant = tractionSecant(m, ratio);  // mu(s)/s, finite at 0
-  f.tangential_force = (-normal_force * secant) * (slip[0] * axes.t[0] + slip[1] * axes.t[1]);
-  f.mu = secant * ratio;
-  u = deflection[0] * axes.t[0] + deflection[1] * axes.t[1];
+  if (tread.squaredNorm() >= force.squaredNorm()) {
+    for (int i = 0; i < 2; ++i) {  // held at the law
+      elastic[i] = -force[i] / in.tread_stiffness[i] - in.tread_damping_time[i] * slip_velocity[i];
+    }
+  } else {
+    force = tread;  // unloading: elastic
+  }
+  f.tangential_force = force[0] * axes.t[0] + force[1] * axes.t[1];
+  f.mu = force.norm() / normal_force;
+  t.u = memory[0] * axes.t[0] + memory[1] * axes.t[1];
+  t.elastic = elastic[0] * axes.t[0] + elastic[1] * axes.t[1];
 }
 
 // Coulomb's law through the same tread spring: elastic up to mu_max R_z,
 // then sliding at it.
-void coulombTraction(const Inputs& in, const Material& m, double normal_force, const TreadAxes& axes, Vector3d& u,
+void coulombTraction(const Inputs& in, const Material& m, double normal_force, const TreadAxes& axes, TreadState& t,
                      ContactForce& f) {
   const double limit = m.mu_max * normal_force;  // (N)
+  Vector3d& u = t.u;
   if (!(limit > 0.0)) {
     u.setZero();
+    t.elastic.setZero();
     return;
   }
   Eigen::Vector2d spring, damper;  // k_i u_i and k_i tau_i V_s,i (N)
@@ -124,6 +164,7 @@ void coulombTraction(const Inputs& in, const Material& m, double normal_force, c
   f.tangential_force = force[0] * axes.t[0] + force[1] * axes.t[1];
   f.mu = force.norm() / normal_force;
   u = (spring[0] / in.tread_stiffness[0]) * axes.t[0] + (spring[1] / in.tread_stiffness[1]) * axes.t[1];
+  t.elastic = u;  // capped at the limit: all of it is elastic
 }
 
 template <bool kDamping, Traction kTraction, bool kRolling>
@@ -149,14 +190,14 @@ void contactForces(const Inputs& in, std::span<const WheelContact> contacts, std
     f.friction_limit = 0.0;
     if constexpr (kTraction != Traction::kNone) {
       const Material& m = in.materials[c.material];
-      Vector3d u = inheritTread(tread_in, c.e);
+      TreadState t = inheritTread(tread_in, c.e);
       const TreadAxes axes = treadAxes(in.axle, c.e);
       if constexpr (kTraction == Traction::kSlipLaw) {
-        slipLawTraction(in, m, f.normal_force, axes, u, f);
+        slipLawTraction(in, m, f.normal_force, axes, t, f);
       } else {
-        coulombTraction(in, m, f.normal_force, axes, u, f);
+        coulombTraction(in, m, f.normal_force, axes, t, f);
       }
-      tread_out.push_back({c.e, u});
+      tread_out.push_back(t);
       // At rest the tread sticks up to the peak of mu(s) R_z (tyre_model.hpp).
       const double peak = kTraction == Traction::kSlipLaw ? tractionPeak(m) : m.mu_max;
       f.friction_limit = std::max(f.mu, in.sticking * peak);

@@ -171,7 +171,10 @@ void WheelContactFinder::applySeamRule(const Terrain& terrain, double gap, doubl
   };
   // Decide on the unfiltered set, then erase: the rule is symmetric in order.
   shares_.resize(contacts_.size());
-  for (std::size_t k = 0; k < contacts_.size(); ++k) shares_[k] = share(contacts_[k]);
+  for (std::size_t k = 0; k < contacts_.size(); ++k) {
+    const double crease = share(contacts_[k]);
+    shares_[k] = crease < 1.0 ? std::max(crease, realEdgeShare(terrain, contacts_[k], gap)) : crease;
+  }
   std::size_t out = 0;
   for (std::size_t k = 0; k < contacts_.size(); ++k) {
     if (shares_[k] == 0.0) continue;
@@ -179,6 +182,37 @@ void WheelContactFinder::applySeamRule(const Terrain& terrain, double gap, doubl
     contacts_[out++].load_share = shares_[k];
   }
   contacts_.resize(out);
+}
+
+// A real edge (issue 11, defect 3): B's ground point lies on an edge or a
+// vertex of B (two or more of B's face planes pass through it) that no other
+// touching piece covers: a kerb's top edge, a crack's lip, a box's corner.
+// A seam's or a crease's edge is always covered, by the piece on its other
+// side. Such an edge stands `clear` off the rest of the ground (the kerb's
+// height, the crack's width) and presses into the tread by min(Z_B, clear),
+// as a brush tyre's bristles over a step: share min(1, clear / Z_B). It is 0
+// on every seam (so flat tessellated ground is untouched, bit for bit) and
+// continuous as contacts come and go: a piece that starts touching the wheel
+// is at least Z_B from B's ground point (triangle inequality), so distances
+// below Z_B are measured exactly, not by the plane bound.
+double WheelContactFinder::realEdgeShare(const Terrain& terrain, const WheelContact& b, double gap) const {
+  const ConvexPolyhedron& piece = terrain.piece(b.piece);
+  const Eigen::Vector3d& p = b.ground_point;
+  int planes_through = 0;
+  for (int f = 0; f < piece.faceCount() && planes_through < 2; ++f) {
+    if (std::abs(piece.faceNormal(f).dot(p) - piece.faceOffset(f)) <= gap) ++planes_through;
+  }
+  if (planes_through < 2) return 0.0;  // a face: the crease rule alone
+  double clear = b.deflection;         // only clearances below Z_B matter
+  for (const WheelContact& a : contacts_) {
+    if (a.piece == b.piece) continue;
+    const ConvexPolyhedron& other = terrain.piece(a.piece);
+    double outside = other.planeBound(p) - gap;  // (m), a lower bound
+    if (outside <= 0.0) return 0.0;              // covered: a seam
+    if (outside < clear) outside = queryPoint(other, p).signed_distance - gap;
+    clear = std::min(clear, std::max(outside, 0.0));
+  }
+  return clear / b.deflection;
 }
 
 }  // namespace wtc

@@ -48,8 +48,9 @@ namespace wtc {
 
 /// One contact's tread deflection, carried from step to step.
 struct TreadState {
-  Eigen::Vector3d e{Eigen::Vector3d::UnitZ()};  ///< The contact's direction toward the ground.
-  Eigen::Vector3d u{Eigen::Vector3d::Zero()};   ///< Tread deflection, normal to e (m).
+  Eigen::Vector3d e{Eigen::Vector3d::UnitZ()};       ///< The contact's direction toward the ground.
+  Eigen::Vector3d u{Eigen::Vector3d::Zero()};        ///< The slip law's tread state (its slip memory), normal to e (m).
+  Eigen::Vector3d elastic{Eigen::Vector3d::Zero()};  ///< The tread's elastic deflection, normal to e (m).
 };
 
 /// Per-wheel state: contact search caches, tread deflections, the last

@@ -22,8 +22,12 @@
 // outside A and L = sqrt(2 r_f Z_B) the half-length of B's contact patch, so
 // a concave crease between two nearly coplanar pieces (a heightfield's
 // gentle valley) loads the wheel like the flat ground it nearly is, instead
-// of doubling the load as soon as the crease is bent. See
-// docs/wheel-contact.md for why this is exact on flat seams and ridges.
+// of doubling the load as soon as the crease is bent. A real edge (B's
+// ground point on an edge or vertex of B that no other touching piece
+// covers: a kerb's top edge, a crack's lip) is not a crease: it keeps at
+// least min(1, clear / Z_B), where clear is how far it stands off the rest
+// of the ground. See docs/wheel-contact.md for why this is exact on flat
+// seams and ridges.
 #include <cmath>
 #include <span>
 #include <string>
@@ -72,7 +76,8 @@ struct WheelContact {
   double deflection = 0.0;                                ///< Z = r_f - signed distance (m), > 0.
   double signed_distance = 0.0;                           ///< From O to the piece (m); < 0 inside.
   double load_share = 1.0;  ///< Fraction of this contact's normal force the wheel feels, (0, 1]: below 1 only
-                            ///< next to a nearer piece at a shallow concave crease (seam rule).
+                            ///< next to a nearer piece at a shallow concave crease, or on an edge
+                            ///< standing less than Z off the rest of the ground (seam rule).
   PieceId piece = -1;
   MaterialId material = -1;
 };
@@ -104,6 +109,7 @@ class WheelContactFinder {
 
  private:
   void applySeamRule(const Terrain& terrain, double gap, double radius);
+  double realEdgeShare(const Terrain& terrain, const WheelContact& b, double gap) const;
   void exitWhereEntered(const ConvexPolyhedron& piece, PieceId id, const Eigen::Vector3d& centre, double radius,
                         WheelContact& c);
   std::vector<PieceId> candidates_;

@@ -197,6 +197,88 @@ TEST(WheelContactTest, ShallowConcaveCreaseLoadsLikeTheFlatGroundItNearlyIs) {
   EXPECT_NEAR(previous, 2 * kDeflection, 1e-12) << "a real valley: both sides in full";
 }
 
+// Ground z <= 0 for x < 0 and, from x = gap on, a second block whose top
+// is `rise` higher: a kerb (gap 0, rise > 0) or a crack (gap > 0, rise 0).
+wtc::Terrain stepOrCrack(double rise, double gap) {
+  wtc::TerrainBuilder builder;
+  const auto material = builder.addMaterial({});
+  builder.addPiece(wtc::ConvexPolyhedron::box({-1, -1, -0.5}, {0, 1, 0}), material);
+  builder.addPiece(wtc::ConvexPolyhedron::box({gap, -1, -0.5}, {gap + 1, 1, rise}), material);
+  return std::move(builder).build();
+}
+
+// Lower bound on the share of a contact on a real edge (issue 11, defect 3):
+// the edge presses into the tread by min(Z, clear), clear being how far it
+// stands off the other block.
+struct RealEdgeSweep {
+  double least_edge_margin = 1.0;  // min over edge contacts of share - min(1, clear / Z)
+  int edge_contacts = 0;           // contacts whose ground point is on a block's top edge
+  double largest_load_change = 0;  // max |change of sum share Z| between neighbouring positions (m)
+};
+
+RealEdgeSweep sweepAcross(double rise, double gap, double step) {
+  const wtc::Terrain terrain = stepOrCrack(rise, gap);
+  wtc::WheelContactFinder finder;
+  RealEdgeSweep sweep;
+  double previous = -1.0;
+  for (double x = -0.25; x <= 0.25 + gap; x += step) {
+    // The centre kDeflection below r_f over the lower ground, as the wheel
+    // rolls up to the edge; over a kerb it is pressed deeper (kinematics).
+    const auto contacts = finder.find(terrain, {kRadius, 0.12}, {{x, 0, kRadius - kDeflection}, Vector3d::UnitY()});
+    for (const auto& c : contacts) {
+      const bool near_edge = std::abs(c.ground_point.x()) < 1e-9 && std::abs(c.ground_point.z()) < 1e-9;
+      const bool far_edge = std::abs(c.ground_point.x() - gap) < 1e-9 && std::abs(c.ground_point.z() - rise) < 1e-9;
+      if (!(near_edge && gap > 0) && !far_edge) continue;  // the kerb's foot is a covered corner
+      ++sweep.edge_contacts;
+      const double clear = std::max(rise, gap);
+      sweep.least_edge_margin = std::min(sweep.least_edge_margin, c.load_share - std::min(1.0, clear / c.deflection));
+    }
+    const double load = totalDeflection(contacts);
+    if (previous >= 0) sweep.largest_load_change = std::max(sweep.largest_load_change, std::abs(load - previous));
+    previous = load;
+  }
+  return sweep;
+}
+
+TEST(WheelContactTest, RealEdgesOfKerbsAndCracksCarryTheirWholeLoad) {
+  // Case (issue 11, defect 3): the crease rule's share delta / L also hit
+  // real geometry: a 10 mm kerb's edge carried about a third of c Z, and a
+  // crack narrower than L a share g / L. A real edge is covered by no other
+  // piece; it presses into the tread by min(Z, clear): its whole load while
+  // Z is below its height (or width).
+  for (const double rise : {0.005, 0.01, 0.02}) {
+    const RealEdgeSweep sweep = sweepAcross(rise, 0.0, 1e-4);
+    EXPECT_GT(sweep.edge_contacts, 100) << "kerb " << rise;
+    std::printf("kerb %.0f mm: least edge share - min(1, H / Z) = %.3g\n", rise * 1e3, sweep.least_edge_margin);
+    EXPECT_GE(sweep.least_edge_margin, -1e-12) << "kerb " << rise;
+  }
+  for (const double gap : {0.005, 0.01, 0.02}) {
+    const RealEdgeSweep sweep = sweepAcross(0.0, gap, 1e-4);
+    EXPECT_GT(sweep.edge_contacts, 100) << "crack " << gap;
+    std::printf("crack %.0f mm: least edge share - min(1, g / Z) = %.3g\n", gap * 1e3, sweep.least_edge_margin);
+    EXPECT_GE(sweep.least_edge_margin, -1e-12) << "crack " << gap;
+  }
+}
+
+TEST(WheelContactTest, LoadChangesContinuouslyAcrossKerbsAndCracks) {
+  // Case (issue 11, defect 3): when a kerb's edge became the nearer contact
+  // its load jumped by about c Z (1 - H / L). Now the load the wheel feels
+  // changes by no more than the geometry does: each contact's deflection is
+  // 1-Lipschitz in the centre, so over a step dx the sum of two contacts
+  // moves by at most about 2 dx (a real edge's min(Z, clear) too).
+  constexpr double kStep = 1e-5;  // m
+  for (const double rise : {0.002, 0.005, 0.01, 0.02}) {
+    const double change = sweepAcross(rise, 0.0, kStep).largest_load_change;
+    std::printf("kerb %.0f mm: largest load change %.3g x the step\n", rise * 1e3, change / kStep);
+    EXPECT_LT(change, 2.5 * kStep) << "kerb " << rise;
+  }
+  for (const double gap : {0.002, 0.005, 0.01, 0.02}) {
+    const double change = sweepAcross(0.0, gap, kStep).largest_load_change;
+    std::printf("crack %.0f mm: largest load change %.3g x the step\n", gap * 1e3, change / kStep);
+    EXPECT_LT(change, 2.5 * kStep) << "crack " << gap;
+  }
+}
+
 TEST(WheelContactTest, TreadTruncationDropsContactsOnTheCaps) {
   // Case: a wheel lying on its side (axle vertical): the ground is below the
   // cap, not the tread. Full-sphere mode keeps the contact.
