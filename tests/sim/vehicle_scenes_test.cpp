@@ -158,27 +158,21 @@ double turned(const char* engine, const char* mode, const char* dt) {
 // Issue 11: a six-wheel skid-steer turning in place, where the transport
 // speed of the middle wheels (near the pivot) is nearly zero. The turn is
 // set by the slip law at the scrubbing wheels; it must not depend on the
-// step or the engine: ODE force mode at 0.4 ms is the reference (273.4 deg
-// in 6 s), and ODE at 2 ms, ODE constraint mode and Bullet force mode at
-// 0.4 and 2 ms agree within 1 % (measured: within 0.03 %).
+// step or the engine: ODE force mode at 0.4 ms is the reference (273.37 deg
+// in 6 s), and ODE at 2 ms, ODE constraint mode and Bullet in both modes at
+// 0.4 and 2 ms agree within 1 % (measured: within 0.03 %). Bullet's
+// multibody constraint mode turned 90.8 deg before its wheels got their own
+// friction rows (wheel_friction_constraint.hpp): its solver replaced every
+// contact's friction directions with a fixed frame (btPlaneSpace1) and
+// capped each at mu N; now 273.39 deg at 0.4 ms, 273.35 at 2 ms.
 TEST(VehicleScenesTest, ASkidSteerTurnsInPlaceAlikeAtEveryStepInEveryEngine) {
   const double reference = turned("ode", "force", "0.0004");
   for (const char* dt : {"0.0004", "0.002"}) {
     EXPECT_NEAR(turned("ode", "force", dt), reference, 0.01 * std::abs(reference)) << dt;
     EXPECT_NEAR(turned("ode", "constraint", dt), reference, 0.01 * std::abs(reference)) << dt;
     EXPECT_NEAR(turned("bullet", "force", dt), reference, 0.01 * std::abs(reference)) << dt;
+    EXPECT_NEAR(turned("bullet", "constraint", dt), reference, 0.01 * std::abs(reference)) << dt;
   }
-}
-
-// Open: Bullet's multibody constraint mode turns a third as far (90.8 deg
-// against 273.4, at 0.4 and 2 ms alike). Its solver replaces every
-// contact's friction directions with a fixed frame (btPlaneSpace1) and
-// caps each at mu N; the scrubbing wheels' forces then point elsewhere
-// than the slip law's (the middle left wheel: -153 / -63 N against
-// +163 / -28 N in the other three). Measured, not yet fixed.
-TEST(VehicleScenesTest, DISABLED_ASkidSteerTurnsInPlaceInBulletsConstraintMode) {
-  const double reference = turned("ode", "force", "0.0004");
-  EXPECT_NEAR(turned("bullet", "constraint", "0.0004"), reference, 0.01 * std::abs(reference));
 }
 
 }  // namespace

@@ -109,9 +109,9 @@ Plugin::Impl::Impl(btDiscreteDynamicsWorld& w, const Terrain& t, ContactMode m)
   // (measured: half the slip law's lateral drift). A multibody world keeps
   // its second direction: btMultiBodyConstraintSolver::convertMultiBodyContact
   // overwrites every contact's friction directions with btPlaneSpace1 before
-  // it looks at the cache, so one "cached" direction is an arbitrary fixed
-  // one (measured: no grip along the wheel's travel). Both flags are
-  // world-wide (docs/bullet-plugin.md).
+  // it looks at the cache, so a multibody wheel's friction is its own
+  // constraint's (wheel_friction_constraint.hpp). Both flags are world-wide
+  // (docs/bullet-plugin.md).
   if (mode == ContactMode::kConstraint) {
     // A split threshold at or above zero splits every penetrating contact:
     // no contact could keep the tyre's spring (wheel_terrain_algorithm.cpp).
@@ -150,7 +150,11 @@ Plugin::Impl::~Impl() {
     dispatcher->registerCollisionCreateFunc(type, CUSTOM_CONVEX_SHAPE_TYPE,
                                             config->getCollisionAlgorithmCreateFunc(type, CUSTOM_CONVEX_SHAPE_TYPE));
   }
-  for (const auto& w : wheels) w->collider->setCollisionShape(w->shape->original());
+  for (const auto& w : wheels) {
+    w->collider->setCollisionShape(w->shape->original());
+    if (w->friction != nullptr)
+      static_cast<btMultiBodyDynamicsWorld&>(world).removeMultiBodyConstraint(w->friction.get());
+  }
 }
 
 int Plugin::Impl::wheelOf(const btCollisionObject* object) const {
@@ -211,6 +215,7 @@ void Plugin::Impl::preTick(double h) {
     if (r.skipped) {
       // Its body's state is not finite: no force and no contact this step
       // (an exception here would leave Bullet's world half-stepped).
+      if (w.friction != nullptr) w.friction->set({}, {}, h);
       w.mounted.tell(listener, static_cast<WheelId>(id), h);
       continue;
     }
@@ -218,6 +223,7 @@ void Plugin::Impl::preTick(double h) {
     // algorithm (wheel_terrain_algorithm.cpp); the wrench is then the
     // rolling moment alone.
     applyWrench(w, k, toBullet(r.force), toBullet(r.torque), h);
+    if (w.friction != nullptr) w.friction->set(r.contacts, w.mounted.forces().contacts, h);
     w.mounted.tell(listener, static_cast<WheelId>(id), h);
   }
 }
@@ -257,6 +263,9 @@ void Plugin::Impl::readSolvedForces(Wheel& w, double h) {
         p.m_normalWorldOnB * p.m_appliedImpulse + p.m_lateralFrictionDir1 * p.m_appliedImpulseLateral1;
     if (second) impulse_on_a += p.m_lateralFrictionDir2 * p.m_appliedImpulseLateral2;
     w.solved_forces[i] = toEigen(w.wheel_is_body0 ? impulse_on_a : -impulse_on_a) / h;
+  }
+  if (w.friction != nullptr) {
+    for (std::size_t i = 0; i < n; ++i) w.solved_forces[i] += toEigen(w.friction->appliedForce(i, h));
   }
   w.mounted.setSolvedForces(w.solved_forces);
 }
@@ -304,7 +313,17 @@ WheelId Plugin::addWheel(const MultiBodyWheel& spec) {
   w->collider = collider;
   w->axle_local = spec.axle_local;
   w->centre_local = spec.centre_local;
-  return impl_->add(std::move(w), kWhere);
+  auto* multibody_world = dynamic_cast<btMultiBodyDynamicsWorld*>(&impl_->world);
+  if (impl_->mode == ContactMode::kConstraint) {
+    if (multibody_world == nullptr) fail(kWhere, "a multibody link's world must be a btMultiBodyDynamicsWorld");
+    w->friction =
+        std::make_unique<WheelFrictionConstraint>(spec.multibody, spec.link, static_cast<int>(kReservedContacts));
+  }
+  const WheelId id = impl_->add(std::move(w), kWhere);
+  if (WheelFrictionConstraint* friction = impl_->wheels.back()->friction.get()) {
+    multibody_world->addMultiBodyConstraint(friction);
+  }
+  return id;
 }
 
 const WheelForces& Plugin::forces(WheelId wheel) const {

@@ -7,6 +7,7 @@
 
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 
+#include "wheel_friction_constraint.hpp"
 #include "wtc/bullet/plugin.hpp"
 #include "wtc/bullet/terrain_object.hpp"
 #include "wtc/bullet/wheel_shape.hpp"
@@ -39,6 +40,9 @@ struct Wheel {
   bool wheel_is_body0 = true;
   std::vector<int> manifold_point;
   std::vector<Eigen::Vector3d> solved_forces;  // scratch for MountedWheel::setSolvedForces
+  // Constraint mode, a multibody link: its contacts' friction
+  // (wheel_friction_constraint.hpp), in the world while the wheel is.
+  std::unique_ptr<WheelFrictionConstraint> friction;
 };
 
 struct Plugin::Impl {

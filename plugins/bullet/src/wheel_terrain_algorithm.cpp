@@ -78,7 +78,9 @@ void WheelTerrainAlgorithm::writeWtcContacts(int wheel, bool wheel_is_body0, con
     w.manifold_point.push_back(index < 0 || taken ? -1 : index);
     if (index < 0) continue;
     btManifoldPoint& p = manifold_->getContactPoint(index);
-    p.m_combinedFriction = c.friction;
+    // A multibody link's friction is its own constraint's
+    // (wheel_friction_constraint.hpp): Bullet's would not keep the direction.
+    p.m_combinedFriction = w.friction != nullptr ? 0.0 : c.friction;
     p.m_combinedRestitution = 0;
     p.m_combinedRollingFriction = 0;
     p.m_combinedSpinningFriction = 0;

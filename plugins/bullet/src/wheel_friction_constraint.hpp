@@ -1,0 +1,56 @@
+#pragma once
+// Constraint mode's friction for a wheel that is a multibody link (internal
+// to wtc::bullet).
+//
+// Why not Bullet's own: btMultiBodyConstraintSolver::convertMultiBodyContact
+// overwrites every contact's friction directions with btPlaneSpace1 (a frame
+// fixed by the normal alone) before it looks at the plugin's direction, and
+// caps each of its two rows at mu N: a pyramid in a frame unrelated to the
+// slip. A skid-steering robot's scrubbing wheels then pushed where the slip
+// law does not (issue 11: the robot turned 90.8 deg in 6 s against 273.4 deg
+// in the other engine-mode pairs). So a multibody wheel's contacts reach
+// Bullet with no friction of their own, and this constraint gives each one
+// the row the rigid-body path has: one direction, along the traction (the
+// engine contact's friction_direction), the relative velocity of the
+// tread point P along it driven to zero within +-mu R_z h. R_z is the tyre
+// model's normal force at the start of the step (the multibody solver
+// cannot couple a constraint's bound to a contact's normal impulse).
+#include <span>
+#include <vector>
+
+#include <BulletDynamics/Featherstone/btMultiBodyConstraint.h>
+
+#include "wtc/engine_contact.hpp"
+#include "wtc/wheel_forces.hpp"
+
+namespace wtc::bullet {
+
+class WheelFrictionConstraint final : public btMultiBodyConstraint {
+ public:
+  /// At most `rows` contacts of the link get friction; more are left free.
+  WheelFrictionConstraint(btMultiBody* multibody, int link, int rows);
+
+  /// This step's rows: contacts[i] with the normal force of model[i]
+  /// (same order), step h.
+  void set(std::span<const EngineContact> contacts, std::span<const ContactForce> model, double h);
+  /// The force (N, world) the solver applied on the wheel at contact i of
+  /// the last set(), along its direction; zero for a contact without a row.
+  /// (Not const: this Bullet's getAppliedImpulse is not.)
+  btVector3 appliedForce(std::size_t i, double h);
+
+  void finalizeMultiDof() override;
+  int getIslandIdA() const override;
+  int getIslandIdB() const override { return -1; }  // the static terrain
+  void createConstraintRows(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data,
+                            const btContactSolverInfo& info) override;
+  void debugDraw(btIDebugDraw*) override {}
+
+ private:
+  struct Row {
+    btVector3 point, direction;
+    double limit;  // impulse (N s)
+  };
+  std::vector<Row> active_;
+};
+
+}  // namespace wtc::bullet
