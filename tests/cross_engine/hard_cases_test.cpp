@@ -418,13 +418,18 @@ TEST(HardCasesTest, AWheelOnASideSlopePastTheTreadsLimitRestsOnItsCap) {
 // Time for a driven wheel (21 kg, 10 N m and a 0.3 m g push, as its
 // vehicle would) to climb a 6 cm step: from the face's first touch until
 // the centre stands r_f past the edge on the top (s), or -1.
-double stepClimbTime(Engine engine, ContactMode mode) {
-  constexpr double kMass = 21.0, kH = 1e-3, kStep = 0.06;
+// Flat ground with a step of `height` (m) along x = 0.
+Terrain groundWithAStep(double height) {
   TerrainBuilder builder;
   LedgeParams step;
-  step.height = kStep;
+  step.height = height;
   addLedge(builder, step, builder.addMaterial({}));
-  const Terrain ground = std::move(builder).build();
+  return std::move(builder).build();
+}
+
+double stepClimbTime(Engine engine, ContactMode mode) {
+  constexpr double kMass = 21.0, kH = 1e-3, kStep = 0.06;
+  const Terrain ground = groundWithAStep(kStep);
   auto sim =
       makeEngineSim(engine, mode, ground, kMass, {-1.0, 0, kRadius - kMass * kGravityMps2 / 1e5}, Hold::kUpright);
   double touch = -1.0;
@@ -446,11 +451,7 @@ double stepClimbTime(Engine engine, ContactMode mode) {
 constexpr double kCreepMps = 0.1;
 double largestLoadStepOnAKerb(Engine engine, double rise) {
   constexpr double kMass = 21.0, kH = 1e-3, kHoldS = 0.05;
-  TerrainBuilder builder;
-  LedgeParams kerb;
-  kerb.height = rise;
-  addLedge(builder, kerb, builder.addMaterial({}));
-  const Terrain ground = std::move(builder).build();
+  const Terrain ground = groundWithAStep(rise);
   auto sim = makeEngineSim(engine, ContactMode::kForce, ground, kMass, {-0.25, 0, kRadius - kMass * kGravityMps2 / 1e5},
                            Hold::kUpright);
   sim->setMotion({kCreepMps, 0, 0}, kCreepMps / kRadius);
