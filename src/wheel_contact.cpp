@@ -160,21 +160,20 @@ void WheelContactFinder::applySeamRule(const Terrain& terrain, double gap, doubl
     // L = sqrt(2 r Z): half the chord the ground cuts from the undeformed tread.
     const double patch = std::sqrt(2.0 * radius * b.deflection);
     double least = 1.0;
+    bool covered = false;  // B's ground point lies on another touching piece: a seam, not a real edge
     for (const WheelContact& a : contacts_) {
+      if (a.piece == b.piece) continue;
+      const double outside = terrain.piece(a.piece).planeBound(b.ground_point) - gap;  // (m)
+      covered = covered || outside <= 0.0;
       const bool nearer =
           a.signed_distance < b.signed_distance || (a.signed_distance == b.signed_distance && a.piece < b.piece);
-      if (!nearer) continue;
-      const double outside = terrain.piece(a.piece).planeBound(b.ground_point) - gap;  // (m)
-      least = std::min(least, outside <= 0.0 ? 0.0 : std::min(1.0, outside / patch));
+      if (nearer) least = std::min(least, outside <= 0.0 ? 0.0 : std::min(1.0, outside / patch));
     }
-    return least;
+    return least < 1.0 && !covered ? std::max(least, realEdgeShare(terrain, b, gap)) : least;
   };
   // Decide on the unfiltered set, then erase: the rule is symmetric in order.
   shares_.resize(contacts_.size());
-  for (std::size_t k = 0; k < contacts_.size(); ++k) {
-    const double crease = share(contacts_[k]);
-    shares_[k] = crease < 1.0 ? std::max(crease, realEdgeShare(terrain, contacts_[k], gap)) : crease;
-  }
+  for (std::size_t k = 0; k < contacts_.size(); ++k) shares_[k] = share(contacts_[k]);
   std::size_t out = 0;
   for (std::size_t k = 0; k < contacts_.size(); ++k) {
     if (shares_[k] == 0.0) continue;
@@ -194,7 +193,8 @@ void WheelContactFinder::applySeamRule(const Terrain& terrain, double gap, doubl
 // on every seam (so flat tessellated ground is untouched, bit for bit) and
 // continuous as contacts come and go: a piece that starts touching the wheel
 // is at least Z_B from B's ground point (triangle inequality), so distances
-// below Z_B are measured exactly, not by the plane bound.
+// below Z_B are measured exactly, not by the plane bound. Called for a
+// contact that no other touching piece covers (applySeamRule knows).
 double WheelContactFinder::realEdgeShare(const Terrain& terrain, const WheelContact& b, double gap) const {
   const ConvexPolyhedron& piece = terrain.piece(b.piece);
   const Eigen::Vector3d& p = b.ground_point;
@@ -207,10 +207,9 @@ double WheelContactFinder::realEdgeShare(const Terrain& terrain, const WheelCont
   for (const WheelContact& a : contacts_) {
     if (a.piece == b.piece) continue;
     const ConvexPolyhedron& other = terrain.piece(a.piece);
-    double outside = other.planeBound(p) - gap;  // (m), a lower bound
-    if (outside <= 0.0) return 0.0;              // covered: a seam
+    double outside = other.planeBound(p) - gap;  // (m), > 0 (not covered), a lower bound
     if (outside < clear) outside = queryPoint(other, p).signed_distance - gap;
-    clear = std::min(clear, std::max(outside, 0.0));
+    clear = std::min(clear, outside);
   }
   return clear / b.deflection;
 }
