@@ -85,7 +85,8 @@ int main(int argc, char** argv) {
   bool quiet = false, no_plots = false, skip_done = false;
   app.add_option("scene", scene_file, "scene file (YAML)")->required();
   app.add_option("--engine", engine, "bullet, ode or ode_quick (overrides the scene's)");
-  app.add_option("--mode", mode, "force or constraint");
+  app.add_option("--mode", mode,
+                 "force or constraint (WTC), engine_cylinder or engine_sphere (the engine's own wheel contact)");
   app.add_option("--dt", dt, "step (s)");
   app.add_option("--duration", duration, "simulated time (s)");
   app.add_option("--out", out, "output directory (new or empty; default runs/<scene>_<engine>_<mode>[_N])");
@@ -124,7 +125,7 @@ int main(int argc, char** argv) {
     wtc::sim::RunSummary names;
     names.scene = scene.name;
     names.engine = std::string(wtc::sim::engineName(scene.engine.kind));
-    names.mode = std::string(wtc::contactModeName(scene.engine.mode));
+    names.mode = std::string(wtc::sim::modeName(scene.engine));
     const fs::path dir = outputDirectory(out, skip_done, names);
 
     std::signal(SIGINT, onSignal);

@@ -83,7 +83,7 @@ void writeRunSummary(const std::filesystem::path& file, const sim::RunSummary& s
 void writeRunStarted(const std::filesystem::path& file, const sim::Scene& scene) {
   writeJson(file, {{"scene", scene.name},
                    {"engine", engineText(scene)},
-                   {"mode", contactModeName(scene.engine.mode)},
+                   {"mode", sim::modeName(scene.engine)},
                    {"dt", scene.engine.step_seconds},
                    {"status", "running"},
                    {"interrupted", true},

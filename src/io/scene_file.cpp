@@ -296,13 +296,10 @@ sim::Scene readSceneFile(const std::filesystem::path& path, std::span<const Over
     }
   }
   if (const auto m = YamlReader::get(root, "mode")) {
-    const std::string mode = in.string(*m, "mode");
-    if (mode == "force") {
-      scene.engine.mode = ContactMode::kForce;
-    } else if (mode == "constraint") {
-      scene.engine.mode = ContactMode::kConstraint;
-    } else {
-      in.fail(*m, "mode: '" + mode + "' (expected force or constraint)");
+    try {
+      sim::parseMode(in.string(*m, "mode"), scene.engine, "mode");
+    } catch (const InvalidInputError& error) {
+      in.fail(*m, error.what());
     }
   }
   scene.engine.step_seconds = in.number(root, "dt", scene.engine.step_seconds);

@@ -1,8 +1,10 @@
 #include "wtc/sim/engine.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include "wtc/error.hpp"
+#include "wtc/traction_law.hpp"
 
 namespace wtc::sim {
 
@@ -23,6 +25,40 @@ EngineKind parseEngine(std::string_view name, const std::string& where) {
     if (name == engineName(kind)) return kind;
   }
   throw InvalidInputError(where + ": unknown engine '" + std::string(name) + "' (expected bullet, ode or ode_quick)");
+}
+
+std::string_view modeName(const EngineSettings& settings) {
+  switch (settings.engine_wheels) {
+    case EngineWheels::kCylinder:
+      return "engine_cylinder";
+    case EngineWheels::kSphere:
+      return "engine_sphere";
+    case EngineWheels::kNone:
+      break;
+  }
+  return contactModeName(settings.mode);
+}
+
+void parseMode(std::string_view name, EngineSettings& settings, const std::string& where) {
+  static constexpr std::pair<std::string_view, std::pair<ContactMode, EngineWheels>> kModes[] = {
+      {"force", {ContactMode::kForce, EngineWheels::kNone}},
+      {"constraint", {ContactMode::kConstraint, EngineWheels::kNone}},
+      {"engine_cylinder", {ContactMode::kForce, EngineWheels::kCylinder}},
+      {"engine_sphere", {ContactMode::kForce, EngineWheels::kSphere}}};
+  for (const auto& [mode_name, mode] : kModes) {
+    if (name != mode_name) continue;
+    settings.mode = mode.first;
+    settings.engine_wheels = mode.second;
+    return;
+  }
+  throw InvalidInputError(where + ": '" + std::string(name) +
+                          "' (expected force, constraint, engine_cylinder or engine_sphere)");
+}
+
+std::vector<double> engineWheelFrictions(const Terrain& terrain) {
+  std::vector<double> mu;
+  for (const Material& m : terrain.materials()) mu.push_back(tractionPeak(m));
+  return mu;
 }
 
 void validate(const EngineSettings& settings, const std::string& where) {

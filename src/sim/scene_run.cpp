@@ -63,7 +63,7 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
   RunSummary summary;
   summary.scene = scene.name;
   summary.engine = std::string(engineName(scene.engine.kind));
-  summary.mode = std::string(contactModeName(scene.engine.mode));
+  summary.mode = std::string(modeName(scene.engine));
   summary.dt = scene.engine.step_seconds;
   summary.parameters = scene.parameters;
 
@@ -83,6 +83,12 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
   std::vector<double> effort_sum(v.bodies.size(), 0.0);
   std::vector<double> peak_slip(v.bodies.size(), 0.0);
   const std::vector<int> wheels = v.wheels();
+  // Contact breaks: steps at which a wheel that touched the ground at the
+  // step before touches nothing. A wheel rolling on flat ground has none; a
+  // chattering contact (a rigid one bouncing on and off) has one in every
+  // few steps, so their rate measures jitter.
+  std::vector<char> touching(v.bodies.size(), 0);
+  std::uint64_t contact_breaks = 0;
   double hitch_peak = 0.0, hitch_sum_x = 0.0;
   const auto t0 = std::chrono::steady_clock::now();
   if (recorder) recorder->record(run);
@@ -101,6 +107,9 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
     last_yaw = yaw;
     for (const int b : v.actuated()) effort_sum[b] += std::abs(run.drives()[b].last_effort);
     for (const int w : wheels) {
+      const bool touches = run.state().wheels[w].contacts > 0;
+      contact_breaks += touching[w] && !touches ? 1 : 0;
+      touching[w] = touches ? 1 : 0;
       if (run.state().bodies[w].linear_velocity.norm() < kSlipSpeedFloorMps) continue;
       for (const ContactForce& c : engine.wheelForces(w).contacts) peak_slip[w] = std::max(peak_slip[w], c.slip_ratio);
     }
@@ -172,6 +181,8 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
   summary.fields["final_speed_mps"] = end.linear_velocity.head<2>().norm();
   summary.fields["yaw_change_deg"] = yaw_change * kDegPerRad;
   summary.fields["max_tilt_deg"] = max_tilt * kDegPerRad;
+  summary.fields["contact_breaks_per_s"] =
+      summary.sim_time > 0.0 ? static_cast<double>(contact_breaks) / summary.sim_time : 0.0;
   for (const int w : wheels) summary.wheel_peak_slip[v.bodies[w].name] = peak_slip[w];
   if (v.hitch && run.steps() > 0) {
     summary.fields["hitch_force_peak_N"] = hitch_peak;

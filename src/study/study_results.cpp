@@ -140,6 +140,13 @@ std::string join(const std::vector<std::string>& cells, const char* separator) {
   return text;
 }
 
+// The rate at which wheels lost the ground (scene_run.cpp: a measure of
+// contact jitter), 0 for runs made before it was counted.
+double contactBreaksPerSecond(const sim::RunSummary& s) {
+  const auto found = s.fields.find("contact_breaks_per_s");
+  return found == s.fields.end() ? 0.0 : found->second;
+}
+
 }  // namespace
 
 std::vector<RunResult> gatherResults(const StudyPlan& plan, const fs::path& out) {
@@ -200,7 +207,7 @@ void writeResultsCsv(const fs::path& file, const std::vector<RunResult>& results
       "scenario,key,sweep,label,engine,mode,dt_s,reference,success,crashed,nan,diverged,wall_time_s,real_time_factor,"
       "steps,"
       "rms_position_error_m,final_position_error_m,peak_pitch_deg,peak_pitch_error_deg,peak_wheel_force_N,"
-      "rms_wheel_force_error_N,path_error_m,warnings,on_front\n";
+      "rms_wheel_force_error_N,contact_breaks_per_s,path_error_m,warnings,on_front\n";
   for (const RunResult& r : results) {
     const sim::RunSummary& s = r.summary;
     text += join({csvText(r.run->scenario),
@@ -224,6 +231,7 @@ void writeResultsCsv(const fs::path& file, const std::vector<RunResult>& results
                   number(r.peak_pitch_error_deg),
                   number(r.peak_wheel_force),
                   number(r.rms_wheel_force_error),
+                  number(contactBreaksPerSecond(s)),
                   r.path_error ? number(*r.path_error) : std::string(),
                   std::to_string(s.warnings.size()),
                   r.on_front ? "1" : "0"},
@@ -257,9 +265,17 @@ void writeResultsMarkdown(const fs::path& file, const StudyPlan& plan, const std
     std::sort(rows.begin(), rows.end(),
               [](const RunResult* a, const RunResult* b) { return a->summary.wall_time < b->summary.wall_time; });
     const bool paths = std::any_of(rows.begin(), rows.end(), [](const RunResult* r) { return r->path_error; });
-    std::vector<std::string> header = {
-        "setting",          "success",        "wall (s)",      "× real time",          "RMS position error (mm)",
-        "final error (mm)", "peak pitch (°)", "its error (°)", "peak wheel force (N)", "RMS force error (N)"};
+    std::vector<std::string> header = {"setting",
+                                       "success",
+                                       "wall (s)",
+                                       "× real time",
+                                       "RMS position error (mm)",
+                                       "final error (mm)",
+                                       "peak pitch (°)",
+                                       "its error (°)",
+                                       "peak wheel force (N)",
+                                       "RMS force error (N)",
+                                       "contact breaks (1/s)"};
     if (paths) header.push_back("path error RMS (mm)");
     header.insert(header.end(), {"warnings", "front"});
     text.append("\n### ").append(scenario).append(" (reference: ");
@@ -282,7 +298,8 @@ void writeResultsMarkdown(const fs::path& file, const StudyPlan& plan, const std
                                         number(r->peak_pitch_deg, "%.1f"),
                                         number(r->peak_pitch_error_deg, "%.1f"),
                                         number(r->peak_wheel_force, "%.0f"),
-                                        number(r->rms_wheel_force_error, "%.1f")};
+                                        number(r->rms_wheel_force_error, "%.1f"),
+                                        number(contactBreaksPerSecond(s), "%.0f")};
       if (paths) cells.push_back(r->path_error ? number(*r->path_error * 1e3, "%.2f") : std::string("–"));
       cells.push_back(std::to_string(s.warnings.size()));
       cells.push_back(r->on_front ? "●" : "");

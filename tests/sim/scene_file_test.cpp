@@ -73,6 +73,7 @@ TEST(SceneFileTest, OverridesReachValuesListsAndParameters) {
   const sim::Scene s = loadScene(file, overrides);
   EXPECT_EQ(s.engine.kind, sim::EngineKind::kOdeQuick);
   EXPECT_EQ(s.engine.mode, ContactMode::kConstraint);
+  EXPECT_EQ(s.engine.engine_wheels, sim::EngineWheels::kNone);
   EXPECT_EQ(s.engine.step_seconds, 0.001);
   EXPECT_EQ(s.parameters.at("wheel_rate"), 2.5);
   EXPECT_EQ(s.placement.translation(), Eigen::Vector3d(1, 2, 0.5));
@@ -99,6 +100,19 @@ TEST(SceneFileTest, CasesPickParametersAndMuPeakSetsS2) {
   }
 }
 
+TEST(SceneFileTest, TheEnginesOwnWheelContactIsAMode) {
+  const fs::path file = kScenes / "robot_straight.yaml";
+  const std::vector<Override> to_cylinder = {parseOverride("mode=engine_cylinder")};
+  const std::vector<Override> to_sphere = {parseOverride("mode=engine_sphere")};
+  const sim::Scene cylinder = loadScene(file, to_cylinder);
+  EXPECT_EQ(cylinder.engine.engine_wheels, sim::EngineWheels::kCylinder);
+  EXPECT_EQ(sim::modeName(cylinder.engine), "engine_cylinder");
+  const sim::Scene sphere = loadScene(file, to_sphere);
+  EXPECT_EQ(sphere.engine.engine_wheels, sim::EngineWheels::kSphere);
+  EXPECT_EQ(sim::modeName(sphere.engine), "engine_sphere");
+  EXPECT_EQ(sim::modeName(loadScene(file).engine), "force");
+}
+
 TEST(SceneFileTest, BadScenesAreRefusedWithFileLineKeyAndProblem) {
   // Case: a typo in a key, at its line.
   EXPECT_THAT(errorOf(kMinimal + "durration: 2\n"),
@@ -106,6 +120,8 @@ TEST(SceneFileTest, BadScenesAreRefusedWithFileLineKeyAndProblem) {
   // Case: an unknown engine, a wrong type, a non-finite or impossible number.
   EXPECT_THAT(errorOf(kMinimal + "engine: physx\n"), HasSubstr(":6:9: engine: unknown engine 'physx'"));
   EXPECT_THAT(errorOf(kMinimal + "dt: fast\n"), HasSubstr(":6:5: dt: 'fast' is not a number"));
+  EXPECT_THAT(errorOf(kMinimal + "mode: rigid\n"),
+              HasSubstr(":6:7: mode: 'rigid' (expected force, constraint, engine_cylinder or engine_sphere)"));
   EXPECT_THAT(errorOf(kMinimal + "dt: .nan\n"), HasSubstr("dt: '.nan' is not a finite number"));
   EXPECT_THAT(errorOf(kMinimal + "dt: -0.001\n"), HasSubstr("dt: must be > 0 s"));
   // Case: a missing terrain file, named.

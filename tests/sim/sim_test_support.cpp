@@ -26,8 +26,18 @@ std::vector<sim::EngineSettings> everyEngine() {
   return all;
 }
 
+std::vector<sim::EngineSettings> everyEngineWheelBaseline() {
+  std::vector<sim::EngineSettings> all;
+  for (const sim::EngineKind kind : {sim::EngineKind::kBullet, sim::EngineKind::kOde, sim::EngineKind::kOdeQuick}) {
+    for (const sim::EngineWheels wheels : {sim::EngineWheels::kCylinder, sim::EngineWheels::kSphere}) {
+      all.push_back({.kind = kind, .engine_wheels = wheels});
+    }
+  }
+  return all;
+}
+
 std::string label(const sim::EngineSettings& s) {
-  return std::string(sim::engineName(s.kind)) + (s.mode == ContactMode::kForce ? "_force" : "_constraint");
+  return std::string(sim::engineName(s.kind)) + "_" + std::string(sim::modeName(s));
 }
 
 }  // namespace wtc::testing

@@ -14,6 +14,8 @@ vehicle::VehicleDescription shippedVehicle(const std::string& file);  // under v
 Terrain flatGround();
 /// Every engine and mode a vehicle must run in.
 std::vector<sim::EngineSettings> everyEngine();
+/// Every engine with its own wheel contact (sim::EngineWheels), cylinder and sphere.
+std::vector<sim::EngineSettings> everyEngineWheelBaseline();
 std::string label(const sim::EngineSettings& settings);
 
 }  // namespace wtc::testing

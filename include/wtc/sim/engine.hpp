@@ -20,6 +20,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -42,13 +43,33 @@ std::string_view engineName(EngineKind kind);
 /// The kind named `name`; InvalidInputError naming `where` and the known names otherwise.
 EngineKind parseEngine(std::string_view name, const std::string& where);
 
+/// The engine's own wheel contact, a baseline to compare WTC with: the
+/// wheel body collides with the terrain pieces as a cylinder (or a sphere
+/// of radius r_f) through the engine's own collision, with its default
+/// rigid contact and Coulomb friction at the peak of the ground's mu(s); no
+/// tyre model, no rolling resistance. kNone: WTC's wheels.
+enum class EngineWheels { kNone, kCylinder, kSphere };
+
 struct EngineSettings {
   EngineKind kind = EngineKind::kBullet;
-  ContactMode mode = ContactMode::kForce;
+  ContactMode mode = ContactMode::kForce;  ///< WTC's contact mode (unused with engine_wheels).
+  EngineWheels engine_wheels = EngineWheels::kNone;
   double step_seconds = 4e-4;  ///< h (s), > 0: the source's mean step.
   int solver_iterations = 50;  ///< Iterative solvers' iterations per step (Bullet, ODE quickstep), > 0.
   EffectSet tyre_effects = EffectSet::full();
 };
+
+/// How the wheels meet the ground, as scenes, summaries and reports name it:
+/// "force", "constraint" (WTC's modes), "engine_cylinder", "engine_sphere".
+std::string_view modeName(const EngineSettings& settings);
+/// Sets mode and engine_wheels from such a name; InvalidInputError naming
+/// `where` and the known names otherwise.
+void parseMode(std::string_view name, EngineSettings& settings, const std::string& where);
+
+/// The Coulomb coefficients of an engine-wheel baseline, per material id
+/// of `terrain`: the peak of each material's mu(s) (the static coefficient
+/// of a tread that may stick).
+std::vector<double> engineWheelFrictions(const Terrain& terrain);
 
 /// Throws InvalidInputError naming the field and `where`.
 void validate(const EngineSettings& settings, const std::string& where);

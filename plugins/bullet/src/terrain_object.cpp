@@ -59,6 +59,7 @@ TerrainObject::TerrainObject(const Terrain& terrain) : terrain_(terrain) {
     }
     hull->recalcLocalAabb();
     hull->setMargin(kTerrainMarginM);
+    hull->setUserIndex(id);
     hulls_.push_back(std::move(hull));
   }
   const auto origin = [&](PieceId id) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace wtc::ode {
 namespace {
@@ -36,6 +37,7 @@ TerrainGeoms::TerrainGeoms(const Terrain& terrain, dSpaceID parent, TerrainShape
     const ConvexPolyhedron& piece = terrain.piece(id);
     const Eigen::Vector3d origin = shape == TerrainShape::kConvex ? addConvex(piece) : addTriMesh(piece);
     dGeomSetPosition(geoms_.back(), origin.x(), origin.y(), origin.z());
+    dGeomSetData(geoms_.back(), reinterpret_cast<void*>(static_cast<std::intptr_t>(id)));
     // Into its quadtree block now, while it is still first in the root's
     // list: ODE's quadtree takes a moved geom out of its block by a walk of
     // the block's list, and left to the first collide, every piece would
@@ -48,6 +50,11 @@ TerrainGeoms::TerrainGeoms(const Terrain& terrain, dSpaceID parent, TerrainShape
 TerrainGeoms::~TerrainGeoms() {
   dSpaceDestroy(space_);
   for (const dTriMeshDataID mesh : meshes_) dGeomTriMeshDataDestroy(mesh);
+}
+
+PieceId TerrainGeoms::piece(dGeomID geom) const {
+  if (dGeomIsSpace(geom) || dGeomGetSpace(geom) != space_) return -1;
+  return static_cast<PieceId>(reinterpret_cast<std::intptr_t>(dGeomGetData(geom)));
 }
 
 bool TerrainGeoms::contains(dGeomID geom) const {

@@ -1,6 +1,7 @@
 #include "wtc/bullet/sim_engine.hpp"
 
 #include <limits>
+#include <mutex>
 #include <vector>
 
 #include <BulletCollision/CollisionShapes/btCompoundShape.h>
@@ -13,8 +14,10 @@
 #include <btBulletDynamicsCommon.h>
 
 #include "wtc/bullet/plugin.hpp"
+#include "wtc/bullet/terrain_object.hpp"
 #include "wtc/constants.hpp"
 #include "wtc/error.hpp"
+#include "wtc/sim/engine_wheel_contacts.hpp"
 
 namespace wtc::bullet {
 namespace {
@@ -56,13 +59,16 @@ std::unique_ptr<btCollisionShape> cylinder(int axis, double r, double l) {
 }
 
 // The body's collision shape, or null; `owned` keeps every shape made. A
-// wheel's is its tread (a sphere when w >= 2 r_f); WTC's algorithm replaces
-// it against the terrain.
-btCollisionShape* makeShape(const Body& body, std::vector<std::unique_ptr<btCollisionShape>>& owned) {
+// wheel's is its tread (a sphere when w >= 2 r_f or when `sphere_wheels`);
+// with WTC's wheels, WTC's algorithm replaces it against the terrain.
+btCollisionShape* makeShape(const Body& body, bool sphere_wheels,
+                            std::vector<std::unique_ptr<btCollisionShape>>& owned) {
   const auto keep = [&](std::unique_ptr<btCollisionShape> shape) { return owned.emplace_back(std::move(shape)).get(); };
   if (body.wheel) {
     const WheelGeometry& g = body.wheel->geometry;
-    if (g.tread_width >= 2.0 * g.free_radius) return keep(std::make_unique<btSphereShape>(g.free_radius));
+    if (sphere_wheels || g.tread_width >= 2.0 * g.free_radius) {
+      return keep(std::make_unique<btSphereShape>(g.free_radius));
+    }
     int axis = 0;
     body.wheel->axle.cwiseAbs().maxCoeff(&axis);
     if (std::abs(body.wheel->axle[axis]) > 1.0 - 1e-12) return keep(cylinder(axis, g.free_radius, g.tread_width));
@@ -86,6 +92,32 @@ btCollisionShape* makeShape(const Body& body, std::vector<std::unique_ptr<btColl
   return nullptr;
 }
 
+// What an engine wheel's contact needs to know of the ground (the wheel
+// collider's user pointer): the Coulomb coefficient of each material.
+struct EngineWheelGround {
+  const btCollisionObject* terrain = nullptr;
+  const Terrain* pieces = nullptr;
+  std::vector<double> mu;  // per material id
+};
+
+// Bullet lets a collision object flagged CF_CUSTOM_MATERIAL_CALLBACK set
+// the friction of each new contact point through one process-wide
+// callback; only the engine wheels' colliders carry the flag. The ground's
+// wrapper is the child hull the wheel met, whose user index is its piece.
+bool engineWheelContactAdded(btManifoldPoint& point, const btCollisionObjectWrapper* a, int, int,
+                             const btCollisionObjectWrapper* b, int, int) {
+  const bool a_is_wheel =
+      (a->getCollisionObject()->getCollisionFlags() & btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK) != 0;
+  const btCollisionObjectWrapper* wheel = a_is_wheel ? a : b;
+  const btCollisionObjectWrapper* ground = a_is_wheel ? b : a;
+  const auto* g = static_cast<const EngineWheelGround*>(wheel->getCollisionObject()->getUserPointer());
+  if (g == nullptr || ground->getCollisionObject() != g->terrain) return false;
+  const PieceId piece = TerrainObject::pieceOf(*ground->getCollisionShape());
+  if (piece < 0 || piece >= static_cast<PieceId>(g->pieces->pieceCount())) return false;
+  point.m_combinedFriction = g->mu[g->pieces->materialId(piece)];
+  return true;
+}
+
 class SimEngine final : public sim::Engine {
  public:
   SimEngine(const sim::EngineSettings& settings, const Terrain& terrain, const vehicle::VehicleDescription& v,
@@ -97,6 +129,10 @@ class SimEngine final : public sim::Engine {
     buildTrees(placement);
     plugin_ = std::make_unique<Plugin>(world_, terrain, settings.mode);
     plugin_->terrainObject().setFriction(1.0);  // combined friction = product: the bodies' own decides
+    if (settings.engine_wheels != sim::EngineWheels::kNone) {
+      addEngineWheels(terrain);
+      return;
+    }
     for (std::size_t i = 0; i < v.bodies.size(); ++i) {
       const Body& body = v.bodies[i];
       if (!body.wheel) continue;
@@ -143,6 +179,7 @@ class SimEngine final : public sim::Engine {
   void step() override {
     world_.stepSimulation(settings().step_seconds, 0, settings().step_seconds);
     for (LinkVelocities& v : velocities_) v.valid = false;
+    if (!engine_wheels_.empty()) readEngineWheels();
   }
 
   vehicle::BodyKinematics body(int body) const override {
@@ -177,8 +214,13 @@ class SimEngine final : public sim::Engine {
     return motor == nullptr ? 0.0
                             : const_cast<btMultiBodyJointMotor*>(motor)->getAppliedImpulse(0) / settings().step_seconds;
   }
-  const WheelForces& wheelForces(int body) const override { return plugin_->applied(wheelId(body)); }
-  const WheelState& wheelState(int body) const override { return plugin_->state(wheelId(body)); }
+  const WheelForces& wheelForces(int body) const override {
+    return engine_wheels_.empty() ? plugin_->applied(wheelId(body)) : engine_wheels_[wheelId(body)].forces();
+  }
+  const WheelState& wheelState(int body) const override {
+    return engine_wheels_.empty() ? plugin_->state(wheelId(body)) : engine_wheels_[wheelId(body)].state();
+  }
+  // The engine's own wheels run no tyre model: nothing to tell.
   void setWheelListener(WheelListener* listener) override { plugin_->setListener(listener); }
 
  private:
@@ -205,8 +247,75 @@ class SimEngine final : public sim::Engine {
     int tree = -1;  // index in trees_
     int link = -1;  // -1: the tree's base
     btMultiBodyJointMotor* motor = nullptr;
-    WheelId wheel = -1;
+    btMultiBodyLinkCollider* collider = nullptr;
+    WheelId wheel = -1;  // the plugin's, or with engine wheels the index in engine_wheels_
   };
+
+  // The engine's own wheel contact (sim::EngineWheels): the wheels keep
+  // their collision shapes against the terrain's hulls, with Bullet's
+  // contact and Coulomb friction of the piece's mu (engineWheelContactAdded).
+  void addEngineWheels(const Terrain& terrain) {
+    static std::once_flag installed;
+    std::call_once(installed, [] { gContactAddedCallback = engineWheelContactAdded; });
+    ground_ = {.terrain = &plugin_->terrainObject(), .pieces = &terrain, .mu = sim::engineWheelFrictions(terrain)};
+    // Bullet's multibody solver gives a contact one friction row, along an
+    // arbitrary tangent (btPlaneSpace1), unless asked for two: a wheel
+    // would slide freely across it.
+    world_.getSolverInfo().m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
+    for (std::size_t i = 0; i < vehicle().bodies.size(); ++i) {
+      if (!vehicle().bodies[i].wheel) continue;
+      btMultiBodyLinkCollider& collider = *refs_[i].collider;
+      collider.setCollisionFlags(collider.getCollisionFlags() | btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK);
+      collider.setUserPointer(&ground_);
+      refs_[i].wheel = static_cast<WheelId>(engine_wheels_.size());
+      wheel_bodies_.push_back(static_cast<int>(i));
+      engine_wheels_.emplace_back();
+    }
+  }
+
+  // What Bullet's solver did at each wheel-terrain point of this step: the
+  // impulses it wrote back to the point (normal, and each friction
+  // direction it used) over h, on the wheel.
+  void readEngineWheels() {
+    for (sim::EngineWheelContacts& w : engine_wheels_) w.clear();
+    const double h = settings().step_seconds;
+    const bool second = (world_.getSolverInfo().m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS) != 0;
+    const btCollisionObject* ground = &plugin_->terrainObject();
+    btDispatcher& dispatcher = *world_.getDispatcher();
+    for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
+      const btPersistentManifold& manifold = *dispatcher.getManifoldByIndexInternal(m);
+      const bool wheel_is_a = manifold.getBody1() == ground;
+      if (!wheel_is_a && manifold.getBody0() != ground) continue;
+      const btCollisionObject* other = wheel_is_a ? manifold.getBody0() : manifold.getBody1();
+      const auto* collider = btMultiBodyLinkCollider::upcast(other);
+      if (collider == nullptr || collider->m_link < 0) continue;
+      const int body = bodyOfLink(collider);
+      if (body < 0 || !vehicle().bodies[body].wheel) continue;
+      for (int k = 0; k < manifold.getNumContacts(); ++k) {
+        const btManifoldPoint& p = manifold.getContactPoint(k);
+        if (p.getDistance() > 0.0 && p.m_appliedImpulse == 0.0) continue;  // kept, not touching
+        btVector3 impulse_on_a =
+            p.m_normalWorldOnB * p.m_appliedImpulse + p.m_lateralFrictionDir1 * p.m_appliedImpulseLateral1;
+        if (second) impulse_on_a += p.m_lateralFrictionDir2 * p.m_appliedImpulseLateral2;
+        const btVector3 normal = wheel_is_a ? p.m_normalWorldOnB : -p.m_normalWorldOnB;  // out of the ground
+        const btVector3 point = wheel_is_a ? p.getPositionWorldOnB() : p.getPositionWorldOnA();
+        engine_wheels_[refs_[body].wheel].add(toEigen(point), toEigen(normal), -p.getDistance(),
+                                              toEigen(wheel_is_a ? impulse_on_a : -impulse_on_a) / h);
+      }
+    }
+    for (std::size_t k = 0; k < engine_wheels_.size(); ++k) {
+      const int body = wheel_bodies_[k];
+      const vehicle::BodyKinematics b = this->body(body);
+      engine_wheels_[k].finish(b.pose.translation(), b.pose.linear() * vehicle().bodies[body].wheel->axle);
+    }
+  }
+
+  int bodyOfLink(const btMultiBodyLinkCollider* collider) const {
+    for (const int body : wheel_bodies_) {
+      if (refs_[body].collider == collider) return body;
+    }
+    return -1;
+  }
 
   bool hasCoordinate(int body) const {
     const Body& b = vehicle().bodies.at(body);
@@ -308,7 +417,8 @@ class SimEngine final : public sim::Engine {
   }
 
   void addCollider(int i, const Eigen::Isometry3d& placement) {
-    btCollisionShape* shape = makeShape(vehicle().bodies[i], shapes_);
+    btCollisionShape* shape =
+        makeShape(vehicle().bodies[i], settings().engine_wheels == sim::EngineWheels::kSphere, shapes_);
     if (shape == nullptr) return;
     Ref& r = refs_[i];
     auto collider = std::make_unique<btMultiBodyLinkCollider>(r.multibody, r.link);
@@ -323,6 +433,7 @@ class SimEngine final : public sim::Engine {
     } else {
       r.multibody->getLink(r.link).m_collider = collider.get();
     }
+    r.collider = collider.get();
     colliders_.push_back(std::move(collider));
   }
 
@@ -337,7 +448,10 @@ class SimEngine final : public sim::Engine {
   std::vector<std::unique_ptr<btMultiBodyConstraint>> constraints_;
   std::vector<Ref> refs_;
   std::unique_ptr<Plugin> plugin_;
-  mutable std::vector<LinkVelocities> velocities_;  // per tree
+  std::vector<sim::EngineWheelContacts> engine_wheels_;  // with sim::EngineWheels only
+  std::vector<int> wheel_bodies_;                        // the body of each of engine_wheels_
+  EngineWheelGround ground_;                             // the engine wheels' colliders point here
+  mutable std::vector<LinkVelocities> velocities_;       // per tree
 };
 
 }  // namespace

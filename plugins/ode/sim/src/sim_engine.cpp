@@ -1,6 +1,7 @@
 #include "wtc/ode/sim_engine.hpp"
 
 #include <array>
+#include <deque>
 #include <mutex>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include "wtc/constants.hpp"
 #include "wtc/error.hpp"
 #include "wtc/ode/plugin.hpp"
+#include "wtc/sim/engine_wheel_contacts.hpp"
 
 namespace wtc::ode {
 namespace {
@@ -57,14 +59,14 @@ void alignCylinder(dGeomID geom, const Eigen::Vector3d& axis) {
 }
 
 // The body's collision geom in `space`, attached to `b`, or null. A wheel's
-// is its tread (a sphere when w >= 2 r_f), which WTC replaces against the
-// terrain.
-dGeomID makeGeom(const Body& body, dSpaceID space, dBodyID b) {
+// is its tread (a sphere when w >= 2 r_f or when `sphere_wheels`); with
+// WTC's wheels, WTC replaces it against the terrain.
+dGeomID makeGeom(const Body& body, bool sphere_wheels, dSpaceID space, dBodyID b) {
   dGeomID geom = nullptr;
   if (body.wheel) {
     const WheelGeometry& g = body.wheel->geometry;
-    geom = g.tread_width >= 2.0 * g.free_radius ? dCreateSphere(space, g.free_radius)
-                                                : dCreateCylinder(space, g.free_radius, g.tread_width);
+    geom = sphere_wheels || g.tread_width >= 2.0 * g.free_radius ? dCreateSphere(space, g.free_radius)
+                                                                 : dCreateCylinder(space, g.free_radius, g.tread_width);
     dGeomSetBody(geom, b);
     if (dGeomGetClass(geom) == dCylinderClass) alignCylinder(geom, body.wheel->axle);
     return geom;
@@ -112,6 +114,10 @@ class SimEngine final : public sim::Engine {
     contacts_ = dJointGroupCreate(0);
     plugin_ = std::make_unique<Plugin>(world_, space_, terrain, settings.mode);
     for (std::size_t i = 0; i < v.bodies.size(); ++i) buildBody(static_cast<int>(i), placement);
+    if (settings.engine_wheels != sim::EngineWheels::kNone) {
+      addEngineWheels();
+      return;
+    }
     for (std::size_t i = 0; i < v.bodies.size(); ++i) {
       const Body& body = v.bodies[i];
       if (!body.wheel) continue;
@@ -151,6 +157,7 @@ class SimEngine final : public sim::Engine {
   void step() override {
     const double h = settings().step_seconds;
     plugin_->beginStep(h);
+    recorded_ = 0;
     dSpaceCollide(space_, this, &SimEngine::nearCallback);
     if (settings().kind == sim::EngineKind::kOdeQuick) {
       const std::lock_guard<std::mutex> lock(odeGlobalsLock());
@@ -161,6 +168,7 @@ class SimEngine final : public sim::Engine {
       dWorldStep(world_, h);
     }
     dJointGroupEmpty(contacts_);
+    if (!engine_wheels_.empty()) readEngineWheels();
   }
 
   vehicle::BodyKinematics body(int body) const override {
@@ -211,8 +219,13 @@ class SimEngine final : public sim::Engine {
     dJointGetLMotorAxis(r.motor, 0, a);
     return toEigen(r.feedback.f1).dot(toEigen(a));
   }
-  const WheelForces& wheelForces(int body) const override { return plugin_->applied(wheelId(body)); }
-  const WheelState& wheelState(int body) const override { return plugin_->state(wheelId(body)); }
+  const WheelForces& wheelForces(int body) const override {
+    return engine_wheels_.empty() ? plugin_->applied(wheelId(body)) : engine_wheels_[wheelId(body)].forces();
+  }
+  const WheelState& wheelState(int body) const override {
+    return engine_wheels_.empty() ? plugin_->state(wheelId(body)) : engine_wheels_[wheelId(body)].state();
+  }
+  // The engine's own wheels run no tyre model: nothing to tell.
   void setWheelListener(WheelListener* listener) override { plugin_->setListener(listener); }
 
  private:
@@ -222,8 +235,72 @@ class SimEngine final : public sim::Engine {
     dJointID joint = nullptr;  // to the parent
     dJointID motor = nullptr;  // the drive, if any
     dJointFeedback feedback{};
-    WheelId wheel = -1;
+    WheelId wheel = -1;  // the plugin's, or with engine wheels the index in engine_wheels_
   };
+
+  // One contact of an engine wheel this step: ODE writes the force on the
+  // wheel (body 1) into `feedback`.
+  struct RecordedContact {
+    int wheel = -1;
+    dContactGeom geom{};
+    dJointFeedback feedback{};
+  };
+
+  // The engine's own wheel contact (sim::EngineWheels): the wheel geoms
+  // meet the terrain's geoms through ODE's colliders, with its contact
+  // joint and Coulomb friction (dContactApprox1) of the piece's mu.
+  void addEngineWheels() {
+    engine_wheel_mu_ = sim::engineWheelFrictions(terrain_);
+    for (std::size_t i = 0; i < vehicle().bodies.size(); ++i) {
+      if (!vehicle().bodies[i].wheel) continue;
+      refs_[i].wheel = static_cast<WheelId>(engine_wheels_.size());
+      wheel_bodies_.push_back(static_cast<int>(i));
+      engine_wheels_.emplace_back();
+    }
+  }
+
+  // The engine wheel whose geom is `geom`, or -1.
+  int engineWheelOf(dGeomID geom) const {
+    for (std::size_t k = 0; k < wheel_bodies_.size(); ++k) {
+      if (refs_[wheel_bodies_[k]].geom == geom) return static_cast<int>(k);
+    }
+    return -1;
+  }
+
+  // An engine wheel against a terrain piece: ODE's contacts, each with its
+  // feedback, the wheel as body 1 (the normal then points out of the
+  // ground, toward the wheel).
+  void collideEngineWheel(int wheel, dGeomID wheel_geom, dGeomID ground) {
+    std::array<dContact, kMaxBodyContacts> contact{};
+    const int n = dCollide(wheel_geom, ground, kMaxBodyContacts, &contact[0].geom, sizeof(dContact));
+    const PieceId piece = plugin_->terrainGeoms().piece(ground);
+    const double mu = piece >= 0 ? engine_wheel_mu_[terrain_.materialId(piece)] : kBodyGroundFriction;
+    for (int k = 0; k < n; ++k) {
+      contact[k].surface.mode = dContactApprox1;
+      contact[k].surface.mu = mu;
+      // Stable addresses: ODE keeps a pointer to the feedback until the step.
+      if (recorded_ == recorded_contacts_.size()) recorded_contacts_.emplace_back();
+      RecordedContact& r = recorded_contacts_[recorded_++];
+      r.wheel = wheel;
+      r.geom = contact[k].geom;
+      const dJointID joint = dJointCreateContact(world_, contacts_, &contact[k]);
+      dJointAttach(joint, dGeomGetBody(wheel_geom), nullptr);
+      dJointSetFeedback(joint, &r.feedback);
+    }
+  }
+
+  void readEngineWheels() {
+    for (sim::EngineWheelContacts& w : engine_wheels_) w.clear();
+    for (std::size_t k = 0; k < recorded_; ++k) {
+      const RecordedContact& r = recorded_contacts_[k];
+      engine_wheels_[r.wheel].add(toEigen(r.geom.pos), toEigen(r.geom.normal), r.geom.depth, toEigen(r.feedback.f1));
+    }
+    for (std::size_t k = 0; k < engine_wheels_.size(); ++k) {
+      const int body = wheel_bodies_[k];
+      const vehicle::BodyKinematics b = this->body(body);
+      engine_wheels_[k].finish(b.pose.translation(), b.pose.linear() * vehicle().bodies[body].wheel->axle);
+    }
+  }
 
   WheelId wheelId(int body) const {
     const WheelId id = refs_.at(body).wheel;
@@ -243,7 +320,7 @@ class SimEngine final : public sim::Engine {
     dMatrix3 rotation;
     toOde(pose.linear(), rotation);
     dBodySetRotation(r.body, rotation);
-    r.geom = makeGeom(b, space_, r.body);
+    r.geom = makeGeom(b, settings().engine_wheels == sim::EngineWheels::kSphere, space_, r.body);
     if (b.parent >= 0) buildJoint(i, placement);
   }
 
@@ -321,6 +398,13 @@ class SimEngine final : public sim::Engine {
     const dBodyID body_a = dGeomGetBody(a), body_b = dGeomGetBody(b);
     // Terrain against terrain, or two bodies of the vehicle: nothing.
     if ((body_a == nullptr) == (body_b == nullptr)) return;
+    if (!e.engine_wheels_.empty()) {
+      const dGeomID wheel_geom = body_a != nullptr ? a : b;
+      if (const int wheel = e.engineWheelOf(wheel_geom); wheel >= 0) {
+        e.collideEngineWheel(wheel, wheel_geom, body_a != nullptr ? b : a);
+        return;
+      }
+    }
     std::array<dContact, kMaxBodyContacts> contact{};
     const int n = dCollide(a, b, kMaxBodyContacts, &contact[0].geom, sizeof(dContact));
     for (int k = 0; k < n; ++k) {
@@ -349,6 +433,11 @@ class SimEngine final : public sim::Engine {
   dJointGroupID contacts_ = nullptr;
   std::unique_ptr<Plugin> plugin_;
   std::vector<Ref> refs_;
+  std::vector<sim::EngineWheelContacts> engine_wheels_;  // with sim::EngineWheels only
+  std::vector<int> wheel_bodies_;                        // the body of each of engine_wheels_
+  std::vector<double> engine_wheel_mu_;                  // per material id
+  std::deque<RecordedContact> recorded_contacts_;        // grows to the most contacts a step had; never shrinks
+  std::size_t recorded_ = 0;                             // used this step
 };
 
 }  // namespace

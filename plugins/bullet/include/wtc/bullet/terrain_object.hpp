@@ -32,6 +32,9 @@ class TerrainObject {
   TerrainObject& operator=(const TerrainObject&) = delete;
 
   const Terrain& terrain() const { return terrain_; }
+  /// The piece a child shape of this object stands for: each hull's user
+  /// index is its piece id (a contact callback sees the child it met).
+  static PieceId pieceOf(const btCollisionShape& hull) { return hull.getUserIndex(); }
   btCollisionObject& object() { return object_; }
   const btCollisionObject& object() const { return object_; }
 

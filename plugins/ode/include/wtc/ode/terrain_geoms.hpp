@@ -59,6 +59,9 @@ class TerrainGeoms {
   bool contains(dGeomID geom) const;
   /// The geom of a piece.
   dGeomID geom(PieceId piece) const { return geoms_[piece]; }
+  /// The piece a geom of this terrain stands for (its geom data), -1 for
+  /// any other geom.
+  PieceId piece(dGeomID geom) const;
 
  private:
   // Each adds the piece's geom and returns where to place it (world, m).
