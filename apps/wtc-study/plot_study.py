@@ -5,7 +5,8 @@ usage: plot_study.py STUDY_DIR
 
 Reads STUDY_DIR/results.csv (written by wtc-study) and draws, per scenario,
 each run's RMS position error against its wall time on log axes: colour by
-engine, filled for force mode and hollow for constraint mode, a cross for a
+engine, filled for force mode and hollow for constraint mode, squares for the
+engines' own wheel contact (engine_cylinder, engine_sphere), a cross for a
 run that failed its scene's criterion, and the Pareto front (runs no other
 successful run beats on both) as a line. Errors below 1 micrometre (the
 reference's own is zero) are drawn on the 1 micrometre line, the reference
@@ -45,8 +46,9 @@ def main(study_dir):
             elif r["success"] != "1":
                 ax.scatter(x, y, marker="x", color=colour, s=28)
             else:
-                face = colour if r["mode"] == "force" else "none"
-                ax.scatter(x, y, marker="o", facecolors=face, edgecolors=colour, s=28)
+                face = colour if r["mode"] != "constraint" else "none"
+                marker = "s" if r["mode"].startswith("engine") else "o"
+                ax.scatter(x, y, marker=marker, facecolors=face, edgecolors=colour, s=28)
         front = sorted((r for r in runs if r["on_front"] == "1"), key=lambda r: float(r["wall_time_s"]))
         ax.step([float(r["wall_time_s"]) for r in front],
                 [max(float(r["rms_position_error_m"]) * 1e3, floor) for r in front],
@@ -57,6 +59,7 @@ def main(study_dir):
         for engine, colour in COLOURS.items():
             ax.scatter([], [], color=colour, label=engine)
         ax.scatter([], [], facecolors="none", edgecolors="k", label="constraint mode (hollow)")
+        ax.scatter([], [], marker="s", color="k", label="the engine's own wheel contact (square)")
         ax.scatter([], [], marker="x", color="k", label="failed the scene's criterion")
         ax.scatter([], [], marker="*", color="k", s=90, label="the reference (error 0)")
         ax.set_xscale("log")
