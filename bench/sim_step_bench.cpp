@@ -3,7 +3,9 @@
 // vehicle's contact-free floor measured in the same run.
 //
 //   robot_rough/<engine>/<mode>: scenes/robot_rough.yaml at 0.4 ms, driving
-//     over the rough ground (the speed case);
+//     over the rough ground (the speed case); modes force and
+//     constraint (WTC), engine_cylinder and engine_sphere (the engine's own
+//     wheel contact, the baseline);
 //   robot_floor/<engine>: the same vehicle and commands, placed 1 km away
 //     from any ground: everything but contacts.
 //
@@ -47,7 +49,7 @@ void stepScene(benchmark::State& state, const char* engine, const char* mode, bo
 
 int main(int argc, char** argv) {
   for (const char* engine : {"bullet", "ode", "ode_quick"}) {
-    for (const char* mode : {"force", "constraint"}) {
+    for (const char* mode : {"force", "constraint", "engine_cylinder", "engine_sphere"}) {
       benchmark::RegisterBenchmark((std::string("robot_rough/") + engine + "/" + mode).c_str(),
                                    [=](benchmark::State& s) { stepScene(s, engine, mode, false); })
           ->Unit(benchmark::kMicrosecond)

@@ -272,7 +272,7 @@ sim::Scene readSceneFile(const std::filesystem::path& path, std::span<const Over
   in.requireMap(root, "scene file");
   for (const Override& o : overrides) applyOverride(root, o, "--set " + o.path + "=" + o.value);
   in.checkKeys(root, {"name", "description", "parameters", "engine", "mode", "dt", "duration", "solver_iterations",
-                      "terrain", "vehicle", "effects", "controller", "output", "success", "cases"});
+                      "solver_residual", "terrain", "vehicle", "effects", "controller", "output", "success", "cases"});
 
   sim::Scene scene;
   scene.source = path.string();
@@ -306,6 +306,8 @@ sim::Scene readSceneFile(const std::filesystem::path& path, std::span<const Over
   if (!(scene.engine.step_seconds > 0.0)) in.fail(root["dt"], "dt: must be > 0 s");
   scene.engine.solver_iterations = static_cast<int>(in.integer(root, "solver_iterations", 50));
   if (scene.engine.solver_iterations <= 0) in.fail(root["solver_iterations"], "solver_iterations: must be > 0");
+  scene.engine.solver_residual = in.number(root, "solver_residual", scene.engine.solver_residual);
+  if (!(scene.engine.solver_residual > 0.0)) in.fail(root["solver_residual"], "solver_residual: must be > 0 (m/s)^2");
   scene.duration_seconds = in.number(in.require(root, "duration"), "duration");
   if (!(scene.duration_seconds > 0.0)) in.fail(root["duration"], "duration: must be > 0 s");
 

@@ -69,6 +69,10 @@ void validate(const EngineSettings& settings, const std::string& where) {
     throw InvalidInputError(where + ": solver_iterations " + std::to_string(settings.solver_iterations) +
                             " must be > 0");
   }
+  if (!std::isfinite(settings.solver_residual) || settings.solver_residual <= 0.0) {
+    throw InvalidInputError(where + ": solver_residual " + formatNumber(settings.solver_residual) +
+                            " (m/s)^2 must be finite and > 0");
+  }
 }
 
 Eigen::Isometry3d startPose(const vehicle::VehicleDescription& vehicle, int body, const Eigen::Isometry3d& placement) {

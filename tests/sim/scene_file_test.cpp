@@ -64,17 +64,17 @@ TEST(SceneFileTest, OverridesReachValuesListsAndParameters) {
   const fs::path file = kScenes / "robot_straight.yaml";
   const sim::Scene plain = loadScene(file);
   EXPECT_EQ(plain.parameters.at("wheel_rate"), 4.0);
-  const std::vector<Override> overrides = {parseOverride("engine=ode_quick"),
-                                           parseOverride("mode=constraint"),
-                                           parseOverride("dt=0.001"),
-                                           parseOverride("wheel_rate=2.5"),
-                                           parseOverride("vehicle.translation=[1, 2, 0.5]"),
-                                           parseOverride("output.rate_hz=50")};
+  const std::vector<Override> overrides = {
+      parseOverride("engine=ode_quick"), parseOverride("mode=constraint"),
+      parseOverride("dt=0.001"),         parseOverride("solver_residual=1e-8"),
+      parseOverride("wheel_rate=2.5"),   parseOverride("vehicle.translation=[1, 2, 0.5]"),
+      parseOverride("output.rate_hz=50")};
   const sim::Scene s = loadScene(file, overrides);
   EXPECT_EQ(s.engine.kind, sim::EngineKind::kOdeQuick);
   EXPECT_EQ(s.engine.mode, ContactMode::kConstraint);
   EXPECT_EQ(s.engine.engine_wheels, sim::EngineWheels::kNone);
   EXPECT_EQ(s.engine.step_seconds, 0.001);
+  EXPECT_EQ(s.engine.solver_residual, 1e-8);
   EXPECT_EQ(s.parameters.at("wheel_rate"), 2.5);
   EXPECT_EQ(s.placement.translation(), Eigen::Vector3d(1, 2, 0.5));
   EXPECT_EQ(s.output.rate_hz, 50.0);
@@ -124,6 +124,7 @@ TEST(SceneFileTest, BadScenesAreRefusedWithFileLineKeyAndProblem) {
               HasSubstr(":6:7: mode: 'rigid' (expected force, constraint, engine_cylinder or engine_sphere)"));
   EXPECT_THAT(errorOf(kMinimal + "dt: .nan\n"), HasSubstr("dt: '.nan' is not a finite number"));
   EXPECT_THAT(errorOf(kMinimal + "dt: -0.001\n"), HasSubstr("dt: must be > 0 s"));
+  EXPECT_THAT(errorOf(kMinimal + "solver_residual: 0\n"), HasSubstr("solver_residual: must be > 0 (m/s)^2"));
   // Case: a missing terrain file, named.
   EXPECT_THAT(errorOf("name: t\nduration: 1\nterrain: nowhere.yaml\nvehicle: ../vehicles/six_wheel_robot.yaml\n"
                       "controller: {type: none}\n"),

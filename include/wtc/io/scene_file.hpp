@@ -9,6 +9,7 @@
 //   dt: 0.0004                        # step (s)
 //   duration: 5                       # (s)
 //   solver_iterations: 50             # optional
+//   solver_residual: 1.0e-6           # optional (Bullet)
 //   terrain: ../terrains/flat.yaml    # a terrain file, or the file's body inline
 //   vehicle: {file: ../vehicles/six_wheel_robot.yaml, translation: [0, 0, 0]}
 //   effects: [full]                   # tyre effects and actuator_limits, hitch_damping

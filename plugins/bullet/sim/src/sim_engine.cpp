@@ -26,11 +26,6 @@ using vehicle::Body;
 using vehicle::JointType;
 using vehicle::Shape;
 
-// The solver stops iterating once the squared velocity errors of its rows
-// sum below this ((m/s)^2): about 1e-5 m/s per row, far below what a joint
-// or a motor needs; the remaining iterations would only spend time.
-constexpr double kSolverResidualM2ps2 = 1e-10;
-
 btVector3 toBt(const Eigen::Ref<const Eigen::Vector3d>& v) { return {v.x(), v.y(), v.z()}; }
 Eigen::Vector3d toEigen(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
 btQuaternion toBtRotation(const Eigen::Matrix3d& r) {
@@ -125,7 +120,7 @@ class SimEngine final : public sim::Engine {
       : sim::Engine(settings, v), refs_(v.bodies.size()) {
     world_.setGravity(btVector3(0, 0, -kGravityMps2));
     world_.getSolverInfo().m_numIterations = settings.solver_iterations;
-    world_.getSolverInfo().m_leastSquaresResidualThreshold = kSolverResidualM2ps2;
+    world_.getSolverInfo().m_leastSquaresResidualThreshold = settings.solver_residual;
     buildTrees(placement);
     plugin_ = std::make_unique<Plugin>(world_, terrain, settings.mode);
     plugin_->terrainObject().setFriction(1.0);  // combined friction = product: the bodies' own decides
