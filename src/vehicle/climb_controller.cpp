@@ -152,12 +152,21 @@ ClimbController::ClimbController(const VehicleDescription& v, const ClimbControl
       std::min(v.bodies[front_fold_].joint.actuator->max_speed, v.bodies[rear_fold_].joint.actuator->max_speed);
   // The arm from M to an outer axle at zero extension.
   arm_ = (v.bodies[wheels_[kRear][0]].pose.translation() - v.bodies[wheels_[kMiddle][0]].pose.translation()).norm();
-  // The highest step: the rear arm, fully out and short of its fold limit
-  // by kFoldReserveRad, lifts M to (arm + L) sin(angle) above the rear
-  // wheels' centres; the middle wheels ride onto the top only from there
-  // (the step's height plus kStepClearanceM below M).
+  // The highest step: the rear arm, fully out and folded down to its limit
+  // less kFoldReserveRad, lifts M above the rear wheels' centres by
+  //   (M - A)_z - (R(-reach) (p + L u - A))_z
+  // (A the fold axis's anchor, p a rear wheel's centre, u the slider's
+  // axis, all at the reference configuration with the middle body level):
+  // (arm + L) sin(reach) when the fold axis lies on the middle axle line.
+  // The middle wheels ride onto the top only from there (the step's height
+  // plus kStepClearanceM below M).
   const double rear_reach = std::min(-travel(rear_fold_).lower, std::numbers::pi / 2) - kFoldReserveRad;
-  max_step_ = (arm_ + rear_travel_) * std::sin(rear_reach) - kStepClearanceM;
+  const vehicle::Joint& rear_fold = v.bodies[rear_fold_].joint;
+  const Eigen::Vector3d rear_out = v.bodies[wheels_[kRear][0]].pose.translation() +
+                                   rear_travel_ * v.bodies[rear_slider_].joint.axis - rear_fold.anchor;
+  const Eigen::Vector3d folded = Eigen::AngleAxisd(-rear_reach, rear_fold.axis) * rear_out;
+  const Eigen::Vector3d middle_axle = v.bodies[wheels_[kMiddle][0]].pose.translation() - rear_fold.anchor;
+  max_step_ = middle_axle.z() - folded.z() - kStepClearanceM;
 
   const auto positive = [&](double value, const char* name, double max) {
     if (!std::isfinite(value) || value <= 0.0 || value > max) {
