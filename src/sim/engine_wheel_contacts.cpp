@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "wtc/scratch_capacity.hpp"
+#include "wtc/sim/engine.hpp"
 
 namespace wtc::sim {
 
@@ -34,6 +35,20 @@ void EngineWheelContacts::finish(const Eigen::Vector3d& centre, const Eigen::Vec
   forces_.axial_moment = axle * axle.dot(forces_.torque);
   forces_.bearing_moment = forces_.torque - forces_.axial_moment;
   forces_.contacts = contacts_;
+}
+
+EngineWheelSet::EngineWheelSet(const vehicle::VehicleDescription& vehicle)
+    : wheels_(vehicle.wheels().size()), bodies_(vehicle.wheels()) {}
+
+void EngineWheelSet::clear() {
+  for (EngineWheelContacts& w : wheels_) w.clear();
+}
+
+void EngineWheelSet::finish(const Engine& engine) {
+  for (std::size_t k = 0; k < wheels_.size(); ++k) {
+    const vehicle::BodyKinematics b = engine.body(bodies_[k]);
+    wheels_[k].finish(b.pose.translation(), b.pose.linear() * engine.vehicle().bodies[bodies_[k]].wheel->axle);
+  }
 }
 
 }  // namespace wtc::sim

@@ -2,13 +2,16 @@
 // What an engine's own wheel contact (EngineWheels: the baseline a study
 // compares WTC with) did to one wheel in a step, in WTC's terms, so that
 // the baseline's wheels reach the sensors, recorders and summaries as WTC's
-// do. An engine implementation clears it before a step, adds each contact
-// the engine's solver acted on, and finishes it at the wheel centre.
+// do. An engine implementation keeps an EngineWheelSet: after each step it
+// clears it, adds each contact the engine's solver acted on, and finishes
+// it at the wheels' centres.
+#include <cstddef>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "wtc/tyre_model.hpp"
+#include "wtc/vehicle/vehicle_description.hpp"
 #include "wtc/wheel_forces.hpp"
 
 namespace wtc::sim {
@@ -37,6 +40,30 @@ class EngineWheelContacts {
   std::vector<ContactForce> contacts_;
   WheelForces forces_;
   WheelState state_;
+};
+
+class Engine;
+
+/// One EngineWheelContacts per wheel body of a vehicle, in body order.
+class EngineWheelSet {
+ public:
+  EngineWheelSet() = default;
+  explicit EngineWheelSet(const vehicle::VehicleDescription& vehicle);
+
+  bool empty() const { return wheels_.empty(); }
+  std::size_t size() const { return wheels_.size(); }
+  /// The body of wheel k.
+  int body(std::size_t k) const { return bodies_[k]; }
+  EngineWheelContacts& operator[](std::size_t k) { return wheels_[k]; }
+  const EngineWheelContacts& operator[](std::size_t k) const { return wheels_[k]; }
+
+  void clear();
+  /// Finishes every wheel at its centre and axle as `engine` has them now.
+  void finish(const Engine& engine);
+
+ private:
+  std::vector<EngineWheelContacts> wheels_;
+  std::vector<int> bodies_;
 };
 
 }  // namespace wtc::sim

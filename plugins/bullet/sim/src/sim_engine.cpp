@@ -253,18 +253,12 @@ class SimEngine final : public sim::Engine {
     static std::once_flag installed;
     std::call_once(installed, [] { gContactAddedCallback = engineWheelContactAdded; });
     ground_ = {.terrain = &plugin_->terrainObject(), .pieces = &terrain, .mu = sim::engineWheelFrictions(terrain)};
-    // Bullet's multibody solver gives a contact one friction row, along an
-    // arbitrary tangent (btPlaneSpace1), unless asked for two: a wheel
-    // would slide freely across it.
-    world_.getSolverInfo().m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
-    for (std::size_t i = 0; i < vehicle().bodies.size(); ++i) {
-      if (!vehicle().bodies[i].wheel) continue;
-      btMultiBodyLinkCollider& collider = *refs_[i].collider;
-      collider.setCollisionFlags(collider.getCollisionFlags() | btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK);
-      collider.setUserPointer(&ground_);
-      refs_[i].wheel = static_cast<WheelId>(engine_wheels_.size());
-      wheel_bodies_.push_back(static_cast<int>(i));
-      engine_wheels_.emplace_back();
+    engine_wheels_ = sim::EngineWheelSet(vehicle());
+    for (std::size_t k = 0; k < engine_wheels_.size(); ++k) {
+      Ref& r = refs_[engine_wheels_.body(k)];
+      r.collider->setCollisionFlags(r.collider->getCollisionFlags() | btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK);
+      r.collider->setUserPointer(&ground_);
+      r.wheel = static_cast<WheelId>(k);
     }
   }
 
@@ -272,7 +266,7 @@ class SimEngine final : public sim::Engine {
   // impulses it wrote back to the point (normal, and each friction
   // direction it used) over h, on the wheel.
   void readEngineWheels() {
-    for (sim::EngineWheelContacts& w : engine_wheels_) w.clear();
+    engine_wheels_.clear();
     const double h = settings().step_seconds;
     const bool second = (world_.getSolverInfo().m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS) != 0;
     const btCollisionObject* ground = &plugin_->terrainObject();
@@ -284,8 +278,8 @@ class SimEngine final : public sim::Engine {
       const btCollisionObject* other = wheel_is_a ? manifold.getBody0() : manifold.getBody1();
       const auto* collider = btMultiBodyLinkCollider::upcast(other);
       if (collider == nullptr || collider->m_link < 0) continue;
-      const int body = bodyOfLink(collider);
-      if (body < 0 || !vehicle().bodies[body].wheel) continue;
+      const int wheel = engineWheelOf(collider);
+      if (wheel < 0) continue;
       for (int k = 0; k < manifold.getNumContacts(); ++k) {
         const btManifoldPoint& p = manifold.getContactPoint(k);
         if (p.getDistance() > 0.0 && p.m_appliedImpulse == 0.0) continue;  // kept, not touching
@@ -294,20 +288,17 @@ class SimEngine final : public sim::Engine {
         if (second) impulse_on_a += p.m_lateralFrictionDir2 * p.m_appliedImpulseLateral2;
         const btVector3 normal = wheel_is_a ? p.m_normalWorldOnB : -p.m_normalWorldOnB;  // out of the ground
         const btVector3 point = wheel_is_a ? p.getPositionWorldOnB() : p.getPositionWorldOnA();
-        engine_wheels_[refs_[body].wheel].add(toEigen(point), toEigen(normal), -p.getDistance(),
-                                              toEigen(wheel_is_a ? impulse_on_a : -impulse_on_a) / h);
+        engine_wheels_[wheel].add(toEigen(point), toEigen(normal), -p.getDistance(),
+                                  toEigen(wheel_is_a ? impulse_on_a : -impulse_on_a) / h);
       }
     }
-    for (std::size_t k = 0; k < engine_wheels_.size(); ++k) {
-      const int body = wheel_bodies_[k];
-      const vehicle::BodyKinematics b = this->body(body);
-      engine_wheels_[k].finish(b.pose.translation(), b.pose.linear() * vehicle().bodies[body].wheel->axle);
-    }
+    engine_wheels_.finish(*this);
   }
 
-  int bodyOfLink(const btMultiBodyLinkCollider* collider) const {
-    for (const int body : wheel_bodies_) {
-      if (refs_[body].collider == collider) return body;
+  // The engine wheel whose collider is `collider`, or -1.
+  int engineWheelOf(const btMultiBodyLinkCollider* collider) const {
+    for (std::size_t k = 0; k < engine_wheels_.size(); ++k) {
+      if (refs_[engine_wheels_.body(k)].collider == collider) return static_cast<int>(k);
     }
     return -1;
   }
@@ -443,10 +434,9 @@ class SimEngine final : public sim::Engine {
   std::vector<std::unique_ptr<btMultiBodyConstraint>> constraints_;
   std::vector<Ref> refs_;
   std::unique_ptr<Plugin> plugin_;
-  std::vector<sim::EngineWheelContacts> engine_wheels_;  // with sim::EngineWheels only
-  std::vector<int> wheel_bodies_;                        // the body of each of engine_wheels_
-  EngineWheelGround ground_;                             // the engine wheels' colliders point here
-  mutable std::vector<LinkVelocities> velocities_;       // per tree
+  sim::EngineWheelSet engine_wheels_;               // with sim::EngineWheels only
+  EngineWheelGround ground_;                        // the engine wheels' colliders point here
+  mutable std::vector<LinkVelocities> velocities_;  // per tree
 };
 
 }  // namespace

@@ -251,18 +251,15 @@ class SimEngine final : public sim::Engine {
   // joint and Coulomb friction (dContactApprox1) of the piece's mu.
   void addEngineWheels() {
     engine_wheel_mu_ = sim::engineWheelFrictions(terrain_);
-    for (std::size_t i = 0; i < vehicle().bodies.size(); ++i) {
-      if (!vehicle().bodies[i].wheel) continue;
-      refs_[i].wheel = static_cast<WheelId>(engine_wheels_.size());
-      wheel_bodies_.push_back(static_cast<int>(i));
-      engine_wheels_.emplace_back();
-    }
+    engine_wheels_ = sim::EngineWheelSet(vehicle());
+    for (std::size_t k = 0; k < engine_wheels_.size(); ++k)
+      refs_[engine_wheels_.body(k)].wheel = static_cast<WheelId>(k);
   }
 
   // The engine wheel whose geom is `geom`, or -1.
   int engineWheelOf(dGeomID geom) const {
-    for (std::size_t k = 0; k < wheel_bodies_.size(); ++k) {
-      if (refs_[wheel_bodies_[k]].geom == geom) return static_cast<int>(k);
+    for (std::size_t k = 0; k < engine_wheels_.size(); ++k) {
+      if (refs_[engine_wheels_.body(k)].geom == geom) return static_cast<int>(k);
     }
     return -1;
   }
@@ -290,16 +287,12 @@ class SimEngine final : public sim::Engine {
   }
 
   void readEngineWheels() {
-    for (sim::EngineWheelContacts& w : engine_wheels_) w.clear();
+    engine_wheels_.clear();
     for (std::size_t k = 0; k < recorded_; ++k) {
       const RecordedContact& r = recorded_contacts_[k];
       engine_wheels_[r.wheel].add(toEigen(r.geom.pos), toEigen(r.geom.normal), r.geom.depth, toEigen(r.feedback.f1));
     }
-    for (std::size_t k = 0; k < engine_wheels_.size(); ++k) {
-      const int body = wheel_bodies_[k];
-      const vehicle::BodyKinematics b = this->body(body);
-      engine_wheels_[k].finish(b.pose.translation(), b.pose.linear() * vehicle().bodies[body].wheel->axle);
-    }
+    engine_wheels_.finish(*this);
   }
 
   WheelId wheelId(int body) const {
@@ -433,11 +426,10 @@ class SimEngine final : public sim::Engine {
   dJointGroupID contacts_ = nullptr;
   std::unique_ptr<Plugin> plugin_;
   std::vector<Ref> refs_;
-  std::vector<sim::EngineWheelContacts> engine_wheels_;  // with sim::EngineWheels only
-  std::vector<int> wheel_bodies_;                        // the body of each of engine_wheels_
-  std::vector<double> engine_wheel_mu_;                  // per material id
-  std::deque<RecordedContact> recorded_contacts_;        // grows to the most contacts a step had; never shrinks
-  std::size_t recorded_ = 0;                             // used this step
+  sim::EngineWheelSet engine_wheels_;              // with sim::EngineWheels only
+  std::vector<double> engine_wheel_mu_;            // per material id
+  std::deque<RecordedContact> recorded_contacts_;  // grows to the most contacts a step had; never shrinks
+  std::size_t recorded_ = 0;                       // used this step
 };
 
 }  // namespace
