@@ -53,19 +53,17 @@ Kinematics rigidKinematics(const Wheel& w) {
   return k;
 }
 
-Kinematics multiBodyKinematics(const Wheel& w, btAlignedObjectArray<btVector3>& omega,
-                               btAlignedObjectArray<btVector3>& velocity) {
-  const btMultiBody& mb = *w.multibody;
-  omega.resize(mb.getNumLinks() + 1);
-  velocity.resize(mb.getNumLinks() + 1);
-  mb.compTreeLinkVelocities(&omega[0], &velocity[0]);  // index 0 the base, i + 1 link i; link frames
+// `velocities` holds the link velocities of the wheel's multibody (link
+// frames, index 0 the base, i + 1 link i); the collider's frame is the
+// link's.
+Kinematics multiBodyKinematics(const Wheel& w, const LinkVelocities& velocities) {
   const btTransform& t = w.collider->getWorldTransform();
   Kinematics k;
   k.com = t.getOrigin();
   k.centre = t * w.centre_local;
   k.axle = t.getBasis() * w.axle_local;
-  const btVector3 spin = mb.localDirToWorld(w.link, omega[w.link + 1]);
-  const btVector3 com_velocity = mb.localDirToWorld(w.link, velocity[w.link + 1]);
+  const btVector3 spin = t.getBasis() * velocities.angular[w.link + 1];
+  const btVector3 com_velocity = t.getBasis() * velocities.linear[w.link + 1];
   k.motion.velocity = toEigen(com_velocity + spin.cross(k.centre - k.com));
   k.motion.angular_velocity = toEigen(spin);
   return k;
@@ -200,8 +198,22 @@ WheelId Plugin::Impl::add(std::unique_ptr<Wheel> w, const char* where) {
   return id;
 }
 
+const LinkVelocities& Plugin::Impl::linkVelocities(const btMultiBody& multibody) {
+  auto it = std::find_if(link_velocities.begin(), link_velocities.end(),
+                         [&](const LinkVelocities& v) { return v.multibody == &multibody; });
+  LinkVelocities& v = it != link_velocities.end() ? *it : link_velocities.emplace_back();
+  if (v.valid) return v;
+  v.multibody = &multibody;
+  v.angular.resize(multibody.getNumLinks() + 1);
+  v.linear.resize(multibody.getNumLinks() + 1);
+  multibody.compTreeLinkVelocities(&v.angular[0], &v.linear[0]);
+  v.valid = true;
+  return v;
+}
+
 void Plugin::Impl::preTick(double h) {
   if (pre_tick) pre_tick(h);
+  for (LinkVelocities& v : link_velocities) v.valid = false;
   const Terrain& ground = terrain.terrain();
   const Eigen::Vector3d gravity = toEigen(world.getGravity());
   for (std::size_t id = 0; id < wheels.size(); ++id) {
@@ -210,7 +222,7 @@ void Plugin::Impl::preTick(double h) {
     w.manifold = nullptr;
     w.manifold_point.clear();
     const Kinematics k =
-        w.body != nullptr ? rigidKinematics(w) : multiBodyKinematics(w, omega_scratch, velocity_scratch);
+        w.body != nullptr ? rigidKinematics(w) : multiBodyKinematics(w, linkVelocities(*w.multibody));
     const MountedWheelStep& r = w.mounted.step(ground, {toEigen(k.centre), toEigen(k.axle)}, k.motion, h);
     if (r.skipped) {
       // Its body's state is not finite: no force and no contact this step

@@ -45,6 +45,14 @@ struct Wheel {
   std::unique_ptr<WheelFrictionConstraint> friction;
 };
 
+// A multibody's link velocities (link frames, index 0 the base, i + 1 link
+// i), computed once per substep for all its wheels.
+struct LinkVelocities {
+  const btMultiBody* multibody = nullptr;
+  btAlignedObjectArray<btVector3> angular, linear;
+  bool valid = false;  // computed this substep
+};
+
 struct Plugin::Impl {
   Impl(btDiscreteDynamicsWorld& world, const Terrain& terrain, ContactMode mode);
   ~Impl();
@@ -63,7 +71,8 @@ struct Plugin::Impl {
   std::unique_ptr<btCollisionAlgorithmCreateFunc> create;
   WheelListener* listener = nullptr;
   std::function<void(double)> pre_tick;
-  btAlignedObjectArray<btVector3> omega_scratch, velocity_scratch;  // multibody link velocities
+  const LinkVelocities& linkVelocities(const btMultiBody& multibody);
+  std::vector<LinkVelocities> link_velocities;  // per multibody with wheels
 };
 
 }  // namespace wtc::bullet

@@ -18,6 +18,7 @@
 #include "wtc/constants.hpp"
 #include "wtc/error.hpp"
 #include "wtc/sim/engine_wheel_contacts.hpp"
+#include "warm_started_motor.hpp"
 
 namespace wtc::bullet {
 namespace {
@@ -173,7 +174,7 @@ class SimEngine final : public sim::Engine {
   // One internal step of exactly h (maxSubSteps = 0: Bullet's variable step).
   void step() override {
     world_.stepSimulation(settings().step_seconds, 0, settings().step_seconds);
-    for (LinkVelocities& v : velocities_) v.valid = false;
+    for (LinkStates& s : link_states_) s.valid = false;
     if (!engine_wheels_.empty()) readEngineWheels();
   }
 
@@ -188,11 +189,12 @@ class SimEngine final : public sim::Engine {
       k.angular_velocity = toEigen(mb.getBaseOmega());
       return k;
     }
-    k.pose.translation() = toEigen(mb.localPosToWorld(r.link, btVector3(0, 0, 0)));
-    k.pose.linear() = toEigen(mb.localFrameToWorld(r.link, btMatrix3x3::getIdentity()));
-    const LinkVelocities& v = linkVelocities(r.tree);
-    k.linear_velocity = toEigen(mb.localDirToWorld(r.link, v.linear[r.link + 1]));
-    k.angular_velocity = toEigen(mb.localDirToWorld(r.link, v.angular[r.link + 1]));
+    const LinkStates& links = linkStates(r.tree);
+    const btMatrix3x3& to_world = links.to_world[r.link + 1];
+    k.pose.translation() = toEigen(links.origin[r.link + 1]);
+    k.pose.linear() = toEigen(to_world);
+    k.linear_velocity = toEigen(to_world * links.linear[r.link + 1]);
+    k.angular_velocity = toEigen(to_world * links.angular[r.link + 1]);
     return k;
   }
 
@@ -219,22 +221,39 @@ class SimEngine final : public sim::Engine {
   void setWheelListener(WheelListener* listener) override { plugin_->setListener(listener); }
 
  private:
-  // A tree's link velocities in link frames (index 0 the base, i + 1 link
-  // i), computed once per step for all its links.
-  struct LinkVelocities {
-    btAlignedObjectArray<btVector3> angular, linear;
+  // A tree's link frames (world rotation and origin) and velocities (in
+  // link frames), index 0 the base and i + 1 link i, computed once per step
+  // for all its links: btMultiBody's localPosToWorld and localDirToWorld
+  // walk to the base for every call.
+  struct LinkStates {
+    btAlignedObjectArray<btMatrix3x3> to_world;
+    btAlignedObjectArray<btVector3> origin, angular, linear;
+    btAlignedObjectArray<btQuaternion> world_to_local;
     bool valid = false;
   };
-  const LinkVelocities& linkVelocities(int tree) const {
-    LinkVelocities& v = velocities_[tree];
-    if (!v.valid) {
-      const btMultiBody& mb = *trees_[tree];
-      v.angular.resize(mb.getNumLinks() + 1);
-      v.linear.resize(mb.getNumLinks() + 1);
-      mb.compTreeLinkVelocities(&v.angular[0], &v.linear[0]);
-      v.valid = true;
+  const LinkStates& linkStates(int tree) const {
+    LinkStates& s = link_states_[tree];
+    if (s.valid) return s;
+    const btMultiBody& mb = *trees_[tree];
+    const int n = mb.getNumLinks() + 1;
+    btAlignedObjectArray<btQuaternion>& world_to_local = s.world_to_local;
+    world_to_local.resize(n);
+    s.to_world.resize(n);
+    s.origin.resize(n);
+    s.angular.resize(n);
+    s.linear.resize(n);
+    // btMultiBody::updateCollisionObjectWorldTransforms' recursion.
+    world_to_local[0] = mb.getWorldToBaseRot();
+    s.origin[0] = mb.getBasePos();
+    for (int k = 0; k + 1 < n; ++k) {
+      const int parent = mb.getParent(k) + 1;
+      world_to_local[k + 1] = mb.getParentToLocalRot(k) * world_to_local[parent];
+      s.origin[k + 1] = s.origin[parent] + quatRotate(world_to_local[k + 1].inverse(), mb.getRVector(k));
     }
-    return v;
+    for (int k = 0; k < n; ++k) s.to_world[k].setRotation(world_to_local[k].inverse());
+    mb.compTreeLinkVelocities(&s.angular[0], &s.linear[0]);
+    s.valid = true;
+    return s;
   }
 
   struct Ref {
@@ -344,7 +363,7 @@ class SimEngine final : public sim::Engine {
       refs_[i].tree = static_cast<int>(trees_.size());
       trees_.push_back(std::move(mb));
     }
-    velocities_.resize(trees_.size());
+    link_states_.resize(trees_.size());
     for (auto& mb : trees_) {
       mb->finalizeMultiDof();
       mb->setHasSelfCollision(false);
@@ -395,7 +414,7 @@ class SimEngine final : public sim::Engine {
       constraints_.push_back(std::move(limit));
     }
     if (b.joint.actuator) {
-      auto motor = std::make_unique<btMultiBodyJointMotor>(&mb, r.link, 0.0, 0.0);
+      auto motor = std::make_unique<WarmStartedMotor>(&mb, r.link, 0.0, 0.0);
       r.motor = motor.get();
       world_.addMultiBodyConstraint(motor.get());
       constraints_.push_back(std::move(motor));
@@ -436,7 +455,7 @@ class SimEngine final : public sim::Engine {
   std::unique_ptr<Plugin> plugin_;
   sim::EngineWheelSet engine_wheels_;               // with sim::EngineWheels only
   EngineWheelGround ground_;                        // the engine wheels' colliders point here
-  mutable std::vector<LinkVelocities> velocities_;  // per tree
+  mutable std::vector<LinkStates> link_states_;  // per tree
 };
 
 }  // namespace
