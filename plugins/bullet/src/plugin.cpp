@@ -221,8 +221,7 @@ void Plugin::Impl::preTick(double h) {
     w.mounted.setRestLoad(gravity);
     w.manifold = nullptr;
     w.manifold_point.clear();
-    const Kinematics k =
-        w.body != nullptr ? rigidKinematics(w) : multiBodyKinematics(w, linkVelocities(*w.multibody));
+    const Kinematics k = w.body != nullptr ? rigidKinematics(w) : multiBodyKinematics(w, linkVelocities(*w.multibody));
     const MountedWheelStep& r = w.mounted.step(ground, {toEigen(k.centre), toEigen(k.axle)}, k.motion, h);
     if (r.skipped) {
       // Its body's state is not finite: no force and no contact this step

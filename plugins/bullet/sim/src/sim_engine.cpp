@@ -13,12 +13,12 @@
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 #include <btBulletDynamicsCommon.h>
 
+#include "warm_started_motor.hpp"
 #include "wtc/bullet/plugin.hpp"
 #include "wtc/bullet/terrain_object.hpp"
 #include "wtc/constants.hpp"
 #include "wtc/error.hpp"
 #include "wtc/sim/engine_wheel_contacts.hpp"
-#include "warm_started_motor.hpp"
 
 namespace wtc::bullet {
 namespace {
@@ -453,8 +453,8 @@ class SimEngine final : public sim::Engine {
   std::vector<std::unique_ptr<btMultiBodyConstraint>> constraints_;
   std::vector<Ref> refs_;
   std::unique_ptr<Plugin> plugin_;
-  sim::EngineWheelSet engine_wheels_;               // with sim::EngineWheels only
-  EngineWheelGround ground_;                        // the engine wheels' colliders point here
+  sim::EngineWheelSet engine_wheels_;            // with sim::EngineWheels only
+  EngineWheelGround ground_;                     // the engine wheels' colliders point here
   mutable std::vector<LinkStates> link_states_;  // per tree
 };
 
