@@ -13,7 +13,6 @@
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 #include <btBulletDynamicsCommon.h>
 
-#include "warm_started_motor.hpp"
 #include "wtc/bullet/plugin.hpp"
 #include "wtc/bullet/terrain_object.hpp"
 #include "wtc/constants.hpp"
@@ -414,7 +413,7 @@ class SimEngine final : public sim::Engine {
       constraints_.push_back(std::move(limit));
     }
     if (b.joint.actuator) {
-      auto motor = std::make_unique<WarmStartedMotor>(&mb, r.link, 0.0, 0.0);
+      auto motor = std::make_unique<btMultiBodyJointMotor>(&mb, r.link, 0.0, 0.0);
       r.motor = motor.get();
       world_.addMultiBodyConstraint(motor.get());
       constraints_.push_back(std::move(motor));

@@ -1,0 +1,50 @@
+#pragma once
+// A heightfield kept as its heights (internal to wtc::core): the prisms of
+// addHeightfield (wtc/heightfield.hpp) are formed when asked for, not
+// stored.
+//
+// A stored prism is a ConvexPolyhedron of about 1.2 kB plus its index
+// entry; the field it comes from is 8 bytes a sample. Everything a query
+// needs is computed from the samples the same way addHeightfield computes
+// it, so piece(k) is bit for bit the prism addHeightfield adds as piece k,
+// and pieceBounds(k) its bounds(). The index is the grid itself: the cells
+// under a box are found by arithmetic, then tested with the same exact
+// double comparison as Terrain::overlapping's leaves (Aabb::overlaps).
+#include <cstddef>
+#include <vector>
+
+#include "wtc/aabb.hpp"
+#include "wtc/convex_polyhedron.hpp"
+#include "wtc/heightfield.hpp"
+#include "wtc/terrain.hpp"
+
+namespace wtc::detail {
+
+class CompactHeightfield {
+ public:
+  /// Validates `field` (wtc::validate(const Heightfield&)) and keeps it.
+  explicit CompactHeightfield(Heightfield field);
+
+  /// 2 (rows - 1)(cols - 1), as Heightfield::pieceCount().
+  std::size_t pieceCount() const { return field_.pieceCount(); }
+  /// Piece k in addHeightfield's order (cell k / 2 row-major, triangle k % 2),
+  /// bit for bit the prism addHeightfield builds.
+  ConvexPolyhedron piece(std::size_t k) const;
+  /// piece(k).bounds(), without forming the piece.
+  Aabb pieceBounds(std::size_t k) const;
+  /// Appends first + k for every piece k whose bounds overlap `box`
+  /// (Aabb::overlaps), cell by cell in row-major order.
+  void overlapping(const Aabb& box, PieceId first, std::vector<PieceId>& out) const;
+  /// The field's samples and description (bytes).
+  std::size_t memoryBytes() const;
+  const Heightfield& field() const { return field_; }
+
+ private:
+  // The three corners of piece k (addHeightfield's triangle order).
+  void corners(std::size_t k, Eigen::Vector3d p[3]) const;
+
+  Heightfield field_;
+  double base_z_ = 0.0;
+};
+
+}  // namespace wtc::detail

@@ -1,0 +1,126 @@
+// The compact heightfield (src/compact_heightfield.hpp, internal to
+// wtc::core) against the prisms addHeightfield stores: the same pieces bit
+// for bit, the same bounds, the same answer to "which pieces overlap this
+// box".
+#include "compact_heightfield.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "wtc/error.hpp"
+#include "wtc/terrain.hpp"
+
+namespace wtc {
+namespace {
+
+double uniform(std::mt19937& gen, double lo, double hi) { return lo + (hi - lo) * (gen() / 4294967296.0); }
+
+// A field with unequal, non-binary spacings and an offset origin, so that
+// any difference in how a corner is computed shows in the last bits.
+Heightfield randomField(int rows, int cols, std::uint32_t seed) {
+  std::mt19937 gen(seed);
+  Heightfield f;
+  f.rows = rows;
+  f.cols = cols;
+  f.spacing_x = 0.3;
+  f.spacing_y = 0.7;
+  f.origin = {-3.1, 2.3, 10.0};
+  f.base_depth = 0.4;
+  for (int i = 0; i < rows * cols; ++i) f.heights.push_back(uniform(gen, -0.5, 0.5));
+  return f;
+}
+
+void expectSameBits(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
+  ASSERT_EQ(a.vertexCount(), b.vertexCount());
+  ASSERT_EQ(a.faceCount(), b.faceCount());
+  EXPECT_EQ(a.origin(), b.origin());
+  for (int i = 0; i < a.vertexCount(); ++i) EXPECT_EQ(a.vertexLocal(i), b.vertexLocal(i)) << "vertex " << i;
+  for (int f = 0; f < a.faceCount(); ++f) {
+    EXPECT_EQ(a.faceNormal(f), b.faceNormal(f)) << "face " << f;
+    EXPECT_EQ(a.pd()[f], b.pd()[f]) << "face " << f;
+  }
+  EXPECT_EQ(a.bounds().min, b.bounds().min);
+  EXPECT_EQ(a.bounds().max, b.bounds().max);
+  EXPECT_EQ(a.memoryBytes(), b.memoryBytes());
+}
+
+struct Both {
+  Heightfield field;
+  Terrain stored;
+  PieceRange range;
+  detail::CompactHeightfield compact;
+};
+
+Both build(const Heightfield& f) {
+  TerrainBuilder builder;
+  const MaterialId m = builder.addMaterial(Material{});
+  builder.addPiece(ConvexPolyhedron::box({0, 0, -20}, {1, 1, -19}), m);  // ids need not start at 0
+  const PieceRange range = addHeightfield(builder, f, m);
+  return {f, std::move(builder).build(), range, detail::CompactHeightfield(f)};
+}
+
+TEST(CompactHeightfieldTest, FormsEveryPrismBitForBitAsAddHeightfieldStoresIt) {
+  const Both b = build(randomField(13, 17, 1));
+  ASSERT_EQ(b.compact.pieceCount(), static_cast<std::size_t>(b.range.count));
+  for (std::size_t k = 0; k < b.compact.pieceCount(); ++k) {
+    SCOPED_TRACE(k);
+    const ConvexPolyhedron& stored = b.stored.piece(b.range.first + static_cast<PieceId>(k));
+    expectSameBits(b.compact.piece(k), stored);
+    const Aabb box = b.compact.pieceBounds(k);
+    EXPECT_EQ(box.min, stored.bounds().min);
+    EXPECT_EQ(box.max, stored.bounds().max);
+  }
+}
+
+TEST(CompactHeightfieldTest, FindsTheSamePiecesAsTheTerrainIndexForAnyBox) {
+  const Both b = build(randomField(21, 14, 2));
+  std::mt19937 gen(3);
+  // The field's own extent (the terrain's also holds the extra box).
+  const Aabb all{b.compact.pieceBounds(0).min, b.compact.pieceBounds(b.compact.pieceCount() - 1).max};
+  std::vector<PieceId> expected, found;
+  int nonempty = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    // Boxes from wheel-sized to a few cells, some reaching past the field's
+    // edges, some above it or below its base; every tenth exactly on cell
+    // lines, where the exact test decides.
+    const Eigen::Vector3d half(uniform(gen, 0.01, 1.5), uniform(gen, 0.01, 1.5), uniform(gen, 0.01, 1.0));
+    Eigen::Vector3d centre(uniform(gen, all.min.x() - 1, all.max.x() + 1),
+                           uniform(gen, all.min.y() - 1, all.max.y() + 1),
+                           uniform(gen, all.min.z() - 0.5, all.max.z() + 0.5));
+    Aabb box{centre - half, centre + half};
+    if (trial % 10 == 0) {
+      box.min.x() = b.field.origin.x() + static_cast<int>(uniform(gen, 0, 13)) * b.field.spacing_x;
+      box.max.y() = b.field.origin.y() + static_cast<int>(uniform(gen, 0, 20)) * b.field.spacing_y;
+    }
+    expected.clear();
+    found.clear();
+    b.stored.overlapping(box, expected);
+    expected.erase(std::remove(expected.begin(), expected.end(), 0), expected.end());  // the extra box
+    b.compact.overlapping(box, b.range.first, found);
+    std::sort(expected.begin(), expected.end());
+    std::sort(found.begin(), found.end());
+    ASSERT_EQ(found, expected) << "trial " << trial;
+    nonempty += !found.empty();
+  }
+  EXPECT_GT(nonempty, 500);  // the boxes did meet the field
+}
+
+TEST(CompactHeightfieldTest, KeepsEightBytesASample) {
+  const detail::CompactHeightfield compact(randomField(200, 300, 4));
+  const double per_cell = static_cast<double>(compact.memoryBytes()) / (199.0 * 299.0);
+  EXPECT_LT(per_cell, 8.2);
+  EXPECT_GT(per_cell, 8.0);
+}
+
+TEST(CompactHeightfieldTest, RefusesAMalformedFieldAsValidateDoes) {
+  Heightfield f = randomField(3, 3, 5);
+  f.heights[4] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(detail::CompactHeightfield{f}, InvalidInputError);
+}
+
+}  // namespace
+}  // namespace wtc
