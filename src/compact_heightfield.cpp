@@ -43,29 +43,46 @@ Aabb CompactHeightfield::pieceBounds(std::size_t k) const {
   return box;
 }
 
+namespace {
+
+// The cells [first, last] along one axis whose span [x(i), x(i + 1)], with
+// x(i) = origin + i spacing computed as Heightfield::sample does, meets
+// [lo, hi]: exactly the cells whose pieces' boxes meet the box along that
+// axis (both triangles of a cell span the whole cell). The division only
+// guesses; the comparisons on x(i) decide. Empty when first > last.
+void cellSpan(double lo, double hi, double origin, double spacing, int cells, int& first, int& last) {
+  const auto x = [&](int i) { return origin + i * spacing; };
+  const double guess_lo = std::floor((lo - origin) / spacing);
+  const double guess_hi = std::floor((hi - origin) / spacing);
+  first = static_cast<int>(std::clamp(guess_lo, 0.0, static_cast<double>(cells - 1)));
+  last = static_cast<int>(std::clamp(guess_hi, 0.0, static_cast<double>(cells - 1)));
+  while (first > 0 && x(first) >= lo) --first;           // cell first - 1 may still reach lo
+  while (first < cells && x(first + 1) < lo) ++first;    // ends before lo
+  while (last + 1 < cells && x(last + 1) <= hi) ++last;  // starts within hi
+  while (last >= 0 && x(last) > hi) --last;              // starts after hi
+}
+
+}  // namespace
+
 void CompactHeightfield::overlapping(const Aabb& box, PieceId first, std::vector<PieceId>& out) const {
   const Heightfield& f = field_;
-  if (!(box.max.z() >= base_z_)) return;  // below the base: every piece reaches down to it, none lower
-  // Cells whose x range [x_c, x_c+1] can meet [box.min.x, box.max.x]; one
-  // cell of margin on each side absorbs the rounding of the division, the
-  // exact test below decides.
-  const auto range = [](double lo, double hi, double origin, double spacing, int cells, int& first_cell,
-                        int& last_cell) {
-    const double a = std::floor((lo - origin) / spacing) - 1.0;
-    const double b = std::floor((hi - origin) / spacing) + 1.0;
-    first_cell = static_cast<int>(std::clamp(a, 0.0, static_cast<double>(cells)));
-    last_cell = static_cast<int>(std::clamp(b, -1.0, static_cast<double>(cells - 1)));
-  };
+  // Every piece reaches down to the base: a box below it meets none. A
+  // box with a NaN meets nothing (every comparison fails), as in
+  // Terrain::overlapping.
+  if (!(box.max.z() >= base_z_) || box.min.hasNaN() || box.max.hasNaN()) return;
   int c0, c1, r0, r1;
-  range(box.min.x(), box.max.x(), f.origin.x(), f.spacing_x, f.cols - 1, c0, c1);
-  range(box.min.y(), box.max.y(), f.origin.y(), f.spacing_y, f.rows - 1, r0, r1);
+  cellSpan(box.min.x(), box.max.x(), f.origin.x(), f.spacing_x, f.cols - 1, c0, c1);
+  cellSpan(box.min.y(), box.max.y(), f.origin.y(), f.spacing_y, f.rows - 1, r0, r1);
   const auto cells_per_row = static_cast<std::size_t>(f.cols - 1);
+  const double lowest = box.min.z();
   for (int r = r0; r <= r1; ++r) {
     for (int c = c0; c <= c1; ++c) {
-      const std::size_t k = 2 * (static_cast<std::size_t>(r) * cells_per_row + c);
-      for (std::size_t t = 0; t < 2; ++t) {
-        if (pieceBounds(k + t).overlaps(box)) out.push_back(first + static_cast<PieceId>(k + t));
-      }
+      // The pieces' tops: the corners' z as sample() computes them.
+      const double z00 = f.origin.z() + f.height(r, c), z01 = f.origin.z() + f.height(r, c + 1);
+      const double z10 = f.origin.z() + f.height(r + 1, c), z11 = f.origin.z() + f.height(r + 1, c + 1);
+      const auto k = static_cast<PieceId>(2 * (static_cast<std::size_t>(r) * cells_per_row + c));
+      if (lowest <= std::max({z00, z01, z11})) out.push_back(first + k);
+      if (lowest <= std::max({z00, z11, z10})) out.push_back(first + k + 1);
     }
   }
 }

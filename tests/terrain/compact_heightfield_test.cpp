@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <random>
 #include <vector>
@@ -107,6 +108,13 @@ TEST(CompactHeightfieldTest, FindsTheSamePiecesAsTheTerrainIndexForAnyBox) {
     nonempty += !found.empty();
   }
   EXPECT_GT(nonempty, 500);  // the boxes did meet the field
+  // A box holding everything finds every piece; one with a NaN none.
+  found.clear();
+  b.compact.overlapping({Eigen::Vector3d::Constant(-1e300), Eigen::Vector3d::Constant(1e300)}, b.range.first, found);
+  EXPECT_EQ(found.size(), b.compact.pieceCount());
+  found.clear();
+  b.compact.overlapping({Eigen::Vector3d(std::nan(""), 0, 0), Eigen::Vector3d::Constant(1e300)}, b.range.first, found);
+  EXPECT_TRUE(found.empty());
 }
 
 TEST(CompactHeightfieldTest, KeepsEightBytesASample) {
