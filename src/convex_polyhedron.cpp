@@ -13,14 +13,11 @@
 namespace wtc {
 namespace {
 
-[[noreturn]] void fail(const std::string& what) {
-  throw InvalidInputError("wtc::ConvexPolyhedron::fromMesh: " + what);
-}
+[[noreturn]] void fail(const std::string& what) { throw InvalidInputError("wtc::ConvexPolyhedron::fromMesh: " + what); }
 
 // Newell's method: the area-weighted normal of a polygon, robust for
 // polygons that are planar only to roundoff (merged hull facets).
-Eigen::Vector3d newellNormal(const std::vector<Eigen::Vector3d>& local,
-                             const std::vector<int>& face) {
+Eigen::Vector3d newellNormal(const std::vector<Eigen::Vector3d>& local, const std::vector<int>& face) {
   // Edge vectors from the first vertex: no cancellation from large
   // coordinates.
   Eigen::Vector3d n = Eigen::Vector3d::Zero();
@@ -35,8 +32,8 @@ Eigen::Vector3d newellNormal(const std::vector<Eigen::Vector3d>& local,
 // vertex k): the same edge run the other way in the neighbouring face. A
 // closed, consistently oriented surface has exactly one twin for every
 // edge and no edge twice in one direction; anything else is named. Small
-// pieces (terrain prisms: 18 face-edges) are matched by a direct scan in a
-// stack buffer, larger ones by sorting.
+// pieces (terrain prisms: 18 face-edges) are matched by one pass over the
+// pairs in stack buffers, larger ones by sorting.
 void matchTwins(const std::vector<std::vector<int>>& faces, std::int32_t* twins) {
   struct Directed {
     std::int32_t from, to, face;
@@ -66,17 +63,42 @@ void matchTwins(const std::vector<std::vector<int>>& faces, std::int32_t* twins)
   if (total > kScanEdges) {
     order.resize(total);
     std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(), [&](std::int32_t x, std::int32_t y) { return key(edges[x]) < key(edges[y]); });
+    std::sort(order.begin(), order.end(),
+              [&](std::int32_t x, std::int32_t y) { return key(edges[x]) < key(edges[y]); });
+  }
+  if (total <= kScanEdges) {
+    // One pass over the pairs: each edge's first twin (the lowest index run
+    // the other way) and whether any other edge runs the same way; then the
+    // checks in edge order, so the first bad edge is named as before.
+    std::int32_t first_twin[kScanEdges];
+    bool repeated[kScanEdges] = {};
+    std::fill_n(first_twin, total, -1);
+    for (std::size_t i = 0; i < total; ++i) {
+      for (std::size_t j = i + 1; j < total; ++j) {
+        if (edges[j].from == edges[i].from && edges[j].to == edges[i].to) {
+          repeated[i] = repeated[j] = true;
+        } else if (edges[j].from == edges[i].to && edges[j].to == edges[i].from) {
+          if (first_twin[i] < 0) first_twin[i] = static_cast<std::int32_t>(j);
+          if (first_twin[j] < 0) first_twin[j] = static_cast<std::int32_t>(i);
+        }
+      }
+    }
+    for (std::size_t i = 0; i < total; ++i) {
+      if (repeated[i]) {
+        fail(name(edges[i]) + " is used twice in the same direction: faces overlap or are inconsistently oriented");
+      }
+      // An edge from a vertex to itself is its own opposite (the sorted
+      // search below finds it so).
+      if (first_twin[i] < 0 && edges[i].from == edges[i].to) first_twin[i] = static_cast<std::int32_t>(i);
+      if (first_twin[i] < 0) fail(name(edges[i]) + " has no opposite edge: the mesh is not closed");
+      twins[i] = first_twin[i];
+    }
+    return;
   }
   auto find = [&](std::int32_t from, std::int32_t to, std::size_t skip) -> std::int64_t {
-    if (total <= kScanEdges) {
-      for (std::size_t j = 0; j < total; ++j) {
-        if (j != skip && edges[j].from == from && edges[j].to == to) return static_cast<std::int64_t>(j);
-      }
-      return -1;
-    }
-    auto it = std::lower_bound(order.begin(), order.end(), std::pair{from, to},
-                               [&](std::int32_t x, const std::pair<std::int32_t, std::int32_t>& k) { return key(edges[x]) < k; });
+    auto it = std::lower_bound(
+        order.begin(), order.end(), std::pair{from, to},
+        [&](std::int32_t x, const std::pair<std::int32_t, std::int32_t>& k) { return key(edges[x]) < k; });
     for (; it != order.end() && key(edges[*it]) == std::pair{from, to}; ++it) {
       if (static_cast<std::size_t>(*it) != skip) return *it;
     }
@@ -156,7 +178,9 @@ ConvexPolyhedron ConvexPolyhedron::assemble(const std::vector<Eigen::Vector3d>& 
   poly.face_count_ = nf;
   poly.flat_ = flat;
 
-  std::vector<Eigen::Vector3d> local(nv);
+  // One scratch list per thread: heightfields form prisms by the million.
+  thread_local std::vector<Eigen::Vector3d> local;
+  local.resize(nv);
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   for (int i = 0; i < nv; ++i) {
     local[i] = vertices[i] - poly.origin_;
@@ -227,6 +251,7 @@ ConvexPolyhedron ConvexPolyhedron::assemble(const std::vector<Eigen::Vector3d>& 
 
   // Topology: face lists, then (large pieces only) vertex adjacency.
   auto& topo = poly.topology_;
+  topo.reserve(1 + faces.size() + 2 * face_edges);  // offsets, face lists, twins: one allocation
   topo.push_back(0);
   std::size_t total = 0;
   for (const auto& face : faces) topo.push_back(static_cast<std::int32_t>(total += face.size()));
