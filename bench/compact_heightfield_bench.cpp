@@ -13,6 +13,10 @@
 //       0.19 m, 2 mm into the surface) from the grid (compact) or the
 //       terrain index (prisms); <path> rolling (1 mm per query along a line)
 //       or cold (a random place every query).
+//   Contacts/<store>/<cells>/<path>  the whole per-wheel contact step
+//       (wtc::WheelContactFinder on a wtc::Terrain: candidates, formed or
+//       stored pieces, point queries, seam rule) at the same places;
+//       counter contacts_per_query.
 #include <benchmark/benchmark.h>
 
 #include <chrono>
@@ -24,6 +28,7 @@
 
 #include <wtc/heightfield.hpp>
 #include <wtc/terrain.hpp>
+#include <wtc/wheel_contact.hpp>
 
 #include "compact_heightfield.hpp"
 
@@ -134,6 +139,30 @@ void overlap(benchmark::State& state, bool compact_store, bool cold) {
   state.counters["pieces_per_query"] = static_cast<double>(found) / static_cast<double>(queries);
 }
 
+void contacts(benchmark::State& state, bool compact_store, bool cold) {
+  const wtc::Heightfield field = makeField(state.range(0));
+  const std::vector<wtc::Aabb> boxes = wheelBoxes(field, cold);
+  wtc::TerrainBuilder builder;
+  const wtc::MaterialId material = builder.addMaterial({});
+  if (compact_store) {
+    wtc::addCompactHeightfield(builder, field, material);
+  } else {
+    wtc::addHeightfield(builder, field, material);
+  }
+  const wtc::Terrain terrain = std::move(builder).build();
+  const wtc::WheelGeometry wheel{kRadius, 0.12};
+  wtc::WheelContactFinder finder;
+  std::size_t i = 0;
+  long found = 0, queries = 0;
+  for (auto _ : state) {
+    const wtc::WheelPose pose{boxes[i].center(), Eigen::Vector3d::UnitY()};
+    i = i + 1 == boxes.size() ? 0 : i + 1;
+    found += static_cast<long>(finder.find(terrain, wheel, pose).size());
+    ++queries;
+  }
+  state.counters["contacts_per_query"] = static_cast<double>(found) / static_cast<double>(queries);
+}
+
 // "a" + b, built by appending (GCC 12 warns, wrongly, on const char* + string&&).
 std::string join(const char* a, const std::string& b) {
   std::string s(a);
@@ -159,6 +188,10 @@ const bool kRegistered = [] {
       benchmark::RegisterBenchmark(join("Overlap/compact", tail + path).c_str(), overlap, true, cold)->Arg(cells);
       if (cells <= 1'000'000L) {
         benchmark::RegisterBenchmark(join("Overlap/prisms", tail + path).c_str(), overlap, false, cold)->Arg(cells);
+      }
+      benchmark::RegisterBenchmark(join("Contacts/compact", tail + path).c_str(), contacts, true, cold)->Arg(cells);
+      if (cells <= 1'000'000L) {
+        benchmark::RegisterBenchmark(join("Contacts/prisms", tail + path).c_str(), contacts, false, cold)->Arg(cells);
       }
     }
   }

@@ -11,6 +11,12 @@ CompactHeightfield::CompactHeightfield(Heightfield field) : field_(std::move(fie
   validate(field_);
   field_.heights.shrink_to_fit();  // the samples and nothing more
   base_z_ = field_.baseZ();
+  // The corners' coordinates as sample() computes them; origin.z + h is
+  // monotonic in h, so the highest sample gives the highest top.
+  const double highest = *std::max_element(field_.heights.begin(), field_.heights.end());
+  const Eigen::Vector3d far = field_.origin + Eigen::Vector3d((field_.cols - 1) * field_.spacing_x,
+                                                              (field_.rows - 1) * field_.spacing_y, highest);
+  bounds_ = {Eigen::Vector3d(field_.origin.x(), field_.origin.y(), base_z_), far};
 }
 
 void CompactHeightfield::corners(std::size_t k, Eigen::Vector3d p[3]) const {

@@ -35,6 +35,8 @@ class CompactHeightfield {
   /// Appends first + k for every piece k whose bounds overlap `box`
   /// (Aabb::overlaps), cell by cell in row-major order.
   void overlapping(const Aabb& box, PieceId first, std::vector<PieceId>& out) const;
+  /// The union of all pieces' bounds.
+  const Aabb& bounds() const { return bounds_; }
   /// The field's samples and description (bytes).
   std::size_t memoryBytes() const;
   const Heightfield& field() const { return field_; }
@@ -45,6 +47,7 @@ class CompactHeightfield {
 
   Heightfield field_;
   double base_z_ = 0.0;
+  Aabb bounds_;
 };
 
 }  // namespace wtc::detail

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "builder_support.hpp"
+#include "compact_heightfield.hpp"
 #include "wtc/error.hpp"
 
 namespace wtc {
@@ -78,6 +79,27 @@ PieceRange addHeightfield(TerrainBuilder& builder, const Heightfield& f, Materia
     }
   }
   return range;
+}
+
+PieceRange addCompactHeightfield(TerrainBuilder& builder, Heightfield field, MaterialId material) {
+  builder.requireMaterial(material, "wtc::addCompactHeightfield");
+  validate(field);
+  const std::string where =
+      "wtc::addCompactHeightfield (" + std::to_string(field.rows) + " x " + std::to_string(field.cols) + " samples)";
+  // Only the id range matters here: the field's pieces take no memory of their own.
+  if (builder.next_id_ + field.pieceCount() > static_cast<std::size_t>(std::numeric_limits<PieceId>::max())) {
+    builder.requireRoomFor(field.pieceCount(), where);  // names the limit
+  }
+  auto grid = std::make_shared<const detail::CompactHeightfield>(std::move(field));
+  TerrainBuilder::Field f;
+  f.first = static_cast<PieceId>(builder.next_id_);
+  f.count = static_cast<PieceId>(grid->pieceCount());
+  f.formed_before = builder.fields_.empty() ? 0 : builder.fields_.back().formed_before + builder.fields_.back().count;
+  f.grid = std::move(grid);
+  f.material = material;
+  builder.next_id_ += static_cast<std::size_t>(f.count);
+  builder.fields_.push_back(std::move(f));
+  return {builder.fields_.back().first, builder.fields_.back().count};
 }
 
 std::optional<double> surfaceHeight(const Heightfield& f, double x, double y) {

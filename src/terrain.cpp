@@ -9,6 +9,7 @@
 #include <numeric>
 #include <string>
 
+#include "compact_heightfield.hpp"
 #include "wtc/error.hpp"
 
 namespace wtc {
@@ -49,18 +50,22 @@ MaterialId TerrainBuilder::addMaterial(const Material& material) {
   return static_cast<MaterialId>(materials_.size() - 1);
 }
 
-PieceId TerrainBuilder::addPiece(ConvexPolyhedron piece, MaterialId material) {
+void TerrainBuilder::requireMaterial(MaterialId material, const char* where) const {
   if (material < 0 || material >= materialCount()) {
-    throw InvalidInputError("wtc::TerrainBuilder::addPiece: material id " + std::to_string(material) +
-                            " is not registered (" + std::to_string(materials_.size()) + " materials)");
+    throw InvalidInputError(std::string(where) + ": material id " + std::to_string(material) + " is not registered (" +
+                            std::to_string(materials_.size()) + " materials)");
   }
+}
+
+PieceId TerrainBuilder::addPiece(ConvexPolyhedron piece, MaterialId material) {
+  requireMaterial(material, "wtc::TerrainBuilder::addPiece");
   pieces_.push_back(std::move(piece));
   piece_material_.push_back(material);
-  return static_cast<PieceId>(pieces_.size() - 1);
+  return static_cast<PieceId>(next_id_++);
 }
 
 void TerrainBuilder::requireRoomFor(std::uint64_t count, const std::string& where) const {
-  const std::uint64_t total = pieces_.size() + count;
+  const std::uint64_t total = next_id_ + count;
   if (count > static_cast<std::uint64_t>(std::numeric_limits<PieceId>::max()) ||
       total > static_cast<std::uint64_t>(std::numeric_limits<PieceId>::max())) {
     throw InvalidInputError(where + ": " + std::to_string(count) + " pieces would pass the largest terrain (" +
@@ -88,27 +93,79 @@ void TerrainBuilder::reserve(std::size_t count) {
 }
 
 Terrain TerrainBuilder::build() && {
-  if (pieces_.empty()) throw InvalidInputError("wtc::TerrainBuilder::build: the terrain has no pieces");
+  if (next_id_ == 0) throw InvalidInputError("wtc::TerrainBuilder::build: the terrain has no pieces");
   Terrain terrain;
   terrain.pieces_ = std::move(pieces_);
   terrain.piece_material_ = std::move(piece_material_);
   terrain.materials_ = std::move(materials_);
+  terrain.fields_ = std::move(fields_);
+  terrain.piece_count_ = next_id_;
   terrain.buildIndex();
   return terrain;
+}
+
+Terrain::Place Terrain::place(PieceId id) const {
+  // The last field starting at or before id (fields are in id order).
+  const auto after =
+      std::upper_bound(fields_.begin(), fields_.end(), id, [](PieceId i, const Field& f) { return i < f.first; });
+  if (after == fields_.begin()) return {-1, static_cast<std::size_t>(id)};
+  const Field& f = *(after - 1);
+  if (id < f.first + f.count) return {static_cast<int>(after - 1 - fields_.begin()), 0};
+  return {-1, static_cast<std::size_t>(id - f.formed_before - f.count)};
+}
+
+bool Terrain::isFormed(PieceId id) const { return !fields_.empty() && place(id).field >= 0; }
+
+const ConvexPolyhedron& Terrain::storedPiece(PieceId id) const {
+  const Place at = place(id);
+  if (at.field >= 0) {
+    throw InvalidInputError("wtc::Terrain::piece: piece " + std::to_string(id) +
+                            " belongs to a compact heightfield and is formed on demand; use piece(id, scratch)");
+  }
+  return pieces_[at.stored];
+}
+
+const ConvexPolyhedron& Terrain::piece(PieceId id, std::optional<ConvexPolyhedron>& scratch) const {
+  if (fields_.empty()) return pieces_[id];
+  const Place at = place(id);
+  if (at.field < 0) return pieces_[at.stored];
+  const Field& f = fields_[at.field];
+  scratch = f.grid->piece(static_cast<std::size_t>(id - f.first));
+  return *scratch;
+}
+
+Aabb Terrain::pieceBounds(PieceId id) const {
+  if (fields_.empty()) return pieces_[id].bounds();
+  const Place at = place(id);
+  if (at.field < 0) return pieces_[at.stored].bounds();
+  const Field& f = fields_[at.field];
+  return f.grid->pieceBounds(static_cast<std::size_t>(id - f.first));
+}
+
+MaterialId Terrain::fieldAwareMaterialId(PieceId id) const {
+  const Place at = place(id);
+  return at.field < 0 ? piece_material_[at.stored] : fields_[at.field].material;
 }
 
 // Top-down build over piece centroids. A node's range is split at the
 // median along the widest centroid axis, and each half once more, giving up
 // to four children; a child of at most kLeafPieces pieces is a leaf. O(n log n).
 void Terrain::buildIndex() {
+  bool empty = true;
+  const auto cover = [&](const Aabb& box) {
+    if (empty) bounds_ = box;
+    bounds_.include(box);
+    empty = false;
+  };
+  for (const Field& f : fields_) cover(f.grid->bounds());
   const auto n = static_cast<PieceId>(pieces_.size());
+  if (n == 0) return;  // compact fields only: their grids are their index
   order_.resize(n);
   std::iota(order_.begin(), order_.end(), 0);
   std::vector<Eigen::Vector3d> centre(n);
-  bounds_ = pieces_[0].bounds();
   for (PieceId i = 0; i < n; ++i) {
     centre[i] = pieces_[i].bounds().center();
-    bounds_.include(pieces_[i].bounds());
+    cover(pieces_[i].bounds());
   }
   auto rangeBox = [&](std::int32_t begin, std::int32_t end) {
     Aabb box = pieces_[order_[begin]].bounds();
@@ -196,9 +253,22 @@ void Terrain::buildIndex() {
   // contiguous run of memory instead of dereferencing each piece.
   leaf_boxes_.resize(n);
   for (PieceId k = 0; k < n; ++k) leaf_boxes_[k] = pieces_[order_[k]].bounds();
+  // From here on order_ holds ids: a stored piece's id counts the formed
+  // ids of the fields before it.
+  if (fields_.empty()) return;
+  for (PieceId& k : order_) {
+    PieceId formed = 0;
+    for (const Field& f : fields_) {
+      if (f.first - f.formed_before > k) break;  // stored pieces before field f: f.first - f.formed_before
+      formed += f.count;
+    }
+    k += formed;
+  }
 }
 
 void Terrain::overlapping(const Aabb& box, std::vector<PieceId>& out) const {
+  for (const Field& f : fields_) f.grid->overlapping(box, f.first, out);
+  if (nodes_.empty()) return;
   float lo[3], hi[3];
   widenQuery(box, lo, hi);
   const Float4 lx{lo[0], lo[0], lo[0], lo[0]}, ly{lo[1], lo[1], lo[1], lo[1]}, lz{lo[2], lo[2], lo[2], lo[2]};
@@ -226,7 +296,8 @@ void Terrain::overlapping(const Aabb& box, std::vector<PieceId>& out) const {
 }
 
 std::size_t Terrain::pieceMemoryBytes() const {
-  std::size_t bytes = piece_material_.capacity() * sizeof(MaterialId);
+  std::size_t bytes = piece_material_.capacity() * sizeof(MaterialId) + fields_.capacity() * sizeof(Field);
+  for (const Field& f : fields_) bytes += f.grid->memoryBytes();
   for (const auto& p : pieces_) bytes += p.memoryBytes();
   return bytes;
 }

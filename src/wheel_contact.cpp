@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "builder_support.hpp"
 #include "wtc/error.hpp"
@@ -24,6 +25,9 @@ WheelContactFinder::WheelContactFinder() {
   shares_.reserve(kReservedCandidates);
   exits_.reserve(kReservedCandidates);
   next_exits_.reserve(kReservedCandidates);
+  candidate_pieces_.reserve(kReservedCandidates);
+  formed_.reserve(kReservedCandidates);
+  next_formed_.reserve(kReservedCandidates);
 }
 
 std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, const WheelGeometry& wheel,
@@ -60,11 +64,33 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
   // heightfield's few hundred candidates quadratic.
   std::sort(candidates_.begin(), candidates_.end());
   auto previous = caches_.begin();
+  // A compact field's pieces are formed once and kept while they stay
+  // candidates (the same merge walk): a rolling wheel meets new cells every
+  // few hundred steps. Reserved, so that the pointers below stay valid.
+  auto previous_formed = formed_.begin();
+  next_formed_.clear();
+  next_formed_.reserve(candidates_.size());
+  candidate_pieces_.clear();
   for (const PieceId id : candidates_) {
     QueryCache cache;
     while (previous != caches_.end() && previous->first < id) ++previous;
     if (previous != caches_.end() && previous->first == id) cache = previous->second;
-    const PointQuery q = queryPoint(terrain.piece(id), o, query, cache);
+    const ConvexPolyhedron* piece = nullptr;
+    if (terrain.isFormed(id)) {
+      while (previous_formed != formed_.end() && previous_formed->first < id) ++previous_formed;
+      if (previous_formed != formed_.end() && previous_formed->first == id) {
+        next_formed_.emplace_back(id, std::move(previous_formed->second));
+      } else {
+        std::optional<ConvexPolyhedron> scratch;
+        terrain.piece(id, scratch);
+        next_formed_.emplace_back(id, std::move(*scratch));
+      }
+      piece = &next_formed_.back().second;
+    } else {
+      piece = &terrain.piece(id);
+    }
+    candidate_pieces_.push_back(piece);
+    const PointQuery q = queryPoint(*piece, o, query, cache);
     next_caches_.emplace_back(id, cache);
     if (q.status == QueryStatus::kBeyond || !(q.signed_distance < cap_reach)) continue;
     WheelContact c;
@@ -75,7 +101,7 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
     c.deflection = r - q.signed_distance;
     c.piece = id;
     c.material = terrain.materialId(id);
-    if (q.signed_distance < 0.0) exitWhereEntered(terrain.piece(id), id, o, r, c);
+    if (q.signed_distance < 0.0) exitWhereEntered(*piece, id, o, r, c);
     if (q.signed_distance >= r) {  // within the caps' hysteresis only
       if (options.tread_truncation && onCap(wheel, c.e, pose.axle / axle_norm)) caps_.push_back(c);
       continue;
@@ -84,11 +110,12 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
   }
   std::swap(caches_, next_caches_);
   std::swap(exits_, next_exits_);
+  std::swap(formed_, next_formed_);  // swaps the buffers: candidate_pieces_ still point into them
   previous_centre_ = o;
   has_previous_ = true;
 
   // 3. Seam rule.
-  if (options.seam_rule && contacts_.size() > 1) applySeamRule(terrain, tolerance::kSeamGapRelative * r, r);
+  if (options.seam_rule && contacts_.size() > 1) applySeamRule(tolerance::kSeamGapRelative * r, r);
 
   // 4. Tread filter: keep contacts with |OP . a| <= w / 2; the others are
   // the caps'.
@@ -153,7 +180,12 @@ void WheelContactFinder::exitWhereEntered(const ConvexPolyhedron& piece, PieceId
   next_exits_.emplace_back(id, -c.e);
 }
 
-void WheelContactFinder::applySeamRule(const Terrain& terrain, double gap, double radius) {
+const ConvexPolyhedron& WheelContactFinder::candidatePiece(PieceId id) const {
+  const auto at = std::lower_bound(candidates_.begin(), candidates_.end(), id);
+  return *candidate_pieces_[static_cast<std::size_t>(at - candidates_.begin())];
+}
+
+void WheelContactFinder::applySeamRule(double gap, double radius) {
   // Contacts are ranked strictly by (distance, piece id): the nearest one
   // keeps its whole load, and no two contacts can shadow each other.
   auto share = [&](const WheelContact& b) {
@@ -163,13 +195,13 @@ void WheelContactFinder::applySeamRule(const Terrain& terrain, double gap, doubl
     bool covered = false;  // B's ground point lies on another touching piece: a seam, not a real edge
     for (const WheelContact& a : contacts_) {
       if (a.piece == b.piece) continue;
-      const double outside = terrain.piece(a.piece).planeBound(b.ground_point) - gap;  // (m)
+      const double outside = candidatePiece(a.piece).planeBound(b.ground_point) - gap;  // (m)
       covered = covered || outside <= 0.0;
       const bool nearer =
           a.signed_distance < b.signed_distance || (a.signed_distance == b.signed_distance && a.piece < b.piece);
       if (nearer) least = std::min(least, outside <= 0.0 ? 0.0 : std::min(1.0, outside / patch));
     }
-    return least < 1.0 && !covered ? std::max(least, realEdgeShare(terrain, b, gap)) : least;
+    return least < 1.0 && !covered ? std::max(least, realEdgeShare(b, gap)) : least;
   };
   // Decide on the unfiltered set, then erase: the rule is symmetric in order.
   shares_.resize(contacts_.size());
@@ -195,8 +227,8 @@ void WheelContactFinder::applySeamRule(const Terrain& terrain, double gap, doubl
 // is at least Z_B from B's ground point (triangle inequality), so distances
 // below Z_B are measured exactly, not by the plane bound. Called for a
 // contact that no other touching piece covers (applySeamRule knows).
-double WheelContactFinder::realEdgeShare(const Terrain& terrain, const WheelContact& b, double gap) const {
-  const ConvexPolyhedron& piece = terrain.piece(b.piece);
+double WheelContactFinder::realEdgeShare(const WheelContact& b, double gap) const {
+  const ConvexPolyhedron& piece = candidatePiece(b.piece);
   const Eigen::Vector3d& p = b.ground_point;
   int planes_through = 0;
   for (int f = 0; f < piece.faceCount() && planes_through < 2; ++f) {
@@ -206,7 +238,7 @@ double WheelContactFinder::realEdgeShare(const Terrain& terrain, const WheelCont
   double clear = b.deflection;         // only clearances below Z_B matter
   for (const WheelContact& a : contacts_) {
     if (a.piece == b.piece) continue;
-    const ConvexPolyhedron& other = terrain.piece(a.piece);
+    const ConvexPolyhedron& other = candidatePiece(a.piece);
     double outside = other.planeBound(p) - gap;  // (m), > 0 (not covered), a lower bound
     if (outside < clear) outside = queryPoint(other, p).signed_distance - gap;
     clear = std::min(clear, outside);

@@ -67,6 +67,13 @@ void validate(const Heightfield& field);
 /// order: cell by cell, row-major, the triangle (p00, p01, p11) first.
 PieceRange addHeightfield(TerrainBuilder& builder, const Heightfield& field, MaterialId material);
 
+/// Adds the same pieces as addHeightfield, with the same ids and bit for
+/// bit the same prisms, but keeps only the field's samples (8 bytes each,
+/// against about 2.6 kB per cell for stored prisms and their index) and
+/// forms a prism when a query needs it (Terrain::piece(id, scratch)). The
+/// terrain finds its pieces from the grid. Validates the field first.
+PieceRange addCompactHeightfield(TerrainBuilder& builder, Heightfield field, MaterialId material);
+
 /// The id of triangle `k` (0: (p00, p01, p11), 1: (p00, p11, p10)) of cell
 /// (r, c) in the range addHeightfield returned.
 inline PieceId cellPiece(const PieceRange& range, const Heightfield& field, int r, int c, int k) {

@@ -108,14 +108,20 @@ class WheelContactFinder {
   std::span<const WheelContact> capContacts() const { return caps_; }
 
  private:
-  void applySeamRule(const Terrain& terrain, double gap, double radius);
-  double realEdgeShare(const Terrain& terrain, const WheelContact& b, double gap) const;
+  void applySeamRule(double gap, double radius);
+  double realEdgeShare(const WheelContact& b, double gap) const;
+  // The piece of candidate `id` (stored, or formed and kept in formed_).
+  const ConvexPolyhedron& candidatePiece(PieceId id) const;
   void exitWhereEntered(const ConvexPolyhedron& piece, PieceId id, const Eigen::Vector3d& centre, double radius,
                         WheelContact& c);
   std::vector<PieceId> candidates_;
   std::vector<WheelContact> contacts_, caps_;
   std::vector<std::pair<PieceId, QueryCache>> caches_, next_caches_;
   std::vector<double> shares_;
+  // This call's candidates' pieces (candidates_ order), and the pieces
+  // formed for them (compact fields'), kept for the next call.
+  std::vector<const ConvexPolyhedron*> candidate_pieces_;
+  std::vector<std::pair<PieceId, ConvexPolyhedron>> formed_, next_formed_;
   // The centre of the last call, and for each piece the centre was inside
   // then, the outward normal of the face it was pushed out by.
   Eigen::Vector3d previous_centre_{Eigen::Vector3d::Zero()};

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <optional>
 
 #include "wtc/error.hpp"
 
@@ -39,8 +40,9 @@ void writeArray(std::ostream& out, const Numbers& numbers) {
 void writeTerrain(std::ostream& out, const Terrain& terrain) {
   std::vector<long long> positions;
   std::vector<long long> indices;
+  std::optional<ConvexPolyhedron> scratch;  // a compact field's piece, formed here
   for (PieceId id = 0; id < static_cast<PieceId>(terrain.pieceCount()); ++id) {
-    const ConvexPolyhedron& piece = terrain.piece(id);
+    const ConvexPolyhedron& piece = terrain.piece(id, scratch);
     const auto base = static_cast<long long>(positions.size() / 3);
     for (int v = 0; v < piece.vertexCount(); ++v) {
       const Eigen::Vector3d p = piece.vertex(v);

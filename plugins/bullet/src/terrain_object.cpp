@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <numeric>
+#include <optional>
 
 namespace wtc::bullet {
 namespace {
@@ -26,7 +27,7 @@ std::vector<PieceId> spatialOrder(const Terrain& terrain) {
   std::vector<Eigen::Vector3d> centres(count);
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   for (PieceId id = 0; id < count; ++id) {
-    const Aabb& box = terrain.piece(id).bounds();
+    const Aabb box = terrain.pieceBounds(id);
     centres[id] = 0.5 * (box.min + box.max);
     lo = lo.cwiseMin(centres[id]);
     hi = hi.cwiseMax(centres[id]);
@@ -48,8 +49,9 @@ std::vector<PieceId> spatialOrder(const Terrain& terrain) {
 TerrainObject::TerrainObject(const Terrain& terrain) : terrain_(terrain) {
   const auto count = static_cast<PieceId>(terrain.pieceCount());
   hulls_.reserve(count);
+  std::optional<ConvexPolyhedron> scratch;  // a compact field's piece, formed here
   for (PieceId id = 0; id < count; ++id) {
-    const ConvexPolyhedron& piece = terrain.piece(id);
+    const ConvexPolyhedron& piece = terrain.piece(id, scratch);
     // Vertices relative to the piece's local origin keep their digits far
     // from the world origin; the child transform puts them back.
     auto hull = std::make_unique<btConvexHullShape>();
@@ -63,7 +65,7 @@ TerrainObject::TerrainObject(const Terrain& terrain) : terrain_(terrain) {
     hulls_.push_back(std::move(hull));
   }
   const auto origin = [&](PieceId id) {
-    const Eigen::Vector3d& o = terrain.piece(id).origin();
+    const Eigen::Vector3d o = terrain.pieceBounds(id).center();  // the piece's origin()
     return btTransform(btQuaternion::getIdentity(), btVector3(o.x(), o.y(), o.z()));
   };
   if (count <= kPiecesPerGroup) {

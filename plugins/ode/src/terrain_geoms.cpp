@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 
 namespace wtc::ode {
 namespace {
@@ -33,8 +34,9 @@ TerrainGeoms::TerrainGeoms(const Terrain& terrain, dSpaceID parent, TerrainShape
   geoms_.reserve(count);
   numbers_.reserve(count);
   indices_.reserve(count);
+  std::optional<ConvexPolyhedron> scratch;  // a compact field's piece, formed here
   for (PieceId id = 0; id < count; ++id) {
-    const ConvexPolyhedron& piece = terrain.piece(id);
+    const ConvexPolyhedron& piece = terrain.piece(id, scratch);
     const Eigen::Vector3d origin = shape == TerrainShape::kConvex ? addConvex(piece) : addTriMesh(piece);
     dGeomSetPosition(geoms_.back(), origin.x(), origin.y(), origin.z());
     dGeomSetData(geoms_.back(), reinterpret_cast<void*>(static_cast<std::intptr_t>(id)));
