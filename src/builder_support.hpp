@@ -28,6 +28,10 @@ void requireRigid(const Eigen::Isometry3d& pose, const char* where, const char* 
 /// vertical prism cut by two planes). Built with the trusted
 /// ConvexPolyhedron::fromMesh path, which still validates the result.
 ConvexPolyhedron makePrism(const std::array<Eigen::Vector3d, 3>& top, const std::array<Eigen::Vector3d, 3>& bottom);
-
+/// makePrism's piece, bit for bit, for corners already checked (finite, the
+/// top above the bottom): the prism's topology is copied from a reference
+/// prism instead of matched anew. For prisms formed on demand.
+ConvexPolyhedron makeCheckedPrism(const std::array<Eigen::Vector3d, 3>& top,
+                                  const std::array<Eigen::Vector3d, 3>& bottom);
 
 }  // namespace wtc::detail

@@ -1,6 +1,8 @@
 // Heightfield prisms formed on demand (design note in compact_heightfield.hpp).
 #include "compact_heightfield.hpp"
 
+#include "builder_support.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -33,7 +35,10 @@ void CompactHeightfield::corners(std::size_t k, Eigen::Vector3d p[3]) const {
 ConvexPolyhedron CompactHeightfield::piece(std::size_t k) const {
   Eigen::Vector3d p[3];
   corners(k, p);
-  return makeTriangularPrism(p[0], p[1], p[2], base_z_);
+  // makeTriangularPrism's corners, checked once for the whole field.
+  return makeCheckedPrism({p[0], p[1], p[2]},
+                          {Eigen::Vector3d(p[0].x(), p[0].y(), base_z_), Eigen::Vector3d(p[1].x(), p[1].y(), base_z_),
+                           Eigen::Vector3d(p[2].x(), p[2].y(), base_z_)});
 }
 
 Aabb CompactHeightfield::pieceBounds(std::size_t k) const {

@@ -162,9 +162,15 @@ ConvexPolyhedron ConvexPolyhedron::box(const Eigen::Vector3d& min, const Eigen::
   return assemble(v, faces, false, nullptr);
 }
 
+ConvexPolyhedron detail::sameTopologyAs(const ConvexPolyhedron& like, const std::vector<Eigen::Vector3d>& vertices,
+                                        const std::vector<std::vector<int>>& faces) {
+  return ConvexPolyhedron::assemble(vertices, faces, like.flat_, nullptr, &like.topology_);
+}
+
 ConvexPolyhedron ConvexPolyhedron::assemble(const std::vector<Eigen::Vector3d>& vertices,
                                             const std::vector<std::vector<int>>& faces, bool flat,
-                                            const std::vector<Eigen::Vector3d>* hull_normals) {
+                                            const std::vector<Eigen::Vector3d>* hull_normals,
+                                            const std::vector<std::int32_t>* topology) {
   ConvexPolyhedron poly;
   poly.bounds_ = Aabb::of(vertices);
   poly.origin_ = poly.bounds_.center();
@@ -249,6 +255,12 @@ ConvexPolyhedron ConvexPolyhedron::assemble(const std::vector<Eigen::Vector3d>& 
     fail("the faces do not enclose a volume (the centroid is not strictly inside every face plane)");
   }
 
+  poly.has_adjacency_ = nv >= tolerance::kHillClimbMinVertices;
+  if (topology != nullptr) {
+    poly.topology_ = *topology;
+    poly.numbers_.shrink_to_fit();
+    return poly;
+  }
   // Topology: face lists, then (large pieces only) vertex adjacency.
   auto& topo = poly.topology_;
   topo.reserve(1 + faces.size() + 2 * face_edges);  // offsets, face lists, twins: one allocation
@@ -259,7 +271,6 @@ ConvexPolyhedron ConvexPolyhedron::assemble(const std::vector<Eigen::Vector3d>& 
   const std::size_t twins_at = topo.size();
   topo.resize(twins_at + total);
   matchTwins(faces, topo.data() + twins_at);
-  poly.has_adjacency_ = nv >= tolerance::kHillClimbMinVertices;
   if (poly.has_adjacency_) {
     std::vector<std::set<int>> neighbors(nv);
     for (const auto& face : faces) {

@@ -33,6 +33,16 @@
 
 namespace wtc {
 
+class ConvexPolyhedron;
+namespace detail {
+// A piece with the same face list as `like` (and as many vertices), built
+// from `vertices` with like's topology copied instead of matched anew: the
+// same piece, bit for bit, as fromMesh(vertices, faces) would build (for
+// pieces formed by the million: compact heightfields). Internal to the core.
+ConvexPolyhedron sameTopologyAs(const ConvexPolyhedron& like, const std::vector<Eigen::Vector3d>& vertices,
+                                const std::vector<std::vector<int>>& faces);
+}  // namespace detail
+
 class ConvexPolyhedron {
  public:
   /// The convex hull of `points` (Qhull). Duplicate and nearly duplicate
@@ -62,9 +72,7 @@ class ConvexPolyhedron {
   bool isFlat() const { return flat_; }
 
   /// Vertex i in the world frame (m).
-  Eigen::Vector3d vertex(int i) const {
-    return origin_ + Eigen::Vector3d(vx()[i], vy()[i], vz()[i]);
-  }
+  Eigen::Vector3d vertex(int i) const { return origin_ + Eigen::Vector3d(vx()[i], vy()[i], vz()[i]); }
   /// Outward unit normal of face f.
   Eigen::Vector3d faceNormal(int f) const { return {nx()[f], ny()[f], nz()[f]}; }
   /// Offset of face f in the world frame: n . x = offset on the plane (m).
@@ -129,9 +137,15 @@ class ConvexPolyhedron {
   // Builds the stored layout from a validated, outward-oriented face list.
   // `hull_normals` (from Qhull) replace the face normals computed from the
   // vertices, and the planarity check, for hull output.
+  // `topology`, when given, is the face lists and twins (and adjacency)
+  // of this very face list, copied instead of computed.
   static ConvexPolyhedron assemble(const std::vector<Eigen::Vector3d>& vertices,
                                    const std::vector<std::vector<int>>& faces, bool flat,
-                                   const std::vector<Eigen::Vector3d>* hull_normals);
+                                   const std::vector<Eigen::Vector3d>* hull_normals,
+                                   const std::vector<std::int32_t>* topology = nullptr);
+  friend ConvexPolyhedron detail::sameTopologyAs(const ConvexPolyhedron& like,
+                                                 const std::vector<Eigen::Vector3d>& vertices,
+                                                 const std::vector<std::vector<int>>& faces);
   int hillClimb(const Eigen::Vector3d& dir, int start) const;
   std::span<const std::int32_t> vertexNeighbors(int i) const;
 

@@ -46,7 +46,19 @@ void expectSameBits(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
   }
   EXPECT_EQ(a.bounds().min, b.bounds().min);
   EXPECT_EQ(a.bounds().max, b.bounds().max);
+  EXPECT_EQ(a.size(), b.size());
+  EXPECT_EQ(a.centroidLocal(), b.centroidLocal());
+  EXPECT_EQ(a.isFlat(), b.isFlat());
   EXPECT_EQ(a.memoryBytes(), b.memoryBytes());
+  // Topology: face lists and edge twins.
+  for (int f = 0; f < a.faceCount(); ++f) {
+    const auto fa = a.faceVertices(f), fb = b.faceVertices(f);
+    ASSERT_TRUE(std::equal(fa.begin(), fa.end(), fb.begin(), fb.end())) << "face " << f;
+    for (std::int32_t e = a.faceEdgeStart(f); e < a.faceEdgeStart(f) + static_cast<std::int32_t>(fa.size()); ++e) {
+      EXPECT_EQ(a.faceEdgeTwin(e), b.faceEdgeTwin(e)) << "face-edge " << e;
+      for (int i = 0; i < 4; ++i) EXPECT_EQ(a.faceEdgePlane(e)[i], b.faceEdgePlane(e)[i]) << "face-edge " << e;
+    }
+  }
 }
 
 struct Both {
