@@ -37,7 +37,7 @@ int toInt(const YamlReader& in, const YAML::Node& map, const char* key, long lon
 }
 
 Heightfield readHeightfield(const YamlReader& in, const YAML::Node& p) {
-  in.checkKeys(p, kCommonKeys, {"heights", "file", "spacing", "base_depth", "height_scale"});
+  in.checkKeys(p, kCommonKeys, {"heights", "file", "spacing", "base_depth", "height_scale", "storage"});
   if (YamlReader::get(p, "rotation")) {
     in.fail(p["rotation"], "a heightfield takes no rotation (its grid is aligned with x and y)");
   }
@@ -158,7 +158,18 @@ std::int64_t addPiece(TerrainBuilder& builder, const YamlReader& in, const YAML:
     s.pose_WL = in.pose(p);
     addStairs(builder, s, material);
   } else if (type == "heightfield") {
-    addHeightfield(builder, readHeightfield(in, p), material);
+    // storage: prisms (each cell's two prisms kept) or compact (the samples
+    // kept, the same prisms formed when a wheel needs them).
+    const auto storage = YamlReader::get(p, "storage");
+    const std::string kind = storage ? in.string(*storage, "storage") : "prisms";
+    if (kind != "prisms" && kind != "compact") {
+      in.fail(*storage, "storage: '" + kind + "' (expected prisms or compact)");
+    }
+    if (kind == "compact") {
+      addCompactHeightfield(builder, readHeightfield(in, p), material);
+    } else {
+      addHeightfield(builder, readHeightfield(in, p), material);
+    }
   } else if (type == "mesh") {
     in.checkKeys(p, kCommonKeys, {"file", "scale", "thickness", "keep_convex_parts"});
     MeshFileOptions options;

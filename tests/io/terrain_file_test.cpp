@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -133,6 +134,30 @@ TEST_F(TerrainFileTest, InlineHeightsAreAMapWithTheNorthRowFirst) {
                               queryPoint(terrain.piece(1), corner).signed_distance);
     EXPECT_NEAR(d, 0.0, kTolerance) << formatVector(corner);
   }
+}
+
+// storage: compact keeps the samples and forms the same prisms: the same
+// pieces, ids and boxes as the default storage, in a fraction of the memory.
+TEST_F(TerrainFileTest, ACompactHeightfieldHasTheStoredOnesPieces) {
+  const std::string field = std::string(kMaterials) +
+                            "pieces:\n"
+                            "  - {type: box, size: [1, 1, 1], translation: [-5, 0, 0]}\n"
+                            "  - type: heightfield\n"
+                            "    spacing: 0.5\n"
+                            "    heights: [[0.5, 0.6, 0.4], [0.0, 0.1, 0.2], [0.3, 0.0, 0.1]]\n";
+  const Terrain stored = loadTerrain(write("stored.yaml", field));
+  const Terrain compact = loadTerrain(write("compact.yaml", field + "    storage: compact\n"));
+  ASSERT_EQ(compact.pieceCount(), stored.pieceCount());
+  std::optional<ConvexPolyhedron> scratch;
+  for (PieceId id = 0; id < static_cast<PieceId>(stored.pieceCount()); ++id) {
+    EXPECT_EQ(compact.isFormed(id), id > 0);
+    const ConvexPolyhedron& p = compact.piece(id, scratch);
+    EXPECT_EQ(p.bounds().min, stored.piece(id).bounds().min);
+    EXPECT_EQ(p.bounds().max, stored.piece(id).bounds().max);
+    EXPECT_EQ(p.faceOffset(0), stored.piece(id).faceOffset(0));
+  }
+  EXPECT_THAT(loadError(field + "    storage: packed\n"),
+              HasSubstr(at(8, 14) + "pieces[1] (heightfield): storage: 'packed' (expected prisms or compact)"));
 }
 
 TEST_F(TerrainFileTest, ErrorsNameTheFileLineAndColumn) {
