@@ -11,6 +11,7 @@
 #include <random>
 #include <vector>
 
+#include "random_heightfield.hpp"
 #include "wtc/error.hpp"
 #include "wtc/heightfield.hpp"
 #include "wtc/terrain.hpp"
@@ -22,18 +23,11 @@ namespace {
 
 double uniform(std::mt19937& gen, double lo, double hi) { return lo + (hi - lo) * (gen() / 4294967296.0); }
 
-// Gentle random relief (a few cm) on 0.25 x 0.3 m cells, with an offset origin.
+// Gentle random relief (a few cm) on 0.25 x 0.3 m cells, centred on y = 0.
 Heightfield field(int rows, int cols, double x0, std::uint32_t seed) {
-  std::mt19937 gen(seed);
-  Heightfield f;
-  f.rows = rows;
-  f.cols = cols;
-  f.spacing_x = 0.25;
-  f.spacing_y = 0.3;
-  f.origin = {x0, -0.5 * (rows - 1) * f.spacing_y, 0.0};
-  f.base_depth = 0.5;
-  for (int i = 0; i < rows * cols; ++i) f.heights.push_back(uniform(gen, -0.03, 0.03));
-  return f;
+  return testing::randomHeightfield(
+      rows, cols, 0.03, seed,
+      {.spacing_x = 0.25, .spacing_y = 0.3, .origin = {x0, -0.5 * (rows - 1) * 0.3, 0.0}, .base_depth = 0.5});
 }
 
 // Stored box, field A, a ledge, field B, a rock: ids interleave.

@@ -12,6 +12,7 @@
 #include <random>
 #include <vector>
 
+#include "random_heightfield.hpp"
 #include "wtc/error.hpp"
 #include "wtc/terrain.hpp"
 
@@ -20,19 +21,11 @@ namespace {
 
 double uniform(std::mt19937& gen, double lo, double hi) { return lo + (hi - lo) * (gen() / 4294967296.0); }
 
-// A field with unequal, non-binary spacings and an offset origin, so that
-// any difference in how a corner is computed shows in the last bits.
+// Unequal, non-binary spacings and an offset origin, so that any difference
+// in how a corner is computed shows in the last bits.
 Heightfield randomField(int rows, int cols, std::uint32_t seed) {
-  std::mt19937 gen(seed);
-  Heightfield f;
-  f.rows = rows;
-  f.cols = cols;
-  f.spacing_x = 0.3;
-  f.spacing_y = 0.7;
-  f.origin = {-3.1, 2.3, 10.0};
-  f.base_depth = 0.4;
-  for (int i = 0; i < rows * cols; ++i) f.heights.push_back(uniform(gen, -0.5, 0.5));
-  return f;
+  return testing::randomHeightfield(rows, cols, 0.5, seed,
+                                    {.spacing_x = 0.3, .spacing_y = 0.7, .origin = {-3.1, 2.3, 10.0}});
 }
 
 void expectSameBits(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {

@@ -10,6 +10,7 @@
 #include <limits>
 #include <random>
 
+#include "random_heightfield.hpp"
 #include "wtc/error.hpp"
 #include "wtc/point_query.hpp"
 #include "wtc/terrain.hpp"
@@ -23,19 +24,8 @@ using ::testing::HasSubstr;
 // exact to ~1e-15 relative, so 1e-12 m is loose and still meaningful.
 constexpr double kTolerance = 1e-12;
 
-// Heights uniform in [-amplitude, amplitude], from the raw mt19937 stream
-// (fully specified by the standard, unlike its distributions).
 Heightfield randomField(int rows, int cols, double amplitude, std::uint32_t seed) {
-  std::mt19937 gen(seed);
-  Heightfield f;
-  f.rows = rows;
-  f.cols = cols;
-  f.spacing_x = 0.5;
-  f.spacing_y = 0.75;
-  f.origin = {-3.0, 2.0, 10.0};
-  f.base_depth = 0.4;
-  for (int i = 0; i < rows * cols; ++i) f.heights.push_back(amplitude * (2.0 * (gen() / 4294967296.0) - 1.0));
-  return f;
+  return testing::randomHeightfield(rows, cols, amplitude, seed);
 }
 
 std::string messageOf(const Heightfield& f) {
