@@ -8,8 +8,9 @@
 // needs is computed from the samples the same way addHeightfield computes
 // it, so piece(k) is bit for bit the prism addHeightfield adds as piece k,
 // and pieceBounds(k) its bounds(). The index is the grid itself: the cells
-// under a box are found by arithmetic, then tested with the same exact
-// double comparison as Terrain::overlapping's leaves (Aabb::overlaps).
+// under a box come from the cell lines and each triangle's top from its
+// corners, which decides exactly as Aabb::overlaps on the pieces' bounds
+// (Terrain::overlapping's leaf test) would.
 #include <cstddef>
 #include <vector>
 
@@ -32,8 +33,8 @@ class CompactHeightfield {
   ConvexPolyhedron piece(std::size_t k) const;
   /// piece(k).bounds(), without forming the piece.
   Aabb pieceBounds(std::size_t k) const;
-  /// Appends first + k for every piece k whose bounds overlap `box`
-  /// (Aabb::overlaps), cell by cell in row-major order.
+  /// Appends first + k for every piece k whose bounds overlap `box` (as
+  /// Aabb::overlaps decides), cell by cell in row-major order.
   void overlapping(const Aabb& box, PieceId first, std::vector<PieceId>& out) const;
   /// The union of all pieces' bounds.
   const Aabb& bounds() const { return bounds_; }

@@ -83,14 +83,10 @@ PieceRange addHeightfield(TerrainBuilder& builder, const Heightfield& f, Materia
 
 PieceRange addCompactHeightfield(TerrainBuilder& builder, Heightfield field, MaterialId material) {
   builder.requireMaterial(material, "wtc::addCompactHeightfield");
-  validate(field);
-  const std::string where =
-      "wtc::addCompactHeightfield (" + std::to_string(field.rows) + " x " + std::to_string(field.cols) + " samples)";
-  // Only the id range matters here: the field's pieces take no memory of their own.
-  if (builder.next_id_ + field.pieceCount() > static_cast<std::size_t>(std::numeric_limits<PieceId>::max())) {
-    builder.requireRoomFor(field.pieceCount(), where);  // names the limit
-  }
-  auto grid = std::make_shared<const detail::CompactHeightfield>(std::move(field));
+  auto grid = std::make_shared<const detail::CompactHeightfield>(std::move(field));  // validates it
+  // Only the ids are needed: the field's pieces take no memory of their own.
+  builder.requireIdsFor(grid->pieceCount(), "wtc::addCompactHeightfield (" + std::to_string(grid->field().rows) +
+                                                " x " + std::to_string(grid->field().cols) + " samples)");
   TerrainBuilder::Field f;
   f.first = static_cast<PieceId>(builder.next_id_);
   f.count = static_cast<PieceId>(grid->pieceCount());

@@ -64,13 +64,17 @@ PieceId TerrainBuilder::addPiece(ConvexPolyhedron piece, MaterialId material) {
   return static_cast<PieceId>(next_id_++);
 }
 
-void TerrainBuilder::requireRoomFor(std::uint64_t count, const std::string& where) const {
-  const std::uint64_t total = next_id_ + count;
+void TerrainBuilder::requireIdsFor(std::uint64_t count, const std::string& where) const {
   if (count > static_cast<std::uint64_t>(std::numeric_limits<PieceId>::max()) ||
-      total > static_cast<std::uint64_t>(std::numeric_limits<PieceId>::max())) {
+      next_id_ + count > static_cast<std::uint64_t>(std::numeric_limits<PieceId>::max())) {
     throw InvalidInputError(where + ": " + std::to_string(count) + " pieces would pass the largest terrain (" +
                             std::to_string(std::numeric_limits<PieceId>::max()) + " pieces)");
   }
+}
+
+void TerrainBuilder::requireRoomFor(std::uint64_t count, const std::string& where) const {
+  requireIdsFor(count, where);
+  const std::uint64_t total = next_id_ + count;
   const long pages = sysconf(_SC_PHYS_PAGES), page_bytes = sysconf(_SC_PAGE_SIZE);
   if (pages <= 0 || page_bytes <= 0) return;  // unknown: let the allocation decide
   const long double needed = static_cast<long double>(total) * sizeof(ConvexPolyhedron);

@@ -71,6 +71,9 @@ class TerrainBuilder {
     MaterialId material = 0;
   };
   void requireMaterial(MaterialId material, const char* where) const;
+  // Throws InvalidInputError naming `where` when `count` more ids would
+  // pass PieceId's range (requireRoomFor's first check).
+  void requireIdsFor(std::uint64_t count, const std::string& where) const;
 
   std::vector<ConvexPolyhedron> pieces_;
   std::vector<MaterialId> piece_material_;

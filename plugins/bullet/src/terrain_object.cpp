@@ -49,6 +49,8 @@ std::vector<PieceId> spatialOrder(const Terrain& terrain) {
 TerrainObject::TerrainObject(const Terrain& terrain) : terrain_(terrain) {
   const auto count = static_cast<PieceId>(terrain.pieceCount());
   hulls_.reserve(count);
+  std::vector<btTransform> origins;  // each hull's child transform: its piece's local origin
+  origins.reserve(count);
   std::optional<ConvexPolyhedron> scratch;  // a compact field's piece, formed here
   for (PieceId id = 0; id < count; ++id) {
     const ConvexPolyhedron& piece = terrain.piece(id, scratch);
@@ -63,14 +65,12 @@ TerrainObject::TerrainObject(const Terrain& terrain) : terrain_(terrain) {
     hull->setMargin(kTerrainMarginM);
     hull->setUserIndex(id);
     hulls_.push_back(std::move(hull));
+    const Eigen::Vector3d& o = piece.origin();
+    origins.emplace_back(btQuaternion::getIdentity(), btVector3(o.x(), o.y(), o.z()));
   }
-  const auto origin = [&](PieceId id) {
-    const Eigen::Vector3d o = terrain.pieceBounds(id).center();  // the piece's origin()
-    return btTransform(btQuaternion::getIdentity(), btVector3(o.x(), o.y(), o.z()));
-  };
   if (count <= kPiecesPerGroup) {
     compound_ = std::make_unique<btCompoundShape>(true, count);
-    for (PieceId id = 0; id < count; ++id) compound_->addChildShape(origin(id), hulls_[id].get());
+    for (PieceId id = 0; id < count; ++id) compound_->addChildShape(origins[id], hulls_[id].get());
   } else {
     const std::vector<PieceId> order = spatialOrder(terrain);
     const int group_count = static_cast<int>((order.size() + kPiecesPerGroup - 1) / kPiecesPerGroup);
@@ -78,7 +78,7 @@ TerrainObject::TerrainObject(const Terrain& terrain) : terrain_(terrain) {
     for (std::size_t first = 0; first < order.size(); first += kPiecesPerGroup) {
       const std::size_t end = std::min(order.size(), first + kPiecesPerGroup);
       auto group = std::make_unique<btCompoundShape>(true, static_cast<int>(end - first));
-      for (std::size_t k = first; k < end; ++k) group->addChildShape(origin(order[k]), hulls_[order[k]].get());
+      for (std::size_t k = first; k < end; ++k) group->addChildShape(origins[order[k]], hulls_[order[k]].get());
       compound_->addChildShape(btTransform::getIdentity(), group.get());
       groups_.push_back(std::move(group));
     }
