@@ -17,6 +17,21 @@ namespace {
 
 constexpr const char* kWhere = "wtc::Heightfield";
 
+// A point of the grid in cell coordinates: cell (r, c) and the fractions
+// s (along x) and t (along y) across it, in [0, 1].
+struct CellPoint {
+  int r = 0, c = 0;
+  double s = 0.0, t = 0.0;
+};
+
+// From column and row coordinates u in [0, cols - 1], v in [0, rows - 1];
+// the far edges belong to the last cells.
+CellPoint locate(const Heightfield& f, double u, double v) {
+  const int c = std::min(static_cast<int>(u), f.cols - 2);
+  const int r = std::min(static_cast<int>(v), f.rows - 2);
+  return {r, c, u - c, v - r};
+}
+
 }  // namespace
 
 double Heightfield::baseZ() const {
@@ -98,14 +113,18 @@ PieceRange addCompactHeightfield(TerrainBuilder& builder, Heightfield field, Mat
   return {builder.fields_.back().first, builder.fields_.back().count};
 }
 
+PieceId pieceUnder(const PieceRange& range, const Heightfield& f, double x, double y) {
+  const auto onGrid = [](double w, int samples) { return w > 0.0 ? std::min(w, samples - 1.0) : 0.0; };
+  const CellPoint p = locate(f, onGrid((x - f.origin.x()) / f.spacing_x, f.cols),
+                             onGrid((y - f.origin.y()) / f.spacing_y, f.rows));
+  return cellPiece(range, f, p.r, p.c, p.s >= p.t ? 0 : 1);
+}
+
 std::optional<double> surfaceHeight(const Heightfield& f, double x, double y) {
   const double u = (x - f.origin.x()) / f.spacing_x;  // column coordinate
   const double v = (y - f.origin.y()) / f.spacing_y;  // row coordinate
   if (!(u >= 0.0 && v >= 0.0 && u <= f.cols - 1 && v <= f.rows - 1)) return std::nullopt;
-  const int c = std::min(static_cast<int>(u), f.cols - 2);
-  const int r = std::min(static_cast<int>(v), f.rows - 2);
-  const double s = u - c;  // in [0, 1] across the cell along x
-  const double t = v - r;  // along y
+  const auto [r, c, s, t] = locate(f, u, v);
   const double h00 = f.height(r, c), h01 = f.height(r, c + 1);
   const double h10 = f.height(r + 1, c), h11 = f.height(r + 1, c + 1);
   // Below the diagonal (s >= t) lies triangle (p00, p01, p11), above it

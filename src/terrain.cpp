@@ -138,6 +138,22 @@ const ConvexPolyhedron& Terrain::piece(PieceId id, std::optional<ConvexPolyhedro
   return *scratch;
 }
 
+PieceId Terrain::storedId(std::size_t stored) const {
+  // The last field that starts at or before stored position `stored` (field
+  // f starts where f.first - f.formed_before stored pieces precede it).
+  const auto after = std::upper_bound(fields_.begin(), fields_.end(), stored, [](std::size_t s, const Field& f) {
+    return s < static_cast<std::size_t>(f.first - f.formed_before);
+  });
+  if (after == fields_.begin()) return static_cast<PieceId>(stored);
+  const Field& f = *(after - 1);
+  return static_cast<PieceId>(stored) + f.formed_before + f.count;
+}
+
+Terrain::CompactField Terrain::compactField(std::size_t k) const {
+  const Field& f = fields_.at(k);
+  return {f.first, f.count, &f.grid->field(), f.material};
+}
+
 Aabb Terrain::pieceBounds(PieceId id) const {
   if (fields_.empty()) return pieces_[id].bounds();
   const Place at = place(id);

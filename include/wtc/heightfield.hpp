@@ -80,6 +80,12 @@ inline PieceId cellPiece(const PieceRange& range, const Heightfield& field, int 
   return range.first + 2 * (r * (field.cols - 1) + c) + k;
 }
 
+/// The id of the triangle whose projection on the x-y plane holds (x, y),
+/// with (x, y) first clamped onto the grid (a contact point a hair outside
+/// the field's edge belongs to the edge's triangle; a non-finite coordinate
+/// counts as the grid's low end). The field's pieces start at range.first.
+PieceId pieceUnder(const PieceRange& range, const Heightfield& field, double x, double y);
+
 /// World z of the triangulated surface above (x, y) (m), or nullopt outside
 /// the grid. The same triangles as the pieces.
 std::optional<double> surfaceHeight(const Heightfield& field, double x, double y);

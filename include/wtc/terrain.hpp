@@ -98,6 +98,19 @@ class Terrain {
   Aabb pieceBounds(PieceId id) const;
   /// The stored pieces (all of them when the terrain has no compact field).
   std::span<const ConvexPolyhedron> pieces() const { return pieces_; }
+  /// The id of pieces()[stored] (ids skip the compact fields' ranges).
+  PieceId storedId(std::size_t stored) const;
+
+  /// A compact heightfield of this terrain: its pieces' ids and its samples
+  /// (an engine plugin gives it to the engine as one heightfield shape).
+  struct CompactField {
+    PieceId first = 0;  ///< Its pieces are first ... first + count - 1, in addHeightfield's order.
+    PieceId count = 0;
+    const Heightfield* field = nullptr;  ///< Lives as long as the terrain.
+    MaterialId material = 0;
+  };
+  std::size_t compactFieldCount() const { return fields_.size(); }
+  CompactField compactField(std::size_t k) const;
   const Material& material(PieceId id) const { return materials_[materialId(id)]; }
   MaterialId materialId(PieceId id) const { return fields_.empty() ? piece_material_[id] : fieldAwareMaterialId(id); }
   std::span<const Material> materials() const { return materials_; }

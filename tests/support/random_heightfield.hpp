@@ -1,13 +1,19 @@
 #pragma once
 // A seeded heightfield for the terrain tests: heights uniform in
 // [-amplitude, amplitude] from the raw mt19937 stream (fully specified by
-// the standard, unlike its distributions), on the grid given.
+// the standard, unlike its distributions), on the grid given. And the
+// engine plugins' compact-field scene: such a field with a flat patch, next
+// to a stored ledge.
+#include <algorithm>
 #include <cstdint>
 #include <random>
 
 #include <Eigen/Core>
 
+#include "wtc/convex_polyhedron.hpp"
 #include "wtc/heightfield.hpp"
+#include "wtc/terrain.hpp"
+#include "wtc/terrain_primitives.hpp"
 
 namespace wtc::testing {
 
@@ -29,6 +35,39 @@ inline Heightfield randomHeightfield(int rows, int cols, double amplitude, std::
   f.base_depth = grid.base_depth;
   for (int i = 0; i < rows * cols; ++i) f.heights.push_back(amplitude * (2.0 * (gen() / 4294967296.0) - 1.0));
   return f;
+}
+
+/// The plugins' compact-field scene: a 16 x 20 random field (heights
+/// within +-amplitude, the RandomGrid: x in [-3, 6.5], y in [2, 13.25], z about 10 m)
+/// whose cells x in [1, 3], y in [6.5, 9.5] are flat at kPatchHeightM, and
+/// the spec's ledge (stored) beside it. `compact`: the field by
+/// addCompactHeightfield, else addHeightfield (the same pieces and ids).
+struct PluginFieldScene {
+  static constexpr double kPatchHeightM = 0.25;  // above the field's origin (m)
+  Heightfield field;
+  PieceRange range;
+  Terrain terrain;
+};
+
+inline PluginFieldScene pluginFieldScene(bool compact, double amplitude = 0.15) {
+  Heightfield field = randomHeightfield(16, 20, amplitude, 20261124);
+  for (int r = 6; r <= 10; ++r) {
+    for (int c = 8; c <= 12; ++c) field.heights[r * field.cols + c] = PluginFieldScene::kPatchHeightM;
+  }
+  TerrainBuilder builder;
+  const MaterialId material = builder.addMaterial({});
+  addLedge(builder, {}, material);
+  const PieceRange range =
+      compact ? addCompactHeightfield(builder, field, material) : addHeightfield(builder, field, material);
+  return {field, range, std::move(builder).build()};
+}
+
+/// How far `point` lies outside `piece` (m; <= 0 inside): the largest
+/// signed distance to a face plane.
+inline double outside(const ConvexPolyhedron& piece, const Eigen::Vector3d& point) {
+  double worst = -1e300;
+  for (int f = 0; f < piece.faceCount(); ++f) worst = std::max(worst, piece.faceNormal(f).dot(point) - piece.faceOffset(f));
+  return worst;
 }
 
 }  // namespace wtc::testing

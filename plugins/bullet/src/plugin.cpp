@@ -351,6 +351,7 @@ const WheelState& Plugin::state(WheelId wheel) const {
 int Plugin::wheelCount() const { return static_cast<int>(impl_->wheels.size()); }
 ContactMode Plugin::mode() const { return impl_->mode; }
 btCollisionObject& Plugin::terrainObject() { return impl_->terrain.object(); }
+const TerrainObject& Plugin::terrainShapes() const { return impl_->terrain; }
 void Plugin::setListener(WheelListener* listener) { impl_->listener = listener; }
 void Plugin::setPreTickCallback(std::function<void(double)> callback) { impl_->pre_tick = std::move(callback); }
 

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cstdint>
 #include <numeric>
-#include <optional>
+#include <span>
+
+#include "wtc/heightfield.hpp"
 
 namespace wtc::bullet {
 namespace {
@@ -20,40 +22,58 @@ std::uint32_t interleave(std::uint32_t x, std::uint32_t y) {
   return spread(x) | (spread(y) << 1);
 }
 
-// Piece ids with neighbours next to each other: Morton order of the
-// centres of their boxes on a 2^16 grid over the terrain's box.
-std::vector<PieceId> spatialOrder(const Terrain& terrain) {
-  const auto count = static_cast<PieceId>(terrain.pieceCount());
+// Stored pieces (indices into `pieces`) with neighbours next to each
+// other: Morton order of the centres of their boxes on a 2^16 grid over
+// the pieces' box.
+std::vector<std::size_t> spatialOrder(std::span<const ConvexPolyhedron> pieces) {
+  const std::size_t count = pieces.size();
   std::vector<Eigen::Vector3d> centres(count);
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-  for (PieceId id = 0; id < count; ++id) {
-    const Aabb box = terrain.pieceBounds(id);
-    centres[id] = 0.5 * (box.min + box.max);
-    lo = lo.cwiseMin(centres[id]);
-    hi = hi.cwiseMax(centres[id]);
+  for (std::size_t s = 0; s < count; ++s) {
+    centres[s] = pieces[s].bounds().center();
+    lo = lo.cwiseMin(centres[s]);
+    hi = hi.cwiseMax(centres[s]);
   }
   const Eigen::Vector3d scale = (65535.0 / (hi - lo).cwiseMax(1e-9).array()).matrix();
   std::vector<std::uint32_t> code(count);
-  for (PieceId id = 0; id < count; ++id) {
-    const Eigen::Vector3d q = (centres[id] - lo).cwiseProduct(scale);
-    code[id] = interleave(static_cast<std::uint32_t>(q.x()), static_cast<std::uint32_t>(q.y()));
+  for (std::size_t s = 0; s < count; ++s) {
+    const Eigen::Vector3d q = (centres[s] - lo).cwiseProduct(scale);
+    code[s] = interleave(static_cast<std::uint32_t>(q.x()), static_cast<std::uint32_t>(q.y()));
   }
-  std::vector<PieceId> order(count);
-  std::iota(order.begin(), order.end(), PieceId{0});
-  std::stable_sort(order.begin(), order.end(), [&](PieceId a, PieceId b) { return code[a] < code[b]; });
+  std::vector<std::size_t> order(count);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return code[a] < code[b]; });
   return order;
+}
+
+// A compact field as Bullet's heightfield shape over the field's own
+// samples: columns along x (Bullet's width), rows along y, heights[r cols +
+// c] (Bullet's layout), z up. flipQuadEdges splits each cell along
+// p00-p11, the prisms' diagonal (wtc/heightfield.hpp).
+std::unique_ptr<btHeightfieldTerrainShape> makeFieldShape(const Heightfield& f, btTransform& placement) {
+  const auto [lo, hi] = std::minmax_element(f.heights.begin(), f.heights.end());
+  auto shape = std::make_unique<btHeightfieldTerrainShape>(f.cols, f.rows, f.heights.data(), *lo, *hi,
+                                                           /*upAxis=*/2, /*flipQuadEdges=*/true);
+  shape->setLocalScaling(btVector3(f.spacing_x, f.spacing_y, 1.0));
+  shape->setMargin(kTerrainMarginM);
+  // Bullet centres the grid on its local origin, and the heights on the
+  // middle of [lo, hi].
+  const Eigen::Vector3d centre =
+      f.origin + Eigen::Vector3d(0.5 * (f.cols - 1) * f.spacing_x, 0.5 * (f.rows - 1) * f.spacing_y, 0.5 * (*lo + *hi));
+  placement = btTransform(btQuaternion::getIdentity(), btVector3(centre.x(), centre.y(), centre.z()));
+  return shape;
 }
 
 }  // namespace
 
 TerrainObject::TerrainObject(const Terrain& terrain) : terrain_(terrain) {
-  const auto count = static_cast<PieceId>(terrain.pieceCount());
+  const std::span<const ConvexPolyhedron> stored = terrain.pieces();
+  const std::size_t count = stored.size();
   hulls_.reserve(count);
   std::vector<btTransform> origins;  // each hull's child transform: its piece's local origin
   origins.reserve(count);
-  std::optional<ConvexPolyhedron> scratch;  // a compact field's piece, formed here
-  for (PieceId id = 0; id < count; ++id) {
-    const ConvexPolyhedron& piece = terrain.piece(id, scratch);
+  for (std::size_t s = 0; s < count; ++s) {
+    const ConvexPolyhedron& piece = stored[s];
     // Vertices relative to the piece's local origin keep their digits far
     // from the world origin; the child transform puts them back.
     auto hull = std::make_unique<btConvexHullShape>();
@@ -63,28 +83,52 @@ TerrainObject::TerrainObject(const Terrain& terrain) : terrain_(terrain) {
     }
     hull->recalcLocalAabb();
     hull->setMargin(kTerrainMarginM);
-    hull->setUserIndex(id);
+    hull->setUserIndex(terrain.storedId(s));
     hulls_.push_back(std::move(hull));
     const Eigen::Vector3d& o = piece.origin();
     origins.emplace_back(btQuaternion::getIdentity(), btVector3(o.x(), o.y(), o.z()));
   }
+  const int field_count = static_cast<int>(terrain.compactFieldCount());
   if (count <= kPiecesPerGroup) {
-    compound_ = std::make_unique<btCompoundShape>(true, count);
-    for (PieceId id = 0; id < count; ++id) compound_->addChildShape(origins[id], hulls_[id].get());
+    compound_ = std::make_unique<btCompoundShape>(true, static_cast<int>(count) + field_count);
+    for (std::size_t s = 0; s < count; ++s) compound_->addChildShape(origins[s], hulls_[s].get());
   } else {
-    const std::vector<PieceId> order = spatialOrder(terrain);
-    const int group_count = static_cast<int>((order.size() + kPiecesPerGroup - 1) / kPiecesPerGroup);
-    compound_ = std::make_unique<btCompoundShape>(true, group_count);
-    for (std::size_t first = 0; first < order.size(); first += kPiecesPerGroup) {
-      const std::size_t end = std::min(order.size(), first + kPiecesPerGroup);
+    const std::vector<std::size_t> order = spatialOrder(stored);
+    const int group_count = static_cast<int>((count + kPiecesPerGroup - 1) / kPiecesPerGroup);
+    compound_ = std::make_unique<btCompoundShape>(true, group_count + field_count);
+    for (std::size_t first = 0; first < count; first += kPiecesPerGroup) {
+      const std::size_t end = std::min(count, first + kPiecesPerGroup);
       auto group = std::make_unique<btCompoundShape>(true, static_cast<int>(end - first));
       for (std::size_t k = first; k < end; ++k) group->addChildShape(origins[order[k]], hulls_[order[k]].get());
       compound_->addChildShape(btTransform::getIdentity(), group.get());
       groups_.push_back(std::move(group));
     }
   }
+  for (int k = 0; k < field_count; ++k) {
+    btTransform placement;
+    fields_.push_back(makeFieldShape(*terrain.compactField(k).field, placement));
+    fields_.back()->setUserIndex(k);
+    compound_->addChildShape(placement, fields_.back().get());
+  }
   object_.setCollisionShape(compound_.get());
   object_.setCollisionFlags(object_.getCollisionFlags() | btCollisionObject::CF_STATIC_OBJECT);
+}
+
+PieceId TerrainObject::pieceOf(const btCollisionObjectWrapper& ground) const {
+  const btCollisionShape* shape = ground.getCollisionShape();
+  const btCollisionObjectWrapper* parent = ground.m_parent;
+  if (shape->getShapeType() != TRIANGLE_SHAPE_PROXYTYPE || parent == nullptr ||
+      parent->getCollisionShape()->getShapeType() != TERRAIN_SHAPE_PROXYTYPE) {
+    return shape->getUserIndex();  // a hull's piece id, or -1
+  }
+  const int k = parent->getCollisionShape()->getUserIndex();
+  if (k < 0 || k >= static_cast<int>(terrain_.compactFieldCount())) return -1;
+  // Bullet numbers a heightfield's triangles by part 2 column + (0 or 1)
+  // and index row; with flipQuadEdges part 2c is (p00, p10, p11), WTC's
+  // triangle 1, and part 2c + 1 is (p00, p11, p01), WTC's triangle 0.
+  const Terrain::CompactField field = terrain_.compactField(k);
+  const int column = ground.m_partId / 2, row = ground.m_index;
+  return field.first + 2 * (row * (field.field->cols - 1) + column) + (ground.m_partId % 2 == 0 ? 1 : 0);
 }
 
 }  // namespace wtc::bullet

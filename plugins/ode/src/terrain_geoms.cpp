@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <optional>
+#include <span>
+
+#include "wtc/heightfield.hpp"
 
 namespace wtc::ode {
 namespace {
@@ -30,16 +32,15 @@ TerrainGeoms::TerrainGeoms(const Terrain& terrain, dSpaceID parent, TerrainShape
   const dVector3 quad_extents = {half.x(), half.y(), half.z(), 0};
   space_ = dQuadTreeSpaceCreate(parent, quad_centre, quad_extents, quadTreeDepth(terrain.pieceCount()));
   dSpaceSetCleanup(space_, 1);  // the geoms go with the space
-  const auto count = static_cast<PieceId>(terrain.pieceCount());
-  geoms_.reserve(count);
-  numbers_.reserve(count);
-  indices_.reserve(count);
-  std::optional<ConvexPolyhedron> scratch;  // a compact field's piece, formed here
-  for (PieceId id = 0; id < count; ++id) {
-    const ConvexPolyhedron& piece = terrain.piece(id, scratch);
+  const std::span<const ConvexPolyhedron> stored = terrain.pieces();
+  geoms_.reserve(stored.size() + terrain.compactFieldCount());
+  numbers_.reserve(stored.size());
+  indices_.reserve(stored.size());
+  for (std::size_t s = 0; s < stored.size(); ++s) {
+    const ConvexPolyhedron& piece = stored[s];
     const Eigen::Vector3d origin = shape == TerrainShape::kConvex ? addConvex(piece) : addTriMesh(piece);
     dGeomSetPosition(geoms_.back(), origin.x(), origin.y(), origin.z());
-    dGeomSetData(geoms_.back(), reinterpret_cast<void*>(static_cast<std::intptr_t>(id)));
+    dGeomSetData(geoms_.back(), reinterpret_cast<void*>(static_cast<std::intptr_t>(terrain.storedId(s))));
     // Into its quadtree block now, while it is still first in the root's
     // list: ODE's quadtree takes a moved geom out of its block by a walk of
     // the block's list, and left to the first collide, every piece would
@@ -47,16 +48,75 @@ TerrainGeoms::TerrainGeoms(const Terrain& terrain, dSpaceID parent, TerrainShape
     // did not finish building in 20 minutes).
     dSpaceClean(space_);
   }
+  for (std::size_t k = 0; k < terrain.compactFieldCount(); ++k) addField(k);
 }
 
 TerrainGeoms::~TerrainGeoms() {
   dSpaceDestroy(space_);
   for (const dTriMeshDataID mesh : meshes_) dGeomTriMeshDataDestroy(mesh);
+  for (const dHeightfieldDataID field : fields_) dGeomHeightfieldDataDestroy(field);
 }
 
+dGeomID TerrainGeoms::geom(PieceId piece) const {
+  PieceId formed_before = 0;  // ids of the compact fields before `piece`
+  for (std::size_t k = 0; k < terrain_.compactFieldCount(); ++k) {
+    const Terrain::CompactField field = terrain_.compactField(k);
+    if (piece < field.first) break;
+    if (piece < field.first + field.count) return geoms_[terrain_.pieces().size() + k];
+    formed_before += field.count;
+  }
+  return geoms_[piece - formed_before];
+}
+
+// A geom's data: its piece id (>= 0), or -2 - k for compact field k.
 PieceId TerrainGeoms::piece(dGeomID geom) const {
   if (dGeomIsSpace(geom) || dGeomGetSpace(geom) != space_) return -1;
-  return static_cast<PieceId>(reinterpret_cast<std::intptr_t>(dGeomGetData(geom)));
+  return std::max(static_cast<PieceId>(reinterpret_cast<std::intptr_t>(dGeomGetData(geom))), PieceId{-1});
+}
+
+PieceId TerrainGeoms::piece(dGeomID geom, const Eigen::Vector3d& point) const {
+  if (dGeomIsSpace(geom) || dGeomGetSpace(geom) != space_) return -1;
+  const auto data = static_cast<PieceId>(reinterpret_cast<std::intptr_t>(dGeomGetData(geom)));
+  if (data >= 0) return data;
+  const Terrain::CompactField field = terrain_.compactField(static_cast<std::size_t>(-2 - data));
+  return pieceUnder({field.first, field.count}, *field.field, point.x(), point.y());
+}
+
+namespace {
+
+// The height of a compact field's sample for ODE: ODE's x is the field's
+// column, ODE's z the row counted from the far end (addField turns ODE's z
+// onto WTC's -y).
+dReal fieldHeight(void* field, int x, int z) {
+  const auto* f = static_cast<const Heightfield*>(field);
+  return f->height(f->rows - 1 - z, x);
+}
+
+}  // namespace
+
+void TerrainGeoms::addField(std::size_t k) {
+  const Heightfield& f = *terrain_.compactField(k).field;
+  const auto [lo, hi] = std::minmax_element(f.heights.begin(), f.heights.end());
+  const dHeightfieldDataID data = dGeomHeightfieldDataCreate();
+  fields_.push_back(data);
+  // Width along ODE's x (the columns), depth along ODE's z (the rows);
+  // solid down to the field's base (thickness below the lowest sample).
+  dGeomHeightfieldDataBuildCallback(data, const_cast<Heightfield*>(&f), &fieldHeight, (f.cols - 1) * f.spacing_x,
+                                    (f.rows - 1) * f.spacing_y, f.cols, f.rows, /*scale=*/1.0, /*offset=*/0.0,
+                                    /*thickness=*/f.base_depth, /*bWrap=*/0);
+  dGeomHeightfieldDataSetBounds(data, *lo, *hi);
+  const dGeomID geom = dCreateHeightfield(space_, data, /*bPlaceable=*/1);
+  // ODE's heightfield has y up; its x stays x, its y goes to z, its z to
+  // -y (a right-handed turn). Rows of ODE's 3 x 4 matrix.
+  const dMatrix3 turn = {1, 0, 0, 0, 0, 0, -1, 0, 0, 1, 0, 0};
+  dGeomSetRotation(geom, turn);
+  // ODE centres the grid on the geom's position; heights count from it.
+  const Eigen::Vector3d centre =
+      f.origin + Eigen::Vector3d(0.5 * (f.cols - 1) * f.spacing_x, 0.5 * (f.rows - 1) * f.spacing_y, 0.0);
+  dGeomSetPosition(geom, centre.x(), centre.y(), centre.z());
+  dGeomSetData(geom, reinterpret_cast<void*>(static_cast<std::intptr_t>(-2 - static_cast<PieceId>(k))));
+  dSpaceClean(space_);
+  geoms_.push_back(geom);
 }
 
 bool TerrainGeoms::contains(dGeomID geom) const {

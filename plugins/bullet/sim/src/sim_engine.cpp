@@ -90,7 +90,7 @@ btCollisionShape* makeShape(const Body& body, bool sphere_wheels,
 // What an engine wheel's contact needs to know of the ground (the wheel
 // collider's user pointer): the Coulomb coefficient of each material.
 struct EngineWheelGround {
-  const btCollisionObject* terrain = nullptr;
+  const TerrainObject* terrain = nullptr;
   const Terrain* pieces = nullptr;
   std::vector<double> mu;  // per material id
 };
@@ -98,7 +98,8 @@ struct EngineWheelGround {
 // Bullet lets a collision object flagged CF_CUSTOM_MATERIAL_CALLBACK set
 // the friction of each new contact point through one process-wide
 // callback; only the engine wheels' colliders carry the flag. The ground's
-// wrapper is the child hull the wheel met, whose user index is its piece.
+// wrapper is the child the wheel met: a hull, or a compact field's triangle
+// (TerrainObject::pieceOf).
 bool engineWheelContactAdded(btManifoldPoint& point, const btCollisionObjectWrapper* a, int, int,
                              const btCollisionObjectWrapper* b, int, int) {
   const bool a_is_wheel =
@@ -106,8 +107,8 @@ bool engineWheelContactAdded(btManifoldPoint& point, const btCollisionObjectWrap
   const btCollisionObjectWrapper* wheel = a_is_wheel ? a : b;
   const btCollisionObjectWrapper* ground = a_is_wheel ? b : a;
   const auto* g = static_cast<const EngineWheelGround*>(wheel->getCollisionObject()->getUserPointer());
-  if (g == nullptr || ground->getCollisionObject() != g->terrain) return false;
-  const PieceId piece = TerrainObject::pieceOf(*ground->getCollisionShape());
+  if (g == nullptr || ground->getCollisionObject() != &g->terrain->object()) return false;
+  const PieceId piece = g->terrain->pieceOf(*ground);
   if (piece < 0 || piece >= static_cast<PieceId>(g->pieces->pieceCount())) return false;
   point.m_combinedFriction = g->mu[g->pieces->materialId(piece)];
   return true;
@@ -270,7 +271,7 @@ class SimEngine final : public sim::Engine {
   void addEngineWheels(const Terrain& terrain) {
     static std::once_flag installed;
     std::call_once(installed, [] { gContactAddedCallback = engineWheelContactAdded; });
-    ground_ = {.terrain = &plugin_->terrainObject(), .pieces = &terrain, .mu = sim::engineWheelFrictions(terrain)};
+    ground_ = {.terrain = &plugin_->terrainShapes(), .pieces = &terrain, .mu = sim::engineWheelFrictions(terrain)};
     engine_wheels_ = sim::EngineWheelSet(vehicle());
     for (std::size_t k = 0; k < engine_wheels_.size(); ++k) {
       Ref& r = refs_[engine_wheels_.body(k)];

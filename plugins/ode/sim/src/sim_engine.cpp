@@ -270,11 +270,11 @@ class SimEngine final : public sim::Engine {
   void collideEngineWheel(int wheel, dGeomID wheel_geom, dGeomID ground) {
     std::array<dContact, kMaxBodyContacts> contact{};
     const int n = dCollide(wheel_geom, ground, kMaxBodyContacts, &contact[0].geom, sizeof(dContact));
-    const PieceId piece = plugin_->terrainGeoms().piece(ground);
-    const double mu = piece >= 0 ? engine_wheel_mu_[terrain_.materialId(piece)] : kBodyGroundFriction;
     for (int k = 0; k < n; ++k) {
+      const dReal* at = contact[k].geom.pos;
+      const PieceId piece = plugin_->terrainGeoms().piece(ground, Eigen::Vector3d(at[0], at[1], at[2]));
       contact[k].surface.mode = dContactApprox1;
-      contact[k].surface.mu = mu;
+      contact[k].surface.mu = piece >= 0 ? engine_wheel_mu_[terrain_.materialId(piece)] : kBodyGroundFriction;
       // Stable addresses: ODE keeps a pointer to the feedback until the step.
       if (recorded_ == recorded_contacts_.size()) recorded_contacts_.emplace_back();
       RecordedContact& r = recorded_contacts_[recorded_++];

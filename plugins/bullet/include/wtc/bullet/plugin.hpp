@@ -34,6 +34,7 @@
 
 #include "wtc/effects.hpp"
 #include "wtc/engine_contact.hpp"
+#include "wtc/bullet/terrain_object.hpp"
 #include "wtc/terrain.hpp"
 #include "wtc/tyre_model.hpp"
 #include "wtc/wheel_listener.hpp"
@@ -99,6 +100,8 @@ class Plugin {
 
   ContactMode mode() const;
   btCollisionObject& terrainObject();
+  /// The terrain's Bullet shapes (which piece a contact of the terrain met).
+  const TerrainObject& terrainShapes() const;
   /// Called at each internal step, for each wheel, after its tyre model ran
   /// (before Bullet integrates the step); null: none.
   void setListener(WheelListener* listener);

@@ -1,8 +1,16 @@
 #pragma once
 // The WTC terrain as one static Bullet collision object: a compound of
-// convex hulls, one per piece, so that every pair other than wheel-terrain
-// (a chassis scraping the ledge) collides with the same ground through
-// Bullet's own algorithms.
+// convex hulls, one per stored piece, so that every pair other than
+// wheel-terrain (a chassis scraping the ledge) collides with the same ground
+// through Bullet's own algorithms.
+//
+// A compact heightfield (addCompactHeightfield) is one child: a
+// btHeightfieldTerrainShape that reads the field's own samples (Bullet
+// copies nothing), its cells split along the same diagonal p00-p11 as the
+// prisms (Bullet's flipQuadEdges), so a chassis meets the same surface.
+// Unlike the prisms it is a surface, not a solid: a body that has sunk
+// through it is not pushed back up. The wheels never see it: WTC answers
+// them from the terrain itself.
 //
 // Large terrains are a two-level compound: pieces in groups of
 // kPiecesPerGroup, neighbours together (Morton order of their centres),
@@ -12,6 +20,7 @@
 #include <memory>
 #include <vector>
 
+#include <BulletCollision/CollisionShapes/btHeightfieldTerrainShape.h>
 #include <btBulletCollisionCommon.h>
 
 #include "wtc/terrain.hpp"
@@ -32,15 +41,17 @@ class TerrainObject {
   TerrainObject& operator=(const TerrainObject&) = delete;
 
   const Terrain& terrain() const { return terrain_; }
-  /// The piece a child shape of this object stands for: each hull's user
-  /// index is its piece id (a contact callback sees the child it met).
-  static PieceId pieceOf(const btCollisionShape& hull) { return hull.getUserIndex(); }
+  /// The piece a contact of this object's met, from the wrapper a contact
+  /// callback sees: a hull's user index is its piece id; a heightfield's
+  /// triangle is found from its part and index. -1 for anything else.
+  PieceId pieceOf(const btCollisionObjectWrapper& ground) const;
   btCollisionObject& object() { return object_; }
   const btCollisionObject& object() const { return object_; }
 
  private:
   const Terrain& terrain_;
   std::vector<std::unique_ptr<btConvexHullShape>> hulls_;
+  std::vector<std::unique_ptr<btHeightfieldTerrainShape>> fields_;  // one per compact field, in field order
   std::vector<std::unique_ptr<btCompoundShape>> groups_;
   std::unique_ptr<btCompoundShape> compound_;
   btCollisionObject object_;

@@ -24,8 +24,14 @@
 //    (counter-clockwise seen from outside); ODE checks both and prints a
 //    warning otherwise. Exact solid, but ODE's convex colliders return one
 //    contact per pair, so a box resting on it is held at one point per step.
-// The plugin tells terrain geoms by their space (contains()); their user
-// data stays free for the program.
+//
+// A compact heightfield (addCompactHeightfield) is one dGeomHeightfield
+// that reads the field's samples through a callback (nothing copied),
+// turned so that its up axis is WTC's z; ODE splits each cell along the
+// prisms' diagonal p00-p11 in that orientation (tested). ODE treats the
+// ground below its surface, down to the field's base, as solid.
+//
+// The plugin tells terrain geoms by their space (contains()).
 #include <cstdint>
 #include <vector>
 
@@ -57,11 +63,14 @@ class TerrainGeoms {
   dSpaceID space() const { return space_; }
   /// True for the terrain space itself and for each piece's geom.
   bool contains(dGeomID geom) const;
-  /// The geom of a piece.
-  dGeomID geom(PieceId piece) const { return geoms_[piece]; }
-  /// The piece a geom of this terrain stands for (its geom data), -1 for
-  /// any other geom.
+  /// The geom of a piece: its own, or its compact field's.
+  dGeomID geom(PieceId piece) const;
+  /// The piece a geom of this terrain stands for, -1 for any other geom
+  /// and for a compact field's (use the overload with a point).
   PieceId piece(dGeomID geom) const;
+  /// The piece a contact of `geom` at world point `point` met: piece(geom),
+  /// or for a compact field's geom the triangle under the point.
+  PieceId piece(dGeomID geom, const Eigen::Vector3d& point) const;
 
  private:
   // Each adds the piece's geom and returns where to place it (world, m).
@@ -71,8 +80,11 @@ class TerrainGeoms {
   const Terrain& terrain_;
   TerrainShape shape_;
   dSpaceID space_ = nullptr;
-  std::vector<dGeomID> geoms_;
+  void addField(std::size_t k);
+
+  std::vector<dGeomID> geoms_;  // the stored pieces' (Terrain::pieces() order), then one per compact field
   std::vector<dTriMeshDataID> meshes_;
+  std::vector<dHeightfieldDataID> fields_;  // one per compact field
   // ODE keeps pointers into these (it copies nothing): one buffer per piece,
   // never resized once its geom exists.
   std::vector<std::vector<dReal>> numbers_;          // points, then planes (convex)

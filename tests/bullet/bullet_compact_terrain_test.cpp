@@ -1,0 +1,173 @@
+// A compact heightfield in Bullet (issue 18): one heightfield shape, not a
+// hull per prism, with the prisms' surface; Bullet's other bodies collide
+// with it, a contact names the prism it met, and WTC's wheels run exactly
+// as on the stored prisms. docs/terrain.md.
+#include <btBulletDynamicsCommon.h>
+
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "bullet_fixture.hpp"
+#include "random_heightfield.hpp"
+#include "wtc/bullet/terrain_object.hpp"
+#include "wtc/heightfield.hpp"
+
+namespace wtc {
+namespace {
+
+using testing::BulletWorld;
+using testing::PluginFieldScene;
+using testing::pluginFieldScene;
+
+// Every leaf shape of a (possibly nested) compound.
+void leaves(const btCollisionShape& shape, std::vector<const btCollisionShape*>& out) {
+  if (!shape.isCompound()) {
+    out.push_back(&shape);
+    return;
+  }
+  const auto& compound = static_cast<const btCompoundShape&>(shape);
+  for (int k = 0; k < compound.getNumChildShapes(); ++k) leaves(*compound.getChildShape(k), out);
+}
+
+// A uniform point of the field's x-y rectangle, `inset` (m) inside its edges.
+Eigen::Vector2d pointOn(const Heightfield& f, std::mt19937& gen, double inset) {
+  const auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * (gen() / 4294967296.0); };
+  return {uniform(f.origin.x() + inset, f.origin.x() + (f.cols - 1) * f.spacing_x - inset),
+          uniform(f.origin.y() + inset, f.origin.y() + (f.rows - 1) * f.spacing_y - inset)};
+}
+
+// Case: the compact field is one child, Bullet's heightfield shape; the
+// stored ledge keeps its hulls, each named by its piece id.
+TEST(BulletCompactTerrainTest, ACompactFieldIsOneHeightfieldShapeBesideTheStoredHulls) {
+  const PluginFieldScene scene = pluginFieldScene(true);
+  const bullet::TerrainObject object(scene.terrain);
+  std::vector<const btCollisionShape*> shapes;
+  leaves(*object.object().getCollisionShape(), shapes);
+  int fields = 0;
+  std::vector<PieceId> hull_ids;
+  for (const btCollisionShape* shape : shapes) {
+    if (shape->getShapeType() == TERRAIN_SHAPE_PROXYTYPE) ++fields;
+    if (shape->getShapeType() == CONVEX_HULL_SHAPE_PROXYTYPE) hull_ids.push_back(shape->getUserIndex());
+  }
+  EXPECT_EQ(fields, 1);
+  ASSERT_EQ(hull_ids.size(), scene.terrain.pieces().size());
+  for (std::size_t s = 0; s < hull_ids.size(); ++s) {
+    EXPECT_EQ(hull_ids[s], static_cast<PieceId>(s));  // the ledge was added first
+    EXPECT_FALSE(scene.terrain.isFormed(hull_ids[s]));
+  }
+  EXPECT_EQ(shapes.size(), hull_ids.size() + 1);
+}
+
+// Case: a ray down onto the field meets the prisms' top surface
+// (surfaceHeight): the same cells, split along the same diagonal, at the
+// same place.
+TEST(BulletCompactTerrainTest, ARayMeetsTheSurfaceOfThePrisms) {
+  constexpr double kRayToleranceM = 1e-9;  // double-precision ray-triangle intersection (m)
+  const PluginFieldScene scene = pluginFieldScene(true);
+  BulletWorld w(scene.terrain, ContactMode::kForce);
+  std::mt19937 gen(7);
+  for (int k = 0; k < 500; ++k) {
+    const Eigen::Vector2d p = pointOn(scene.field, gen, 1e-6);
+    const btVector3 from(p.x(), p.y(), 20.0), to(p.x(), p.y(), 0.0);
+    btCollisionWorld::ClosestRayResultCallback hit(from, to);
+    w.world.rayTest(from, to, hit);
+    ASSERT_TRUE(hit.hasHit()) << "at (" << p.x() << ", " << p.y() << ")";
+    EXPECT_NEAR(hit.m_hitPointWorld.z(), *surfaceHeight(scene.field, p.x(), p.y()), kRayToleranceM)
+        << "at (" << p.x() << ", " << p.y() << ")";
+  }
+}
+
+constexpr double kOnPrismM = 1e-9;  // a contact's ground point lies on its prism's top (m)
+
+// Case: a small sphere pressed into the field at random places; every
+// contact Bullet reports names (TerrainObject::pieceOf) a prism that holds
+// the contact's ground point.
+TEST(BulletCompactTerrainTest, AContactNamesThePrismItMet) {
+  const PluginFieldScene scene = pluginFieldScene(true);
+  BulletWorld w(scene.terrain, ContactMode::kForce);
+  btSphereShape ball(0.05);
+  btCollisionObject probe;
+  probe.setCollisionShape(&ball);
+  w.world.addCollisionObject(&probe);
+  struct Check : btCollisionWorld::ContactResultCallback {
+    const bullet::TerrainObject* object = nullptr;
+    const Terrain* terrain = nullptr;
+    int contacts = 0;
+    btScalar addSingleResult(btManifoldPoint& point, const btCollisionObjectWrapper* a, int, int,
+                             const btCollisionObjectWrapper* b, int, int) override {
+      const bool a_is_ground = a->getCollisionObject() == &object->object();
+      const PieceId id = object->pieceOf(a_is_ground ? *a : *b);
+      const btVector3 at = a_is_ground ? point.getPositionWorldOnA() : point.getPositionWorldOnB();
+      EXPECT_TRUE(id >= 0 && terrain->isFormed(id)) << "piece " << id;
+      if (id >= 0 && terrain->isFormed(id)) {
+        std::optional<ConvexPolyhedron> scratch;
+        EXPECT_LE(testing::outside(terrain->piece(id, scratch), Eigen::Vector3d(at.x(), at.y(), at.z())), kOnPrismM)
+            << "piece " << id << " at (" << at.x() << ", " << at.y() << ", " << at.z() << ")";
+      }
+      ++contacts;
+      return 0;
+    }
+  } check;
+  check.object = &w.plugin->terrainShapes();
+  check.terrain = &scene.terrain;
+  std::mt19937 gen(11);
+  for (int k = 0; k < 300; ++k) {
+    const Eigen::Vector2d p = pointOn(scene.field, gen, 0.1);
+    const double z = *surfaceHeight(scene.field, p.x(), p.y()) + 0.04;  // 1 cm into the ground
+    probe.setWorldTransform(btTransform(btQuaternion::getIdentity(), btVector3(p.x(), p.y(), z)));
+    w.world.contactPairTest(&probe, &w.plugin->terrainObject(), check);
+  }
+  EXPECT_GE(check.contacts, 300);
+  w.world.removeCollisionObject(&probe);
+}
+
+// Case: a box (a chassis, 0.6 x 0.4 x 0.2 m) dropped on the field's flat
+// patch comes to rest on it, as on the stored prisms.
+TEST(BulletCompactTerrainTest, ABoxDroppedOnTheFieldRestsOnItsSurface) {
+  constexpr double kRestM = 0.005;  // Bullet's margins: a few mm (as for the ledge)
+  for (const bool compact : {true, false}) {
+    const PluginFieldScene scene = pluginFieldScene(compact);
+    BulletWorld w(scene.terrain, ContactMode::kForce);
+    const double top = scene.field.origin.z() + PluginFieldScene::kPatchHeightM;
+    btBoxShape box(btVector3(0.3, 0.2, 0.1));
+    btDefaultMotionState motion(btTransform(btQuaternion::getIdentity(), btVector3(2.0, 8.0, top + 0.3)));
+    btRigidBody chassis(btRigidBody::btRigidBodyConstructionInfo(10.0, &motion, &box, btVector3(0.2, 0.4, 0.5)));
+    w.world.addRigidBody(&chassis);
+    for (int k = 0; k < 2000; ++k) w.world.stepSimulation(1e-3, 1, 1e-3);
+    EXPECT_NEAR(chassis.getCenterOfMassPosition().z(), top + 0.1, kRestM) << (compact ? "compact" : "prisms");
+    EXPECT_LT(chassis.getLinearVelocity().norm(), 1e-2) << (compact ? "compact" : "prisms");
+    w.world.removeRigidBody(&chassis);
+  }
+}
+
+// Case: WTC answers the wheels from the terrain, not from Bullet's shapes:
+// a wheel rolled 2 s over a rough field moves bit for bit the same on the
+// compact field as on the stored prisms. (Where a cut cap touches, Bullet
+// collides the wheel's own cylinder with its shapes, heightfield or
+// hulls; the field is gentle enough, +-4 cm, that none does.)
+TEST(BulletCompactTerrainTest, AWheelRollsBitForBitAsOnTheStoredPrisms) {
+  std::vector<btVector3> path[2];
+  for (const bool compact : {true, false}) {
+    const PluginFieldScene scene = pluginFieldScene(compact, 0.04);
+    BulletWorld w(scene.terrain, ContactMode::kForce);
+    const Eigen::Vector2d start(-2.0, 5.0);
+    const double z = *surfaceHeight(scene.field, start.x(), start.y()) + 0.19 + 0.05;
+    testing::BulletWheel& wheel = w.addWheelBody(3.7, btVector3(start.x(), start.y(), z));
+    const bullet::WheelId id = testing::addWheel(w, wheel);
+    wheel.body->setLinearVelocity(btVector3(1.5, 0.2, 0.0));
+    wheel.body->setAngularVelocity(btVector3(0.0, 1.5 / 0.19, 0.0));
+    for (int k = 0; k < 2000; ++k) {
+      w.world.stepSimulation(1e-3, 1, 1e-3);
+      path[compact ? 0 : 1].push_back(wheel.body->getCenterOfMassPosition());
+      ASSERT_TRUE(w.plugin->state(id).capContacts().empty()) << "step " << k;
+    }
+  }
+  ASSERT_EQ(path[0].size(), path[1].size());
+  for (std::size_t k = 0; k < path[0].size(); ++k) ASSERT_EQ(path[0][k], path[1][k]) << "step " << k;
+  EXPECT_GT(path[0].back().x(), 0.0);  // it rolled over the field
+}
+
+}  // namespace
+}  // namespace wtc
