@@ -115,8 +115,8 @@ PieceRange addCompactHeightfield(TerrainBuilder& builder, Heightfield field, Mat
 
 PieceId pieceUnder(const PieceRange& range, const Heightfield& f, double x, double y) {
   const auto onGrid = [](double w, int samples) { return w > 0.0 ? std::min(w, samples - 1.0) : 0.0; };
-  const CellPoint p = locate(f, onGrid((x - f.origin.x()) / f.spacing_x, f.cols),
-                             onGrid((y - f.origin.y()) / f.spacing_y, f.rows));
+  const CellPoint p =
+      locate(f, onGrid((x - f.origin.x()) / f.spacing_x, f.cols), onGrid((y - f.origin.y()) / f.spacing_y, f.rows));
   return cellPiece(range, f, p.r, p.c, p.s >= p.t ? 0 : 1);
 }
 

@@ -66,7 +66,8 @@ inline PluginFieldScene pluginFieldScene(bool compact, double amplitude = 0.15) 
 /// signed distance to a face plane.
 inline double outside(const ConvexPolyhedron& piece, const Eigen::Vector3d& point) {
   double worst = -1e300;
-  for (int f = 0; f < piece.faceCount(); ++f) worst = std::max(worst, piece.faceNormal(f).dot(point) - piece.faceOffset(f));
+  for (int f = 0; f < piece.faceCount(); ++f)
+    worst = std::max(worst, piece.faceNormal(f).dot(point) - piece.faceOffset(f));
   return worst;
 }
 

@@ -32,9 +32,9 @@
 
 #include <btBulletDynamicsCommon.h>
 
+#include "wtc/bullet/terrain_object.hpp"
 #include "wtc/effects.hpp"
 #include "wtc/engine_contact.hpp"
-#include "wtc/bullet/terrain_object.hpp"
 #include "wtc/terrain.hpp"
 #include "wtc/tyre_model.hpp"
 #include "wtc/wheel_listener.hpp"

@@ -1,0 +1,166 @@
+// A compact heightfield in ODE (issue 18): one heightfield geom, not a geom
+// per prism, with the prisms' surface; ODE's other geoms collide with it, a
+// contact names the prism it met, and WTC's wheels run exactly as on the
+// stored prisms. docs/terrain.md.
+#include <ode/ode.h>
+
+#include <random>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "ode_fixture.hpp"
+#include "random_heightfield.hpp"
+#include "wtc/heightfield.hpp"
+#include "wtc/ode/terrain_geoms.hpp"
+
+namespace wtc {
+namespace {
+
+using testing::OdeWorld;
+using testing::PluginFieldScene;
+using testing::pluginFieldScene;
+
+constexpr double kStepSeconds = 1e-3;  // (s)
+constexpr double kOnPrismM = 1e-9;     // a contact point lies in its prism (m)
+
+// A uniform point of the field's x-y rectangle, `inset` (m) inside its edges.
+Eigen::Vector2d pointOn(const Heightfield& f, std::mt19937& gen, double inset) {
+  const auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * (gen() / 4294967296.0); };
+  return {uniform(f.origin.x() + inset, f.origin.x() + (f.cols - 1) * f.spacing_x - inset),
+          uniform(f.origin.y() + inset, f.origin.y() + (f.rows - 1) * f.spacing_y - inset)};
+}
+
+// Case: the compact field is one heightfield geom in the terrain's space,
+// every one of its pieces maps to it; the stored ledge keeps a geom per
+// piece.
+TEST(OdeCompactTerrainTest, ACompactFieldIsOneHeightfieldGeomBesideTheStoredPieces) {
+  const PluginFieldScene scene = pluginFieldScene(true);
+  OdeWorld w(scene.terrain, ContactMode::kForce);
+  const ode::TerrainGeoms& geoms = w.plugin->terrainGeoms();
+  EXPECT_EQ(dSpaceGetNumGeoms(geoms.space()), static_cast<int>(scene.terrain.pieces().size()) + 1);
+  const dGeomID field = geoms.geom(scene.range.first);
+  EXPECT_EQ(dGeomGetClass(field), dHeightfieldClass);
+  EXPECT_EQ(geoms.geom(scene.range.end() - 1), field);
+  EXPECT_EQ(geoms.piece(field), -1);
+  for (std::size_t s = 0; s < scene.terrain.pieces().size(); ++s) {
+    const PieceId id = scene.terrain.storedId(s);
+    EXPECT_NE(dGeomGetClass(geoms.geom(id)), dHeightfieldClass);
+    EXPECT_EQ(geoms.piece(geoms.geom(id)), id);
+    EXPECT_TRUE(geoms.contains(geoms.geom(id)));
+  }
+  EXPECT_TRUE(geoms.contains(field));
+}
+
+// Case: a ray down onto the field meets the prisms' top surface
+// (surfaceHeight): ODE's heightfield, turned z up, has the same cells split
+// along the same diagonal.
+TEST(OdeCompactTerrainTest, ARayMeetsTheSurfaceOfThePrisms) {
+  const PluginFieldScene scene = pluginFieldScene(true);
+  OdeWorld w(scene.terrain, ContactMode::kForce);
+  const dGeomID field = w.plugin->terrainGeoms().geom(scene.range.first);
+  const dGeomID ray = dCreateRay(nullptr, 20.0);
+  std::mt19937 gen(7);
+  for (int k = 0; k < 500; ++k) {
+    const Eigen::Vector2d p = pointOn(scene.field, gen, 1e-6);
+    dGeomRaySet(ray, p.x(), p.y(), 20.0, 0, 0, -1);
+    dContactGeom contact;
+    ASSERT_EQ(dCollide(ray, field, 1, &contact, sizeof(dContactGeom)), 1) << "at (" << p.x() << ", " << p.y() << ")";
+    EXPECT_NEAR(contact.pos[2], *surfaceHeight(scene.field, p.x(), p.y()), kOnPrismM)
+        << "at (" << p.x() << ", " << p.y() << ")";
+  }
+  dGeomDestroy(ray);
+}
+
+// Case: a small sphere pressed into the field at random places; every
+// contact ODE reports names (TerrainGeoms::piece with its point) a prism
+// that holds the contact point. ODE's heightfield collider meets a sphere
+// on the triangles' faces only: pressed onto a ridge (a cell edge whose
+// neighbours fall away), it finds nothing until the sphere reaches a face.
+// 12 of these 300 probes, every one within 6 cm of a cell edge or diagonal.
+TEST(OdeCompactTerrainTest, AContactNamesThePrismItMet) {
+  constexpr int kMissedProbes = 12;  // ODE 0.16's edge misses on this field (count)
+  const PluginFieldScene scene = pluginFieldScene(true);
+  OdeWorld w(scene.terrain, ContactMode::kForce);
+  const ode::TerrainGeoms& geoms = w.plugin->terrainGeoms();
+  const dGeomID field = geoms.geom(scene.range.first);
+  const dGeomID ball = dCreateSphere(nullptr, 0.05);
+  std::mt19937 gen(11);
+  int contacts = 0, missed = 0;
+  for (int k = 0; k < 300; ++k) {
+    const Eigen::Vector2d p = pointOn(scene.field, gen, 0.1);
+    dGeomSetPosition(ball, p.x(), p.y(), *surfaceHeight(scene.field, p.x(), p.y()) + 0.04);  // 1 cm in
+    dContactGeom contact[8];
+    const int n = dCollide(ball, field, 8, contact, sizeof(dContactGeom));
+    if (n == 0) ++missed;
+    for (int c = 0; c < n; ++c) {
+      const Eigen::Vector3d at(contact[c].pos[0], contact[c].pos[1], contact[c].pos[2]);
+      const PieceId id = geoms.piece(field, at);
+      ASSERT_TRUE(id >= scene.range.first && id < scene.range.end()) << "piece " << id;
+      std::optional<ConvexPolyhedron> scratch;
+      EXPECT_LE(testing::outside(scene.terrain.piece(id, scratch), at), kOnPrismM) << "piece " << id;
+      ++contacts;
+    }
+  }
+  RecordProperty("probes_without_contact", std::to_string(missed));
+  EXPECT_LE(missed, kMissedProbes);
+  EXPECT_GE(contacts, 300 - kMissedProbes);
+  dGeomDestroy(ball);
+}
+
+// Case: a box (a chassis, 0.6 x 0.4 x 0.2 m) and a ball dropped on the
+// field's flat patch come to rest on it, as on the stored prisms.
+TEST(OdeCompactTerrainTest, BodiesDroppedOnTheFieldRestOnItsSurface) {
+  constexpr double kRestM = 0.005;  // ODE's rigid contact sinks by its ERP/CFM, a few mm at most (m)
+  for (const bool compact : {true, false}) {
+    const PluginFieldScene scene = pluginFieldScene(compact);
+    OdeWorld w(scene.terrain, ContactMode::kForce);
+    const double top = scene.field.origin.z() + PluginFieldScene::kPatchHeightM;
+    dMass m;
+    const dBodyID chassis = dBodyCreate(w.world);
+    dMassSetBoxTotal(&m, 10.0, 0.6, 0.4, 0.2);
+    dBodySetMass(chassis, &m);
+    dBodySetPosition(chassis, 2.0, 7.5, top + 0.3);
+    dGeomSetBody(dCreateBox(w.space, 0.6, 0.4, 0.2), chassis);
+    const dBodyID ball = dBodyCreate(w.world);
+    dMassSetSphereTotal(&m, 2.0, 0.1);
+    dBodySetMass(ball, &m);
+    dBodySetPosition(ball, 2.0, 8.8, top + 0.3);
+    dGeomSetBody(dCreateSphere(w.space, 0.1), ball);
+    for (int k = 0; k < 2000; ++k) w.step(kStepSeconds);
+    const char* storage = compact ? "compact" : "prisms";
+    EXPECT_NEAR(testing::position(chassis).z(), top + 0.1, kRestM) << storage;
+    EXPECT_NEAR(testing::position(ball).z(), top + 0.1, kRestM) << storage;
+    EXPECT_LT(testing::velocity(chassis).norm(), 1e-2) << storage;
+  }
+}
+
+// Case: WTC answers the wheels from the terrain, not from ODE's geoms: a
+// wheel rolled 2 s over a rough field moves bit for bit the same on the
+// compact field as on the stored prisms (no cut cap touches: ODE would
+// collide the cap's cylinder with its geoms).
+TEST(OdeCompactTerrainTest, AWheelRollsBitForBitAsOnTheStoredPrisms) {
+  std::vector<Eigen::Vector3d> path[2];
+  for (const bool compact : {true, false}) {
+    const PluginFieldScene scene = pluginFieldScene(compact, 0.04);
+    OdeWorld w(scene.terrain, ContactMode::kForce);
+    const Eigen::Vector2d start(-2.0, 5.0);
+    const double z = *surfaceHeight(scene.field, start.x(), start.y()) + 0.19 + 0.05;
+    const testing::OdeWheel wheel = w.addWheelBody(3.7, {start.x(), start.y(), z});
+    const ode::WheelId id = testing::addWheel(w, wheel);
+    dBodySetLinearVel(wheel.body, 1.5, 0.2, 0.0);
+    dBodySetAngularVel(wheel.body, 0.0, 1.5 / 0.19, 0.0);
+    for (int k = 0; k < 2000; ++k) {
+      w.step(kStepSeconds);
+      path[compact ? 0 : 1].push_back(testing::position(wheel.body));
+      ASSERT_TRUE(w.plugin->state(id).capContacts().empty()) << "step " << k;
+    }
+  }
+  ASSERT_EQ(path[0].size(), path[1].size());
+  for (std::size_t k = 0; k < path[0].size(); ++k) ASSERT_EQ(path[0][k], path[1][k]) << "step " << k;
+  EXPECT_GT(path[0].back().x(), 0.0);  // it rolled over the field
+}
+
+}  // namespace
+}  // namespace wtc
