@@ -30,33 +30,12 @@
 #include <wtc/terrain.hpp>
 #include <wtc/wheel_contact.hpp>
 
+#include "bench_field.hpp"
 #include "compact_heightfield.hpp"
 
 namespace {
 
-constexpr double kCellM = 0.5;     // cell size (m)
-constexpr double kRadius = 0.19;   // r_f (m)
-constexpr double kStepM = 0.001;   // rolling: 1 m/s at a 1 ms step (m)
-constexpr int kColdPoints = 4096;  // cold: random positions
-
-double relief(double x, double y) {
-  return 0.05 * std::sin(0.7 * x) * std::cos(0.9 * y) + 0.02 * std::sin(2.3 * x + 1.1 * y);
-}
-
-// A square field of about `cells` cells.
-wtc::Heightfield makeField(long cells) {
-  const int side = static_cast<int>(std::lround(std::sqrt(static_cast<double>(cells))));
-  wtc::Heightfield f;
-  f.rows = f.cols = side + 1;
-  f.spacing_x = f.spacing_y = kCellM;
-  f.heights.resize(static_cast<std::size_t>(f.rows) * f.cols);
-  for (int r = 0; r < f.rows; ++r)
-    for (int c = 0; c < f.cols; ++c)
-      f.heights[static_cast<std::size_t>(r) * f.cols + c] = relief(c * kCellM, r * kCellM);
-  return f;
-}
-
-double cellsOf(const wtc::Heightfield& f) { return static_cast<double>(f.rows - 1) * (f.cols - 1); }
+using namespace wtc::bench;
 
 void buildCompact(benchmark::State& state) {
   const wtc::Heightfield field = makeField(state.range(0));
@@ -90,22 +69,6 @@ void formPiece(benchmark::State& state) {
     const wtc::ConvexPolyhedron piece = compact.piece(any(rng));
     benchmark::DoNotOptimize(piece.bounds());
   }
-}
-
-// The wheel's boxes: rolling along y = const across the field, or random.
-std::vector<wtc::Aabb> wheelBoxes(const wtc::Heightfield& f, bool cold) {
-  std::vector<wtc::Aabb> boxes;
-  const double width = (f.cols - 1) * kCellM, depth = (f.rows - 1) * kCellM;
-  std::mt19937_64 rng(5);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  const int n = cold ? kColdPoints : static_cast<int>(std::min(width - 2.0, 100.0) / kStepM);
-  for (int i = 0; i < n; ++i) {
-    const double x = cold ? 1.0 + u(rng) * (width - 2.0) : 1.0 + i * kStepM;
-    const double y = cold ? 1.0 + u(rng) * (depth - 2.0) : 0.5 * depth;
-    const Eigen::Vector3d centre(x, y, relief(x, y) + kRadius - 0.002);
-    boxes.push_back({centre - Eigen::Vector3d::Constant(kRadius), centre + Eigen::Vector3d::Constant(kRadius)});
-  }
-  return boxes;
 }
 
 void overlap(benchmark::State& state, bool compact_store, bool cold) {
@@ -161,13 +124,6 @@ void contacts(benchmark::State& state, bool compact_store, bool cold) {
     ++queries;
   }
   state.counters["contacts_per_query"] = static_cast<double>(found) / static_cast<double>(queries);
-}
-
-// "a" + b, built by appending (GCC 12 warns, wrongly, on const char* + string&&).
-std::string join(const char* a, const std::string& b) {
-  std::string s(a);
-  s += b;
-  return s;
 }
 
 const bool kRegistered = [] {

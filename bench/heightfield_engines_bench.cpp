@@ -1,0 +1,185 @@
+// wtc_bench_compact, the engines' side: the same fields and wheel places as
+// compact_heightfield_bench.cpp, in Bullet's btHeightfieldTerrainShape and
+// in an FCL triangle mesh (FCL 0.7 has no heightfield), each asked what an
+// engine asks of its ground for a wheel: the contacts of a cylinder (r_f =
+// 0.19 m, 0.12 m wide, axle along y, 2 mm into the surface).
+//
+// Runs (<cells> as in compact_heightfield_bench.cpp):
+//   Build/bullet/<cells>   the shape over the caller's samples (Bullet
+//       copies nothing; the min/max scan it needs is timed); counter
+//       bytes_per_cell: the samples and the shape.
+//   Build/fcl/<cells>      a BVHModel<OBBRSS> of the field's triangles (up
+//       to 10^6 cells); counter bytes_per_cell: vertices, triangles and
+//       nodes.
+//   Contacts/bullet/<cells>/<path>  one collision pass of a two-object
+//       btCollisionWorld (the wheel moved, its persistent manifold with the
+//       heightfield refreshed): an engine's per-wheel cost for a cylinder
+//       wheel on a heightfield.
+//   Contacts/fcl/<cells>/<path>     fcl::collide of the cylinder and the mesh,
+//       contacts on (up to 16).
+#include <benchmark/benchmark.h>
+
+#include <BulletCollision/CollisionShapes/btHeightfieldTerrainShape.h>
+#include <btBulletCollisionCommon.h>
+#include <fcl/geometry/bvh/BVH_model.h>
+#include <fcl/geometry/shape/cylinder.h>
+#include <fcl/narrowphase/collision.h>
+
+#include <algorithm>
+#include <memory>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "bench_field.hpp"
+
+namespace {
+
+using namespace wtc::bench;
+
+constexpr double kWidthM = 0.12;             // the wheel's width (m)
+constexpr std::size_t kFclMaxContacts = 16;  // contacts fcl::collide may return (count)
+
+// The field as Bullet's heightfield shape, placed (like wtc::bullet's
+// TerrainObject) so that its samples sit where the field says.
+struct BulletField {
+  explicit BulletField(const wtc::Heightfield& f) {
+    const auto [lo, hi] = std::minmax_element(f.heights.begin(), f.heights.end());
+    shape = std::make_unique<btHeightfieldTerrainShape>(f.cols, f.rows, f.heights.data(), *lo, *hi, 2, true);
+    shape->setLocalScaling(btVector3(f.spacing_x, f.spacing_y, 1.0));
+    object.setCollisionShape(shape.get());
+    object.setWorldTransform(btTransform(
+        btQuaternion::getIdentity(), btVector3(f.origin.x() + 0.5 * (f.cols - 1) * f.spacing_x,
+                                               f.origin.y() + 0.5 * (f.rows - 1) * f.spacing_y, 0.5 * (*lo + *hi))));
+  }
+  std::unique_ptr<btHeightfieldTerrainShape> shape;
+  btCollisionObject object;
+};
+
+std::shared_ptr<fcl::BVHModel<fcl::OBBRSSd>> fclMesh(const wtc::Heightfield& f) {
+  std::vector<fcl::Vector3d> points;
+  points.reserve(f.heights.size());
+  for (int r = 0; r < f.rows; ++r)
+    for (int c = 0; c < f.cols; ++c) points.push_back(f.sample(r, c));
+  std::vector<fcl::Triangle> triangles;
+  triangles.reserve(2 * static_cast<std::size_t>(cellsOf(f)));
+  for (int r = 0; r + 1 < f.rows; ++r) {
+    for (int c = 0; c + 1 < f.cols; ++c) {
+      const std::size_t p00 = static_cast<std::size_t>(r) * f.cols + c, p01 = p00 + 1, p10 = p00 + f.cols,
+                        p11 = p10 + 1;
+      triangles.emplace_back(p00, p01, p11);  // the prisms' split (wtc/heightfield.hpp)
+      triangles.emplace_back(p00, p11, p10);
+    }
+  }
+  auto mesh = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
+  mesh->beginModel(static_cast<int>(triangles.size()), static_cast<int>(points.size()));
+  mesh->addSubModel(points, triangles);
+  mesh->endModel();
+  return mesh;
+}
+
+void buildBullet(benchmark::State& state) {
+  const wtc::Heightfield field = makeField(state.range(0));
+  for (auto _ : state) {
+    BulletField bullet(field);
+    benchmark::DoNotOptimize(bullet.shape.get());
+  }
+  const double bytes = static_cast<double>(field.heights.size() * sizeof(double) + sizeof(btHeightfieldTerrainShape));
+  state.counters["bytes_per_cell"] = bytes / cellsOf(field);
+}
+
+void buildFcl(benchmark::State& state) {
+  const wtc::Heightfield field = makeField(state.range(0));
+  std::size_t bytes = 0;
+  for (auto _ : state) {
+    const auto mesh = fclMesh(field);
+    // What BVHModel::memUsage sums (it returns BVH_OK, not the sum, in FCL
+    // 0.7), with its nodes counted whole and its primitive indices added.
+    bytes = sizeof(*mesh) + mesh->getNumBVs() * sizeof(fcl::BVNode<fcl::OBBRSSd>) +
+            mesh->num_tris * (sizeof(fcl::Triangle) + sizeof(unsigned int)) +
+            mesh->num_vertices * sizeof(fcl::Vector3d);
+    benchmark::DoNotOptimize(bytes);
+  }
+  state.counters["bytes_per_cell"] = static_cast<double>(bytes) / cellsOf(field);
+}
+
+// The wheel's pose at a wheel box's centre: axle along y.
+btTransform bulletWheelPose(const wtc::Aabb& box) {
+  const Eigen::Vector3d c = box.center();
+  return btTransform(btQuaternion::getIdentity(), btVector3(c.x(), c.y(), c.z()));
+}
+
+void contactsBullet(benchmark::State& state, bool cold) {
+  const wtc::Heightfield field = makeField(state.range(0));
+  const std::vector<wtc::Aabb> boxes = wheelBoxes(field, cold);
+  BulletField ground(field);
+  btCylinderShape cylinder(btVector3(kRadius, 0.5 * kWidthM, kRadius));  // axis y
+  btCollisionObject wheel;
+  wheel.setCollisionShape(&cylinder);
+  btDefaultCollisionConfiguration config;
+  btCollisionDispatcher dispatcher(&config);
+  btDbvtBroadphase broadphase;
+  btCollisionWorld world(&dispatcher, &broadphase, &config);
+  world.addCollisionObject(&ground.object, btBroadphaseProxy::StaticFilter, btBroadphaseProxy::AllFilter);
+  world.addCollisionObject(&wheel);
+  std::size_t i = 0;
+  long found = 0, queries = 0;
+  for (auto _ : state) {
+    wheel.setWorldTransform(bulletWheelPose(boxes[i]));
+    i = i + 1 == boxes.size() ? 0 : i + 1;
+    world.performDiscreteCollisionDetection();
+    for (int m = 0; m < dispatcher.getNumManifolds(); ++m)
+      found += dispatcher.getManifoldByIndexInternal(m)->getNumContacts();
+    ++queries;
+  }
+  state.counters["contacts_per_query"] = static_cast<double>(found) / static_cast<double>(queries);
+  world.removeCollisionObject(&wheel);
+  world.removeCollisionObject(&ground.object);
+}
+
+void contactsFcl(benchmark::State& state, bool cold) {
+  const wtc::Heightfield field = makeField(state.range(0));
+  const std::vector<wtc::Aabb> boxes = wheelBoxes(field, cold);
+  const fcl::CollisionObjectd ground(fclMesh(field));
+  // FCL's cylinder has its axis along z: turned onto y.
+  const fcl::Matrix3d axle_y(Eigen::AngleAxisd(std::numbers::pi / 2, Eigen::Vector3d::UnitX()));
+  fcl::CollisionObjectd wheel(std::make_shared<fcl::Cylinderd>(kRadius, kWidthM));
+  const fcl::CollisionRequestd request(kFclMaxContacts, true);
+  std::size_t i = 0;
+  long found = 0, queries = 0;
+  for (auto _ : state) {
+    wheel.setTransform(axle_y, boxes[i].center());
+    wheel.computeAABB();
+    i = i + 1 == boxes.size() ? 0 : i + 1;
+    fcl::CollisionResultd result;
+    fcl::collide(&wheel, &ground, request, result);
+    found += static_cast<long>(result.numContacts());
+    ++queries;
+  }
+  state.counters["contacts_per_query"] = static_cast<double>(found) / static_cast<double>(queries);
+}
+
+const bool kRegistered = [] {
+  for (long cells : {10'000L, 100'000L, 1'000'000L, 10'000'000L}) {
+    const std::string tail = join("/", std::to_string(cells));
+    benchmark::RegisterBenchmark(join("Build/bullet", tail).c_str(), buildBullet)
+        ->Arg(cells)
+        ->Unit(benchmark::kMillisecond);
+    if (cells <= 1'000'000L) {
+      benchmark::RegisterBenchmark(join("Build/fcl", tail).c_str(), buildFcl)
+          ->Arg(cells)
+          ->Unit(benchmark::kMillisecond)
+          ->Iterations(1);
+    }
+    for (bool cold : {false, true}) {
+      const std::string path = cold ? "/cold" : "/rolling";
+      benchmark::RegisterBenchmark(join("Contacts/bullet", tail + path).c_str(), contactsBullet, cold)->Arg(cells);
+      if (cells <= 1'000'000L) {
+        benchmark::RegisterBenchmark(join("Contacts/fcl", tail + path).c_str(), contactsFcl, cold)->Arg(cells);
+      }
+    }
+  }
+  return true;
+}();
+
+}  // namespace
