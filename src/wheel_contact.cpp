@@ -77,19 +77,19 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
     if (previous != caches_.end() && previous->first == id) cache = previous->second;
     const ConvexPolyhedron* piece = nullptr;
     if (terrain.isFormed(id)) {
-      // queryPoint's first test, on the box the grid gives without forming
-      // the piece (bit for bit the formed piece's bounds): a piece whose box
-      // lies beyond the reach is beyond, its cache untouched, exactly as
-      // queryPoint would decide for a stored one.
-      if (terrain.pieceBounds(id).squaredDistance(o) > cap_reach * cap_reach) {
-        candidate_pieces_.push_back(nullptr);  // never a contact's piece
-        next_caches_.emplace_back(id, cache);
-        continue;
-      }
       while (previous_formed != formed_.end() && previous_formed->first < id) ++previous_formed;
       if (previous_formed != formed_.end() && previous_formed->first == id) {
         next_formed_.emplace_back(id, std::move(previous_formed->second));
       } else {
+        // queryPoint's first test, on the box the grid gives without
+        // forming the piece (bit for bit the formed piece's bounds): a piece
+        // whose box lies beyond the reach is beyond, its cache untouched,
+        // exactly as queryPoint decides for a stored one.
+        if (terrain.pieceBounds(id).squaredDistance(o) > cap_reach * cap_reach) {
+          candidate_pieces_.push_back(nullptr);  // never a contact's piece
+          next_caches_.emplace_back(id, cache);
+          continue;
+        }
         std::optional<ConvexPolyhedron> scratch;
         terrain.piece(id, scratch);
         next_formed_.emplace_back(id, std::move(*scratch));
