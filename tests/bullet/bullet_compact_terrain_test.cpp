@@ -31,13 +31,6 @@ void leaves(const btCollisionShape& shape, std::vector<const btCollisionShape*>&
   for (int k = 0; k < compound.getNumChildShapes(); ++k) leaves(*compound.getChildShape(k), out);
 }
 
-// A uniform point of the field's x-y rectangle, `inset` (m) inside its edges.
-Eigen::Vector2d pointOn(const Heightfield& f, std::mt19937& gen, double inset) {
-  const auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * (gen() / 4294967296.0); };
-  return {uniform(f.origin.x() + inset, f.origin.x() + (f.cols - 1) * f.spacing_x - inset),
-          uniform(f.origin.y() + inset, f.origin.y() + (f.rows - 1) * f.spacing_y - inset)};
-}
-
 // Case: the compact field is one child, Bullet's heightfield shape; the
 // stored ledge keeps its hulls, each named by its piece id.
 TEST(BulletCompactTerrainTest, ACompactFieldIsOneHeightfieldShapeBesideTheStoredHulls) {
@@ -69,7 +62,7 @@ TEST(BulletCompactTerrainTest, ARayMeetsTheSurfaceOfThePrisms) {
   BulletWorld w(scene.terrain, ContactMode::kForce);
   std::mt19937 gen(7);
   for (int k = 0; k < 500; ++k) {
-    const Eigen::Vector2d p = pointOn(scene.field, gen, 1e-6);
+    const Eigen::Vector2d p = testing::randomPointOn(scene.field, gen, 1e-6);
     const btVector3 from(p.x(), p.y(), 20.0), to(p.x(), p.y(), 0.0);
     btCollisionWorld::ClosestRayResultCallback hit(from, to);
     w.world.rayTest(from, to, hit);
@@ -114,7 +107,7 @@ TEST(BulletCompactTerrainTest, AContactNamesThePrismItMet) {
   check.terrain = &scene.terrain;
   std::mt19937 gen(11);
   for (int k = 0; k < 300; ++k) {
-    const Eigen::Vector2d p = pointOn(scene.field, gen, 0.1);
+    const Eigen::Vector2d p = testing::randomPointOn(scene.field, gen, 0.1);
     const double z = *surfaceHeight(scene.field, p.x(), p.y()) + 0.04;  // 1 cm into the ground
     probe.setWorldTransform(btTransform(btQuaternion::getIdentity(), btVector3(p.x(), p.y(), z)));
     w.world.contactPairTest(&probe, &w.plugin->terrainObject(), check);

@@ -25,13 +25,6 @@ using testing::pluginFieldScene;
 constexpr double kStepSeconds = 1e-3;  // (s)
 constexpr double kOnPrismM = 1e-9;     // a contact point lies in its prism (m)
 
-// A uniform point of the field's x-y rectangle, `inset` (m) inside its edges.
-Eigen::Vector2d pointOn(const Heightfield& f, std::mt19937& gen, double inset) {
-  const auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * (gen() / 4294967296.0); };
-  return {uniform(f.origin.x() + inset, f.origin.x() + (f.cols - 1) * f.spacing_x - inset),
-          uniform(f.origin.y() + inset, f.origin.y() + (f.rows - 1) * f.spacing_y - inset)};
-}
-
 // Case: the compact field is one heightfield geom in the terrain's space,
 // every one of its pieces maps to it; the stored ledge keeps a geom per
 // piece.
@@ -63,7 +56,7 @@ TEST(OdeCompactTerrainTest, ARayMeetsTheSurfaceOfThePrisms) {
   const dGeomID ray = dCreateRay(nullptr, 20.0);
   std::mt19937 gen(7);
   for (int k = 0; k < 500; ++k) {
-    const Eigen::Vector2d p = pointOn(scene.field, gen, 1e-6);
+    const Eigen::Vector2d p = testing::randomPointOn(scene.field, gen, 1e-6);
     dGeomRaySet(ray, p.x(), p.y(), 20.0, 0, 0, -1);
     dContactGeom contact;
     ASSERT_EQ(dCollide(ray, field, 1, &contact, sizeof(dContactGeom)), 1) << "at (" << p.x() << ", " << p.y() << ")";
@@ -89,7 +82,7 @@ TEST(OdeCompactTerrainTest, AContactNamesThePrismItMet) {
   std::mt19937 gen(11);
   int contacts = 0, missed = 0;
   for (int k = 0; k < 300; ++k) {
-    const Eigen::Vector2d p = pointOn(scene.field, gen, 0.1);
+    const Eigen::Vector2d p = testing::randomPointOn(scene.field, gen, 0.1);
     dGeomSetPosition(ball, p.x(), p.y(), *surfaceHeight(scene.field, p.x(), p.y()) + 0.04);  // 1 cm in
     dContactGeom contact[8];
     const int n = dCollide(ball, field, 8, contact, sizeof(dContactGeom));

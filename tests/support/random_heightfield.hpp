@@ -62,6 +62,14 @@ inline PluginFieldScene pluginFieldScene(bool compact, double amplitude = 0.15) 
   return {field, range, std::move(builder).build()};
 }
 
+/// A uniform point of the field's x-y rectangle, `inset` (m) inside its
+/// edges, from the raw mt19937 stream.
+inline Eigen::Vector2d randomPointOn(const Heightfield& f, std::mt19937& gen, double inset) {
+  const auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * (gen() / 4294967296.0); };
+  return {uniform(f.origin.x() + inset, f.origin.x() + (f.cols - 1) * f.spacing_x - inset),
+          uniform(f.origin.y() + inset, f.origin.y() + (f.rows - 1) * f.spacing_y - inset)};
+}
+
 /// How far `point` lies outside `piece` (m; <= 0 inside): the largest
 /// signed distance to a face plane.
 inline double outside(const ConvexPolyhedron& piece, const Eigen::Vector3d& point) {
