@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <optional>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 #include "random_heightfield.hpp"
@@ -73,6 +74,48 @@ TEST(CompactTerrainTest, NumbersItsPiecesAsTheStoredTerrainDoes) {
   }
   EXPECT_EQ(formed, static_cast<int>(stored.pieceCount()) - 3);
   EXPECT_LT(compact.pieceMemoryBytes() * 50, stored.pieceMemoryBytes());
+}
+
+// Case: what an engine plugin walks: the stored pieces by their ids
+// (storedId), and each compact field by its id range and samples
+// (compactField); pieceUnder names the triangle under a point, clamped
+// onto the grid.
+TEST(CompactTerrainTest, TellsThePluginsItsStoredPiecesAndItsFields) {
+  const Terrain compact = mixed(true);
+  ASSERT_EQ(compact.pieces().size(), 3u);
+  PieceId last = -1;
+  for (std::size_t s = 0; s < compact.pieces().size(); ++s) {
+    const PieceId id = compact.storedId(s);
+    EXPECT_GT(id, last);
+    last = id;
+    EXPECT_FALSE(compact.isFormed(id));
+    EXPECT_EQ(&compact.piece(id), &compact.pieces()[s]);
+  }
+  EXPECT_EQ(last, static_cast<PieceId>(compact.pieceCount()) - 1);  // the rock, added last
+  ASSERT_EQ(compact.compactFieldCount(), 2u);
+  EXPECT_EQ(compact.compactField(0).first, 1);  // after the box
+  EXPECT_EQ(compact.compactField(0).count, 2 * 11 * 19);
+  EXPECT_EQ(compact.compactField(1).first, 1 + 2 * 11 * 19 + 1);  // after the ledge
+  EXPECT_EQ(compact.compactField(1).material, compact.materialId(compact.compactField(1).first));
+  EXPECT_THROW(compact.compactField(2), std::out_of_range);
+  std::mt19937 gen(3);
+  std::optional<ConvexPolyhedron> scratch;
+  for (std::size_t k = 0; k < 2; ++k) {
+    const Terrain::CompactField field = compact.compactField(k);
+    const Heightfield& f = *field.field;
+    const PieceRange range{field.first, field.count};
+    for (int i = 0; i < 500; ++i) {
+      // Some points off the grid: they belong to the nearest edge's triangle.
+      const Eigen::Vector2d p = testing::randomPointOn(f, gen, -0.2);
+      const PieceId id = pieceUnder(range, f, p.x(), p.y());
+      ASSERT_GE(id, field.first);
+      ASSERT_LT(id, field.first + field.count);
+      const double x = std::clamp(p.x(), f.origin.x(), f.origin.x() + (f.cols - 1) * f.spacing_x);
+      const double y = std::clamp(p.y(), f.origin.y(), f.origin.y() + (f.rows - 1) * f.spacing_y);
+      const Eigen::Vector3d on_top(x, y, *surfaceHeight(f, x, y));
+      EXPECT_LE(testing::outside(compact.piece(id, scratch), on_top), 1e-12) << "field " << k << ", piece " << id;
+    }
+  }
 }
 
 TEST(CompactTerrainTest, FindsTheSameCandidatesForAnyBox) {
