@@ -12,6 +12,7 @@ namespace wtc::detail {
 CompactHeightfield::CompactHeightfield(Heightfield field) : field_(std::move(field)) {
   validate(field_);
   field_.heights.shrink_to_fit();  // the samples and nothing more
+  field_.cell_materials.shrink_to_fit();
   base_z_ = field_.baseZ();
   // The corners' coordinates as sample() computes them; origin.z + h is
   // monotonic in h, so the highest sample gives the highest top.
@@ -99,7 +100,8 @@ void CompactHeightfield::overlapping(const Aabb& box, PieceId first, std::vector
 }
 
 std::size_t CompactHeightfield::memoryBytes() const {
-  return sizeof(*this) + field_.heights.capacity() * sizeof(double);
+  return sizeof(*this) + field_.heights.capacity() * sizeof(double) +
+         field_.cell_materials.capacity() * sizeof(MaterialId);
 }
 
 }  // namespace wtc::detail

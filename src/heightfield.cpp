@@ -17,6 +17,20 @@ namespace {
 
 constexpr const char* kWhere = "wtc::Heightfield";
 
+// The field's materials are registered: `material`, and each cell's own.
+void requireCellMaterials(const TerrainBuilder& builder, const Heightfield& f, MaterialId material, const char* where) {
+  builder.requireMaterial(material, where);
+  for (std::size_t cell = 0; cell < f.cell_materials.size(); ++cell) {
+    const MaterialId m = f.cell_materials[cell];
+    if (m < 0 || m >= builder.materialCount()) {
+      const auto per_row = static_cast<std::size_t>(f.cols - 1);
+      throw InvalidInputError(std::string(where) + ": cell (row " + std::to_string(cell / per_row) + ", col " +
+                              std::to_string(cell % per_row) + ") has material id " + std::to_string(m) +
+                              ", which is not registered (" + std::to_string(builder.materialCount()) + " materials)");
+    }
+  }
+}
+
 // A point of the grid in cell coordinates: cell (r, c) and the fractions
 // s (along x) and t (along y) across it, in [0, 1].
 struct CellPoint {
@@ -54,6 +68,12 @@ void validate(const Heightfield& f) {
                             " values, but rows x cols = " + std::to_string(f.rows) + " x " + std::to_string(f.cols) +
                             " = " + std::to_string(samples));
   }
+  const auto cells = static_cast<std::uint64_t>(f.rows - 1) * static_cast<std::uint64_t>(f.cols - 1);
+  if (!f.cell_materials.empty() && f.cell_materials.size() != cells) {
+    throw InvalidInputError(std::string(kWhere) + ": cell_materials has " + std::to_string(f.cell_materials.size()) +
+                            " ids, but the grid has (rows - 1) x (cols - 1) = " + std::to_string(cells) +
+                            " cells (or give none)");
+  }
   if (f.pieceCount() > static_cast<std::size_t>(std::numeric_limits<PieceId>::max())) {
     throw InvalidInputError(std::string(kWhere) + ": " + std::to_string(f.rows) + " x " + std::to_string(f.cols) +
                             " samples make " + std::to_string(f.pieceCount()) +
@@ -80,16 +100,19 @@ PieceRange addHeightfield(TerrainBuilder& builder, const Heightfield& f, Materia
   const double base_z = f.baseZ();
   builder.requireRoomFor(
       f.pieceCount(), "wtc::addHeightfield (" + std::to_string(f.rows) + " x " + std::to_string(f.cols) + " samples)");
+  requireCellMaterials(builder, f, material, "wtc::addHeightfield");
   PieceRange range{static_cast<PieceId>(builder.pieceCount()), 0};
   builder.reserve(f.pieceCount());
+  std::size_t cell = 0;
   for (int r = 0; r + 1 < f.rows; ++r) {
-    for (int c = 0; c + 1 < f.cols; ++c) {
+    for (int c = 0; c + 1 < f.cols; ++c, ++cell) {
       const Eigen::Vector3d p00 = f.sample(r, c);
       const Eigen::Vector3d p01 = f.sample(r, c + 1);
       const Eigen::Vector3d p10 = f.sample(r + 1, c);
       const Eigen::Vector3d p11 = f.sample(r + 1, c + 1);
-      builder.addPiece(makeTriangularPrism(p00, p01, p11, base_z), material);
-      builder.addPiece(makeTriangularPrism(p00, p11, p10, base_z), material);
+      const MaterialId m = f.cell_materials.empty() ? material : f.cell_materials[cell];
+      builder.addPiece(makeTriangularPrism(p00, p01, p11, base_z), m);
+      builder.addPiece(makeTriangularPrism(p00, p11, p10, base_z), m);
       range.count += 2;
     }
   }
@@ -97,8 +120,8 @@ PieceRange addHeightfield(TerrainBuilder& builder, const Heightfield& f, Materia
 }
 
 PieceRange addCompactHeightfield(TerrainBuilder& builder, Heightfield field, MaterialId material) {
-  builder.requireMaterial(material, "wtc::addCompactHeightfield");
   auto grid = std::make_shared<const detail::CompactHeightfield>(std::move(field));  // validates it
+  requireCellMaterials(builder, grid->field(), material, "wtc::addCompactHeightfield");
   // Only the ids are needed: the field's pieces take no memory of their own.
   builder.requireIdsFor(grid->pieceCount(), "wtc::addCompactHeightfield (" + std::to_string(grid->field().rows) +
                                                 " x " + std::to_string(grid->field().cols) + " samples)");

@@ -164,7 +164,10 @@ Aabb Terrain::pieceBounds(PieceId id) const {
 
 MaterialId Terrain::fieldAwareMaterialId(PieceId id) const {
   const Place at = place(id);
-  return at.field < 0 ? piece_material_[at.stored] : fields_[at.field].material;
+  if (at.field < 0) return piece_material_[at.stored];
+  const Field& f = fields_[at.field];
+  const std::vector<MaterialId>& cells = f.grid->field().cell_materials;
+  return cells.empty() ? f.material : cells[static_cast<std::size_t>(id - f.first) / 2];  // two pieces a cell
 }
 
 // Top-down build over piece centroids. A node's range is split at the

@@ -42,6 +42,10 @@ struct Heightfield {
   Eigen::Vector3d origin{Eigen::Vector3d::Zero()};  ///< World position of sample (0, 0) at height 0 (m).
   std::vector<double> heights;                      ///< rows x cols, row-major: heights[r cols + c] (m).
   double base_depth = 1.0;                          ///< Depth of the flat base below the lowest height (m, > 0).
+  /// Per-cell materials, (rows - 1) x (cols - 1) row-major: cell (r, c)'s
+  /// two pieces take cell_materials[r (cols - 1) + c]. Empty: every cell
+  /// takes the material given to addHeightfield.
+  std::vector<MaterialId> cell_materials;
 
   /// Height of sample (r, c) (m, relative to origin.z()).
   double height(int r, int c) const { return heights[static_cast<std::size_t>(r) * cols + c]; }
@@ -60,11 +64,15 @@ struct Heightfield {
 /// Throws InvalidInputError if the grid is malformed: rows or cols < 2, a
 /// spacing or base_depth not finite and > 0, a non-finite origin, a heights
 /// array of the wrong size, or a non-finite height (named by row and
-/// column), or more pieces than a PieceId can number.
+/// column), a cell_materials array neither empty nor of (rows - 1) x
+/// (cols - 1) ids, or more pieces than a PieceId can number. (Whether the
+/// ids are registered is the builder's to check.)
 void validate(const Heightfield& field);
 
 /// Adds the field's 2 (rows - 1)(cols - 1) prisms (validated first). Piece
-/// order: cell by cell, row-major, the triangle (p00, p01, p11) first.
+/// order: cell by cell, row-major, the triangle (p00, p01, p11) first. Each
+/// cell's material: its cell_materials entry, or `material` if there are
+/// none; every id must be registered in `builder`.
 PieceRange addHeightfield(TerrainBuilder& builder, const Heightfield& field, MaterialId material);
 
 /// Adds the same pieces as addHeightfield, with the same ids and bit for
@@ -72,6 +80,7 @@ PieceRange addHeightfield(TerrainBuilder& builder, const Heightfield& field, Mat
 /// against about 2.6 kB per cell for stored prisms and their index) and
 /// forms a prism when a query needs it (Terrain::piece(id, scratch)). The
 /// terrain finds its pieces from the grid. Validates the field first.
+/// Per-cell materials cost 4 more bytes a cell.
 PieceRange addCompactHeightfield(TerrainBuilder& builder, Heightfield field, MaterialId material);
 
 /// The id of triangle `k` (0: (p00, p01, p11), 1: (p00, p11, p10)) of cell

@@ -53,6 +53,9 @@ class TerrainBuilder {
   /// at sizeof(ConvexPolyhedron) each, a lower bound): a terrain file
   /// asking for 10^10 tiles is refused before anything is allocated.
   void requireRoomFor(std::uint64_t count, const std::string& where) const;
+  /// Throws InvalidInputError naming `where` unless `material` is a
+  /// registered id.
+  void requireMaterial(MaterialId material, const char* where) const;
   /// Pieces added so far, stored and formed: the next piece's id.
   std::size_t pieceCount() const { return next_id_; }
   MaterialId materialCount() const { return static_cast<MaterialId>(materials_.size()); }
@@ -70,7 +73,6 @@ class TerrainBuilder {
     std::shared_ptr<const detail::CompactHeightfield> grid;
     MaterialId material = 0;
   };
-  void requireMaterial(MaterialId material, const char* where) const;
   // Throws InvalidInputError naming `where` when `count` more ids would
   // pass PieceId's range (requireRoomFor's first check).
   void requireIdsFor(std::uint64_t count, const std::string& where) const;
@@ -107,7 +109,7 @@ class Terrain {
     PieceId first = 0;  ///< Its pieces are first ... first + count - 1, in addHeightfield's order.
     PieceId count = 0;
     const Heightfield* field = nullptr;  ///< Lives as long as the terrain.
-    MaterialId material = 0;
+    MaterialId material = 0;             ///< Of every cell, unless the field has cell_materials.
   };
   std::size_t compactFieldCount() const { return fields_.size(); }
   CompactField compactField(std::size_t k) const;

@@ -37,7 +37,8 @@ int toInt(const YamlReader& in, const YAML::Node& map, const char* key, long lon
 }
 
 Heightfield readHeightfield(const YamlReader& in, const YAML::Node& p) {
-  in.checkKeys(p, kCommonKeys, {"heights", "file", "spacing", "base_depth", "height_scale", "storage"});
+  in.checkKeys(p, kCommonKeys,
+               {"heights", "file", "spacing", "base_depth", "height_scale", "storage", "cell_materials"});
   if (YamlReader::get(p, "rotation")) {
     in.fail(p["rotation"], "a heightfield takes no rotation (its grid is aligned with x and y)");
   }
@@ -94,9 +95,38 @@ Heightfield readHeightfield(const YamlReader& in, const YAML::Node& p) {
   return field;
 }
 
+using MaterialNames = std::map<std::string, MaterialId>;
+
+// A heightfield's cell_materials: (rows - 1) rows of (cols - 1) material
+// names, north (largest y) first, as the heights.
+std::vector<MaterialId> readCellMaterials(const YamlReader& in, const YAML::Node& rows, const Heightfield& field,
+                                          const MaterialNames& materials) {
+  const int cell_rows = field.rows - 1, cell_cols = field.cols - 1;
+  if (!rows.IsSequence() || static_cast<int>(rows.size()) != cell_rows) {
+    in.fail(rows, "cell_materials: expected " + std::to_string(cell_rows) + " rows (one per row of cells, north " +
+                      "first), got " + (rows.IsSequence() ? std::to_string(rows.size()) : std::string("no list")));
+  }
+  std::vector<MaterialId> cells(static_cast<std::size_t>(cell_rows) * cell_cols);
+  for (int k = 0; k < cell_rows; ++k) {
+    const YAML::Node row = rows[k];
+    const std::string name = "cell_materials[" + std::to_string(k) + "]";
+    if (!row.IsSequence() || static_cast<int>(row.size()) != cell_cols) {
+      in.fail(row, name + ": expected " + std::to_string(cell_cols) + " material names (one per cell)");
+    }
+    for (int c = 0; c < cell_cols; ++c) {
+      const std::string material = in.string(row[c], name + "[" + std::to_string(c) + "]");
+      const auto found = materials.find(material);
+      if (found == materials.end())
+        in.fail(row[c], name + "[" + std::to_string(c) + "]: unknown material '" + material + "'");
+      cells[static_cast<std::size_t>(cell_rows - 1 - k) * cell_cols + c] = found->second;
+    }
+  }
+  return cells;
+}
+
 // Adds one piece; returns the degenerate triangles a mesh skipped.
 std::int64_t addPiece(TerrainBuilder& builder, const YamlReader& in, const YAML::Node& p, const std::string& type,
-                      MaterialId material) {
+                      MaterialId material, const MaterialNames& materials) {
   if (type == "box") {
     in.checkKeys(p, kCommonKeys, {"size"});
     addBox(builder, {in.vector<3>(in.require(p, "size"), "size"), in.pose(p)}, material);
@@ -165,10 +195,14 @@ std::int64_t addPiece(TerrainBuilder& builder, const YamlReader& in, const YAML:
     if (kind != "prisms" && kind != "compact") {
       in.fail(*storage, "storage: '" + kind + "' (expected prisms or compact)");
     }
+    Heightfield field = readHeightfield(in, p);
+    if (const auto cells = YamlReader::get(p, "cell_materials")) {
+      field.cell_materials = readCellMaterials(in, *cells, field, materials);
+    }
     if (kind == "compact") {
-      addCompactHeightfield(builder, readHeightfield(in, p), material);
+      addCompactHeightfield(builder, std::move(field), material);
     } else {
-      addHeightfield(builder, readHeightfield(in, p), material);
+      addHeightfield(builder, field, material);
     }
   } else if (type == "mesh") {
     in.checkKeys(p, kCommonKeys, {"file", "scale", "thickness", "keep_convex_parts"});
@@ -208,7 +242,7 @@ TerrainFileReport detail::addTerrainNode(TerrainBuilder& builder, const YamlRead
   in.checkKeys(root, {"description", "materials", "pieces"});
 
   TerrainFileReport report;
-  std::map<std::string, MaterialId> materials;
+  MaterialNames materials;
   const YAML::Node material_map = in.require(root, "materials");
   in.requireMap(material_map, "materials");
   for (const auto& entry : material_map) {
@@ -255,11 +289,11 @@ TerrainFileReport detail::addTerrainNode(TerrainBuilder& builder, const YamlRead
       const auto found = materials.find(piece.string(*name, "material"));
       if (found == materials.end()) piece.fail(*name, "unknown material '" + name->Scalar() + "'");
       material = found->second;
-    } else if (materials.size() > 1) {
+    } else if (materials.size() > 1 && !YamlReader::get(p, "cell_materials")) {
       piece.fail(p, "missing key 'material' (the file defines " + std::to_string(materials.size()) + " materials)");
     }
     try {
-      report.degenerate_triangles_skipped += addPiece(builder, piece, p, type, material);
+      report.degenerate_triangles_skipped += addPiece(builder, piece, p, type, material, materials);
     } catch (const YamlError&) {
       throw;
     } catch (const InvalidInputError& e) {

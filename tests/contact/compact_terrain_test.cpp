@@ -31,7 +31,8 @@ Heightfield field(int rows, int cols, double x0, std::uint32_t seed) {
       {.spacing_x = 0.25, .spacing_y = 0.3, .origin = {x0, -0.5 * (rows - 1) * 0.3, 0.0}, .base_depth = 0.5});
 }
 
-// Stored box, field A, a ledge, field B, a rock: ids interleave.
+// Stored box, field A (materials per cell), a ledge, field B, a rock: ids
+// interleave.
 Terrain mixed(bool compact) {
   TerrainBuilder b;
   const MaterialId asphalt = b.addMaterial(Material{});
@@ -40,7 +41,10 @@ Terrain mixed(bool compact) {
   const auto add = [&](const Heightfield& f, MaterialId m) {
     return compact ? addCompactHeightfield(b, f, m) : addHeightfield(b, f, m);
   };
-  add(field(12, 20, -2.0, 1), gravel);
+  Heightfield a = field(12, 20, -2.0, 1);
+  a.cell_materials.resize(11 * 19, gravel);  // field A: gravel, with an asphalt stripe
+  for (int c = 0; c < 19; ++c) a.cell_materials[5 * 19 + c] = a.cell_materials[6 * 19 + c] = asphalt;
+  add(a, gravel);
   b.addPiece(ConvexPolyhedron::box({2.75, -1.5, -0.2}, {3.0, 1.5, 0.12}), asphalt);  // a ledge between the fields
   add(field(12, 16, 3.0, 2), asphalt);
   b.addPiece(ConvexPolyhedron::box({5.0, -0.2, 0.0}, {5.3, 0.2, 0.08}), gravel);  // a rock on field B

@@ -160,6 +160,40 @@ TEST_F(TerrainFileTest, ACompactHeightfieldHasTheStoredOnesPieces) {
               HasSubstr(at(8, 14) + "pieces[1] (heightfield): storage: 'packed' (expected prisms or compact)"));
 }
 
+// cell_materials: one material name per cell, north row first as the
+// heights; the piece needs no 'material' then. Bad rows and names are
+// named at their line.
+TEST_F(TerrainFileTest, AHeightfieldTakesAMaterialPerCell) {
+  const std::string two = "materials:\n  asphalt: {mu_max: 0.9}\n  gravel: {mu_max: 0.6}\n";
+  const std::string field = two +
+                            "pieces:\n"
+                            "  - type: heightfield\n"
+                            "    spacing: 0.5\n"
+                            "    heights: [[0.5, 0.6, 0.4], [0.0, 0.1, 0.2], [0.3, 0.0, 0.1]]\n";
+  for (const std::string storage : {"prisms", "compact"}) {
+    const Terrain terrain =
+        loadTerrain(write(storage + ".yaml", field + "    storage: " + storage +
+                                                 "\n    cell_materials: [[gravel, asphalt], [asphalt, asphalt]]\n"));
+    // The first row of cells is the north one (y in [0.5, 1]): cell (1, 0) is gravel.
+    const PieceRange range{0, 8};
+    Heightfield grid;
+    grid.rows = grid.cols = 3;
+    for (int r = 0; r < 2; ++r) {
+      for (int c = 0; c < 2; ++c) {
+        for (int k = 0; k < 2; ++k) {
+          EXPECT_EQ(terrain.material(cellPiece(range, grid, r, c, k)).mu_max, r == 1 && c == 0 ? 0.6 : 0.9)
+              << storage << " cell (" << r << ", " << c << ")";
+        }
+      }
+    }
+  }
+  EXPECT_THAT(loadError(field + "    cell_materials: [[gravel, asphalt]]\n"),
+              HasSubstr(at(8, 21) + "pieces[0] (heightfield): cell_materials: expected 2 rows"));
+  EXPECT_THAT(loadError(field + "    cell_materials: [[gravel, asphalt], [asphalt, sand]]\n"),
+              HasSubstr(at(8, 51) + "pieces[0] (heightfield): cell_materials[1][1]: unknown material 'sand'"));
+  EXPECT_THAT(loadError(field), HasSubstr("missing key 'material'"));
+}
+
 TEST_F(TerrainFileTest, ErrorsNameTheFileLineAndColumn) {
   // Case: YAML syntax.
   EXPECT_THAT(loadError(std::string(kMaterials) + "pieces:\n  - {type: box, size: [1, 2\n"),

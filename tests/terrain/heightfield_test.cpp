@@ -156,6 +156,45 @@ TEST(HeightfieldTest, MalformedGridsAreNamedInTheMessage) {
   EXPECT_EQ(builder.pieceCount(), 0u);
 }
 
+// Case: per-cell materials: each cell's two pieces take its entry, stored
+// or compact alike; a wrong count or an unregistered id is named (the
+// cell by row and column) before anything is added.
+TEST(HeightfieldTest, EachCellTakesItsOwnMaterial) {
+  Heightfield f = randomField(4, 5, 0.1, 2);
+  for (const bool compact : {false, true}) {
+    TerrainBuilder builder;
+    const MaterialId asphalt = builder.addMaterial(Material{});
+    const MaterialId gravel = builder.addMaterial(Material{.name = "gravel", .mu_max = 0.6});
+    f.cell_materials.assign(3 * 4, asphalt);
+    f.cell_materials[1 * 4 + 2] = gravel;  // cell (1, 2)
+    const PieceRange range = compact ? addCompactHeightfield(builder, f, asphalt) : addHeightfield(builder, f, asphalt);
+    const Terrain terrain = std::move(builder).build();
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 4; ++c) {
+        for (int k = 0; k < 2; ++k) {
+          EXPECT_EQ(terrain.materialId(cellPiece(range, f, r, c, k)), r == 1 && c == 2 ? gravel : asphalt)
+              << (compact ? "compact" : "prisms") << " cell (" << r << ", " << c << ")";
+        }
+      }
+    }
+  }
+  Heightfield wrong = f;
+  wrong.cell_materials.pop_back();
+  EXPECT_THAT(messageOf(wrong),
+              HasSubstr("cell_materials has 11 ids, but the grid has (rows - 1) x (cols - 1) = 12 cells"));
+  wrong = f;
+  wrong.cell_materials.assign(3 * 4, 0);
+  wrong.cell_materials[2 * 4 + 1] = 7;
+  for (const bool compact : {false, true}) {
+    TerrainBuilder builder;
+    const MaterialId m = builder.addMaterial(Material{});
+    const auto add = [&] { compact ? addCompactHeightfield(builder, wrong, m) : addHeightfield(builder, wrong, m); };
+    EXPECT_THAT(add, ::testing::ThrowsMessage<InvalidInputError>(
+                         HasSubstr("cell (row 2, col 1) has material id 7, which is not registered (1 materials)")));
+    EXPECT_EQ(builder.pieceCount(), 0u);
+  }
+}
+
 TEST(HeightfieldTest, TriangularPrismRejectsABaseAboveTheTriangle) {
   EXPECT_NO_THROW(makeTriangularPrism({0, 0, 1}, {1, 0, 1.2}, {0, 1, 0.9}, 0.0));
   EXPECT_THROW(makeTriangularPrism({0, 0, 1}, {1, 0, 1.2}, {0, 1, 0.9}, 2.0), InvalidInputError);
