@@ -279,14 +279,7 @@ void Terrain::buildIndex() {
   // From here on order_ holds ids: a stored piece's id counts the formed
   // ids of the fields before it.
   if (fields_.empty()) return;
-  for (PieceId& k : order_) {
-    PieceId formed = 0;
-    for (const Field& f : fields_) {
-      if (f.first - f.formed_before > k) break;  // stored pieces before field f: f.first - f.formed_before
-      formed += f.count;
-    }
-    k += formed;
-  }
+  for (PieceId& k : order_) k = storedId(static_cast<std::size_t>(k));
 }
 
 void Terrain::overlapping(const Aabb& box, std::vector<PieceId>& out) const {

@@ -102,6 +102,13 @@ class Terrain {
   std::span<const ConvexPolyhedron> pieces() const { return pieces_; }
   /// The id of pieces()[stored] (ids skip the compact fields' ranges).
   PieceId storedId(std::size_t stored) const;
+  /// Where piece `id` lives: compact field `field` (>= 0), or pieces()[stored]
+  /// (field = -1); storedId's inverse for a stored piece.
+  struct Place {
+    int field = -1;
+    std::size_t stored = 0;
+  };
+  Place place(PieceId id) const;
 
   /// A compact heightfield of this terrain: its pieces' ids and its samples
   /// (an engine plugin gives it to the engine as one heightfield shape).
@@ -130,12 +137,6 @@ class Terrain {
  private:
   friend class TerrainBuilder;
   using Field = TerrainBuilder::Field;
-  // Where id lives: a field (its index) or the stored pieces (the index in pieces_).
-  struct Place {
-    int field = -1;
-    std::size_t stored = 0;
-  };
-  Place place(PieceId id) const;
   const ConvexPolyhedron& storedPiece(PieceId id) const;
   MaterialId fieldAwareMaterialId(PieceId id) const;
   // A 4-wide node: the boxes of its four children in single precision,

@@ -58,14 +58,8 @@ TerrainGeoms::~TerrainGeoms() {
 }
 
 dGeomID TerrainGeoms::geom(PieceId piece) const {
-  PieceId formed_before = 0;  // ids of the compact fields before `piece`
-  for (std::size_t k = 0; k < terrain_.compactFieldCount(); ++k) {
-    const Terrain::CompactField field = terrain_.compactField(k);
-    if (piece < field.first) break;
-    if (piece < field.first + field.count) return geoms_[terrain_.pieces().size() + k];
-    formed_before += field.count;
-  }
-  return geoms_[piece - formed_before];
+  const Terrain::Place at = terrain_.place(piece);
+  return at.field >= 0 ? geoms_[terrain_.pieces().size() + static_cast<std::size_t>(at.field)] : geoms_[at.stored];
 }
 
 // A geom's data: its piece id (>= 0), or -2 - k for compact field k.

@@ -91,7 +91,6 @@ btCollisionShape* makeShape(const Body& body, bool sphere_wheels,
 // collider's user pointer): the Coulomb coefficient of each material.
 struct EngineWheelGround {
   const TerrainObject* terrain = nullptr;
-  const Terrain* pieces = nullptr;
   std::vector<double> mu;  // per material id
 };
 
@@ -108,9 +107,10 @@ bool engineWheelContactAdded(btManifoldPoint& point, const btCollisionObjectWrap
   const btCollisionObjectWrapper* ground = a_is_wheel ? b : a;
   const auto* g = static_cast<const EngineWheelGround*>(wheel->getCollisionObject()->getUserPointer());
   if (g == nullptr || ground->getCollisionObject() != &g->terrain->object()) return false;
+  const Terrain& pieces = g->terrain->terrain();
   const PieceId piece = g->terrain->pieceOf(*ground);
-  if (piece < 0 || piece >= static_cast<PieceId>(g->pieces->pieceCount())) return false;
-  point.m_combinedFriction = g->mu[g->pieces->materialId(piece)];
+  if (piece < 0 || piece >= static_cast<PieceId>(pieces.pieceCount())) return false;
+  point.m_combinedFriction = g->mu[pieces.materialId(piece)];
   return true;
 }
 
@@ -271,7 +271,7 @@ class SimEngine final : public sim::Engine {
   void addEngineWheels(const Terrain& terrain) {
     static std::once_flag installed;
     std::call_once(installed, [] { gContactAddedCallback = engineWheelContactAdded; });
-    ground_ = {.terrain = &plugin_->terrainShapes(), .pieces = &terrain, .mu = sim::engineWheelFrictions(terrain)};
+    ground_ = {.terrain = &plugin_->terrainShapes(), .mu = sim::engineWheelFrictions(terrain)};
     engine_wheels_ = sim::EngineWheelSet(vehicle());
     for (std::size_t k = 0; k < engine_wheels_.size(); ++k) {
       Ref& r = refs_[engine_wheels_.body(k)];
