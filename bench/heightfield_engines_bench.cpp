@@ -57,20 +57,11 @@ struct BulletField {
 };
 
 std::shared_ptr<fcl::BVHModel<fcl::OBBRSSd>> fclMesh(const wtc::Heightfield& f) {
-  std::vector<fcl::Vector3d> points;
-  points.reserve(f.heights.size());
-  for (int r = 0; r < f.rows; ++r)
-    for (int c = 0; c < f.cols; ++c) points.push_back(f.sample(r, c));
+  const wtc::TriangleMesh m = fieldMesh(f);
+  const std::vector<fcl::Vector3d> points(m.vertices.begin(), m.vertices.end());
   std::vector<fcl::Triangle> triangles;
-  triangles.reserve(2 * static_cast<std::size_t>(cellsOf(f)));
-  for (int r = 0; r + 1 < f.rows; ++r) {
-    for (int c = 0; c + 1 < f.cols; ++c) {
-      const std::size_t p00 = static_cast<std::size_t>(r) * f.cols + c, p01 = p00 + 1, p10 = p00 + f.cols,
-                        p11 = p10 + 1;
-      triangles.emplace_back(p00, p01, p11);  // the prisms' split (wtc/heightfield.hpp)
-      triangles.emplace_back(p00, p11, p10);
-    }
-  }
+  triangles.reserve(m.triangles.size());
+  for (const auto& t : m.triangles) triangles.emplace_back(t[0], t[1], t[2]);
   auto mesh = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
   mesh->beginModel(static_cast<int>(triangles.size()), static_cast<int>(points.size()));
   mesh->addSubModel(points, triangles);

@@ -14,32 +14,35 @@
 #include <cstddef>
 #include <vector>
 
-#include "wtc/aabb.hpp"
-#include "wtc/convex_polyhedron.hpp"
+#include "formed_pieces.hpp"
 #include "wtc/heightfield.hpp"
-#include "wtc/terrain.hpp"
 
 namespace wtc::detail {
 
-class CompactHeightfield {
+class CompactHeightfield final : public FormedPieces {
  public:
   /// Validates `field` (wtc::validate(const Heightfield&)) and keeps it.
   explicit CompactHeightfield(Heightfield field);
 
   /// 2 (rows - 1)(cols - 1), as Heightfield::pieceCount().
-  std::size_t pieceCount() const { return field_.pieceCount(); }
+  std::size_t pieceCount() const override { return field_.pieceCount(); }
   /// Piece k in addHeightfield's order (cell k / 2 row-major, triangle k % 2),
   /// bit for bit the prism addHeightfield builds.
-  ConvexPolyhedron piece(std::size_t k) const;
+  ConvexPolyhedron piece(std::size_t k) const override;
   /// piece(k).bounds(), without forming the piece.
-  Aabb pieceBounds(std::size_t k) const;
+  Aabb pieceBounds(std::size_t k) const override;
   /// Appends first + k for every piece k whose bounds overlap `box` (as
   /// Aabb::overlaps decides), cell by cell in row-major order.
-  void overlapping(const Aabb& box, PieceId first, std::vector<PieceId>& out) const;
+  void overlapping(const Aabb& box, PieceId first, std::vector<PieceId>& out) const override;
   /// The union of all pieces' bounds.
-  const Aabb& bounds() const { return bounds_; }
+  const Aabb& bounds() const override { return bounds_; }
   /// The field's samples and description (bytes).
-  std::size_t memoryBytes() const;
+  std::size_t memoryBytes() const override;
+  /// The cell's material (two pieces a cell), or `whole` without cell_materials.
+  MaterialId materialId(std::size_t k, MaterialId whole) const override {
+    return field_.cell_materials.empty() ? whole : field_.cell_materials[k / 2];
+  }
+  const Heightfield* heightfield() const override { return &field_; }
   const Heightfield& field() const { return field_; }
 
  private:

@@ -122,18 +122,9 @@ PieceRange addHeightfield(TerrainBuilder& builder, const Heightfield& f, Materia
 PieceRange addCompactHeightfield(TerrainBuilder& builder, Heightfield field, MaterialId material) {
   auto grid = std::make_shared<const detail::CompactHeightfield>(std::move(field));  // validates it
   requireCellMaterials(builder, grid->field(), material, "wtc::addCompactHeightfield");
-  // Only the ids are needed: the field's pieces take no memory of their own.
-  builder.requireIdsFor(grid->pieceCount(), "wtc::addCompactHeightfield (" + std::to_string(grid->field().rows) +
-                                                " x " + std::to_string(grid->field().cols) + " samples)");
-  TerrainBuilder::Field f;
-  f.first = static_cast<PieceId>(builder.next_id_);
-  f.count = static_cast<PieceId>(grid->pieceCount());
-  f.formed_before = builder.fields_.empty() ? 0 : builder.fields_.back().formed_before + builder.fields_.back().count;
-  f.grid = std::move(grid);
-  f.material = material;
-  builder.next_id_ += static_cast<std::size_t>(f.count);
-  builder.fields_.push_back(std::move(f));
-  return {builder.fields_.back().first, builder.fields_.back().count};
+  const std::string where = "wtc::addCompactHeightfield (" + std::to_string(grid->field().rows) + " x " +
+                            std::to_string(grid->field().cols) + " samples)";
+  return detail::addFormedPieces(builder, std::move(grid), material, where);
 }
 
 PieceId pieceUnder(const PieceRange& range, const Heightfield& f, double x, double y) {

@@ -9,40 +9,13 @@
 #include <numeric>
 #include <string>
 
-#include "compact_heightfield.hpp"
+#include "box_tree.hpp"
+#include "formed_pieces.hpp"
 #include "wtc/error.hpp"
+#include "wtc/point_query.hpp"
+#include "wtc/terrain_primitives.hpp"
 
 namespace wtc {
-namespace {
-
-// Pieces per leaf: 2 and 4 measure within noise of each other on
-// heightfields (bench/wheel_query_bench.cpp); 4 halves the node memory.
-constexpr int kLeafPieces = 4;
-
-// Single-precision box rounded outward: never smaller than the double box,
-// so the index never misses a piece.
-void storeOutward(const Aabb& box, float min[3], float max[3]) {
-  for (int k = 0; k < 3; ++k) {
-    min[k] = std::nextafter(static_cast<float>(box.min[k]), -std::numeric_limits<float>::infinity());
-    max[k] = std::nextafter(static_cast<float>(box.max[k]), std::numeric_limits<float>::infinity());
-  }
-}
-
-// The query box in single precision, widened by at least one ulp without a
-// libm call (this runs once per wheel query): 2^-22 relative plus the
-// smallest normal float covers the rounding of the cast.
-void widenQuery(const Aabb& box, float lo[3], float hi[3]) {
-  constexpr float kUlps = 2.384185791015625e-07f;  // 2^-22
-  constexpr float kTiny = std::numeric_limits<float>::min();
-  for (int k = 0; k < 3; ++k) {
-    const float a = static_cast<float>(box.min[k]);
-    const float b = static_cast<float>(box.max[k]);
-    lo[k] = a - (std::abs(a) * kUlps + kTiny);
-    hi[k] = b + (std::abs(b) * kUlps + kTiny);
-  }
-}
-
-}  // namespace
 
 MaterialId TerrainBuilder::addMaterial(const Material& material) {
   validate(material, "TerrainBuilder::addMaterial (material '" + material.name + "')");
@@ -96,6 +69,22 @@ void TerrainBuilder::reserve(std::size_t count) {
   piece_material_.reserve(grown);
 }
 
+PieceRange detail::addFormedPieces(TerrainBuilder& builder, std::shared_ptr<const FormedPieces> pieces,
+                                   MaterialId material, const std::string& where) {
+  builder.requireMaterial(material, where.c_str());
+  // Only the ids are needed: formed pieces take no memory of their own.
+  builder.requireIdsFor(pieces->pieceCount(), where);
+  TerrainBuilder::Field f;
+  f.first = static_cast<PieceId>(builder.next_id_);
+  f.count = static_cast<PieceId>(pieces->pieceCount());
+  f.formed_before = builder.fields_.empty() ? 0 : builder.fields_.back().formed_before + builder.fields_.back().count;
+  f.formed = std::move(pieces);
+  f.material = material;
+  builder.next_id_ += static_cast<std::size_t>(f.count);
+  builder.fields_.push_back(std::move(f));
+  return {builder.fields_.back().first, builder.fields_.back().count};
+}
+
 Terrain TerrainBuilder::build() && {
   if (next_id_ == 0) throw InvalidInputError("wtc::TerrainBuilder::build: the terrain has no pieces");
   Terrain terrain;
@@ -123,8 +112,9 @@ bool Terrain::isFormed(PieceId id) const { return !fields_.empty() && place(id).
 const ConvexPolyhedron& Terrain::storedPiece(PieceId id) const {
   const Place at = place(id);
   if (at.field >= 0) {
-    throw InvalidInputError("wtc::Terrain::piece: piece " + std::to_string(id) +
-                            " belongs to a compact heightfield and is formed on demand; use piece(id, scratch)");
+    throw InvalidInputError(
+        "wtc::Terrain::piece: piece " + std::to_string(id) +
+        " belongs to a compact heightfield or mesh and is formed on demand; use piece(id, scratch)");
   }
   return pieces_[at.stored];
 }
@@ -134,7 +124,7 @@ const ConvexPolyhedron& Terrain::piece(PieceId id, std::optional<ConvexPolyhedro
   const Place at = place(id);
   if (at.field < 0) return pieces_[at.stored];
   const Field& f = fields_[at.field];
-  scratch = f.grid->piece(static_cast<std::size_t>(id - f.first));
+  scratch = f.formed->piece(static_cast<std::size_t>(id - f.first));
   return *scratch;
 }
 
@@ -151,7 +141,24 @@ PieceId Terrain::storedId(std::size_t stored) const {
 
 Terrain::CompactField Terrain::compactField(std::size_t k) const {
   const Field& f = fields_.at(k);
-  return {f.first, f.count, &f.grid->field(), f.material};
+  return {f.first, f.count, f.formed->heightfield(), f.formed->mesh(), f.formed->thickness(), f.material};
+}
+
+PieceId Terrain::nearestPiece(const Eigen::Vector3d& point, PieceId first, PieceId count, double reach) const {
+  std::vector<PieceId> near;
+  overlapping({point.array() - reach, point.array() + reach}, near);
+  PieceId best = -1;
+  double best_distance = std::numeric_limits<double>::infinity();
+  std::optional<ConvexPolyhedron> scratch;
+  for (const PieceId id : near) {
+    if (id < first || id >= first + count) continue;
+    const double d = queryPoint(piece(id, scratch), point).signed_distance;
+    if (d < best_distance || (d == best_distance && id < best)) {
+      best = id;
+      best_distance = d;
+    }
+  }
+  return best;
 }
 
 Aabb Terrain::pieceBounds(PieceId id) const {
@@ -159,20 +166,16 @@ Aabb Terrain::pieceBounds(PieceId id) const {
   const Place at = place(id);
   if (at.field < 0) return pieces_[at.stored].bounds();
   const Field& f = fields_[at.field];
-  return f.grid->pieceBounds(static_cast<std::size_t>(id - f.first));
+  return f.formed->pieceBounds(static_cast<std::size_t>(id - f.first));
 }
 
 MaterialId Terrain::fieldAwareMaterialId(PieceId id) const {
   const Place at = place(id);
   if (at.field < 0) return piece_material_[at.stored];
   const Field& f = fields_[at.field];
-  const std::vector<MaterialId>& cells = f.grid->field().cell_materials;
-  return cells.empty() ? f.material : cells[static_cast<std::size_t>(id - f.first) / 2];  // two pieces a cell
+  return f.formed->materialId(static_cast<std::size_t>(id - f.first), f.material);
 }
 
-// Top-down build over piece centroids. A node's range is split at the
-// median along the widest centroid axis, and each half once more, giving up
-// to four children; a child of at most kLeafPieces pieces is a leaf. O(n log n).
 void Terrain::buildIndex() {
   bool empty = true;
   const auto cover = [&](const Aabb& box) {
@@ -180,146 +183,41 @@ void Terrain::buildIndex() {
     bounds_.include(box);
     empty = false;
   };
-  for (const Field& f : fields_) cover(f.grid->bounds());
-  const auto n = static_cast<PieceId>(pieces_.size());
-  if (n == 0) return;  // compact fields only: their grids are their index
-  order_.resize(n);
-  std::iota(order_.begin(), order_.end(), 0);
-  std::vector<Eigen::Vector3d> centre(n);
-  for (PieceId i = 0; i < n; ++i) {
-    centre[i] = pieces_[i].bounds().center();
-    cover(pieces_[i].bounds());
-  }
-  auto rangeBox = [&](std::int32_t begin, std::int32_t end) {
-    Aabb box = pieces_[order_[begin]].bounds();
-    for (std::int32_t k = begin + 1; k < end; ++k) {
-      box.include(pieces_[order_[k]].bounds());
-    }
-    return box;
-  };
-  auto split = [&](std::int32_t begin, std::int32_t end) {
-    Aabb centres{centre[order_[begin]], centre[order_[begin]]};
-    for (std::int32_t k = begin + 1; k < end; ++k) centres.include(centre[order_[k]]);
-    int axis = 0;
-    centres.extent().maxCoeff(&axis);
-    const std::int32_t mid = begin + (end - begin) / 2;
-    std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
-                     [&](PieceId a, PieceId b) { return centre[a][axis] < centre[b][axis]; });
-    return mid;
-  };
-  nodes_.clear();
-  nodes_.reserve(static_cast<std::size_t>(n) / kLeafPieces + 1);
-  // Returns the node index; called only for ranges larger than a leaf.
-  auto build = [&](auto& self, std::int32_t begin, std::int32_t end) -> std::int32_t {
-    std::int32_t bounds[5];
-    int parts = 0;
-    const std::int32_t mid = split(begin, end);
-    for (const auto& [b, e] : {std::pair{begin, mid}, std::pair{mid, end}}) {
-      bounds[parts++] = b;
-      if (e - b > kLeafPieces) bounds[parts++] = split(b, e);
-    }
-    bounds[parts] = end;
-    const auto index = static_cast<std::int32_t>(nodes_.size());
-    nodes_.emplace_back();
-    float min[3][4], max[3][4];
-    for (int c = 0; c < 4; ++c) {
-      constexpr float kInf = std::numeric_limits<float>::infinity();
-      float lo[3] = {kInf, kInf, kInf}, hi[3] = {-kInf, -kInf, -kInf};  // empty slot: overlaps nothing
-      std::int32_t child = -1, count = 0;
-      if (c < parts) {
-        const std::int32_t b = bounds[c], e = bounds[c + 1];
-        storeOutward(rangeBox(b, e), lo, hi);
-        if (e - b <= kLeafPieces) {
-          child = ~b;
-          count = e - b;
-        } else {
-          child = self(self, b, e);
-        }
-      }
-      for (int k = 0; k < 3; ++k) {
-        min[k][c] = lo[k];
-        max[k][c] = hi[k];
-      }
-      nodes_[index].child[c] = child;
-      nodes_[index].count[c] = count;
-    }
-    Node& node = nodes_[index];
-    std::memcpy(&node.min_x, min[0], sizeof(Float4));
-    std::memcpy(&node.min_y, min[1], sizeof(Float4));
-    std::memcpy(&node.min_z, min[2], sizeof(Float4));
-    std::memcpy(&node.max_x, max[0], sizeof(Float4));
-    std::memcpy(&node.max_y, max[1], sizeof(Float4));
-    std::memcpy(&node.max_z, max[2], sizeof(Float4));
-    return index;
-  };
-  if (n > kLeafPieces) {
-    build(build, 0, n);
-  } else {
-    // A root with a single leaf child keeps one query path for all sizes.
-    Node root{};
-    float lo[3], hi[3];
-    storeOutward(bounds_, lo, hi);
-    constexpr float kInf = std::numeric_limits<float>::infinity();
-    root.min_x = Float4{lo[0], kInf, kInf, kInf};
-    root.min_y = Float4{lo[1], kInf, kInf, kInf};
-    root.min_z = Float4{lo[2], kInf, kInf, kInf};
-    root.max_x = Float4{hi[0], -kInf, -kInf, -kInf};
-    root.max_y = Float4{hi[1], -kInf, -kInf, -kInf};
-    root.max_z = Float4{hi[2], -kInf, -kInf, -kInf};
-    root.child[0] = ~0;
-    root.count[0] = n;
-    for (int c = 1; c < 4; ++c) root.child[c] = -1;
-    nodes_.push_back(root);
-  }
-  nodes_.shrink_to_fit();
+  for (const Field& f : fields_) cover(f.formed->bounds());
+  if (pieces_.empty()) return;  // compact parts only: each is its own index
   // Leaf boxes in tree order, exact (double): a leaf test reads one
   // contiguous run of memory instead of dereferencing each piece.
-  leaf_boxes_.resize(n);
-  for (PieceId k = 0; k < n; ++k) leaf_boxes_[k] = pieces_[order_[k]].bounds();
+  std::vector<Aabb> boxes(pieces_.size());
+  for (std::size_t i = 0; i < pieces_.size(); ++i) cover(boxes[i] = pieces_[i].bounds());
+  tree_ = std::make_shared<const detail::BoxTree>(boxes, order_);
+  leaf_boxes_.resize(order_.size());
+  for (std::size_t k = 0; k < order_.size(); ++k) leaf_boxes_[k] = boxes[order_[k]];
   // From here on order_ holds ids: a stored piece's id counts the formed
-  // ids of the fields before it.
+  // ids of the parts before it.
   if (fields_.empty()) return;
   for (PieceId& k : order_) k = storedId(static_cast<std::size_t>(k));
 }
 
 void Terrain::overlapping(const Aabb& box, std::vector<PieceId>& out) const {
-  for (const Field& f : fields_) f.grid->overlapping(box, f.first, out);
-  if (nodes_.empty()) return;
-  float lo[3], hi[3];
-  widenQuery(box, lo, hi);
-  const Float4 lx{lo[0], lo[0], lo[0], lo[0]}, ly{lo[1], lo[1], lo[1], lo[1]}, lz{lo[2], lo[2], lo[2], lo[2]};
-  const Float4 hx{hi[0], hi[0], hi[0], hi[0]}, hy{hi[1], hi[1], hi[1], hi[1]}, hz{hi[2], hi[2], hi[2], hi[2]};
-  // Depth-first; a 4-wide tree of depth 32 would hold 2^64 leaves.
-  std::int32_t stack[3 * 32 + 1];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0) {
-    const Node& node = nodes_[stack[--top]];
-    const auto hit = (lx <= node.max_x) & (node.min_x <= hx) & (ly <= node.max_y) & (node.min_y <= hy) &
-                     (lz <= node.max_z) & (node.min_z <= hz);
-    for (int c = 0; c < 4; ++c) {
-      if (hit[c] == 0) continue;
-      const std::int32_t child = node.child[c];
-      if (child >= 0) {
-        stack[top++] = child;
-        continue;
-      }
-      for (std::int32_t k = ~child; k < ~child + node.count[c]; ++k) {
-        if (leaf_boxes_[k].overlaps(box)) out.push_back(order_[k]);
-      }
-    }
-  }
+  for (const Field& f : fields_) f.formed->overlapping(box, f.first, out);
+  if (!tree_) return;
+  tree_->visit(box, [&](std::int32_t k) {
+    if (leaf_boxes_[k].overlaps(box)) out.push_back(order_[k]);
+  });
 }
 
 std::size_t Terrain::pieceMemoryBytes() const {
   std::size_t bytes = piece_material_.capacity() * sizeof(MaterialId) + fields_.capacity() * sizeof(Field);
-  for (const Field& f : fields_) bytes += f.grid->memoryBytes();
+  for (const Field& f : fields_) bytes += f.formed->memoryBytes();
   for (const auto& p : pieces_) bytes += p.memoryBytes();
   return bytes;
 }
 
 std::size_t Terrain::indexMemoryBytes() const {
-  return nodes_.capacity() * sizeof(Node) + order_.capacity() * sizeof(PieceId) + leaf_boxes_.capacity() * sizeof(Aabb);
+  std::size_t bytes =
+      (tree_ ? tree_->memoryBytes() : 0) + order_.capacity() * sizeof(PieceId) + leaf_boxes_.capacity() * sizeof(Aabb);
+  for (const Field& f : fields_) bytes += f.formed->indexMemoryBytes();
+  return bytes;
 }
 
 }  // namespace wtc

@@ -8,10 +8,12 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <unordered_map>
 
 #include "builder_support.hpp"
+#include "compact_mesh.hpp"
 #include "wtc/error.hpp"
 
 namespace wtc {
@@ -88,8 +90,12 @@ double hullVolume(const ConvexPolyhedron& hull) {
   return six_v / 6.0;
 }
 
+std::string partName(const TriangleMesh& mesh) {
+  return std::string(kWhere) + ": " + (mesh.name.empty() ? "mesh" : mesh.name);
+}
+
 std::string triangleName(const TriangleMesh& mesh, std::size_t t) {
-  return std::string(kWhere) + ": " + (mesh.name.empty() ? "mesh" : mesh.name) + ", triangle " + std::to_string(t);
+  return partName(mesh) + ", triangle " + std::to_string(t);
 }
 
 void checkInput(const TriangleMesh& mesh) {
@@ -121,8 +127,7 @@ void MeshBuildReport::append(const MeshBuildReport& other) {
 
 ConvexPolyhedron makeExtrudedTriangle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
                                       double thickness) {
-  const Eigen::Vector3d offset = thickness * (b - a).cross(c - a).normalized();
-  return detail::makePrism({a, b, c}, {a - offset, b - offset, c - offset});
+  return detail::makePrism({a, b, c}, detail::extrudedBottom(a, b, c, thickness));
 }
 
 MeshBuildReport addTriangleMesh(TerrainBuilder& builder, const TriangleMesh& mesh, MaterialId material,
@@ -134,7 +139,8 @@ MeshBuildReport addTriangleMesh(TerrainBuilder& builder, const TriangleMesh& mes
   report.triangles = static_cast<std::int64_t>(mesh.triangles.size());
   if (mesh.triangles.empty()) return report;
 
-  const bool closed = isClosed(mesh, weld(mesh.vertices));
+  const std::vector<std::int32_t> welded = weld(mesh.vertices);
+  const bool closed = isClosed(mesh, welded);
   const double volume = closed ? signedVolume(mesh) : 0.0;
   const bool flip = closed && volume < 0.0;
   report.flipped_parts = flip ? 1 : 0;
@@ -159,11 +165,17 @@ MeshBuildReport addTriangleMesh(TerrainBuilder& builder, const TriangleMesh& mes
     }
   }
 
+  // The triangles that carry surface, wound outward: the pieces, in order.
+  std::vector<std::array<std::int32_t, 3>> kept;
+  std::vector<std::size_t> source;  // kept[i] is mesh.triangles[source[i]]
+  kept.reserve(mesh.triangles.size());
+  source.reserve(mesh.triangles.size());
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const auto& tri = mesh.triangles[t];
-    const Eigen::Vector3d& a = mesh.vertices[tri[0]];
-    const Eigen::Vector3d& b = mesh.vertices[flip ? tri[2] : tri[1]];
-    const Eigen::Vector3d& c = mesh.vertices[flip ? tri[1] : tri[2]];
+    const std::array<std::int32_t, 3> outward{tri[0], flip ? tri[2] : tri[1], flip ? tri[1] : tri[2]};
+    const Eigen::Vector3d& a = mesh.vertices[outward[0]];
+    const Eigen::Vector3d& b = mesh.vertices[outward[1]];
+    const Eigen::Vector3d& c = mesh.vertices[outward[2]];
     const double longest = std::sqrt(std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()}));
     const double scale = std::max(longest, options.thickness);
     // Altitude on the longest edge = |2 area| / longest.
@@ -171,11 +183,42 @@ MeshBuildReport addTriangleMesh(TerrainBuilder& builder, const TriangleMesh& mes
       ++report.degenerate_skipped;
       continue;
     }
+    kept.push_back(outward);
+    source.push_back(t);
+  }
+
+  if (options.compact) {
+    if (kept.empty()) return report;
+    // Only the vertices the kept triangles use, each distinct position
+    // once (welded ids are dense, in first-seen order).
+    TriangleMesh compact{mesh.name, {}, std::move(kept)};
+    std::vector<std::int32_t> index_of(mesh.vertices.size(), -1);  // by welded id
+    for (auto& tri : compact.triangles) {
+      for (std::int32_t& i : tri) {
+        std::int32_t& slot = index_of[welded[i]];
+        if (slot < 0) {
+          slot = static_cast<std::int32_t>(compact.vertices.size());
+          compact.vertices.push_back(mesh.vertices[i]);
+        }
+        i = slot;
+      }
+    }
+    report.pieces = detail::addFormedPieces(
+        builder, std::make_shared<const detail::CompactTriangleMesh>(std::move(compact), options.thickness), material,
+        partName(mesh));
+    return report;
+  }
+
+  builder.reserve(kept.size());
+  for (std::size_t i = 0; i < kept.size(); ++i) {
+    const Eigen::Vector3d& a = mesh.vertices[kept[i][0]];
+    const Eigen::Vector3d& b = mesh.vertices[kept[i][1]];
+    const Eigen::Vector3d& c = mesh.vertices[kept[i][2]];
     std::optional<ConvexPolyhedron> prism;
     try {
       prism.emplace(makeExtrudedTriangle(a, b, c, options.thickness));
     } catch (const InvalidInputError& e) {
-      throw InvalidInputError(triangleName(mesh, t) + " " + formatVector(a) + ", " + formatVector(b) + ", " +
+      throw InvalidInputError(triangleName(mesh, source[i]) + " " + formatVector(a) + ", " + formatVector(b) + ", " +
                               formatVector(c) + ": " + e.what());
     }
     builder.addPiece(std::move(*prism), material);

@@ -4,17 +4,20 @@
 // bounding box). Immutable once built; build it with TerrainBuilder.
 //
 // Index: a static 4-wide bounding-volume hierarchy over the pieces' boxes,
-// built once (median splits along the widest axis of the centroids), its
-// child boxes in single precision rounded outward and tested four at a time;
-// leaves end with an exact test on the double boxes (docs/terrain.md). Chosen over FCL's
-// DynamicAABBTreeCollisionManager and Bullet's btDbvt by the benchmark bench/wheel_query_bench.cpp.
+// tested four at a time in single precision, with an exact test on the
+// double boxes at the leaves (docs/terrain.md). Chosen over FCL's
+// DynamicAABBTreeCollisionManager and Bullet's btDbvt by the benchmark
+// bench/wheel_query_bench.cpp.
 //
 // Stored and formed pieces. A piece is stored (a ConvexPolyhedron kept in
 // the terrain) or formed: a compact heightfield (addCompactHeightfield,
-// wtc/heightfield.hpp) keeps its samples and forms a prism when asked,
-// bit for bit the one addHeightfield would store. Ids run over both in the
-// order they were added. piece(id, scratch) gives either; piece(id) only a
-// stored one. A compact field is found by its own grid, not the hierarchy.
+// wtc/heightfield.hpp) keeps its samples, a compact triangle mesh
+// (MeshExtrusionOptions::compact, wtc/triangle_mesh.hpp) its vertices and
+// triangles, and each forms a prism when asked, bit for bit the one
+// addHeightfield or addTriangleMesh would store. Ids run over all pieces in
+// the order they were added. piece(id, scratch) gives either; piece(id)
+// only a stored one. A compact part is found by its own index (the grid, or
+// the mesh's hierarchy), not the stored pieces'.
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -32,11 +35,16 @@ using PieceId = std::int32_t;
 using MaterialId = std::int32_t;
 
 class Terrain;
+class TerrainBuilder;
 struct Heightfield;
+struct TriangleMesh;
 struct PieceRange;
 namespace detail {
-class CompactHeightfield;
-}
+class FormedPieces;
+class BoxTree;
+PieceRange addFormedPieces(TerrainBuilder& builder, std::shared_ptr<const FormedPieces> pieces, MaterialId material,
+                           const std::string& where);
+}  // namespace detail
 
 class TerrainBuilder {
  public:
@@ -64,13 +72,14 @@ class TerrainBuilder {
 
  private:
   friend class Terrain;
-  friend PieceRange addCompactHeightfield(TerrainBuilder& builder, Heightfield field, MaterialId material);
-  // A compact field's pieces: ids first ... first + count - 1.
+  friend PieceRange detail::addFormedPieces(TerrainBuilder& builder, std::shared_ptr<const detail::FormedPieces> pieces,
+                                            MaterialId material, const std::string& where);
+  // A compact part's pieces: ids first ... first + count - 1.
   struct Field {
     PieceId first = 0;
     PieceId count = 0;
-    PieceId formed_before = 0;  // formed ids of the fields before this one
-    std::shared_ptr<const detail::CompactHeightfield> grid;
+    PieceId formed_before = 0;  // formed ids of the parts before this one
+    std::shared_ptr<const detail::FormedPieces> formed;
     MaterialId material = 0;
   };
   // Throws InvalidInputError naming `where` when `count` more ids would
@@ -94,7 +103,7 @@ class Terrain {
   /// Piece `id`: a stored piece itself, or a formed one made into `scratch`
   /// (which the result then refers to).
   const ConvexPolyhedron& piece(PieceId id, std::optional<ConvexPolyhedron>& scratch) const;
-  /// True for a compact field's piece, formed when asked for.
+  /// True for a compact part's piece, formed when asked for.
   bool isFormed(PieceId id) const;
   /// The piece's bounding box, without forming it.
   Aabb pieceBounds(PieceId id) const;
@@ -102,7 +111,7 @@ class Terrain {
   std::span<const ConvexPolyhedron> pieces() const { return pieces_; }
   /// The id of pieces()[stored] (ids skip the compact fields' ranges).
   PieceId storedId(std::size_t stored) const;
-  /// Where piece `id` lives: compact field `field` (>= 0), or pieces()[stored]
+  /// Where piece `id` lives: compact part `field` (>= 0), or pieces()[stored]
   /// (field = -1); storedId's inverse for a stored piece.
   struct Place {
     int field = -1;
@@ -110,16 +119,28 @@ class Terrain {
   };
   Place place(PieceId id) const;
 
-  /// A compact heightfield of this terrain: its pieces' ids and its samples
-  /// (an engine plugin gives it to the engine as one heightfield shape).
+  /// A compact part of this terrain, a heightfield or a triangle mesh: its
+  /// pieces' ids and its geometry (an engine plugin gives it to the engine
+  /// as one heightfield or triangle-mesh shape). Exactly one of field and
+  /// mesh is set; both live as long as the terrain.
   struct CompactField {
-    PieceId first = 0;  ///< Its pieces are first ... first + count - 1, in addHeightfield's order.
+    PieceId first = 0;  ///< Its pieces are first ... first + count - 1.
     PieceId count = 0;
-    const Heightfield* field = nullptr;  ///< Lives as long as the terrain.
-    MaterialId material = 0;             ///< Of every cell, unless the field has cell_materials.
+    /// A heightfield's samples; its pieces in addHeightfield's order.
+    const Heightfield* field = nullptr;
+    /// A mesh's vertices and triangles: piece first + k is triangle k,
+    /// wound outward, extruded `thickness` (m) along minus its normal.
+    const TriangleMesh* mesh = nullptr;
+    double thickness = 0.0;
+    MaterialId material = 0;  ///< Of every piece, unless the field has cell_materials.
   };
   std::size_t compactFieldCount() const { return fields_.size(); }
   CompactField compactField(std::size_t k) const;
+  /// The piece among ids first ... first + count - 1 nearest `point`: the
+  /// smallest signed distance (queryPoint) among those whose boxes come
+  /// within `reach` (m) of it; -1 if none does. How an engine plugin names
+  /// the piece a contact met on a compact mesh's engine shape.
+  PieceId nearestPiece(const Eigen::Vector3d& point, PieceId first, PieceId count, double reach) const;
   const Material& material(PieceId id) const { return materials_[materialId(id)]; }
   MaterialId materialId(PieceId id) const { return fields_.empty() ? piece_material_[id] : fieldAwareMaterialId(id); }
   std::span<const Material> materials() const { return materials_; }
@@ -129,8 +150,9 @@ class Terrain {
   /// (allocation-free once `out` has capacity). Order unspecified.
   void overlapping(const Aabb& box, std::vector<PieceId>& out) const;
 
-  /// Memory (bytes) of the pieces (stored pieces, and compact fields'
-  /// samples) and of the index.
+  /// Memory (bytes) of the pieces (stored pieces, and compact parts'
+  /// samples, vertices and triangles) and of the index (the stored pieces'
+  /// hierarchy and the compact meshes' own).
   std::size_t pieceMemoryBytes() const;
   std::size_t indexMemoryBytes() const;
 
@@ -139,16 +161,6 @@ class Terrain {
   using Field = TerrainBuilder::Field;
   const ConvexPolyhedron& storedPiece(PieceId id) const;
   MaterialId fieldAwareMaterialId(PieceId id) const;
-  // A 4-wide node: the boxes of its four children in single precision,
-  // structure-of-arrays so one vector compare tests all four. child >= 0 is
-  // an inner node; child < 0 is a leaf holding pieces order_[~child ..
-  // ~child + count). Unused slots have empty boxes (min > max).
-  using Float4 = float __attribute__((vector_size(16)));
-  struct alignas(16) Node {
-    Float4 min_x, min_y, min_z, max_x, max_y, max_z;
-    std::int32_t child[4];
-    std::int32_t count[4];
-  };
   void buildIndex();
 
   std::vector<ConvexPolyhedron> pieces_;
@@ -156,9 +168,9 @@ class Terrain {
   std::vector<Material> materials_;
   std::vector<Field> fields_;
   std::size_t piece_count_ = 0;
-  std::vector<Node> nodes_;       // over the stored pieces; empty when there are none
-  std::vector<PieceId> order_;    // piece ids in tree order
-  std::vector<Aabb> leaf_boxes_;  // piece boxes in tree (order_) order
+  std::shared_ptr<const detail::BoxTree> tree_;  // over the stored pieces; null when there are none
+  std::vector<PieceId> order_;                   // piece ids in tree order
+  std::vector<Aabb> leaf_boxes_;                 // piece boxes in tree (order_) order
   Aabb bounds_;
 };
 

@@ -36,6 +36,18 @@ int toInt(const YamlReader& in, const YAML::Node& map, const char* key, long lon
   return static_cast<int>(value);
 }
 
+// storage: prisms (each triangle's prism kept) or compact (the samples, or
+// the vertices and triangles, kept; the same prisms formed when a wheel
+// needs them).
+bool readCompactStorage(const YamlReader& in, const YAML::Node& p) {
+  const auto storage = YamlReader::get(p, "storage");
+  const std::string kind = storage ? in.string(*storage, "storage") : "prisms";
+  if (kind != "prisms" && kind != "compact") {
+    in.fail(*storage, "storage: '" + kind + "' (expected prisms or compact)");
+  }
+  return kind == "compact";
+}
+
 Heightfield readHeightfield(const YamlReader& in, const YAML::Node& p) {
   in.checkKeys(p, kCommonKeys,
                {"heights", "file", "spacing", "base_depth", "height_scale", "storage", "cell_materials"});
@@ -188,29 +200,24 @@ std::int64_t addPiece(TerrainBuilder& builder, const YamlReader& in, const YAML:
     s.pose_WL = in.pose(p);
     addStairs(builder, s, material);
   } else if (type == "heightfield") {
-    // storage: prisms (each cell's two prisms kept) or compact (the samples
-    // kept, the same prisms formed when a wheel needs them).
-    const auto storage = YamlReader::get(p, "storage");
-    const std::string kind = storage ? in.string(*storage, "storage") : "prisms";
-    if (kind != "prisms" && kind != "compact") {
-      in.fail(*storage, "storage: '" + kind + "' (expected prisms or compact)");
-    }
+    const bool compact = readCompactStorage(in, p);
     Heightfield field = readHeightfield(in, p);
     if (const auto cells = YamlReader::get(p, "cell_materials")) {
       field.cell_materials = readCellMaterials(in, *cells, field, materials);
     }
-    if (kind == "compact") {
+    if (compact) {
       addCompactHeightfield(builder, std::move(field), material);
     } else {
       addHeightfield(builder, field, material);
     }
   } else if (type == "mesh") {
-    in.checkKeys(p, kCommonKeys, {"file", "scale", "thickness", "keep_convex_parts"});
+    in.checkKeys(p, kCommonKeys, {"file", "scale", "thickness", "keep_convex_parts", "storage"});
     MeshFileOptions options;
     options.scale = in.number(p, "scale", options.scale);
     options.pose_WM = in.pose(p);
     options.extrusion.thickness = in.number(p, "thickness", options.extrusion.thickness);
     options.extrusion.keep_convex_parts = in.boolean(p, "keep_convex_parts", false);
+    options.extrusion.compact = readCompactStorage(in, p);
     const YAML::Node file = in.require(p, "file");
     const std::filesystem::path path = in.path().parent_path() / in.string(file, "file");
     try {

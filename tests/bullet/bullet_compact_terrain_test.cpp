@@ -1,7 +1,9 @@
-// A compact heightfield in Bullet (issue 18): one heightfield shape, not a
-// hull per prism, with the prisms' surface; Bullet's other bodies collide
-// with it, a contact names the prism it met, and WTC's wheels run exactly
-// as on the stored prisms. docs/terrain.md.
+// A compact heightfield or triangle mesh in Bullet (issue 18): one
+// heightfield or triangle-mesh shape, not a hull per prism, with the
+// prisms' surface; Bullet's other bodies collide with it, a contact names
+// the prism it met, and WTC's wheels run exactly as on the stored prisms.
+// Each case runs on the scene's field and on the same surface as a mesh
+// (testing::fieldAsMesh). docs/terrain.md.
 #include <btBulletDynamicsCommon.h>
 
 #include <random>
@@ -31,17 +33,25 @@ void leaves(const btCollisionShape& shape, std::vector<const btCollisionShape*>&
   for (int k = 0; k < compound.getNumChildShapes(); ++k) leaves(*compound.getChildShape(k), out);
 }
 
-// Case: the compact field is one child, Bullet's heightfield shape; the
-// stored ledge keeps its hulls, each named by its piece id.
-TEST(BulletCompactTerrainTest, ACompactFieldIsOneHeightfieldShapeBesideTheStoredHulls) {
-  const PluginFieldScene scene = pluginFieldScene(true);
+// The parameter: the compact part is the field's mesh (true) or the field.
+class BulletCompactTerrainTest : public ::testing::TestWithParam<bool> {
+ protected:
+  PluginFieldScene scene(bool compact, double amplitude = 0.15) const {
+    return pluginFieldScene(compact, amplitude, GetParam());
+  }
+};
+
+// Case: the compact part is one child, Bullet's heightfield or triangle
+// mesh shape; the stored ledge keeps its hulls, each named by its piece id.
+TEST_P(BulletCompactTerrainTest, ACompactPartIsOneShapeBesideTheStoredHulls) {
+  const PluginFieldScene scene = this->scene(true);
   const bullet::TerrainObject object(scene.terrain);
   std::vector<const btCollisionShape*> shapes;
   leaves(*object.object().getCollisionShape(), shapes);
   int fields = 0;
   std::vector<PieceId> hull_ids;
   for (const btCollisionShape* shape : shapes) {
-    if (shape->getShapeType() == TERRAIN_SHAPE_PROXYTYPE) ++fields;
+    if (shape->getShapeType() == (GetParam() ? TRIANGLE_MESH_SHAPE_PROXYTYPE : TERRAIN_SHAPE_PROXYTYPE)) ++fields;
     if (shape->getShapeType() == CONVEX_HULL_SHAPE_PROXYTYPE) hull_ids.push_back(shape->getUserIndex());
   }
   EXPECT_EQ(fields, 1);
@@ -56,9 +66,9 @@ TEST(BulletCompactTerrainTest, ACompactFieldIsOneHeightfieldShapeBesideTheStored
 // Case: a ray down onto the field meets the prisms' top surface
 // (surfaceHeight): the same cells, split along the same diagonal, at the
 // same place.
-TEST(BulletCompactTerrainTest, ARayMeetsTheSurfaceOfThePrisms) {
+TEST_P(BulletCompactTerrainTest, ARayMeetsTheSurfaceOfThePrisms) {
   constexpr double kRayToleranceM = 1e-9;  // double-precision ray-triangle intersection (m)
-  const PluginFieldScene scene = pluginFieldScene(true);
+  const PluginFieldScene scene = this->scene(true);
   BulletWorld w(scene.terrain, ContactMode::kForce);
   std::mt19937 gen(7);
   for (int k = 0; k < 500; ++k) {
@@ -77,8 +87,8 @@ constexpr double kOnPrismM = 1e-9;  // a contact's ground point lies on its pris
 // Case: a small sphere pressed into the field at random places; every
 // contact Bullet reports names (TerrainObject::pieceOf) a prism that holds
 // the contact's ground point.
-TEST(BulletCompactTerrainTest, AContactNamesThePrismItMet) {
-  const PluginFieldScene scene = pluginFieldScene(true);
+TEST_P(BulletCompactTerrainTest, AContactNamesThePrismItMet) {
+  const PluginFieldScene scene = this->scene(true);
   BulletWorld w(scene.terrain, ContactMode::kForce);
   btSphereShape ball(0.05);
   btCollisionObject probe;
@@ -118,10 +128,10 @@ TEST(BulletCompactTerrainTest, AContactNamesThePrismItMet) {
 
 // Case: a box (a chassis, 0.6 x 0.4 x 0.2 m) dropped on the field's flat
 // patch comes to rest on it, as on the stored prisms.
-TEST(BulletCompactTerrainTest, ABoxDroppedOnTheFieldRestsOnItsSurface) {
+TEST_P(BulletCompactTerrainTest, ABoxDroppedOnTheFieldRestsOnItsSurface) {
   constexpr double kRestM = 0.005;  // Bullet's margins: a few mm (as for the ledge)
   for (const bool compact : {true, false}) {
-    const PluginFieldScene scene = pluginFieldScene(compact);
+    const PluginFieldScene scene = this->scene(compact);
     BulletWorld w(scene.terrain, ContactMode::kForce);
     const double top = scene.field.origin.z() + PluginFieldScene::kPatchHeightM;
     btBoxShape box(btVector3(0.3, 0.2, 0.1));
@@ -140,10 +150,10 @@ TEST(BulletCompactTerrainTest, ABoxDroppedOnTheFieldRestsOnItsSurface) {
 // compact field as on the stored prisms. (Where a cut cap touches, Bullet
 // collides the wheel's own cylinder with its shapes, heightfield or
 // hulls; the field is gentle enough, +-4 cm, that none does.)
-TEST(BulletCompactTerrainTest, AWheelRollsBitForBitAsOnTheStoredPrisms) {
+TEST_P(BulletCompactTerrainTest, AWheelRollsBitForBitAsOnTheStoredPrisms) {
   std::vector<btVector3> path[2];
   for (const bool compact : {true, false}) {
-    const PluginFieldScene scene = pluginFieldScene(compact, 0.04);
+    const PluginFieldScene scene = this->scene(compact, 0.04);
     BulletWorld w(scene.terrain, ContactMode::kForce);
     const Eigen::Vector2d start(-2.0, 5.0);
     const double z = *surfaceHeight(scene.field, start.x(), start.y()) + 0.19 + 0.05;
@@ -161,6 +171,9 @@ TEST(BulletCompactTerrainTest, AWheelRollsBitForBitAsOnTheStoredPrisms) {
   for (std::size_t k = 0; k < path[0].size(); ++k) ASSERT_EQ(path[0][k], path[1][k]) << "step " << k;
   EXPECT_GT(path[0].back().x(), 0.0);  // it rolled over the field
 }
+
+INSTANTIATE_TEST_SUITE_P(Parts, BulletCompactTerrainTest, ::testing::Bool(),
+                         [](const ::testing::TestParamInfo<bool>& info) { return info.param ? "Mesh" : "Field"; });
 
 }  // namespace
 }  // namespace wtc

@@ -1,11 +1,13 @@
-// A terrain holding compact heightfields (addCompactHeightfield) against
-// the same terrain with the fields stored as prisms (addHeightfield): the
+// A terrain holding compact heightfields (addCompactHeightfield) and
+// compact triangle meshes (MeshExtrusionOptions::compact) against the same
+// terrain with them stored as prisms (addHeightfield, addTriangleMesh): the
 // same ids, materials and boxes, the same candidates for any box, and a
 // wheel driven over both gets the same contacts bit for bit, mixed with
-// stored pieces (a ledge, a rock) before, between and after the fields.
+// stored pieces (a ledge, a rock) before, between and after them.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <random>
@@ -17,6 +19,7 @@
 #include "wtc/heightfield.hpp"
 #include "wtc/terrain.hpp"
 #include "wtc/terrain_primitives.hpp"
+#include "wtc/triangle_mesh.hpp"
 #include "wtc/wheel_contact.hpp"
 
 namespace wtc {
@@ -31,8 +34,58 @@ Heightfield field(int rows, int cols, double x0, std::uint32_t seed) {
       {.spacing_x = 0.25, .spacing_y = 0.3, .origin = {x0, -0.5 * (rows - 1) * 0.3, 0.0}, .base_depth = 0.5});
 }
 
-// Stored box, field A (materials per cell), a ledge, field B, a rock: ids
-// interleave.
+// A bumpy sheet over x0 ... x0 + 2 m, |y| <= 1.5 m, on jittered vertices,
+// its cells split along either diagonal at random; the last row's
+// triangles repeat their vertices (as STL files do) and one triangle is
+// degenerate (skipped, counted).
+TriangleMesh bumpySheet(double x0, std::uint32_t seed) {
+  std::mt19937 gen(seed);
+  constexpr int kCols = 11, kRows = 13;
+  TriangleMesh m{.name = "sheet"};
+  for (int r = 0; r < kRows; ++r) {
+    for (int c = 0; c < kCols; ++c) {
+      const bool edge = c == 0 || r == 0 || r == kRows - 1;  // c == 0 meets field B's edge
+      const double x = x0 + 0.2 * c + (edge ? 0.0 : uniform(gen, -0.05, 0.05));
+      const double y = -1.5 + 0.25 * r + (edge ? 0.0 : uniform(gen, -0.06, 0.06));
+      m.vertices.emplace_back(x, y, c == 0 ? 0.0 : uniform(gen, -0.03, 0.03));
+    }
+  }
+  for (int r = 0; r + 1 < kRows; ++r) {
+    for (int c = 0; c + 1 < kCols; ++c) {
+      const std::int32_t v00 = r * kCols + c, v01 = v00 + 1, v10 = v00 + kCols, v11 = v10 + 1;
+      std::array<std::array<std::int32_t, 3>, 2> two = {{{v00, v01, v11}, {v00, v11, v10}}};
+      if (gen() % 2 == 0) two = {{{v00, v01, v10}, {v01, v11, v10}}};
+      for (auto t : two) {
+        if (r == kRows - 2) {  // STL style: own copies of the same positions
+          for (std::int32_t& i : t) {
+            m.vertices.push_back(m.vertices[i]);
+            i = static_cast<std::int32_t>(m.vertices.size() - 1);
+          }
+        }
+        m.triangles.push_back(t);
+      }
+    }
+  }
+  m.triangles.push_back({0, 1, 1});  // degenerate
+  return m;
+}
+
+// A closed box wound inside-out (flipped before extrusion), as a rock.
+TriangleMesh insideOutRock(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
+  TriangleMesh m{.name = "rock"};
+  for (int i = 0; i < 8; ++i)
+    m.vertices.emplace_back(i & 1 ? hi.x() : lo.x(), i & 2 ? hi.y() : lo.y(), i & 4 ? hi.z() : lo.z());
+  // Outward quads (counter-clockwise from outside), then each reversed.
+  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& q : quads) {
+    m.triangles.push_back({q[0], q[2], q[1]});
+    m.triangles.push_back({q[0], q[3], q[2]});
+  }
+  return m;
+}
+
+// Stored box, field A (materials per cell), a ledge, field B, a rock, a
+// mesh sheet and a mesh rock on it: ids interleave.
 Terrain mixed(bool compact) {
   TerrainBuilder b;
   const MaterialId asphalt = b.addMaterial(Material{});
@@ -48,6 +101,12 @@ Terrain mixed(bool compact) {
   b.addPiece(ConvexPolyhedron::box({2.75, -1.5, -0.2}, {3.0, 1.5, 0.12}), asphalt);  // a ledge between the fields
   add(field(12, 16, 3.0, 2), asphalt);
   b.addPiece(ConvexPolyhedron::box({5.0, -0.2, 0.0}, {5.3, 0.2, 0.08}), gravel);  // a rock on field B
+  const MeshExtrusionOptions options{.thickness = 0.3, .compact = compact};
+  const MeshBuildReport sheet = addTriangleMesh(b, bumpySheet(6.75, 3), gravel, options);
+  EXPECT_EQ(sheet.degenerate_skipped, 1);
+  const MeshBuildReport rock = addTriangleMesh(b, insideOutRock({7.6, -0.3, -0.05}, {7.9, 0.25, 0.07}), asphalt,
+                                               {.thickness = 0.05, .compact = compact});
+  EXPECT_EQ(rock.flipped_parts, 1);
   return std::move(b).build();
 }
 
@@ -77,7 +136,9 @@ TEST(CompactTerrainTest, NumbersItsPiecesAsTheStoredTerrainDoes) {
     }
   }
   EXPECT_EQ(formed, static_cast<int>(stored.pieceCount()) - 3);
-  EXPECT_LT(compact.pieceMemoryBytes() * 50, stored.pieceMemoryBytes());
+  // All in, indexes counted (the compact meshes keep one each).
+  EXPECT_LT((compact.pieceMemoryBytes() + compact.indexMemoryBytes()) * 30,
+            stored.pieceMemoryBytes() + stored.indexMemoryBytes());
 }
 
 // Case: what an engine plugin walks: the stored pieces by their ids
@@ -95,17 +156,19 @@ TEST(CompactTerrainTest, TellsThePluginsItsStoredPiecesAndItsFields) {
     EXPECT_FALSE(compact.isFormed(id));
     EXPECT_EQ(&compact.piece(id), &compact.pieces()[s]);
   }
-  EXPECT_EQ(last, static_cast<PieceId>(compact.pieceCount()) - 1);  // the rock, added last
-  ASSERT_EQ(compact.compactFieldCount(), 2u);
+  EXPECT_EQ(last, compact.compactField(2).first - 1);  // the rock on field B, before the meshes
+  ASSERT_EQ(compact.compactFieldCount(), 4u);
   EXPECT_EQ(compact.compactField(0).first, 1);  // after the box
   EXPECT_EQ(compact.compactField(0).count, 2 * 11 * 19);
   EXPECT_EQ(compact.compactField(1).first, 1 + 2 * 11 * 19 + 1);  // after the ledge
   EXPECT_EQ(compact.compactField(1).material, compact.materialId(compact.compactField(1).first));
-  EXPECT_THROW(compact.compactField(2), std::out_of_range);
+  EXPECT_THROW(compact.compactField(4), std::out_of_range);
   std::mt19937 gen(3);
   std::optional<ConvexPolyhedron> scratch;
   for (std::size_t k = 0; k < 2; ++k) {
     const Terrain::CompactField field = compact.compactField(k);
+    ASSERT_NE(field.field, nullptr);
+    EXPECT_EQ(field.mesh, nullptr);
     const Heightfield& f = *field.field;
     const PieceRange range{field.first, field.count};
     for (int i = 0; i < 500; ++i) {
@@ -122,12 +185,41 @@ TEST(CompactTerrainTest, TellsThePluginsItsStoredPiecesAndItsFields) {
   }
 }
 
+// Case: a compact mesh as a plugin sees it: piece first + k is triangle k
+// (wound outward) over its prism, each position once.
+TEST(CompactTerrainTest, TellsThePluginsItsMeshes) {
+  const Terrain compact = mixed(true);
+  std::optional<ConvexPolyhedron> scratch;
+  const std::size_t expected_vertices[2] = {11 * 13, 8};  // the sheet's copies welded away
+  for (std::size_t k = 2; k < 4; ++k) {
+    const Terrain::CompactField part = compact.compactField(k);
+    EXPECT_EQ(part.field, nullptr);
+    ASSERT_NE(part.mesh, nullptr);
+    EXPECT_EQ(part.count, static_cast<PieceId>(part.mesh->triangles.size()));
+    EXPECT_EQ(part.mesh->vertices.size(), expected_vertices[k - 2]);
+    EXPECT_EQ(part.thickness, k == 2 ? 0.3 : 0.05);
+    for (PieceId i = 0; i < part.count; ++i) {
+      const auto& t = part.mesh->triangles[i];
+      const Eigen::Vector3d& a = part.mesh->vertices[t[0]];
+      const Eigen::Vector3d& b = part.mesh->vertices[t[1]];
+      const Eigen::Vector3d& c = part.mesh->vertices[t[2]];
+      const ConvexPolyhedron& p = compact.piece(part.first + i, scratch);
+      const Eigen::Vector3d n = (b - a).cross(c - a).normalized();
+      for (const Eigen::Vector3d& v : {a, b, c}) {
+        EXPECT_LE(testing::outside(p, v), 1e-12);
+        // Outward: the corner is on the prism's top, nothing above it.
+        EXPECT_GT(testing::outside(p, v + 1e-3 * n), 0.5e-3);
+      }
+    }
+  }
+}
+
 TEST(CompactTerrainTest, FindsTheSameCandidatesForAnyBox) {
   const Terrain stored = mixed(false), compact = mixed(true);
   std::mt19937 gen(5);
   std::vector<PieceId> a, b;
   for (int trial = 0; trial < 3000; ++trial) {
-    const Eigen::Vector3d c(uniform(gen, -21, 7), uniform(gen, -3, 3), uniform(gen, -0.7, 0.4));
+    const Eigen::Vector3d c(uniform(gen, -21, 9.5), uniform(gen, -3, 3), uniform(gen, -0.7, 0.4));
     const Eigen::Vector3d half = Eigen::Vector3d::Constant(uniform(gen, 0.01, 0.6));
     a.clear();
     b.clear();
@@ -139,14 +231,47 @@ TEST(CompactTerrainTest, FindsTheSameCandidatesForAnyBox) {
   }
 }
 
+// Case: boxes that touch a mesh piece's box exactly at one face, or miss it
+// by one double ulp: below the single-precision boxes' resolution, where
+// only the exact box decides.
+TEST(CompactTerrainTest, DecidesBoxesGrazingAMeshPieceAsItsExactBox) {
+  const Terrain stored = mixed(false), compact = mixed(true);
+  std::vector<PieceId> a, b;
+  int grazes = 0;
+  for (std::size_t part = 2; part < 4; ++part) {
+    const Terrain::CompactField mesh = compact.compactField(part);
+    for (PieceId id = mesh.first; id < mesh.first + mesh.count; id += 3) {
+      const Aabb piece = stored.piece(id).bounds();
+      for (int axis = 0; axis < 3; ++axis) {
+        for (const bool miss : {false, true}) {
+          Aabb box{piece.center().array() - 0.01, piece.center().array() + 0.01};
+          box.min[axis] = miss ? std::nextafter(piece.max[axis], 1e300) : piece.max[axis];
+          box.max[axis] = box.min[axis] + 0.01;
+          a.clear();
+          b.clear();
+          stored.overlapping(box, a);
+          compact.overlapping(box, b);
+          std::sort(a.begin(), a.end());
+          std::sort(b.begin(), b.end());
+          ASSERT_EQ(b, a) << "piece " << id << ", axis " << axis << (miss ? ", one ulp beyond" : ", touching");
+          grazes += std::count(a.begin(), a.end(), id) == (miss ? 0 : 1);
+        }
+      }
+    }
+  }
+  EXPECT_GT(grazes, 300);  // each box did graze its piece as meant
+}
+
 TEST(CompactTerrainTest, AWheelDrivenOverItMeetsTheSameContactsBitForBit) {
   const Terrain stored = mixed(false), compact = mixed(true);
   const WheelGeometry wheel{.free_radius = 0.19, .tread_width = 0.12};
   WheelContactFinder on_stored, on_compact;
-  std::size_t contacts = 0, seams = 0;
-  // Across field A, up the ledge's face, over field B and the rock: 1 mm
-  // steps, the centre bobbing so that it sinks 0-30 mm into the relief.
-  for (int k = 0; k < 9000; ++k) {
+  std::size_t contacts = 0, seams = 0, on_meshes = 0;
+  const PieceId first_mesh_piece = compact.compactField(2).first;
+  // Across field A, up the ledge's face, over field B, the rock, the mesh
+  // sheet and the mesh rock: 1 mm steps, the centre bobbing so that it
+  // sinks 0-30 mm into the relief.
+  for (int k = 0; k < 10700; ++k) {
     const double x = -1.8 + 0.001 * k;
     const WheelPose pose{.center = {x, 0.1 * std::sin(0.7 * x), 0.19 - 0.015 * (1.0 + std::sin(9.0 * x))},
                          .axle = {0.05, 1.0, 0.02}};
@@ -162,12 +287,14 @@ TEST(CompactTerrainTest, AWheelDrivenOverItMeetsTheSameContactsBitForBit) {
       EXPECT_EQ(b[i].deflection, a[i].deflection);
       EXPECT_EQ(b[i].load_share, a[i].load_share);
       seams += a[i].load_share < 1.0;
+      on_meshes += a[i].piece >= first_mesh_piece;
     }
     contacts += a.size();
     if (::testing::Test::HasFailure()) FAIL() << "step " << k;
   }
-  EXPECT_GT(contacts, 7000u);  // on the ground most of the way (measured: 8413 contacts in 9000 steps)
-  EXPECT_GT(seams, 0u);        // and the seam rule had creases to share
+  EXPECT_GT(contacts, 8000u);   // on the ground most of the way
+  EXPECT_GT(seams, 0u);         // and the seam rule had creases to share
+  EXPECT_GT(on_meshes, 1500u);  // the sheet and the rock carried it for their 2 m
 }
 
 TEST(CompactTerrainTest, RefusesAnUnregisteredMaterialAndABadField) {

@@ -160,6 +160,34 @@ TEST_F(TerrainFileTest, ACompactHeightfieldHasTheStoredOnesPieces) {
               HasSubstr(at(8, 14) + "pieces[1] (heightfield): storage: 'packed' (expected prisms or compact)"));
 }
 
+// A mesh takes the same storage key: its prisms formed from its vertices
+// and triangles, the same pieces as stored.
+TEST_F(TerrainFileTest, ACompactMeshHasTheStoredOnesPieces) {
+  write("hill.obj", "v 0 0 0\nv 1 0 0.1\nv 1 1 0.3\nv 0 1 0.2\nv 2 0.5 0\nf 1 2 3\nf 1 3 4\nf 2 5 3\n");
+  const std::string mesh = std::string(kMaterials) +
+                           "pieces:\n"
+                           "  - {type: box, size: [1, 1, 1], translation: [-5, 0, 0]}\n"
+                           "  - type: mesh\n"
+                           "    file: hill.obj\n"
+                           "    thickness: 0.2\n";
+  const Terrain stored = loadTerrain(write("stored.yaml", mesh));
+  const Terrain compact = loadTerrain(write("compact.yaml", mesh + "    storage: compact\n"));
+  ASSERT_EQ(compact.pieceCount(), 4u);
+  ASSERT_EQ(compact.pieceCount(), stored.pieceCount());
+  ASSERT_EQ(compact.compactFieldCount(), 1u);
+  EXPECT_NE(compact.compactField(0).mesh, nullptr);
+  std::optional<ConvexPolyhedron> scratch;
+  for (PieceId id = 0; id < static_cast<PieceId>(stored.pieceCount()); ++id) {
+    EXPECT_EQ(compact.isFormed(id), id > 0);
+    const ConvexPolyhedron& p = compact.piece(id, scratch);
+    EXPECT_EQ(p.bounds().min, stored.piece(id).bounds().min);
+    EXPECT_EQ(p.bounds().max, stored.piece(id).bounds().max);
+    EXPECT_EQ(p.faceOffset(0), stored.piece(id).faceOffset(0));
+  }
+  EXPECT_THAT(loadError(mesh + "    storage: [compact]\n"),
+              HasSubstr(at(8, 14) + "pieces[1] (mesh): storage: expected a string"));
+}
+
 // cell_materials: one material name per cell, north row first as the
 // heights; the piece needs no 'material' then. Bad rows and names are
 // named at their line.

@@ -6,6 +6,7 @@
 #include <span>
 
 #include "wtc/heightfield.hpp"
+#include "wtc/triangle_mesh.hpp"
 
 namespace wtc::bullet {
 namespace {
@@ -64,6 +65,23 @@ std::unique_ptr<btHeightfieldTerrainShape> makeFieldShape(const Heightfield& f, 
   return shape;
 }
 
+// A compact mesh as Bullet's triangle-mesh shape over the mesh's own
+// vertices and triangles (Bullet copies nothing: btScalar is double, the
+// indices 32-bit, the strides those of Eigen::Vector3d and std::array).
+// Its triangles keep the mesh's order, so Bullet's triangle index is the
+// piece's offset in the part.
+std::unique_ptr<btBvhTriangleMeshShape> makeMeshShape(const TriangleMesh& m,
+                                                      std::unique_ptr<btTriangleIndexVertexArray>& arrays) {
+  static_assert(sizeof(btScalar) == sizeof(double) && sizeof(Eigen::Vector3d) == 3 * sizeof(double));
+  static_assert(sizeof(m.triangles[0]) == 3 * sizeof(int));
+  arrays = std::make_unique<btTriangleIndexVertexArray>(
+      static_cast<int>(m.triangles.size()), const_cast<int*>(m.triangles.front().data()), 3 * sizeof(int),
+      static_cast<int>(m.vertices.size()), const_cast<btScalar*>(m.vertices.front().data()), sizeof(Eigen::Vector3d));
+  auto shape = std::make_unique<btBvhTriangleMeshShape>(arrays.get(), /*useQuantizedAabbCompression=*/true);
+  shape->setMargin(kTerrainMarginM);
+  return shape;
+}
+
 }  // namespace
 
 TerrainObject::TerrainObject(const Terrain& terrain) : terrain_(terrain) {
@@ -105,8 +123,13 @@ TerrainObject::TerrainObject(const Terrain& terrain) : terrain_(terrain) {
     }
   }
   for (int k = 0; k < field_count; ++k) {
-    btTransform placement;
-    fields_.push_back(makeFieldShape(*terrain.compactField(k).field, placement));
+    const Terrain::CompactField part = terrain.compactField(k);
+    btTransform placement = btTransform::getIdentity();
+    if (part.field != nullptr) {
+      fields_.push_back(makeFieldShape(*part.field, placement));
+    } else {
+      fields_.push_back(makeMeshShape(*part.mesh, mesh_arrays_.emplace_back()));
+    }
     fields_.back()->setUserIndex(k);
     compound_->addChildShape(placement, fields_.back().get());
   }
@@ -117,12 +140,14 @@ TerrainObject::TerrainObject(const Terrain& terrain) : terrain_(terrain) {
 PieceId TerrainObject::pieceOf(const btCollisionObjectWrapper& ground) const {
   const btCollisionShape* shape = ground.getCollisionShape();
   const btCollisionObjectWrapper* parent = ground.m_parent;
-  if (shape->getShapeType() != TRIANGLE_SHAPE_PROXYTYPE || parent == nullptr ||
-      parent->getCollisionShape()->getShapeType() != TERRAIN_SHAPE_PROXYTYPE) {
+  const int parent_type = parent != nullptr ? parent->getCollisionShape()->getShapeType() : -1;
+  if (shape->getShapeType() != TRIANGLE_SHAPE_PROXYTYPE ||
+      (parent_type != TERRAIN_SHAPE_PROXYTYPE && parent_type != TRIANGLE_MESH_SHAPE_PROXYTYPE)) {
     return shape->getUserIndex();  // a hull's piece id, or -1
   }
   const int k = parent->getCollisionShape()->getUserIndex();
   if (k < 0 || k >= static_cast<int>(terrain_.compactFieldCount())) return -1;
+  if (parent_type == TRIANGLE_MESH_SHAPE_PROXYTYPE) return terrain_.compactField(k).first + ground.m_index;
   // Bullet numbers a heightfield's triangles by part 2 column + (0 or 1)
   // and index row; with flipQuadEdges part 2c is (p00, p10, p11), WTC's
   // triangle 1, and part 2c + 1 is (p00, p11, p01), WTC's triangle 0.

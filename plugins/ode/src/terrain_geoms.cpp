@@ -6,6 +6,7 @@
 #include <span>
 
 #include "wtc/heightfield.hpp"
+#include "wtc/triangle_mesh.hpp"
 
 namespace wtc::ode {
 namespace {
@@ -48,7 +49,13 @@ TerrainGeoms::TerrainGeoms(const Terrain& terrain, dSpaceID parent, TerrainShape
     // did not finish building in 20 minutes).
     dSpaceClean(space_);
   }
-  for (std::size_t k = 0; k < terrain.compactFieldCount(); ++k) addField(k);
+  for (std::size_t k = 0; k < terrain.compactFieldCount(); ++k) {
+    if (terrain.compactField(k).field != nullptr) {
+      addField(k);
+    } else {
+      addMesh(k);
+    }
+  }
 }
 
 TerrainGeoms::~TerrainGeoms() {
@@ -72,8 +79,9 @@ PieceId TerrainGeoms::piece(dGeomID geom, const Eigen::Vector3d& point) const {
   if (dGeomIsSpace(geom) || dGeomGetSpace(geom) != space_) return -1;
   const auto data = static_cast<PieceId>(reinterpret_cast<std::intptr_t>(dGeomGetData(geom)));
   if (data >= 0) return data;
-  const Terrain::CompactField field = terrain_.compactField(static_cast<std::size_t>(-2 - data));
-  return pieceUnder({field.first, field.count}, *field.field, point.x(), point.y());
+  const Terrain::CompactField part = terrain_.compactField(static_cast<std::size_t>(-2 - data));
+  if (part.field != nullptr) return pieceUnder({part.first, part.count}, *part.field, point.x(), point.y());
+  return terrain_.nearestPiece(point, part.first, part.count, kMeshContactReachM);
 }
 
 namespace {
@@ -87,6 +95,26 @@ dReal fieldHeight(void* field, int x, int z) {
 }
 
 }  // namespace
+
+void TerrainGeoms::addMesh(std::size_t k) {
+  const TriangleMesh& m = *terrain_.compactField(k).mesh;
+  static_assert(sizeof(Eigen::Vector3d) == 3 * sizeof(dReal) && sizeof(m.triangles[0]) == 3 * sizeof(dTriIndex));
+  // ODE reads the mesh's own arrays (its indices are unsigned 32-bit, the
+  // mesh's signed and non-negative); triangle i is the part's piece i.
+  const dTriMeshDataID data = dGeomTriMeshDataCreate();
+  dGeomTriMeshDataBuildDouble(data, m.vertices.front().data(), sizeof(Eigen::Vector3d),
+                              static_cast<int>(m.vertices.size()),
+                              reinterpret_cast<const dTriIndex*>(m.triangles.front().data()),
+                              static_cast<int>(3 * m.triangles.size()), sizeof(m.triangles[0]));
+  // As addTriMesh: face angles, without which ODE's convex-trimesh collider aborts.
+  dGeomTriMeshDataPreprocess2(
+      data, (1U << dTRIDATAPREPROCESS_BUILD_CONCAVE_EDGES) | (1U << dTRIDATAPREPROCESS_BUILD_FACE_ANGLES), nullptr);
+  meshes_.push_back(data);
+  const dGeomID geom = dCreateTriMesh(space_, data, nullptr, nullptr, nullptr);
+  dGeomSetData(geom, reinterpret_cast<void*>(static_cast<std::intptr_t>(-2 - static_cast<PieceId>(k))));
+  dSpaceClean(space_);
+  geoms_.push_back(geom);
+}
 
 void TerrainGeoms::addField(std::size_t k) {
   const Heightfield& f = *terrain_.compactField(k).field;

@@ -7,10 +7,12 @@
 // A compact heightfield (addCompactHeightfield) is one child: a
 // btHeightfieldTerrainShape that reads the field's own samples (Bullet
 // copies nothing), its cells split along the same diagonal p00-p11 as the
-// prisms (Bullet's flipQuadEdges), so a chassis meets the same surface.
-// Unlike the prisms it is a surface, not a solid: a body that has sunk
-// through it is not pushed back up. The wheels never see it: WTC answers
-// them from the terrain itself.
+// prisms (Bullet's flipQuadEdges), so a chassis meets the same surface. A
+// compact triangle mesh (MeshExtrusionOptions::compact) is one child too:
+// a btBvhTriangleMeshShape over the mesh's own vertices and triangles.
+// Unlike the prisms both are surfaces, not solids: a body that has sunk
+// through one is not pushed back up. The wheels never see them: WTC
+// answers them from the terrain itself.
 //
 // Large terrains are a two-level compound: pieces in groups of
 // kPiecesPerGroup, neighbours together (Morton order of their centres),
@@ -20,7 +22,9 @@
 #include <memory>
 #include <vector>
 
+#include <BulletCollision/CollisionShapes/btBvhTriangleMeshShape.h>
 #include <BulletCollision/CollisionShapes/btHeightfieldTerrainShape.h>
+#include <BulletCollision/CollisionShapes/btTriangleIndexVertexArray.h>
 #include <btBulletCollisionCommon.h>
 
 #include "wtc/terrain.hpp"
@@ -43,7 +47,8 @@ class TerrainObject {
   const Terrain& terrain() const { return terrain_; }
   /// The piece a contact of this object's met, from the wrapper a contact
   /// callback sees: a hull's user index is its piece id; a heightfield's
-  /// triangle is found from its part and index. -1 for anything else.
+  /// or mesh's triangle is found from its part and index. -1 for anything
+  /// else.
   PieceId pieceOf(const btCollisionObjectWrapper& ground) const;
   btCollisionObject& object() { return object_; }
   const btCollisionObject& object() const { return object_; }
@@ -51,7 +56,8 @@ class TerrainObject {
  private:
   const Terrain& terrain_;
   std::vector<std::unique_ptr<btConvexHullShape>> hulls_;
-  std::vector<std::unique_ptr<btHeightfieldTerrainShape>> fields_;  // one per compact field, in field order
+  std::vector<std::unique_ptr<btConcaveShape>> fields_;  // one per compact field or mesh, in their order
+  std::vector<std::unique_ptr<btTriangleIndexVertexArray>> mesh_arrays_;  // the compact meshes' views
   std::vector<std::unique_ptr<btCompoundShape>> groups_;
   std::unique_ptr<btCompoundShape> compound_;
   btCollisionObject object_;

@@ -31,6 +31,12 @@
 // prisms' diagonal p00-p11 in that orientation (tested). ODE treats the
 // ground below its surface, down to the field's base, as solid.
 //
+// A compact triangle mesh (MeshExtrusionOptions::compact) is one trimesh
+// geom over the mesh's own vertices and triangles (nothing copied): a
+// surface, not a solid. A contact on it is named by the piece nearest its
+// point (Terrain::nearestPiece): ODE's triangle index (dContactGeom::side1)
+// is lost when ODE merges contacts.
+//
 // The plugin tells terrain geoms by their space (contains()).
 #include <cstdint>
 #include <vector>
@@ -41,6 +47,11 @@
 #include "wtc/terrain.hpp"
 
 namespace wtc::ode {
+
+/// How far from a contact point on a compact mesh's geom its piece is
+/// looked for (m): ODE's contact points lie on the surface within the
+/// penetration depth, millimetres; 5 cm leaves room for a deep one.
+inline constexpr double kMeshContactReachM = 0.05;
 
 enum class TerrainShape {
   kTriMesh,  ///< A closed triangle mesh per piece (default: ODE's best-supported static shape).
@@ -69,7 +80,9 @@ class TerrainGeoms {
   /// and for a compact field's (use the overload with a point).
   PieceId piece(dGeomID geom) const;
   /// The piece a contact of `geom` at world point `point` met: piece(geom),
-  /// or for a compact field's geom the triangle under the point.
+  /// or for a compact field's geom the triangle under the point, for a
+  /// compact mesh's the piece nearest it (-1 if none within
+  /// kMeshContactReachM).
   PieceId piece(dGeomID geom, const Eigen::Vector3d& point) const;
 
  private:
@@ -81,9 +94,10 @@ class TerrainGeoms {
   TerrainShape shape_;
   dSpaceID space_ = nullptr;
   void addField(std::size_t k);
+  void addMesh(std::size_t k);
 
-  std::vector<dGeomID> geoms_;  // the stored pieces' (Terrain::pieces() order), then one per compact field
-  std::vector<dTriMeshDataID> meshes_;
+  std::vector<dGeomID> geoms_;  // the stored pieces' (Terrain::pieces() order), then one per compact field or mesh
+  std::vector<dTriMeshDataID> meshes_;      // the stored pieces' (kTriMesh), then the compact meshes'
   std::vector<dHeightfieldDataID> fields_;  // one per compact field
   // ODE keeps pointers into these (it copies nothing): one buffer per piece,
   // never resized once its geom exists.

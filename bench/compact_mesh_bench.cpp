@@ -1,0 +1,173 @@
+// wtc_bench_compact, the meshes: the bench field's surface as a triangle
+// mesh (bench_field.hpp fieldMesh: two triangles a cell), kept compact
+// (MeshExtrusionOptions::compact) against stored prisms (addTriangleMesh)
+// and Bullet's btBvhTriangleMeshShape over the same arrays. FCL's
+// BVHModel of these same triangles is Build/fcl and Contacts/fcl
+// (heightfield_engines_bench.cpp).
+//
+// Runs (<cells> as in compact_heightfield_bench.cpp; 2 <cells> triangles):
+//   MeshBuild/compact/<cells>  addTriangleMesh (compact: welding, the
+//       degenerate test, the index) and Terrain::build; counters
+//       bytes_per_triangle (all in), index_bytes_per_triangle (its part).
+//   MeshBuild/prisms/<cells>   the same, stored (up to 10^6 cells).
+//   MeshBuild/bullet/<cells>   Bullet's quantized-BVH mesh shape over the
+//       compact mesh's own arrays; counter bytes_per_triangle: the arrays
+//       and Bullet's nodes.
+//   MeshContacts/<store>/<cells>/<path>  the per-wheel contact step
+//       (WheelContactFinder), rolling or cold, as Contacts/ for fields.
+//   MeshContacts/bullet/<cells>/<path>   one collision pass of a cylinder
+//       wheel against the mesh shape (as Contacts/bullet).
+#include <benchmark/benchmark.h>
+
+#include <BulletCollision/CollisionShapes/btBvhTriangleMeshShape.h>
+#include <BulletCollision/CollisionShapes/btTriangleIndexVertexArray.h>
+#include <btBulletCollisionCommon.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <wtc/terrain.hpp>
+#include <wtc/triangle_mesh.hpp>
+#include <wtc/wheel_contact.hpp>
+
+#include "bench_field.hpp"
+
+namespace {
+
+using namespace wtc::bench;
+
+constexpr double kWidthM = 0.12;     // the wheel's width (m)
+constexpr double kThicknessM = 0.4;  // extrusion depth (m), the fields' base depth
+
+wtc::Terrain meshTerrain(const wtc::TriangleMesh& mesh, bool compact) {
+  wtc::TerrainBuilder builder;
+  wtc::addTriangleMesh(builder, mesh, builder.addMaterial({}), {.thickness = kThicknessM, .compact = compact});
+  return std::move(builder).build();
+}
+
+void buildMesh(benchmark::State& state, bool compact) {
+  const wtc::TriangleMesh mesh = fieldMesh(makeField(state.range(0)));
+  double bytes = 0.0, index = 0.0;
+  for (auto _ : state) {
+    const wtc::Terrain terrain = meshTerrain(mesh, compact);
+    bytes = static_cast<double>(terrain.pieceMemoryBytes() + terrain.indexMemoryBytes());
+    index = static_cast<double>(terrain.indexMemoryBytes());
+  }
+  const auto triangles = static_cast<double>(mesh.triangles.size());
+  state.counters["bytes_per_triangle"] = bytes / triangles;
+  state.counters["index_bytes_per_triangle"] = index / triangles;
+}
+
+// The compact mesh's arrays as Bullet's mesh shape (wtc::bullet's
+// TerrainObject does the same).
+struct BulletMesh {
+  explicit BulletMesh(const wtc::TriangleMesh& m)
+      : arrays(static_cast<int>(m.triangles.size()), const_cast<int*>(m.triangles.front().data()), 3 * sizeof(int),
+               static_cast<int>(m.vertices.size()), const_cast<btScalar*>(m.vertices.front().data()),
+               sizeof(Eigen::Vector3d)),
+        shape(&arrays, /*useQuantizedAabbCompression=*/true) {
+    object.setCollisionShape(&shape);
+  }
+  std::size_t bytes(const wtc::TriangleMesh& m) {  // Bullet's getters are not const
+    btOptimizedBvh* bvh = shape.getOptimizedBvh();
+    return m.vertices.size() * sizeof(Eigen::Vector3d) + m.triangles.size() * sizeof(m.triangles[0]) + sizeof(*this) +
+           bvh->getQuantizedNodeArray().size() * sizeof(btQuantizedBvhNode) +
+           bvh->getSubtreeInfoArray().size() * sizeof(btBvhSubtreeInfo);
+  }
+  btTriangleIndexVertexArray arrays;
+  btBvhTriangleMeshShape shape;
+  btCollisionObject object;
+};
+
+void buildBulletMesh(benchmark::State& state) {
+  const wtc::TriangleMesh mesh = fieldMesh(makeField(state.range(0)));
+  std::size_t bytes = 0;
+  for (auto _ : state) {
+    const auto bullet = std::make_unique<BulletMesh>(mesh);
+    bytes = bullet->bytes(mesh);
+  }
+  state.counters["bytes_per_triangle"] = static_cast<double>(bytes) / static_cast<double>(mesh.triangles.size());
+}
+
+void meshContacts(benchmark::State& state, bool compact, bool cold) {
+  const wtc::Heightfield field = makeField(state.range(0));
+  const std::vector<wtc::Aabb> boxes = wheelBoxes(field, cold);
+  const wtc::Terrain terrain = meshTerrain(fieldMesh(field), compact);
+  const wtc::WheelGeometry wheel{kRadius, kWidthM};
+  wtc::WheelContactFinder finder;
+  std::size_t i = 0;
+  long found = 0, queries = 0;
+  for (auto _ : state) {
+    const wtc::WheelPose pose{boxes[i].center(), Eigen::Vector3d::UnitY()};
+    i = i + 1 == boxes.size() ? 0 : i + 1;
+    found += static_cast<long>(finder.find(terrain, wheel, pose).size());
+    ++queries;
+  }
+  state.counters["contacts_per_query"] = static_cast<double>(found) / static_cast<double>(queries);
+}
+
+void bulletMeshContacts(benchmark::State& state, bool cold) {
+  const wtc::Heightfield field = makeField(state.range(0));
+  const std::vector<wtc::Aabb> boxes = wheelBoxes(field, cold);
+  const wtc::TriangleMesh mesh = fieldMesh(field);
+  BulletMesh ground(mesh);
+  btCylinderShape cylinder(btVector3(kRadius, 0.5 * kWidthM, kRadius));  // axis y
+  btCollisionObject wheel;
+  wheel.setCollisionShape(&cylinder);
+  btDefaultCollisionConfiguration config;
+  btCollisionDispatcher dispatcher(&config);
+  btDbvtBroadphase broadphase;
+  btCollisionWorld world(&dispatcher, &broadphase, &config);
+  world.addCollisionObject(&ground.object, btBroadphaseProxy::StaticFilter, btBroadphaseProxy::AllFilter);
+  world.addCollisionObject(&wheel);
+  std::size_t i = 0;
+  long found = 0, queries = 0;
+  for (auto _ : state) {
+    const Eigen::Vector3d c = boxes[i].center();
+    wheel.setWorldTransform(btTransform(btQuaternion::getIdentity(), btVector3(c.x(), c.y(), c.z())));
+    i = i + 1 == boxes.size() ? 0 : i + 1;
+    world.performDiscreteCollisionDetection();
+    for (int m = 0; m < dispatcher.getNumManifolds(); ++m)
+      found += dispatcher.getManifoldByIndexInternal(m)->getNumContacts();
+    ++queries;
+  }
+  state.counters["contacts_per_query"] = static_cast<double>(found) / static_cast<double>(queries);
+  world.removeCollisionObject(&wheel);
+  world.removeCollisionObject(&ground.object);
+}
+
+const bool kRegistered = [] {
+  for (long cells : {10'000L, 100'000L, 1'000'000L, 10'000'000L}) {
+    const std::string tail = join("/", std::to_string(cells));
+    const bool stored_too = cells <= 1'000'000L;  // 10^7 cells stored: about 52 GB
+    benchmark::RegisterBenchmark(join("MeshBuild/compact", tail).c_str(), buildMesh, true)
+        ->Arg(cells)
+        ->Unit(benchmark::kMillisecond)
+        ->Iterations(1);
+    if (stored_too) {
+      benchmark::RegisterBenchmark(join("MeshBuild/prisms", tail).c_str(), buildMesh, false)
+          ->Arg(cells)
+          ->Unit(benchmark::kMillisecond)
+          ->Iterations(1);
+    }
+    benchmark::RegisterBenchmark(join("MeshBuild/bullet", tail).c_str(), buildBulletMesh)
+        ->Arg(cells)
+        ->Unit(benchmark::kMillisecond)
+        ->Iterations(1);
+    for (bool cold : {false, true}) {
+      const std::string path = cold ? "/cold" : "/rolling";
+      benchmark::RegisterBenchmark(join("MeshContacts/compact", tail + path).c_str(), meshContacts, true, cold)
+          ->Arg(cells);
+      if (stored_too) {
+        benchmark::RegisterBenchmark(join("MeshContacts/prisms", tail + path).c_str(), meshContacts, false, cold)
+            ->Arg(cells);
+      }
+      benchmark::RegisterBenchmark(join("MeshContacts/bullet", tail + path).c_str(), bulletMeshContacts, cold)
+          ->Arg(cells);
+    }
+  }
+  return true;
+}();
+
+}  // namespace

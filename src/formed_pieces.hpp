@@ -1,0 +1,56 @@
+#pragma once
+// Pieces formed on demand (internal to wtc::core): what a compact
+// heightfield (compact_heightfield.hpp) and a compact triangle mesh
+// (compact_mesh.hpp) have in common for the terrain. Each keeps its own
+// geometry (samples, or vertices and triangles) and its own index, and
+// forms piece k bit for bit as the matching builder (addHeightfield,
+// addTriangleMesh) would have stored it.
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "wtc/aabb.hpp"
+#include "wtc/convex_polyhedron.hpp"
+#include "wtc/terrain.hpp"
+#include "wtc/terrain_primitives.hpp"
+
+namespace wtc {
+struct Heightfield;
+struct TriangleMesh;
+}  // namespace wtc
+
+namespace wtc::detail {
+
+class FormedPieces {
+ public:
+  virtual ~FormedPieces() = default;
+  virtual std::size_t pieceCount() const = 0;
+  /// Piece k, bit for bit the stored builder's.
+  virtual ConvexPolyhedron piece(std::size_t k) const = 0;
+  /// piece(k).bounds(), without forming the piece.
+  virtual Aabb pieceBounds(std::size_t k) const = 0;
+  /// Appends first + k for every piece k whose bounds overlap `box`, exactly
+  /// as Aabb::overlaps decides on pieceBounds(k).
+  virtual void overlapping(const Aabb& box, PieceId first, std::vector<PieceId>& out) const = 0;
+  /// The union of all pieces' bounds.
+  virtual const Aabb& bounds() const = 0;
+  /// The geometry (bytes).
+  virtual std::size_t memoryBytes() const = 0;
+  /// The index (bytes): 0 for a grid, which is its own index.
+  virtual std::size_t indexMemoryBytes() const { return 0; }
+  /// Piece k's material, where `whole` is the one given for all of them.
+  virtual MaterialId materialId(std::size_t /*k*/, MaterialId whole) const { return whole; }
+  /// The geometry, for an engine plugin: one of the two is not null.
+  virtual const Heightfield* heightfield() const { return nullptr; }
+  virtual const TriangleMesh* mesh() const { return nullptr; }
+  /// A mesh's extrusion depth (m); 0 for a heightfield.
+  virtual double thickness() const { return 0.0; }
+};
+
+/// Gives `pieces` the next ids of `builder`; `where` names the caller in
+/// the error thrown when the ids would pass PieceId's range.
+PieceRange addFormedPieces(TerrainBuilder& builder, std::shared_ptr<const FormedPieces> pieces, MaterialId material,
+                           const std::string& where);
+
+}  // namespace wtc::detail
