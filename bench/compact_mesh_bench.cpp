@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include <wtc/bullet/terrain_object.hpp>
 #include <wtc/terrain.hpp>
 #include <wtc/triangle_mesh.hpp>
 #include <wtc/wheel_contact.hpp>
@@ -59,14 +60,11 @@ void buildMesh(benchmark::State& state, bool compact) {
   state.counters["index_bytes_per_triangle"] = index / triangles;
 }
 
-// The compact mesh's arrays as Bullet's mesh shape (wtc::bullet's
-// TerrainObject does the same).
+// The compact mesh's arrays as Bullet's mesh shape, as wtc::bullet's
+// TerrainObject makes it (in parts Bullet's quantized tree can index).
 struct BulletMesh {
   explicit BulletMesh(const wtc::TriangleMesh& m)
-      : arrays(static_cast<int>(m.triangles.size()), const_cast<int*>(m.triangles.front().data()), 3 * sizeof(int),
-               static_cast<int>(m.vertices.size()), const_cast<btScalar*>(m.vertices.front().data()),
-               sizeof(Eigen::Vector3d)),
-        shape(&arrays, /*useQuantizedAabbCompression=*/true) {
+      : arrays(wtc::bullet::makeMeshArrays(m)), shape(arrays.get(), /*useQuantizedAabbCompression=*/true) {
     object.setCollisionShape(&shape);
   }
   std::size_t bytes(const wtc::TriangleMesh& m) {  // Bullet's getters are not const
@@ -75,7 +73,7 @@ struct BulletMesh {
            bvh->getQuantizedNodeArray().size() * sizeof(btQuantizedBvhNode) +
            bvh->getSubtreeInfoArray().size() * sizeof(btBvhSubtreeInfo);
   }
-  btTriangleIndexVertexArray arrays;
+  std::unique_ptr<btTriangleIndexVertexArray> arrays;
   btBvhTriangleMeshShape shape;
   btCollisionObject object;
 };

@@ -79,12 +79,16 @@ Aabb CompactTriangleMesh::pieceBounds(std::size_t k) const {
 void CompactTriangleMesh::overlapping(const Aabb& box, PieceId first, std::vector<PieceId>& out) const {
   tree_.visit(box, [&](std::int32_t position) {
     const FloatBox& f = boxes_[position];
+    // The exact box lies inside the float one: no overlap with it, none.
+    if (f.max[0] < box.min[0] || box.max[0] < f.min[0] || f.max[1] < box.min[1] || box.max[1] < f.min[1] ||
+        f.max[2] < box.min[2] || box.max[2] < f.min[2]) {
+      return;
+    }
+    // The exact box reaches to within rounding() of each float edge; NaN
+    // (an infinite edge) leaves it unsure.
     bool sure = true;
     for (int i = 0; i < 3; ++i) {
       const double lo = f.min[i], hi = f.max[i];
-      if (hi < box.min[i] || box.max[i] < lo) return;  // the exact box lies inside [lo, hi]
-      // The exact box reaches to within rounding of each float edge; NaN
-      // (an infinite edge) leaves it unsure.
       sure = sure && hi - rounding(hi) >= box.min[i] && lo + rounding(lo) <= box.max[i];
     }
     const auto k = static_cast<std::size_t>(order_[position]);

@@ -64,12 +64,11 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
   // heightfield's few hundred candidates quadratic.
   std::sort(candidates_.begin(), candidates_.end());
   auto previous = caches_.begin();
-  // A compact field's pieces are formed once and kept while they stay
+  // A compact part's pieces are formed once and kept while they stay
   // candidates (the same merge walk): a rolling wheel meets new cells every
-  // few hundred steps. Reserved, so that the pointers below stay valid.
+  // few hundred steps.
   auto previous_formed = formed_.begin();
   next_formed_.clear();
-  next_formed_.reserve(candidates_.size());
   candidate_pieces_.clear();
   for (const PieceId id : candidates_) {
     QueryCache cache;
@@ -92,9 +91,19 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
         }
         std::optional<ConvexPolyhedron> scratch;
         terrain.piece(id, scratch);
-        next_formed_.emplace_back(id, std::move(*scratch));
+        std::shared_ptr<ConvexPolyhedron> formed;
+        if (!spare_.empty()) {
+          formed = std::move(spare_.back());
+          spare_.pop_back();
+        }
+        if (formed && formed.use_count() == 1) {
+          *formed = std::move(*scratch);
+        } else {
+          formed = std::make_shared<ConvexPolyhedron>(std::move(*scratch));
+        }
+        next_formed_.emplace_back(id, std::move(formed));
       }
-      piece = &next_formed_.back().second;
+      piece = next_formed_.back().second.get();
     } else {
       piece = &terrain.piece(id);
     }
@@ -119,7 +128,10 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
   }
   std::swap(caches_, next_caches_);
   std::swap(exits_, next_exits_);
-  std::swap(formed_, next_formed_);  // swaps the buffers: candidate_pieces_ still point into them
+  for (auto& [id, dropped] : formed_) {
+    if (dropped) spare_.push_back(std::move(dropped));
+  }
+  std::swap(formed_, next_formed_);
   previous_centre_ = o;
   has_previous_ = true;
 

@@ -29,6 +29,7 @@
 // of the ground. See docs/wheel-contact.md for why this is exact on flat
 // seams and ridges.
 #include <cmath>
+#include <memory>
 #include <span>
 #include <string>
 #include <utility>
@@ -119,9 +120,14 @@ class WheelContactFinder {
   std::vector<std::pair<PieceId, QueryCache>> caches_, next_caches_;
   std::vector<double> shares_;
   // This call's candidates' pieces (candidates_ order), and the pieces
-  // formed for them (compact fields'), kept for the next call.
+  // formed for them (compact parts'), kept for the next call. Held by
+  // pointer: a kept prism moves from call to call as one pointer, not as
+  // its dozen buffers; the prisms dropped wait in spare_ to be formed into
+  // again. Shared, so that a copied finder shares its formed prisms (never
+  // changed while shared: only a spare held by no one else is reused).
   std::vector<const ConvexPolyhedron*> candidate_pieces_;
-  std::vector<std::pair<PieceId, ConvexPolyhedron>> formed_, next_formed_;
+  std::vector<std::pair<PieceId, std::shared_ptr<ConvexPolyhedron>>> formed_, next_formed_;
+  std::vector<std::shared_ptr<ConvexPolyhedron>> spare_;
   // The centre of the last call, and for each piece the centre was inside
   // then, the outward normal of the face it was pushed out by.
   Eigen::Vector3d previous_centre_{Eigen::Vector3d::Zero()};

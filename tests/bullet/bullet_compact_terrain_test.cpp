@@ -172,6 +172,61 @@ TEST_P(BulletCompactTerrainTest, AWheelRollsBitForBitAsOnTheStoredPrisms) {
   EXPECT_GT(path[0].back().x(), 0.0);  // it rolled over the field
 }
 
+// Case: a compact mesh of more triangles than Bullet's quantized tree can
+// number in one part (2^21): TerrainObject gives it to Bullet in parts
+// (kMeshPartTriangles), and a contact on a triangle past the first part
+// names its prism. Before the parts, Bullet crashed on such a mesh.
+TEST(BulletCompactMeshTest, AMeshOfMoreTrianglesThanOneBulletPartCollidesAndNamesItsPrisms) {
+  testing::RandomGrid grid{.spacing_x = 0.1, .spacing_y = 0.1, .origin = {0.0, 0.0, 0.0}, .base_depth = 0.2};
+  const Heightfield field = testing::randomHeightfield(1001, 1101, 0.01, 5, grid);  // 2.2e6 triangles
+  TerrainBuilder builder;
+  const PieceRange range = addTriangleMesh(builder, testing::fieldAsMesh(field), builder.addMaterial({}),
+                                           {.thickness = 0.2, .compact = true})
+                               .pieces;
+  ASSERT_GT(range.count, bullet::kMeshPartTriangles);
+  const Terrain terrain = std::move(builder).build();
+  BulletWorld w(terrain, ContactMode::kForce);
+  btSphereShape ball(0.05);
+  btCollisionObject probe;
+  probe.setCollisionShape(&ball);
+  w.world.addCollisionObject(&probe);
+  struct Check : btCollisionWorld::ContactResultCallback {
+    const bullet::TerrainObject* object = nullptr;
+    const Terrain* terrain = nullptr;
+    PieceId past_first_part = 0;
+    int contacts = 0, far = 0;
+    btScalar addSingleResult(btManifoldPoint& point, const btCollisionObjectWrapper* a, int, int,
+                             const btCollisionObjectWrapper* b, int, int) override {
+      const bool a_is_ground = a->getCollisionObject() == &object->object();
+      const PieceId id = object->pieceOf(a_is_ground ? *a : *b);
+      const btVector3 at = a_is_ground ? point.getPositionWorldOnA() : point.getPositionWorldOnB();
+      EXPECT_TRUE(id >= 0 && terrain->isFormed(id)) << "piece " << id;
+      if (id >= 0 && terrain->isFormed(id)) {
+        std::optional<ConvexPolyhedron> scratch;
+        EXPECT_LE(testing::outside(terrain->piece(id, scratch), Eigen::Vector3d(at.x(), at.y(), at.z())), 1e-9)
+            << "piece " << id;
+      }
+      ++contacts;
+      far += id >= past_first_part;
+      return 0;
+    }
+  } check;
+  check.object = &w.plugin->terrainShapes();
+  check.terrain = &terrain;
+  check.past_first_part = range.first + bullet::kMeshPartTriangles;
+  std::mt19937 gen(13);
+  for (int k = 0; k < 100; ++k) {
+    // The last rows of cells: triangles 2^21 and beyond.
+    const double x = 0.5 + (gen() / 4294967296.0) * 109.0, y = 96.0 + (gen() / 4294967296.0) * 3.5;
+    probe.setWorldTransform(
+        btTransform(btQuaternion::getIdentity(), btVector3(x, y, *surfaceHeight(field, x, y) + 0.04)));
+    w.world.contactPairTest(&probe, &w.plugin->terrainObject(), check);
+  }
+  EXPECT_GE(check.contacts, 100);
+  EXPECT_EQ(check.far, check.contacts);
+  w.world.removeCollisionObject(&probe);
+}
+
 INSTANTIATE_TEST_SUITE_P(Parts, BulletCompactTerrainTest, ::testing::Bool(),
                          [](const ::testing::TestParamInfo<bool>& info) { return info.param ? "Mesh" : "Field"; });
 

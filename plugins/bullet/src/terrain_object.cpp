@@ -65,24 +65,36 @@ std::unique_ptr<btHeightfieldTerrainShape> makeFieldShape(const Heightfield& f, 
   return shape;
 }
 
-// A compact mesh as Bullet's triangle-mesh shape over the mesh's own
-// vertices and triangles (Bullet copies nothing: btScalar is double, the
-// indices 32-bit, the strides those of Eigen::Vector3d and std::array).
-// Its triangles keep the mesh's order, so Bullet's triangle index is the
-// piece's offset in the part.
+// A compact mesh as Bullet's triangle-mesh shape over its own arrays.
 std::unique_ptr<btBvhTriangleMeshShape> makeMeshShape(const TriangleMesh& m,
                                                       std::unique_ptr<btTriangleIndexVertexArray>& arrays) {
-  static_assert(sizeof(btScalar) == sizeof(double) && sizeof(Eigen::Vector3d) == 3 * sizeof(double));
-  static_assert(sizeof(m.triangles[0]) == 3 * sizeof(int));
-  arrays = std::make_unique<btTriangleIndexVertexArray>(
-      static_cast<int>(m.triangles.size()), const_cast<int*>(m.triangles.front().data()), 3 * sizeof(int),
-      static_cast<int>(m.vertices.size()), const_cast<btScalar*>(m.vertices.front().data()), sizeof(Eigen::Vector3d));
+  arrays = makeMeshArrays(m);
   auto shape = std::make_unique<btBvhTriangleMeshShape>(arrays.get(), /*useQuantizedAabbCompression=*/true);
   shape->setMargin(kTerrainMarginM);
   return shape;
 }
 
 }  // namespace
+
+std::unique_ptr<btTriangleIndexVertexArray> makeMeshArrays(const TriangleMesh& m) {
+  static_assert(sizeof(btScalar) == sizeof(double) && sizeof(Eigen::Vector3d) == 3 * sizeof(double));
+  static_assert(sizeof(m.triangles[0]) == 3 * sizeof(int));
+  auto arrays = std::make_unique<btTriangleIndexVertexArray>();
+  const auto count = static_cast<std::int64_t>(m.triangles.size());
+  for (std::int64_t first = 0; first < count; first += kMeshPartTriangles) {
+    btIndexedMesh part;
+    part.m_numTriangles = static_cast<int>(std::min<std::int64_t>(kMeshPartTriangles, count - first));
+    part.m_triangleIndexBase = reinterpret_cast<const unsigned char*>(m.triangles[first].data());
+    part.m_triangleIndexStride = sizeof(m.triangles[0]);
+    part.m_indexType = PHY_INTEGER;
+    part.m_numVertices = static_cast<int>(m.vertices.size());
+    part.m_vertexBase = reinterpret_cast<const unsigned char*>(m.vertices.front().data());
+    part.m_vertexStride = sizeof(Eigen::Vector3d);
+    part.m_vertexType = PHY_DOUBLE;
+    arrays->addIndexedMesh(part, PHY_INTEGER);
+  }
+  return arrays;
+}
 
 TerrainObject::TerrainObject(const Terrain& terrain) : terrain_(terrain) {
   const std::span<const ConvexPolyhedron> stored = terrain.pieces();
@@ -147,7 +159,9 @@ PieceId TerrainObject::pieceOf(const btCollisionObjectWrapper& ground) const {
   }
   const int k = parent->getCollisionShape()->getUserIndex();
   if (k < 0 || k >= static_cast<int>(terrain_.compactFieldCount())) return -1;
-  if (parent_type == TRIANGLE_MESH_SHAPE_PROXYTYPE) return terrain_.compactField(k).first + ground.m_index;
+  if (parent_type == TRIANGLE_MESH_SHAPE_PROXYTYPE) {
+    return terrain_.compactField(k).first + ground.m_partId * kMeshPartTriangles + ground.m_index;
+  }
   // Bullet numbers a heightfield's triangles by part 2 column + (0 or 1)
   // and index row; with flipQuadEdges part 2c is (p00, p10, p11), WTC's
   // triangle 1, and part 2c + 1 is (p00, p11, p01), WTC's triangle 0.

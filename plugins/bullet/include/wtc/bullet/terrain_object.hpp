@@ -28,6 +28,7 @@
 #include <btBulletCollisionCommon.h>
 
 #include "wtc/terrain.hpp"
+#include "wtc/triangle_mesh.hpp"
 
 namespace wtc::bullet {
 
@@ -37,6 +38,18 @@ inline constexpr btScalar kTerrainMarginM = 0.001;
 /// Pieces per group of a two-level terrain compound (count): about the
 /// square root of a large terrain's piece count.
 inline constexpr int kPiecesPerGroup = 64;
+
+/// Triangles per part of a compact mesh's Bullet shape (count): Bullet's
+/// quantized tree keeps a triangle's index in 21 bits and its part's in 10
+/// (btQuantizedBvh.h, MAX_NUM_PARTS_IN_BITS), so a part of more than 2^21
+/// triangles crashes Bullet (it did, at 2 10^7 triangles in one part).
+inline constexpr int kMeshPartTriangles = 1 << 21;
+
+/// A compact mesh's vertices and triangles as Bullet's mesh interface,
+/// without a copy (the mesh must outlive it): parts of kMeshPartTriangles
+/// triangles in order, so triangle t is part t / kMeshPartTriangles,
+/// index t % kMeshPartTriangles.
+std::unique_ptr<btTriangleIndexVertexArray> makeMeshArrays(const TriangleMesh& mesh);
 
 class TerrainObject {
  public:
