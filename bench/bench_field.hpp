@@ -8,9 +8,13 @@
 #include <string>
 #include <vector>
 
+#include <benchmark/benchmark.h>
+
 #include <wtc/aabb.hpp>
 #include <wtc/heightfield.hpp>
+#include <wtc/terrain.hpp>
 #include <wtc/triangle_mesh.hpp>
+#include <wtc/wheel_contact.hpp>
 
 namespace wtc::bench {
 
@@ -41,7 +45,8 @@ inline double cellsOf(const Heightfield& f) { return static_cast<double>(f.rows 
 // The field's surface as a triangle mesh (a scan turned into a mesh): its
 // samples, each cell split along p00-p11 as the prisms are.
 inline TriangleMesh fieldMesh(const Heightfield& f) {
-  TriangleMesh m{.name = "bench field"};
+  TriangleMesh m;
+  m.name = "bench field";
   m.vertices.reserve(f.heights.size());
   for (int r = 0; r < f.rows; ++r)
     for (int c = 0; c < f.cols; ++c) m.vertices.push_back(f.sample(r, c));
@@ -70,6 +75,25 @@ inline std::vector<Aabb> wheelBoxes(const Heightfield& f, bool cold) {
     boxes.push_back({centre - Eigen::Vector3d::Constant(kRadius), centre + Eigen::Vector3d::Constant(kRadius)});
   }
   return boxes;
+}
+
+inline constexpr double kWheelWidthM = 0.12;  // the wheel's width (m)
+
+// The timed loop of a contact-step benchmark: WTC's whole per-wheel step
+// (WheelContactFinder::find) at each box's centre in turn, axle along y;
+// counter contacts_per_query.
+inline void runContactSteps(benchmark::State& state, const Terrain& terrain, const std::vector<Aabb>& boxes) {
+  const WheelGeometry wheel{kRadius, kWheelWidthM};
+  WheelContactFinder finder;
+  std::size_t i = 0;
+  long found = 0, queries = 0;
+  for (auto _ : state) {
+    const WheelPose pose{boxes[i].center(), Eigen::Vector3d::UnitY()};
+    i = i + 1 == boxes.size() ? 0 : i + 1;
+    found += static_cast<long>(finder.find(terrain, wheel, pose).size());
+    ++queries;
+  }
+  state.counters["contacts_per_query"] = static_cast<double>(found) / static_cast<double>(queries);
 }
 
 // "a" + b, built by appending (GCC 12 warns, wrongly, on const char* + string&&).

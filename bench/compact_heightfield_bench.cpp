@@ -112,18 +112,7 @@ void contacts(benchmark::State& state, bool compact_store, bool cold) {
   } else {
     wtc::addHeightfield(builder, field, material);
   }
-  const wtc::Terrain terrain = std::move(builder).build();
-  const wtc::WheelGeometry wheel{kRadius, 0.12};
-  wtc::WheelContactFinder finder;
-  std::size_t i = 0;
-  long found = 0, queries = 0;
-  for (auto _ : state) {
-    const wtc::WheelPose pose{boxes[i].center(), Eigen::Vector3d::UnitY()};
-    i = i + 1 == boxes.size() ? 0 : i + 1;
-    found += static_cast<long>(finder.find(terrain, wheel, pose).size());
-    ++queries;
-  }
-  state.counters["contacts_per_query"] = static_cast<double>(found) / static_cast<double>(queries);
+  runContactSteps(state, std::move(builder).build(), boxes);
 }
 
 const bool kRegistered = [] {

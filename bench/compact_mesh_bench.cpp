@@ -33,12 +33,12 @@
 #include <wtc/wheel_contact.hpp>
 
 #include "bench_field.hpp"
+#include "bullet_cylinder.hpp"
 
 namespace {
 
 using namespace wtc::bench;
 
-constexpr double kWidthM = 0.12;     // the wheel's width (m)
 constexpr double kThicknessM = 0.4;  // extrusion depth (m), the fields' base depth
 
 wtc::Terrain meshTerrain(const wtc::TriangleMesh& mesh, bool compact) {
@@ -91,18 +91,7 @@ void buildBulletMesh(benchmark::State& state) {
 void meshContacts(benchmark::State& state, bool compact, bool cold) {
   const wtc::Heightfield field = makeField(state.range(0));
   const std::vector<wtc::Aabb> boxes = wheelBoxes(field, cold);
-  const wtc::Terrain terrain = meshTerrain(fieldMesh(field), compact);
-  const wtc::WheelGeometry wheel{kRadius, kWidthM};
-  wtc::WheelContactFinder finder;
-  std::size_t i = 0;
-  long found = 0, queries = 0;
-  for (auto _ : state) {
-    const wtc::WheelPose pose{boxes[i].center(), Eigen::Vector3d::UnitY()};
-    i = i + 1 == boxes.size() ? 0 : i + 1;
-    found += static_cast<long>(finder.find(terrain, wheel, pose).size());
-    ++queries;
-  }
-  state.counters["contacts_per_query"] = static_cast<double>(found) / static_cast<double>(queries);
+  runContactSteps(state, meshTerrain(fieldMesh(field), compact), boxes);
 }
 
 void bulletMeshContacts(benchmark::State& state, bool cold) {
@@ -110,29 +99,7 @@ void bulletMeshContacts(benchmark::State& state, bool cold) {
   const std::vector<wtc::Aabb> boxes = wheelBoxes(field, cold);
   const wtc::TriangleMesh mesh = fieldMesh(field);
   BulletMesh ground(mesh);
-  btCylinderShape cylinder(btVector3(kRadius, 0.5 * kWidthM, kRadius));  // axis y
-  btCollisionObject wheel;
-  wheel.setCollisionShape(&cylinder);
-  btDefaultCollisionConfiguration config;
-  btCollisionDispatcher dispatcher(&config);
-  btDbvtBroadphase broadphase;
-  btCollisionWorld world(&dispatcher, &broadphase, &config);
-  world.addCollisionObject(&ground.object, btBroadphaseProxy::StaticFilter, btBroadphaseProxy::AllFilter);
-  world.addCollisionObject(&wheel);
-  std::size_t i = 0;
-  long found = 0, queries = 0;
-  for (auto _ : state) {
-    const Eigen::Vector3d c = boxes[i].center();
-    wheel.setWorldTransform(btTransform(btQuaternion::getIdentity(), btVector3(c.x(), c.y(), c.z())));
-    i = i + 1 == boxes.size() ? 0 : i + 1;
-    world.performDiscreteCollisionDetection();
-    for (int m = 0; m < dispatcher.getNumManifolds(); ++m)
-      found += dispatcher.getManifoldByIndexInternal(m)->getNumContacts();
-    ++queries;
-  }
-  state.counters["contacts_per_query"] = static_cast<double>(found) / static_cast<double>(queries);
-  world.removeCollisionObject(&wheel);
-  world.removeCollisionObject(&ground.object);
+  runBulletCylinder(state, ground.object, boxes);
 }
 
 const bool kRegistered = [] {

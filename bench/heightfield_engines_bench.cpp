@@ -32,12 +32,12 @@
 #include <vector>
 
 #include "bench_field.hpp"
+#include "bullet_cylinder.hpp"
 
 namespace {
 
 using namespace wtc::bench;
 
-constexpr double kWidthM = 0.12;             // the wheel's width (m)
 constexpr std::size_t kFclMaxContacts = 16;  // contacts fcl::collide may return (count)
 
 // The field as Bullet's heightfield shape, placed (like wtc::bullet's
@@ -94,38 +94,10 @@ void buildFcl(benchmark::State& state) {
   state.counters["bytes_per_cell"] = static_cast<double>(bytes) / cellsOf(field);
 }
 
-// The wheel's pose at a wheel box's centre: axle along y.
-btTransform bulletWheelPose(const wtc::Aabb& box) {
-  const Eigen::Vector3d c = box.center();
-  return btTransform(btQuaternion::getIdentity(), btVector3(c.x(), c.y(), c.z()));
-}
-
 void contactsBullet(benchmark::State& state, bool cold) {
   const wtc::Heightfield field = makeField(state.range(0));
-  const std::vector<wtc::Aabb> boxes = wheelBoxes(field, cold);
   BulletField ground(field);
-  btCylinderShape cylinder(btVector3(kRadius, 0.5 * kWidthM, kRadius));  // axis y
-  btCollisionObject wheel;
-  wheel.setCollisionShape(&cylinder);
-  btDefaultCollisionConfiguration config;
-  btCollisionDispatcher dispatcher(&config);
-  btDbvtBroadphase broadphase;
-  btCollisionWorld world(&dispatcher, &broadphase, &config);
-  world.addCollisionObject(&ground.object, btBroadphaseProxy::StaticFilter, btBroadphaseProxy::AllFilter);
-  world.addCollisionObject(&wheel);
-  std::size_t i = 0;
-  long found = 0, queries = 0;
-  for (auto _ : state) {
-    wheel.setWorldTransform(bulletWheelPose(boxes[i]));
-    i = i + 1 == boxes.size() ? 0 : i + 1;
-    world.performDiscreteCollisionDetection();
-    for (int m = 0; m < dispatcher.getNumManifolds(); ++m)
-      found += dispatcher.getManifoldByIndexInternal(m)->getNumContacts();
-    ++queries;
-  }
-  state.counters["contacts_per_query"] = static_cast<double>(found) / static_cast<double>(queries);
-  world.removeCollisionObject(&wheel);
-  world.removeCollisionObject(&ground.object);
+  runBulletCylinder(state, ground.object, wheelBoxes(field, cold));
 }
 
 void contactsFcl(benchmark::State& state, bool cold) {
@@ -134,7 +106,7 @@ void contactsFcl(benchmark::State& state, bool cold) {
   const fcl::CollisionObjectd ground(fclMesh(field));
   // FCL's cylinder has its axis along z: turned onto y.
   const fcl::Matrix3d axle_y(Eigen::AngleAxisd(std::numbers::pi / 2, Eigen::Vector3d::UnitX()));
-  fcl::CollisionObjectd wheel(std::make_shared<fcl::Cylinderd>(kRadius, kWidthM));
+  fcl::CollisionObjectd wheel(std::make_shared<fcl::Cylinderd>(kRadius, kWheelWidthM));
   const fcl::CollisionRequestd request(kFclMaxContacts, true);
   std::size_t i = 0;
   long found = 0, queries = 0;

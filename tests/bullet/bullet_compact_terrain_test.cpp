@@ -6,6 +6,7 @@
 // (testing::fieldAsMesh). docs/terrain.md.
 #include <btBulletDynamicsCommon.h>
 
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -84,6 +85,31 @@ TEST_P(BulletCompactTerrainTest, ARayMeetsTheSurfaceOfThePrisms) {
 
 constexpr double kOnPrismM = 1e-9;  // a contact's ground point lies on its prism's top (m)
 
+// Checks each contact Bullet reports between a probe and the terrain:
+// TerrainObject::pieceOf names a formed prism that holds the contact's
+// ground point. Counts the contacts, and those on pieces from `far_from` on.
+struct NamesItsPrism : btCollisionWorld::ContactResultCallback {
+  const bullet::TerrainObject* object = nullptr;
+  const Terrain* terrain = nullptr;
+  PieceId far_from = std::numeric_limits<PieceId>::max();
+  int contacts = 0, far = 0;
+  btScalar addSingleResult(btManifoldPoint& point, const btCollisionObjectWrapper* a, int, int,
+                           const btCollisionObjectWrapper* b, int, int) override {
+    const bool a_is_ground = a->getCollisionObject() == &object->object();
+    const PieceId id = object->pieceOf(a_is_ground ? *a : *b);
+    const btVector3 at = a_is_ground ? point.getPositionWorldOnA() : point.getPositionWorldOnB();
+    EXPECT_TRUE(id >= 0 && terrain->isFormed(id)) << "piece " << id;
+    if (id >= 0 && terrain->isFormed(id)) {
+      std::optional<ConvexPolyhedron> scratch;
+      EXPECT_LE(testing::outside(terrain->piece(id, scratch), Eigen::Vector3d(at.x(), at.y(), at.z())), kOnPrismM)
+          << "piece " << id << " at (" << at.x() << ", " << at.y() << ", " << at.z() << ")";
+    }
+    ++contacts;
+    far += id >= far_from;
+    return 0;
+  }
+};
+
 // Case: a small sphere pressed into the field at random places; every
 // contact Bullet reports names (TerrainObject::pieceOf) a prism that holds
 // the contact's ground point.
@@ -94,25 +120,7 @@ TEST_P(BulletCompactTerrainTest, AContactNamesThePrismItMet) {
   btCollisionObject probe;
   probe.setCollisionShape(&ball);
   w.world.addCollisionObject(&probe);
-  struct Check : btCollisionWorld::ContactResultCallback {
-    const bullet::TerrainObject* object = nullptr;
-    const Terrain* terrain = nullptr;
-    int contacts = 0;
-    btScalar addSingleResult(btManifoldPoint& point, const btCollisionObjectWrapper* a, int, int,
-                             const btCollisionObjectWrapper* b, int, int) override {
-      const bool a_is_ground = a->getCollisionObject() == &object->object();
-      const PieceId id = object->pieceOf(a_is_ground ? *a : *b);
-      const btVector3 at = a_is_ground ? point.getPositionWorldOnA() : point.getPositionWorldOnB();
-      EXPECT_TRUE(id >= 0 && terrain->isFormed(id)) << "piece " << id;
-      if (id >= 0 && terrain->isFormed(id)) {
-        std::optional<ConvexPolyhedron> scratch;
-        EXPECT_LE(testing::outside(terrain->piece(id, scratch), Eigen::Vector3d(at.x(), at.y(), at.z())), kOnPrismM)
-            << "piece " << id << " at (" << at.x() << ", " << at.y() << ", " << at.z() << ")";
-      }
-      ++contacts;
-      return 0;
-    }
-  } check;
+  NamesItsPrism check;
   check.object = &w.plugin->terrainShapes();
   check.terrain = &scene.terrain;
   std::mt19937 gen(11);
@@ -190,30 +198,10 @@ TEST(BulletCompactMeshTest, AMeshOfMoreTrianglesThanOneBulletPartCollidesAndName
   btCollisionObject probe;
   probe.setCollisionShape(&ball);
   w.world.addCollisionObject(&probe);
-  struct Check : btCollisionWorld::ContactResultCallback {
-    const bullet::TerrainObject* object = nullptr;
-    const Terrain* terrain = nullptr;
-    PieceId past_first_part = 0;
-    int contacts = 0, far = 0;
-    btScalar addSingleResult(btManifoldPoint& point, const btCollisionObjectWrapper* a, int, int,
-                             const btCollisionObjectWrapper* b, int, int) override {
-      const bool a_is_ground = a->getCollisionObject() == &object->object();
-      const PieceId id = object->pieceOf(a_is_ground ? *a : *b);
-      const btVector3 at = a_is_ground ? point.getPositionWorldOnA() : point.getPositionWorldOnB();
-      EXPECT_TRUE(id >= 0 && terrain->isFormed(id)) << "piece " << id;
-      if (id >= 0 && terrain->isFormed(id)) {
-        std::optional<ConvexPolyhedron> scratch;
-        EXPECT_LE(testing::outside(terrain->piece(id, scratch), Eigen::Vector3d(at.x(), at.y(), at.z())), 1e-9)
-            << "piece " << id;
-      }
-      ++contacts;
-      far += id >= past_first_part;
-      return 0;
-    }
-  } check;
+  NamesItsPrism check;
   check.object = &w.plugin->terrainShapes();
   check.terrain = &terrain;
-  check.past_first_part = range.first + bullet::kMeshPartTriangles;
+  check.far_from = range.first + bullet::kMeshPartTriangles;
   std::mt19937 gen(13);
   for (int k = 0; k < 100; ++k) {
     // The last rows of cells: triangles 2^21 and beyond.

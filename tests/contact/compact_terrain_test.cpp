@@ -41,7 +41,8 @@ Heightfield field(int rows, int cols, double x0, std::uint32_t seed) {
 TriangleMesh bumpySheet(double x0, std::uint32_t seed) {
   std::mt19937 gen(seed);
   constexpr int kCols = 11, kRows = 13;
-  TriangleMesh m{.name = "sheet"};
+  TriangleMesh m;
+  m.name = "sheet";
   for (int r = 0; r < kRows; ++r) {
     for (int c = 0; c < kCols; ++c) {
       const bool edge = c == 0 || r == 0 || r == kRows - 1;  // c == 0 meets field B's edge
@@ -72,7 +73,8 @@ TriangleMesh bumpySheet(double x0, std::uint32_t seed) {
 
 // A closed box wound inside-out (flipped before extrusion), as a rock.
 TriangleMesh insideOutRock(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
-  TriangleMesh m{.name = "rock"};
+  TriangleMesh m;
+  m.name = "rock";
   for (int i = 0; i < 8; ++i)
     m.vertices.emplace_back(i & 1 ? hi.x() : lo.x(), i & 2 ? hi.y() : lo.y(), i & 4 ? hi.z() : lo.z());
   // Outward quads (counter-clockwise from outside), then each reversed.

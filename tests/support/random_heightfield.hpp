@@ -42,7 +42,8 @@ inline Heightfield randomHeightfield(int rows, int cols, double amplitude, std::
 /// triangles in addHeightfield's order (p00, p01, p11), (p00, p11, p10), so
 /// that piece k of either is under the same triangle (pieceUnder holds).
 inline TriangleMesh fieldAsMesh(const Heightfield& f) {
-  TriangleMesh m{.name = "field as mesh"};
+  TriangleMesh m;
+  m.name = "field as mesh";
   for (int r = 0; r < f.rows; ++r) {
     for (int c = 0; c < f.cols; ++c) m.vertices.push_back(f.sample(r, c));
   }
