@@ -199,7 +199,11 @@ void Terrain::buildIndex() {
 }
 
 void Terrain::overlapping(const Aabb& box, std::vector<PieceId>& out) const {
-  for (const Field& f : fields_) f.formed->overlapping(box, f.first, out);
+  // Each compact part is its own index; its bounds spare a part far away
+  // the walk (a box with a NaN overlaps no bounds).
+  for (const Field& f : fields_) {
+    if (f.formed->bounds().overlaps(box)) f.formed->overlapping(box, f.first, out);
+  }
   if (!tree_) return;
   tree_->visit(box, [&](std::int32_t k) {
     if (leaf_boxes_[k].overlaps(box)) out.push_back(order_[k]);

@@ -69,10 +69,9 @@ struct MeshExtrusionOptions {
   double thickness = 0.1;          ///< Extrusion depth along -normal (m, > 0); see the note above.
   bool keep_convex_parts = false;  ///< A closed convex part becomes one piece.
   /// Keep the vertices and triangles and form each prism when a wheel
-  /// needs it, bit for bit the stored one (about 40 bytes a triangle with
-  /// its index, against about 1.3 kB stored; docs/terrain.md). An engine
-  /// plugin gives the part to its engine as one triangle-mesh shape. A part
-  /// kept whole (keep_convex_parts) is stored as before.
+  /// needs it, bit for bit the stored one (memory: docs/terrain.md). An
+  /// engine plugin gives the part to its engine as one triangle-mesh shape.
+  /// A part kept whole (keep_convex_parts) is stored as before.
   bool compact = false;
 };
 
