@@ -42,25 +42,6 @@ inline Heightfield makeField(long cells) {
 
 inline double cellsOf(const Heightfield& f) { return static_cast<double>(f.rows - 1) * (f.cols - 1); }
 
-// The field's surface as a triangle mesh (a scan turned into a mesh): its
-// samples, each cell split along p00-p11 as the prisms are.
-inline TriangleMesh fieldMesh(const Heightfield& f) {
-  TriangleMesh m;
-  m.name = "bench field";
-  m.vertices.reserve(f.heights.size());
-  for (int r = 0; r < f.rows; ++r)
-    for (int c = 0; c < f.cols; ++c) m.vertices.push_back(f.sample(r, c));
-  m.triangles.reserve(2 * static_cast<std::size_t>(cellsOf(f)));
-  for (int r = 0; r + 1 < f.rows; ++r) {
-    for (int c = 0; c + 1 < f.cols; ++c) {
-      const std::int32_t p00 = r * f.cols + c, p01 = p00 + 1, p10 = p00 + f.cols, p11 = p10 + 1;
-      m.triangles.push_back({p00, p01, p11});
-      m.triangles.push_back({p00, p11, p10});
-    }
-  }
-  return m;
-}
-
 // The wheel's boxes: rolling along y = const across the field, or random.
 inline std::vector<Aabb> wheelBoxes(const Heightfield& f, bool cold) {
   std::vector<Aabb> boxes;

@@ -1,5 +1,5 @@
 // wtc_bench_compact, the meshes: the bench field's surface as a triangle
-// mesh (bench_field.hpp fieldMesh: two triangles a cell), kept compact
+// mesh (wtc::surfaceMesh: two triangles a cell), kept compact
 // (MeshExtrusionOptions::compact) against stored prisms (addTriangleMesh)
 // and Bullet's btBvhTriangleMeshShape over the same arrays. FCL's
 // BVHModel of these same triangles is Build/fcl and Contacts/fcl
@@ -48,7 +48,7 @@ wtc::Terrain meshTerrain(const wtc::TriangleMesh& mesh, bool compact) {
 }
 
 void buildMesh(benchmark::State& state, bool compact) {
-  const wtc::TriangleMesh mesh = fieldMesh(makeField(state.range(0)));
+  const wtc::TriangleMesh mesh = wtc::surfaceMesh(makeField(state.range(0)));
   double bytes = 0.0, index = 0.0;
   for (auto _ : state) {
     const wtc::Terrain terrain = meshTerrain(mesh, compact);
@@ -79,7 +79,7 @@ struct BulletMesh {
 };
 
 void buildBulletMesh(benchmark::State& state) {
-  const wtc::TriangleMesh mesh = fieldMesh(makeField(state.range(0)));
+  const wtc::TriangleMesh mesh = wtc::surfaceMesh(makeField(state.range(0)));
   std::size_t bytes = 0;
   for (auto _ : state) {
     const auto bullet = std::make_unique<BulletMesh>(mesh);
@@ -91,13 +91,13 @@ void buildBulletMesh(benchmark::State& state) {
 void meshContacts(benchmark::State& state, bool compact, bool cold) {
   const wtc::Heightfield field = makeField(state.range(0));
   const std::vector<wtc::Aabb> boxes = wheelBoxes(field, cold);
-  runContactSteps(state, meshTerrain(fieldMesh(field), compact), boxes);
+  runContactSteps(state, meshTerrain(wtc::surfaceMesh(field), compact), boxes);
 }
 
 void bulletMeshContacts(benchmark::State& state, bool cold) {
   const wtc::Heightfield field = makeField(state.range(0));
   const std::vector<wtc::Aabb> boxes = wheelBoxes(field, cold);
-  const wtc::TriangleMesh mesh = fieldMesh(field);
+  const wtc::TriangleMesh mesh = wtc::surfaceMesh(field);
   BulletMesh ground(mesh);
   runBulletCylinder(state, ground.object, boxes);
 }

@@ -57,7 +57,7 @@ struct BulletField {
 };
 
 std::shared_ptr<fcl::BVHModel<fcl::OBBRSSd>> fclMesh(const wtc::Heightfield& f) {
-  const wtc::TriangleMesh m = fieldMesh(f);
+  const wtc::TriangleMesh m = wtc::surfaceMesh(f);
   const std::vector<fcl::Vector3d> points(m.vertices.begin(), m.vertices.end());
   std::vector<fcl::Triangle> triangles;
   triangles.reserve(m.triangles.size());

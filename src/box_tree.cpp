@@ -9,18 +9,14 @@
 #include <utility>
 
 namespace wtc::detail {
-namespace {
 
-// Single-precision box rounded outward: never smaller than the double box,
-// so the tree never misses one.
+// Never smaller than the double box, so the tree never misses one.
 void storeOutward(const Aabb& box, float min[3], float max[3]) {
   for (int k = 0; k < 3; ++k) {
     min[k] = std::nextafter(static_cast<float>(box.min[k]), -std::numeric_limits<float>::infinity());
     max[k] = std::nextafter(static_cast<float>(box.max[k]), std::numeric_limits<float>::infinity());
   }
 }
-
-}  // namespace
 
 // 2^-22 relative plus the smallest normal float covers the rounding of the
 // cast, without a libm call (this runs once per wheel query).

@@ -20,6 +20,10 @@
 
 namespace wtc::detail {
 
+/// `box` in single precision rounded outward, never smaller than it: the
+/// tree's node boxes, and a compact mesh's leaf boxes.
+void storeOutward(const Aabb& box, float min[3], float max[3]);
+
 class BoxTree {
  public:
   /// Boxes per leaf: 2 and 4 measure within noise of each other on
@@ -37,7 +41,6 @@ class BoxTree {
   template <class Leaf>
   void visit(const Aabb& box, Leaf&& leaf) const;
 
-  bool empty() const { return nodes_.empty(); }
   std::size_t memoryBytes() const { return nodes_.capacity() * sizeof(Node); }
 
  private:

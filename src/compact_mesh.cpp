@@ -10,8 +10,6 @@
 namespace wtc::detail {
 namespace {
 
-constexpr float kInfinity = std::numeric_limits<float>::infinity();
-
 // How far a float box's edge v may lie beyond the exact edge x it was
 // rounded outward from (m): the cast is within half an ulp of x, nextafter
 // adds one, and an ulp is at most 2^-23 |v| (or the smallest subnormal
@@ -41,11 +39,7 @@ CompactTriangleMesh::CompactTriangleMesh(TriangleMesh mesh, double thickness)
   order_.shrink_to_fit();
   boxes_.resize(order_.size());
   for (std::size_t position = 0; position < order_.size(); ++position) {
-    const Aabb& box = boxes[order_[position]];
-    for (int i = 0; i < 3; ++i) {
-      boxes_[position].min[i] = std::nextafter(static_cast<float>(box.min[i]), -kInfinity);
-      boxes_[position].max[i] = std::nextafter(static_cast<float>(box.max[i]), kInfinity);
-    }
+    storeOutward(boxes[order_[position]], boxes_[position].min, boxes_[position].max);
   }
 }
 

@@ -134,6 +134,23 @@ PieceId pieceUnder(const PieceRange& range, const Heightfield& f, double x, doub
   return cellPiece(range, f, p.r, p.c, p.s >= p.t ? 0 : 1);
 }
 
+TriangleMesh surfaceMesh(const Heightfield& f) {
+  TriangleMesh m;
+  m.vertices.reserve(f.heights.size());
+  for (int r = 0; r < f.rows; ++r) {
+    for (int c = 0; c < f.cols; ++c) m.vertices.push_back(f.sample(r, c));
+  }
+  m.triangles.reserve(f.pieceCount());
+  for (int r = 0; r + 1 < f.rows; ++r) {
+    for (int c = 0; c + 1 < f.cols; ++c) {
+      const std::int32_t p00 = r * f.cols + c, p01 = p00 + 1, p10 = p00 + f.cols, p11 = p10 + 1;
+      m.triangles.push_back({p00, p01, p11});  // addHeightfield's two triangles, in its order
+      m.triangles.push_back({p00, p11, p10});
+    }
+  }
+  return m;
+}
+
 std::optional<double> surfaceHeight(const Heightfield& f, double x, double y) {
   const double u = (x - f.origin.x()) / f.spacing_x;  // column coordinate
   const double v = (y - f.origin.y()) / f.spacing_y;  // row coordinate

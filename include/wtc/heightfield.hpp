@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "wtc/terrain_primitives.hpp"
+#include "wtc/triangle_mesh.hpp"
 
 namespace wtc {
 
@@ -94,6 +95,12 @@ inline PieceId cellPiece(const PieceRange& range, const Heightfield& field, int 
 /// the field's edge belongs to the edge's triangle; a non-finite coordinate
 /// counts as the grid's low end). The field's pieces start at range.first.
 PieceId pieceUnder(const PieceRange& range, const Heightfield& field, double x, double y);
+
+/// The field's surface as a triangle mesh: its samples (sample(r, c) is
+/// vertex r cols + c) and each cell's two triangles in addHeightfield's
+/// piece order, so that triangle k lies on top of the field's piece k
+/// (pieceUnder names both). For an engine or a file that wants triangles.
+TriangleMesh surfaceMesh(const Heightfield& field);
 
 /// World z of the triangulated surface above (x, y) (m), or nullopt outside
 /// the grid. The same triangles as the pieces.

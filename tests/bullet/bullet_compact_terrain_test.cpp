@@ -3,7 +3,7 @@
 // prisms' surface; Bullet's other bodies collide with it, a contact names
 // the prism it met, and WTC's wheels run exactly as on the stored prisms.
 // Each case runs on the scene's field and on the same surface as a mesh
-// (testing::fieldAsMesh). docs/terrain.md.
+// (surfaceMesh). docs/terrain.md.
 #include <btBulletDynamicsCommon.h>
 
 #include <limits>
@@ -110,16 +110,30 @@ struct NamesItsPrism : btCollisionWorld::ContactResultCallback {
   }
 };
 
+// A 5 cm sphere in the world, pressed into the ground where asked, each
+// contact it makes with the terrain handed to `check`.
+struct SphereProbe {
+  explicit SphereProbe(BulletWorld& world) : w(world) {
+    object.setCollisionShape(&ball);
+    w.world.addCollisionObject(&object);
+  }
+  ~SphereProbe() { w.world.removeCollisionObject(&object); }
+  void press(double x, double y, double z, NamesItsPrism& check) {
+    object.setWorldTransform(btTransform(btQuaternion::getIdentity(), btVector3(x, y, z)));
+    w.world.contactPairTest(&object, &w.plugin->terrainObject(), check);
+  }
+  BulletWorld& w;
+  btSphereShape ball{0.05};
+  btCollisionObject object;
+};
+
 // Case: a small sphere pressed into the field at random places; every
 // contact Bullet reports names (TerrainObject::pieceOf) a prism that holds
 // the contact's ground point.
 TEST_P(BulletCompactTerrainTest, AContactNamesThePrismItMet) {
   const PluginFieldScene scene = this->scene(true);
   BulletWorld w(scene.terrain, ContactMode::kForce);
-  btSphereShape ball(0.05);
-  btCollisionObject probe;
-  probe.setCollisionShape(&ball);
-  w.world.addCollisionObject(&probe);
+  SphereProbe probe(w);
   NamesItsPrism check;
   check.object = &w.plugin->terrainShapes();
   check.terrain = &scene.terrain;
@@ -127,11 +141,9 @@ TEST_P(BulletCompactTerrainTest, AContactNamesThePrismItMet) {
   for (int k = 0; k < 300; ++k) {
     const Eigen::Vector2d p = testing::randomPointOn(scene.field, gen, 0.1);
     const double z = *surfaceHeight(scene.field, p.x(), p.y()) + 0.04;  // 1 cm into the ground
-    probe.setWorldTransform(btTransform(btQuaternion::getIdentity(), btVector3(p.x(), p.y(), z)));
-    w.world.contactPairTest(&probe, &w.plugin->terrainObject(), check);
+    probe.press(p.x(), p.y(), z, check);
   }
   EXPECT_GE(check.contacts, 300);
-  w.world.removeCollisionObject(&probe);
 }
 
 // Case: a box (a chassis, 0.6 x 0.4 x 0.2 m) dropped on the field's flat
@@ -188,16 +200,12 @@ TEST(BulletCompactMeshTest, AMeshOfMoreTrianglesThanOneBulletPartCollidesAndName
   testing::RandomGrid grid{.spacing_x = 0.1, .spacing_y = 0.1, .origin = {0.0, 0.0, 0.0}, .base_depth = 0.2};
   const Heightfield field = testing::randomHeightfield(1001, 1101, 0.01, 5, grid);  // 2.2e6 triangles
   TerrainBuilder builder;
-  const PieceRange range = addTriangleMesh(builder, testing::fieldAsMesh(field), builder.addMaterial({}),
-                                           {.thickness = 0.2, .compact = true})
-                               .pieces;
+  const PieceRange range =
+      addTriangleMesh(builder, surfaceMesh(field), builder.addMaterial({}), {.thickness = 0.2, .compact = true}).pieces;
   ASSERT_GT(range.count, bullet::kMeshPartTriangles);
   const Terrain terrain = std::move(builder).build();
   BulletWorld w(terrain, ContactMode::kForce);
-  btSphereShape ball(0.05);
-  btCollisionObject probe;
-  probe.setCollisionShape(&ball);
-  w.world.addCollisionObject(&probe);
+  SphereProbe probe(w);
   NamesItsPrism check;
   check.object = &w.plugin->terrainShapes();
   check.terrain = &terrain;
@@ -206,13 +214,10 @@ TEST(BulletCompactMeshTest, AMeshOfMoreTrianglesThanOneBulletPartCollidesAndName
   for (int k = 0; k < 100; ++k) {
     // The last rows of cells: triangles 2^21 and beyond.
     const double x = 0.5 + (gen() / 4294967296.0) * 109.0, y = 96.0 + (gen() / 4294967296.0) * 3.5;
-    probe.setWorldTransform(
-        btTransform(btQuaternion::getIdentity(), btVector3(x, y, *surfaceHeight(field, x, y) + 0.04)));
-    w.world.contactPairTest(&probe, &w.plugin->terrainObject(), check);
+    probe.press(x, y, *surfaceHeight(field, x, y) + 0.04, check);
   }
   EXPECT_GE(check.contacts, 100);
   EXPECT_EQ(check.far, check.contacts);
-  w.world.removeCollisionObject(&probe);
 }
 
 INSTANTIATE_TEST_SUITE_P(Parts, BulletCompactTerrainTest, ::testing::Bool(),

@@ -2,7 +2,7 @@
 // or trimesh geom, not a geom per prism, with the prisms' surface; ODE's
 // other geoms collide with it, a contact names the prism it met, and WTC's
 // wheels run exactly as on the stored prisms. Each case runs on the
-// scene's field and on the same surface as a mesh (testing::fieldAsMesh).
+// scene's field and on the same surface as a mesh (surfaceMesh).
 // docs/terrain.md.
 #include <ode/ode.h>
 

@@ -38,31 +38,12 @@ inline Heightfield randomHeightfield(int rows, int cols, double amplitude, std::
   return f;
 }
 
-/// The field's surface as a triangle mesh: its samples, each cell's two
-/// triangles in addHeightfield's order (p00, p01, p11), (p00, p11, p10), so
-/// that piece k of either is under the same triangle (pieceUnder holds).
-inline TriangleMesh fieldAsMesh(const Heightfield& f) {
-  TriangleMesh m;
-  m.name = "field as mesh";
-  for (int r = 0; r < f.rows; ++r) {
-    for (int c = 0; c < f.cols; ++c) m.vertices.push_back(f.sample(r, c));
-  }
-  for (int r = 0; r + 1 < f.rows; ++r) {
-    for (int c = 0; c + 1 < f.cols; ++c) {
-      const std::int32_t p00 = r * f.cols + c, p01 = p00 + 1, p10 = p00 + f.cols, p11 = p10 + 1;
-      m.triangles.push_back({p00, p01, p11});
-      m.triangles.push_back({p00, p11, p10});
-    }
-  }
-  return m;
-}
-
 /// The plugins' compact-field scene: a 16 x 20 random field (heights
 /// within +-amplitude, the RandomGrid: x in [-3, 6.5], y in [2, 13.25], z about 10 m)
 /// whose cells x in [1, 3], y in [6.5, 9.5] are flat at kPatchHeightM, and
 /// the spec's ledge (stored) beside it. `compact`: the field by
 /// addCompactHeightfield, else addHeightfield (the same pieces and ids).
-/// `as_mesh`: the field's surface as a triangle mesh instead (fieldAsMesh,
+/// `as_mesh`: the field's surface as a triangle mesh instead (surfaceMesh,
 /// extruded base_depth; compact or not by MeshExtrusionOptions::compact).
 struct PluginFieldScene {
   static constexpr double kPatchHeightM = 0.25;  // above the field's origin (m)
@@ -79,7 +60,7 @@ inline PluginFieldScene pluginFieldScene(bool compact, double amplitude = 0.15, 
   TerrainBuilder builder;
   const MaterialId material = builder.addMaterial({});
   addLedge(builder, {}, material);
-  const PieceRange range = as_mesh ? addTriangleMesh(builder, fieldAsMesh(field), material,
+  const PieceRange range = as_mesh ? addTriangleMesh(builder, surfaceMesh(field), material,
                                                      {.thickness = field.base_depth, .compact = compact})
                                          .pieces
                            : compact ? addCompactHeightfield(builder, field, material)
