@@ -136,6 +136,21 @@ TEST_F(TerrainFileTest, InlineHeightsAreAMapWithTheNorthRowFirst) {
   }
 }
 
+// The terrains of a file with a box and then a compact part (`compact`)
+// or the same part stored: the box stored in both, and every later piece
+// formed, with the stored one's box and planes.
+void expectTheStoredPiecesAfterTheBox(const Terrain& stored, const Terrain& compact) {
+  ASSERT_EQ(compact.pieceCount(), stored.pieceCount());
+  std::optional<ConvexPolyhedron> scratch;
+  for (PieceId id = 0; id < static_cast<PieceId>(stored.pieceCount()); ++id) {
+    EXPECT_EQ(compact.isFormed(id), id > 0);
+    const ConvexPolyhedron& p = compact.piece(id, scratch);
+    EXPECT_EQ(p.bounds().min, stored.piece(id).bounds().min);
+    EXPECT_EQ(p.bounds().max, stored.piece(id).bounds().max);
+    EXPECT_EQ(p.faceOffset(0), stored.piece(id).faceOffset(0));
+  }
+}
+
 // storage: compact keeps the samples and forms the same prisms: the same
 // pieces, ids and boxes as the default storage, in a fraction of the memory.
 TEST_F(TerrainFileTest, ACompactHeightfieldHasTheStoredOnesPieces) {
@@ -148,14 +163,7 @@ TEST_F(TerrainFileTest, ACompactHeightfieldHasTheStoredOnesPieces) {
   const Terrain stored = loadTerrain(write("stored.yaml", field));
   const Terrain compact = loadTerrain(write("compact.yaml", field + "    storage: compact\n"));
   ASSERT_EQ(compact.pieceCount(), stored.pieceCount());
-  std::optional<ConvexPolyhedron> scratch;
-  for (PieceId id = 0; id < static_cast<PieceId>(stored.pieceCount()); ++id) {
-    EXPECT_EQ(compact.isFormed(id), id > 0);
-    const ConvexPolyhedron& p = compact.piece(id, scratch);
-    EXPECT_EQ(p.bounds().min, stored.piece(id).bounds().min);
-    EXPECT_EQ(p.bounds().max, stored.piece(id).bounds().max);
-    EXPECT_EQ(p.faceOffset(0), stored.piece(id).faceOffset(0));
-  }
+  expectTheStoredPiecesAfterTheBox(stored, compact);
   EXPECT_THAT(loadError(field + "    storage: packed\n"),
               HasSubstr(at(8, 14) + "pieces[1] (heightfield): storage: 'packed' (expected prisms or compact)"));
 }
@@ -176,14 +184,7 @@ TEST_F(TerrainFileTest, ACompactMeshHasTheStoredOnesPieces) {
   ASSERT_EQ(compact.pieceCount(), stored.pieceCount());
   ASSERT_EQ(compact.compactFieldCount(), 1u);
   EXPECT_NE(compact.compactField(0).mesh, nullptr);
-  std::optional<ConvexPolyhedron> scratch;
-  for (PieceId id = 0; id < static_cast<PieceId>(stored.pieceCount()); ++id) {
-    EXPECT_EQ(compact.isFormed(id), id > 0);
-    const ConvexPolyhedron& p = compact.piece(id, scratch);
-    EXPECT_EQ(p.bounds().min, stored.piece(id).bounds().min);
-    EXPECT_EQ(p.bounds().max, stored.piece(id).bounds().max);
-    EXPECT_EQ(p.faceOffset(0), stored.piece(id).faceOffset(0));
-  }
+  expectTheStoredPiecesAfterTheBox(stored, compact);
   EXPECT_THAT(loadError(mesh + "    storage: [compact]\n"),
               HasSubstr(at(8, 14) + "pieces[1] (mesh): storage: expected a string"));
 }
