@@ -11,19 +11,69 @@ namespace wtc::detail {
 
 CompactHeightfield::CompactHeightfield(Heightfield field) : field_(std::move(field)) {
   validate(field_);
+  if (!field_.hasHoles()) field_.cell_holes.clear();
   field_.heights.shrink_to_fit();  // the samples and nothing more
   field_.cell_materials.shrink_to_fit();
+  field_.cell_holes.shrink_to_fit();
+  piece_count_ = field_.pieceCount();
   base_z_ = field_.baseZ();
-  // The corners' coordinates as sample() computes them; origin.z + h is
-  // monotonic in h, so the highest sample gives the highest top.
-  const double highest = *std::max_element(field_.heights.begin(), field_.heights.end());
-  const Eigen::Vector3d far = field_.origin + Eigen::Vector3d((field_.cols - 1) * field_.spacing_x,
-                                                              (field_.rows - 1) * field_.spacing_y, highest);
-  bounds_ = {Eigen::Vector3d(field_.origin.x(), field_.origin.y(), base_z_), far};
+  if (field_.cell_holes.empty()) {
+    // The corners' coordinates as sample() computes them; origin.z + h is
+    // monotonic in h, so the highest sample gives the highest top.
+    const double highest = *std::max_element(field_.heights.begin(), field_.heights.end());
+    const Eigen::Vector3d far = field_.origin + Eigen::Vector3d((field_.cols - 1) * field_.spacing_x,
+                                                                (field_.rows - 1) * field_.spacing_y, highest);
+    bounds_ = {Eigen::Vector3d(field_.origin.x(), field_.origin.y(), base_z_), far};
+    return;
+  }
+  const std::size_t cells = field_.cellCount();
+  ground_before_.reserve((cells + kBlockCells - 1) / kBlockCells);
+  std::uint32_t ground = 0;
+  for (std::size_t cell = 0; cell < cells; ++cell) {
+    if (cell % kBlockCells == 0) ground_before_.push_back(ground);
+    if (field_.cell_holes[cell] == 0) ++ground;
+  }
+  // The union of the ground cells' pieces: their corners, down to the base.
+  bool first = true;
+  for (int r = 0; r + 1 < field_.rows; ++r) {
+    for (int c = 0; c + 1 < field_.cols; ++c) {
+      if (field_.isHole(r, c)) continue;
+      for (const Eigen::Vector3d& p :
+           {field_.sample(r, c), field_.sample(r, c + 1), field_.sample(r + 1, c), field_.sample(r + 1, c + 1)}) {
+        if (first) bounds_ = {p, p};
+        first = false;
+        bounds_.include(p);
+      }
+    }
+  }
+  bounds_.min.z() = base_z_;
+}
+
+std::size_t CompactHeightfield::piecesBefore(std::size_t cell) const {
+  if (ground_before_.empty()) return 2 * cell;
+  const std::size_t block = cell / kBlockCells;
+  std::size_t ground = ground_before_[block];
+  for (std::size_t i = block * kBlockCells; i < cell; ++i) ground += field_.cell_holes[i] == 0 ? 1 : 0;
+  return 2 * ground;
+}
+
+std::size_t CompactHeightfield::cellOf(std::size_t k) const {
+  if (ground_before_.empty()) return k / 2;
+  // The last block with at most k / 2 ground cells before it holds ground
+  // cell k / 2.
+  const auto wanted = static_cast<std::uint32_t>(k / 2);
+  const auto after = std::upper_bound(ground_before_.begin(), ground_before_.end(), wanted);
+  const auto block = static_cast<std::size_t>(after - ground_before_.begin()) - 1;
+  std::uint32_t ground = ground_before_[block];
+  for (std::size_t cell = block * kBlockCells;; ++cell) {
+    if (field_.cell_holes[cell] != 0) continue;
+    if (ground == wanted) return cell;
+    ++ground;
+  }
 }
 
 void CompactHeightfield::corners(std::size_t k, Eigen::Vector3d p[3]) const {
-  const std::size_t cell = k / 2;
+  const std::size_t cell = cellOf(k);
   const auto cells_per_row = static_cast<std::size_t>(field_.cols - 1);
   const int r = static_cast<int>(cell / cells_per_row);
   const int c = static_cast<int>(cell % cells_per_row);
@@ -88,20 +138,25 @@ void CompactHeightfield::overlapping(const Aabb& box, PieceId first, std::vector
   const auto cells_per_row = static_cast<std::size_t>(f.cols - 1);
   const double lowest = box.min.z();
   for (int r = r0; r <= r1; ++r) {
+    const std::size_t row = static_cast<std::size_t>(r) * cells_per_row;
+    std::size_t k = piecesBefore(row + c0);  // the next ground cell's first piece
     for (int c = c0; c <= c1; ++c) {
+      if (f.isHole(r, c)) continue;
       // The pieces' tops: the corners' z as sample() computes them.
       const double z00 = f.origin.z() + f.height(r, c), z01 = f.origin.z() + f.height(r, c + 1);
       const double z10 = f.origin.z() + f.height(r + 1, c), z11 = f.origin.z() + f.height(r + 1, c + 1);
-      const auto k = static_cast<PieceId>(2 * (static_cast<std::size_t>(r) * cells_per_row + c));
-      if (lowest <= std::max({z00, z01, z11})) out.push_back(first + k);
-      if (lowest <= std::max({z00, z11, z10})) out.push_back(first + k + 1);
+      const auto id = first + static_cast<PieceId>(k);
+      if (lowest <= std::max({z00, z01, z11})) out.push_back(id);
+      if (lowest <= std::max({z00, z11, z10})) out.push_back(id + 1);
+      k += 2;
     }
   }
 }
 
 std::size_t CompactHeightfield::memoryBytes() const {
   return sizeof(*this) + field_.heights.capacity() * sizeof(double) +
-         field_.cell_materials.capacity() * sizeof(MaterialId);
+         field_.cell_materials.capacity() * sizeof(MaterialId) + field_.cell_holes.capacity() +
+         ground_before_.capacity() * sizeof(std::uint32_t);
 }
 
 }  // namespace wtc::detail

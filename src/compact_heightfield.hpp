@@ -11,7 +11,14 @@
 // under a box come from the cell lines and each triangle's top from its
 // corners, which decides exactly as Aabb::overlaps on the pieces' bounds
 // (Terrain::overlapping's leaf test) would.
+//
+// Holes. Without holes piece k lies on cell k / 2. With holes the pieces
+// skip the hole cells, and a running count of the cells that are ground,
+// one per block of kBlockCells cells, maps a cell to its first piece (the
+// count, then at most kBlockCells - 1 entries) and a piece to its cell (a
+// binary search over the counts, then the block).
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "formed_pieces.hpp"
@@ -24,10 +31,10 @@ class CompactHeightfield final : public FormedPieces {
   /// Validates `field` (wtc::validate(const Heightfield&)) and keeps it.
   explicit CompactHeightfield(Heightfield field);
 
-  /// 2 (rows - 1)(cols - 1), as Heightfield::pieceCount().
-  std::size_t pieceCount() const override { return field_.pieceCount(); }
-  /// Piece k in addHeightfield's order (cell k / 2 row-major, triangle k % 2),
-  /// bit for bit the prism addHeightfield builds.
+  /// Two per cell that is not a hole, as Heightfield::pieceCount().
+  std::size_t pieceCount() const override { return piece_count_; }
+  /// Piece k in addHeightfield's order (the cells row-major, holes skipped,
+  /// triangle k % 2), bit for bit the prism addHeightfield builds.
   ConvexPolyhedron piece(std::size_t k) const override;
   /// piece(k).bounds(), without forming the piece.
   Aabb pieceBounds(std::size_t k) const override;
@@ -40,16 +47,28 @@ class CompactHeightfield final : public FormedPieces {
   std::size_t memoryBytes() const override;
   /// The cell's material (two pieces a cell), or `whole` without cell_materials.
   MaterialId materialId(std::size_t k, MaterialId whole) const override {
-    return field_.cell_materials.empty() ? whole : field_.cell_materials[k / 2];
+    return field_.cell_materials.empty() ? whole : field_.cell_materials[cellOf(k)];
   }
   const Heightfield* heightfield() const override { return &field_; }
   const Heightfield& field() const { return field_; }
 
  private:
+  // Cells per running count of the ground cells (count).
+  static constexpr std::size_t kBlockCells = 64;
+
+  // The cell (row-major index) piece k lies on.
+  std::size_t cellOf(std::size_t k) const;
+  // The pieces of the cells before `cell` (row-major index): the first
+  // piece of `cell` unless it is a hole.
+  std::size_t piecesBefore(std::size_t cell) const;
   // The three corners of piece k (addHeightfield's triangle order).
   void corners(std::size_t k, Eigen::Vector3d p[3]) const;
 
   Heightfield field_;
+  std::size_t piece_count_ = 0;
+  // With holes: ground_before_[b] = cells that are not holes among cells
+  // 0 ... b kBlockCells - 1. Empty without holes.
+  std::vector<std::uint32_t> ground_before_;
   double base_z_ = 0.0;
   Aabb bounds_;
 };

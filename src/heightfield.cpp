@@ -17,6 +17,9 @@ namespace {
 
 constexpr const char* kWhere = "wtc::Heightfield";
 
+// A cell_holes entry that marks a hole.
+bool holeEntry(std::uint8_t h) { return h != 0; }
+
 // The field's materials are registered: `material`, and each cell's own.
 void requireCellMaterials(const TerrainBuilder& builder, const Heightfield& f, MaterialId material, const char* where) {
   builder.requireMaterial(material, where);
@@ -48,6 +51,13 @@ CellPoint locate(const Heightfield& f, double u, double v) {
 
 }  // namespace
 
+bool Heightfield::hasHoles() const { return std::any_of(cell_holes.begin(), cell_holes.end(), holeEntry); }
+
+std::size_t Heightfield::pieceCount() const {
+  const auto holes = static_cast<std::size_t>(std::count_if(cell_holes.begin(), cell_holes.end(), holeEntry));
+  return 2 * (cellCount() - std::min(holes, cellCount()));
+}
+
 double Heightfield::baseZ() const {
   const double lowest = heights.empty() ? 0.0 : *std::min_element(heights.begin(), heights.end());
   return origin.z() + lowest - base_depth;
@@ -73,6 +83,15 @@ void validate(const Heightfield& f) {
     throw InvalidInputError(std::string(kWhere) + ": cell_materials has " + std::to_string(f.cell_materials.size()) +
                             " ids, but the grid has (rows - 1) x (cols - 1) = " + std::to_string(cells) +
                             " cells (or give none)");
+  }
+  if (!f.cell_holes.empty() && f.cell_holes.size() != cells) {
+    throw InvalidInputError(std::string(kWhere) + ": cell_holes has " + std::to_string(f.cell_holes.size()) +
+                            " entries, but the grid has (rows - 1) x (cols - 1) = " + std::to_string(cells) +
+                            " cells (or give none)");
+  }
+  if (f.pieceCount() == 0) {
+    throw InvalidInputError(std::string(kWhere) + ": every one of the " + std::to_string(cells) +
+                            " cells is a hole; the field has no ground");
   }
   if (f.pieceCount() > static_cast<std::size_t>(std::numeric_limits<PieceId>::max())) {
     throw InvalidInputError(std::string(kWhere) + ": " + std::to_string(f.rows) + " x " + std::to_string(f.cols) +
@@ -106,6 +125,7 @@ PieceRange addHeightfield(TerrainBuilder& builder, const Heightfield& f, Materia
   std::size_t cell = 0;
   for (int r = 0; r + 1 < f.rows; ++r) {
     for (int c = 0; c + 1 < f.cols; ++c, ++cell) {
+      if (f.isHole(r, c)) continue;
       const Eigen::Vector3d p00 = f.sample(r, c);
       const Eigen::Vector3d p01 = f.sample(r, c + 1);
       const Eigen::Vector3d p10 = f.sample(r + 1, c);
@@ -127,7 +147,18 @@ PieceRange addCompactHeightfield(TerrainBuilder& builder, Heightfield field, Mat
   return detail::addFormedPieces(builder, std::move(grid), material, where);
 }
 
-PieceId pieceUnder(const PieceRange& range, const Heightfield& f, double x, double y) {
+std::optional<PieceId> cellPiece(const PieceRange& range, const Heightfield& f, int r, int c, int k) {
+  if (f.isHole(r, c)) return std::nullopt;
+  const std::size_t cell = static_cast<std::size_t>(r) * (f.cols - 1) + c;
+  std::size_t holes_before = 0;
+  if (!f.cell_holes.empty()) {
+    holes_before = static_cast<std::size_t>(
+        std::count_if(f.cell_holes.begin(), f.cell_holes.begin() + static_cast<std::ptrdiff_t>(cell), holeEntry));
+  }
+  return range.first + static_cast<PieceId>(2 * (cell - holes_before)) + k;
+}
+
+std::optional<PieceId> pieceUnder(const PieceRange& range, const Heightfield& f, double x, double y) {
   const auto onGrid = [](double w, int samples) { return w > 0.0 ? std::min(w, samples - 1.0) : 0.0; };
   const CellPoint p =
       locate(f, onGrid((x - f.origin.x()) / f.spacing_x, f.cols), onGrid((y - f.origin.y()) / f.spacing_y, f.rows));
@@ -143,6 +174,7 @@ TriangleMesh surfaceMesh(const Heightfield& f) {
   m.triangles.reserve(f.pieceCount());
   for (int r = 0; r + 1 < f.rows; ++r) {
     for (int c = 0; c + 1 < f.cols; ++c) {
+      if (f.isHole(r, c)) continue;
       const std::int32_t p00 = r * f.cols + c, p01 = p00 + 1, p10 = p00 + f.cols, p11 = p10 + 1;
       m.triangles.push_back({p00, p01, p11});  // addHeightfield's two triangles, in its order
       m.triangles.push_back({p00, p11, p10});
@@ -156,6 +188,7 @@ std::optional<double> surfaceHeight(const Heightfield& f, double x, double y) {
   const double v = (y - f.origin.y()) / f.spacing_y;  // row coordinate
   if (!(u >= 0.0 && v >= 0.0 && u <= f.cols - 1 && v <= f.rows - 1)) return std::nullopt;
   const auto [r, c, s, t] = locate(f, u, v);
+  if (f.isHole(r, c)) return std::nullopt;
   const double h00 = f.height(r, c), h01 = f.height(r, c + 1);
   const double h10 = f.height(r + 1, c), h11 = f.height(r + 1, c + 1);
   // Below the diagonal (s >= t) lies triangle (p00, p01, p11), above it

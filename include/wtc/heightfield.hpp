@@ -26,7 +26,14 @@
 // faces (top triangle, bottom triangle, three vertical quads), built with
 // the trusted fromMesh path: with vertical sides and a base below every
 // vertex the prism is convex and outward-oriented for any heights.
+//
+// Holes. A cell marked in cell_holes has no ground: no pieces, no surface.
+// The pieces of the other cells keep their order and are numbered without
+// gaps, so a hole shifts the ids of every piece after it (cellPiece). The
+// walls of the cells around a hole are real edges to a wheel (the seam rule
+// covers an edge only where another piece does).
 #include <Eigen/Core>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -47,6 +54,10 @@ struct Heightfield {
   /// two pieces take cell_materials[r (cols - 1) + c]. Empty: every cell
   /// takes the material given to addHeightfield.
   std::vector<MaterialId> cell_materials;
+  /// Holes, (rows - 1) x (cols - 1) row-major like cell_materials: cell
+  /// (r, c) has no ground where cell_holes[r (cols - 1) + c] != 0. Empty:
+  /// no holes.
+  std::vector<std::uint8_t> cell_holes;
 
   /// Height of sample (r, c) (m, relative to origin.z()).
   double height(int r, int c) const { return heights[static_cast<std::size_t>(r) * cols + c]; }
@@ -54,10 +65,19 @@ struct Heightfield {
   Eigen::Vector3d sample(int r, int c) const {
     return origin + Eigen::Vector3d(c * spacing_x, r * spacing_y, height(r, c));
   }
-  /// Number of pieces addHeightfield makes: 2 (rows - 1)(cols - 1).
-  std::size_t pieceCount() const {
-    return rows < 2 || cols < 2 ? 0 : 2 * static_cast<std::size_t>(rows - 1) * static_cast<std::size_t>(cols - 1);
+  /// Number of cells: (rows - 1)(cols - 1), holes included.
+  std::size_t cellCount() const {
+    return rows < 2 || cols < 2 ? 0 : static_cast<std::size_t>(rows - 1) * static_cast<std::size_t>(cols - 1);
   }
+  /// Whether cell (r, c) is a hole.
+  bool isHole(int r, int c) const {
+    return !cell_holes.empty() && cell_holes[static_cast<std::size_t>(r) * (cols - 1) + c] != 0;
+  }
+  /// Whether any cell is a hole (a pass over cell_holes).
+  bool hasHoles() const;
+  /// Number of pieces addHeightfield makes: two per cell that is not a
+  /// hole (a pass over cell_holes).
+  std::size_t pieceCount() const;
   /// World z of the flat base (m).
   double baseZ() const;
 };
@@ -65,13 +85,15 @@ struct Heightfield {
 /// Throws InvalidInputError if the grid is malformed: rows or cols < 2, a
 /// spacing or base_depth not finite and > 0, a non-finite origin, a heights
 /// array of the wrong size, or a non-finite height (named by row and
-/// column), a cell_materials array neither empty nor of (rows - 1) x
-/// (cols - 1) ids, or more pieces than a PieceId can number. (Whether the
+/// column), a cell_materials or cell_holes array neither empty nor of
+/// (rows - 1) x (cols - 1) entries, holes in every cell, or more pieces
+/// than a PieceId can number. (Whether the
 /// ids are registered is the builder's to check.)
 void validate(const Heightfield& field);
 
-/// Adds the field's 2 (rows - 1)(cols - 1) prisms (validated first). Piece
-/// order: cell by cell, row-major, the triangle (p00, p01, p11) first. Each
+/// Adds the field's prisms, two per cell that is not a hole (validated
+/// first). Piece order: cell by cell, row-major, holes skipped, the
+/// triangle (p00, p01, p11) first. Each
 /// cell's material: its cell_materials entry, or `material` if there are
 /// none; every id must be registered in `builder`.
 PieceRange addHeightfield(TerrainBuilder& builder, const Heightfield& field, MaterialId material);
@@ -81,29 +103,32 @@ PieceRange addHeightfield(TerrainBuilder& builder, const Heightfield& field, Mat
 /// against about 2.6 kB per cell for stored prisms and their index) and
 /// forms a prism when a query needs it (Terrain::piece(id, scratch)). The
 /// terrain finds its pieces from the grid. Validates the field first.
-/// Per-cell materials cost 4 more bytes a cell.
+/// Per-cell materials cost 4 more bytes a cell, holes 1 byte and a
+/// running count (4 bytes per 64 cells) that numbers the pieces.
 PieceRange addCompactHeightfield(TerrainBuilder& builder, Heightfield field, MaterialId material);
 
 /// The id of triangle `k` (0: (p00, p01, p11), 1: (p00, p11, p10)) of cell
-/// (r, c) in the range addHeightfield returned.
-inline PieceId cellPiece(const PieceRange& range, const Heightfield& field, int r, int c, int k) {
-  return range.first + 2 * (r * (field.cols - 1) + c) + k;
-}
+/// (r, c) in the range addHeightfield returned; nullopt if the cell is a
+/// hole. O(1) without holes; with holes it counts the holes before the
+/// cell (O(r cols)).
+std::optional<PieceId> cellPiece(const PieceRange& range, const Heightfield& field, int r, int c, int k);
 
 /// The id of the triangle whose projection on the x-y plane holds (x, y),
 /// with (x, y) first clamped onto the grid (a contact point a hair outside
 /// the field's edge belongs to the edge's triangle; a non-finite coordinate
-/// counts as the grid's low end). The field's pieces start at range.first.
-PieceId pieceUnder(const PieceRange& range, const Heightfield& field, double x, double y);
+/// counts as the grid's low end); nullopt over a hole. The field's pieces
+/// start at range.first. Cost as cellPiece.
+std::optional<PieceId> pieceUnder(const PieceRange& range, const Heightfield& field, double x, double y);
 
 /// The field's surface as a triangle mesh: its samples (sample(r, c) is
-/// vertex r cols + c) and each cell's two triangles in addHeightfield's
-/// piece order, so that triangle k lies on top of the field's piece k
-/// (pieceUnder names both). For an engine or a file that wants triangles.
+/// vertex r cols + c) and the two triangles of each cell that is not a hole,
+/// in addHeightfield's piece order, so that triangle k lies on top of the
+/// field's piece k (pieceUnder names both). For an engine or a file that
+/// wants triangles.
 TriangleMesh surfaceMesh(const Heightfield& field);
 
 /// World z of the triangulated surface above (x, y) (m), or nullopt outside
-/// the grid. The same triangles as the pieces.
+/// the grid or over a hole. The same triangles as the pieces.
 std::optional<double> surfaceHeight(const Heightfield& field, double x, double y);
 
 /// The prism under the triangle (a, b, c), counter-clockwise seen from above,

@@ -126,7 +126,8 @@ class Terrain {
   struct CompactField {
     PieceId first = 0;  ///< Its pieces are first ... first + count - 1.
     PieceId count = 0;
-    /// A heightfield's samples; its pieces in addHeightfield's order.
+    /// A heightfield's samples; its pieces in addHeightfield's order. Its
+    /// cell_holes is empty unless a cell is a hole.
     const Heightfield* field = nullptr;
     /// A mesh's vertices and triangles: piece first + k is triangle k,
     /// wound outward, extruded `thickness` (m) along minus its normal.

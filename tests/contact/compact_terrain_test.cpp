@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -86,7 +87,18 @@ TriangleMesh insideOutRock(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi)
   return m;
 }
 
-// Stored box, field A (materials per cell), a ledge, field B, a rock, a
+// Field A's holes: three cells in the wheel's way (row 5, where y = 0),
+// a corner, and a run along a row.
+constexpr std::array<std::array<int, 2>, 10> kFieldAHoles = {
+    {{5, 4}, {5, 5}, {6, 5}, {0, 0}, {10, 18}, {2, 7}, {2, 8}, {2, 9}, {2, 10}, {2, 11}}};
+
+std::vector<std::uint8_t> fieldAHoles() {
+  std::vector<std::uint8_t> holes(11 * 19, 0);
+  for (const auto& [r, c] : kFieldAHoles) holes[r * 19 + c] = 1;
+  return holes;
+}
+
+// Stored box, field A (materials per cell, holes), a ledge, field B, a rock, a
 // mesh sheet and a mesh rock on it: ids interleave.
 Terrain mixed(bool compact) {
   TerrainBuilder b;
@@ -99,6 +111,7 @@ Terrain mixed(bool compact) {
   Heightfield a = field(12, 20, -2.0, 1);
   a.cell_materials.resize(11 * 19, gravel);  // field A: gravel, with an asphalt stripe
   for (int c = 0; c < 19; ++c) a.cell_materials[5 * 19 + c] = a.cell_materials[6 * 19 + c] = asphalt;
+  a.cell_holes = fieldAHoles();
   add(a, gravel);
   b.addPiece(ConvexPolyhedron::box({2.75, -1.5, -0.2}, {3.0, 1.5, 0.12}), asphalt);  // a ledge between the fields
   add(field(12, 16, 3.0, 2), asphalt);
@@ -146,7 +159,7 @@ TEST(CompactTerrainTest, NumbersItsPiecesAsTheStoredTerrainDoes) {
 // Case: what an engine plugin walks: the stored pieces by their ids
 // (storedId), and each compact field by its id range and samples
 // (compactField); pieceUnder names the triangle under a point, clamped
-// onto the grid.
+// onto the grid, and none over a hole.
 TEST(CompactTerrainTest, TellsThePluginsItsStoredPiecesAndItsFields) {
   const Terrain compact = mixed(true);
   ASSERT_EQ(compact.pieces().size(), 3u);
@@ -161,12 +174,14 @@ TEST(CompactTerrainTest, TellsThePluginsItsStoredPiecesAndItsFields) {
   EXPECT_EQ(last, compact.compactField(2).first - 1);  // the rock on field B, before the meshes
   ASSERT_EQ(compact.compactFieldCount(), 4u);
   EXPECT_EQ(compact.compactField(0).first, 1);  // after the box
-  EXPECT_EQ(compact.compactField(0).count, 2 * 11 * 19);
-  EXPECT_EQ(compact.compactField(1).first, 1 + 2 * 11 * 19 + 1);  // after the ledge
+  const int field_a_pieces = 2 * (11 * 19 - static_cast<int>(kFieldAHoles.size()));
+  EXPECT_EQ(compact.compactField(0).count, field_a_pieces);
+  EXPECT_EQ(compact.compactField(1).first, 1 + field_a_pieces + 1);  // after the ledge
   EXPECT_EQ(compact.compactField(1).material, compact.materialId(compact.compactField(1).first));
   EXPECT_THROW(compact.compactField(4), std::out_of_range);
   std::mt19937 gen(3);
   std::optional<ConvexPolyhedron> scratch;
+  int over_holes = 0;
   for (std::size_t k = 0; k < 2; ++k) {
     const Terrain::CompactField field = compact.compactField(k);
     ASSERT_NE(field.field, nullptr);
@@ -176,15 +191,23 @@ TEST(CompactTerrainTest, TellsThePluginsItsStoredPiecesAndItsFields) {
     for (int i = 0; i < 500; ++i) {
       // Some points off the grid: they belong to the nearest edge's triangle.
       const Eigen::Vector2d p = testing::randomPointOn(f, gen, -0.2);
-      const PieceId id = pieceUnder(range, f, p.x(), p.y());
-      ASSERT_GE(id, field.first);
-      ASSERT_LT(id, field.first + field.count);
+      const std::optional<PieceId> under = pieceUnder(range, f, p.x(), p.y());
       const double x = std::clamp(p.x(), f.origin.x(), f.origin.x() + (f.cols - 1) * f.spacing_x);
       const double y = std::clamp(p.y(), f.origin.y(), f.origin.y() + (f.rows - 1) * f.spacing_y);
+      if (!under) {  // over a hole: no surface either
+        EXPECT_FALSE(surfaceHeight(f, x, y).has_value());
+        ++over_holes;
+        continue;
+      }
+      const PieceId id = *under;
+      ASSERT_GE(id, field.first);
+      ASSERT_LT(id, field.first + field.count);
       const Eigen::Vector3d on_top(x, y, *surfaceHeight(f, x, y));
       EXPECT_LE(testing::outside(compact.piece(id, scratch), on_top), 1e-12) << "field " << k << ", piece " << id;
     }
   }
+  // Field A's 10 holes are 2.4 % of its area: about 12 of its 500 points.
+  EXPECT_GT(over_holes, 3);
 }
 
 // Case: a compact mesh as a plugin sees it: piece first + k is triangle k
@@ -268,9 +291,9 @@ TEST(CompactTerrainTest, AWheelDrivenOverItMeetsTheSameContactsBitForBit) {
   const Terrain stored = mixed(false), compact = mixed(true);
   const WheelGeometry wheel{.free_radius = 0.19, .tread_width = 0.12};
   WheelContactFinder on_stored, on_compact;
-  std::size_t contacts = 0, seams = 0, on_meshes = 0;
+  std::size_t contacts = 0, seams = 0, on_meshes = 0, over_hole = 0;
   const PieceId first_mesh_piece = compact.compactField(2).first;
-  // Across field A, up the ledge's face, over field B, the rock, the mesh
+  // Across field A and its hole, up the ledge's face, over field B, the rock, the mesh
   // sheet and the mesh rock: 1 mm steps, the centre bobbing so that it
   // sinks 0-30 mm into the relief.
   for (int k = 0; k < 10700; ++k) {
@@ -292,11 +315,13 @@ TEST(CompactTerrainTest, AWheelDrivenOverItMeetsTheSameContactsBitForBit) {
       on_meshes += a[i].piece >= first_mesh_piece;
     }
     contacts += a.size();
+    over_hole += a.empty() && x > -0.9 && x < -0.6;
     if (::testing::Test::HasFailure()) FAIL() << "step " << k;
   }
   EXPECT_GT(contacts, 8000u);   // on the ground most of the way
   EXPECT_GT(seams, 0u);         // and the seam rule had creases to share
   EXPECT_GT(on_meshes, 1500u);  // the sheet and the rock carried it for their 2 m
+  EXPECT_GT(over_hole, 200u);   // and it met nothing over field A's 0.5 m hole
 }
 
 TEST(CompactTerrainTest, RefusesAnUnregisteredMaterialAndABadField) {

@@ -210,7 +210,7 @@ TEST_F(TerrainFileTest, AHeightfieldTakesAMaterialPerCell) {
     for (int r = 0; r < 2; ++r) {
       for (int c = 0; c < 2; ++c) {
         for (int k = 0; k < 2; ++k) {
-          EXPECT_EQ(terrain.material(cellPiece(range, grid, r, c, k)).mu_max, r == 1 && c == 0 ? 0.6 : 0.9)
+          EXPECT_EQ(terrain.material(*cellPiece(range, grid, r, c, k)).mu_max, r == 1 && c == 0 ? 0.6 : 0.9)
               << storage << " cell (" << r << ", " << c << ")";
         }
       }

@@ -122,11 +122,76 @@ TEST(CompactHeightfieldTest, FindsTheSamePiecesAsTheTerrainIndexForAnyBox) {
   EXPECT_TRUE(found.empty());
 }
 
+// Holes at random (three in ten cells), a run of 130 (two whole blocks of
+// the running count), the first row and the last column (the bounds shrink).
+Heightfield holedField(int rows, int cols, std::uint32_t seed) {
+  Heightfield f = randomField(rows, cols, seed);
+  std::mt19937 gen(seed);
+  f.cell_holes.assign(f.cellCount(), 0);
+  for (std::uint8_t& h : f.cell_holes) h = gen() % 10 < 3 ? 1 : 0;
+  std::fill_n(f.cell_holes.begin() + 300, 130, std::uint8_t{1});
+  for (int c = 0; c + 1 < cols; ++c) f.cell_holes[c] = 1;
+  for (int r = 0; r + 1 < rows; ++r) f.cell_holes[r * (cols - 1) + cols - 2] = 1;
+  f.cell_materials.resize(f.cellCount());
+  for (std::size_t cell = 0; cell < f.cellCount(); ++cell) f.cell_materials[cell] = static_cast<MaterialId>(cell % 3);
+  return f;
+}
+
+// Case: holes shift the ids of every later piece; the compact field maps
+// ids to cells through its running count, across blocks and whole blocks
+// of holes.
+TEST(CompactHeightfieldTest, SkipsHolesAsAddHeightfieldDoes) {
+  const Heightfield f = holedField(30, 41, 6);
+  TerrainBuilder builder;
+  for (int m = 0; m < 3; ++m) builder.addMaterial(Material{});
+  const PieceRange range = addHeightfield(builder, f, 0);
+  const Terrain stored = std::move(builder).build();
+  const detail::CompactHeightfield compact(f);
+  ASSERT_EQ(compact.pieceCount(), static_cast<std::size_t>(range.count));
+  ASSERT_EQ(compact.pieceCount(), f.pieceCount());
+  EXPECT_LT(compact.pieceCount(), 2 * f.cellCount() * 7 / 10);
+  Aabb all = stored.piece(0).bounds();
+  for (std::size_t k = 0; k < compact.pieceCount(); ++k) {
+    SCOPED_TRACE(k);
+    const ConvexPolyhedron& piece = stored.piece(static_cast<PieceId>(k));
+    expectSameBits(compact.piece(k), piece);
+    EXPECT_EQ(compact.materialId(k, 0), stored.materialId(static_cast<PieceId>(k)));
+    all.include(piece.bounds().min);
+    all.include(piece.bounds().max);
+  }
+  EXPECT_EQ(compact.bounds().min, all.min);
+  EXPECT_EQ(compact.bounds().max, all.max);
+  EXPECT_GT(all.min.y(), f.origin.y());  // the first row is all holes
+  std::mt19937 gen(7);
+  std::vector<PieceId> expected, found;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const Eigen::Vector3d half(uniform(gen, 0.01, 1.5), uniform(gen, 0.01, 1.5), uniform(gen, 0.01, 1.0));
+    const Eigen::Vector3d centre(uniform(gen, all.min.x() - 1, all.max.x() + 1),
+                                 uniform(gen, all.min.y() - 1, all.max.y() + 1),
+                                 uniform(gen, all.min.z() - 0.5, all.max.z() + 0.5));
+    expected.clear();
+    found.clear();
+    stored.overlapping({centre - half, centre + half}, expected);
+    compact.overlapping({centre - half, centre + half}, 0, found);
+    std::sort(expected.begin(), expected.end());
+    std::sort(found.begin(), found.end());
+    ASSERT_EQ(found, expected) << "trial " << trial;
+  }
+}
+
 TEST(CompactHeightfieldTest, KeepsEightBytesASample) {
   const detail::CompactHeightfield compact(randomField(200, 300, 4));
   const double per_cell = static_cast<double>(compact.memoryBytes()) / (199.0 * 299.0);
   EXPECT_LT(per_cell, 8.2);
   EXPECT_GT(per_cell, 8.0);
+}
+
+TEST(CompactHeightfieldTest, KeepsAByteACellForHoles) {
+  const detail::CompactHeightfield compact(holedField(200, 300, 4));
+  // 8 a sample, 4 for the material, 1 for the hole, 4 / 64 for the count.
+  const double per_cell = static_cast<double>(compact.memoryBytes()) / (199.0 * 299.0);
+  EXPECT_LT(per_cell, 13.2);
+  EXPECT_GT(per_cell, 13.0);
 }
 
 TEST(CompactHeightfieldTest, RefusesAMalformedFieldAsValidateDoes) {

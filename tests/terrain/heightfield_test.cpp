@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <iostream>
 #include <limits>
+#include <optional>
 #include <random>
 
 #include "random_heightfield.hpp"
@@ -50,7 +51,7 @@ TEST(HeightfieldTest, EachCellBecomesTwoPrismsInRowMajorOrder) {
   for (int r = 0; r + 1 < f.rows; ++r) {
     for (int c = 0; c + 1 < f.cols; ++c) {
       for (int k = 0; k < 2; ++k) {
-        const ConvexPolyhedron& prism = terrain.piece(cellPiece(range, f, r, c, k));
+        const ConvexPolyhedron& prism = terrain.piece(*cellPiece(range, f, r, c, k));
         EXPECT_EQ(prism.vertexCount(), 6);
         EXPECT_EQ(prism.faceCount(), 5);
         // Case: the prism covers its cell in x and y and reaches the base.
@@ -63,9 +64,9 @@ TEST(HeightfieldTest, EachCellBecomesTwoPrismsInRowMajorOrder) {
       // Case: triangle 0 holds p01 (below the diagonal), triangle 1 holds p10.
       const Eigen::Vector3d p01 = f.sample(r, c + 1);
       const Eigen::Vector3d p10 = f.sample(r + 1, c);
-      EXPECT_NEAR(queryPoint(terrain.piece(cellPiece(range, f, r, c, 0)), p01).signed_distance, 0.0, kTolerance);
-      EXPECT_GT(queryPoint(terrain.piece(cellPiece(range, f, r, c, 0)), p10).signed_distance, 0.0);
-      EXPECT_NEAR(queryPoint(terrain.piece(cellPiece(range, f, r, c, 1)), p10).signed_distance, 0.0, kTolerance);
+      EXPECT_NEAR(queryPoint(terrain.piece(*cellPiece(range, f, r, c, 0)), p01).signed_distance, 0.0, kTolerance);
+      EXPECT_GT(queryPoint(terrain.piece(*cellPiece(range, f, r, c, 0)), p10).signed_distance, 0.0);
+      EXPECT_NEAR(queryPoint(terrain.piece(*cellPiece(range, f, r, c, 1)), p10).signed_distance, 0.0, kTolerance);
     }
   }
 }
@@ -89,7 +90,7 @@ TEST(HeightfieldTest, PrismFacesPointOutwardForAnyHeights) {
           const double x = f.origin.x() + (c + s) * f.spacing_x;
           const double y = f.origin.y() + (r + t) * f.spacing_y;
           const double z = surfaceHeight(f, x, y).value();
-          const ConvexPolyhedron& prism = terrain.piece(cellPiece(range, f, r, c, k));
+          const ConvexPolyhedron& prism = terrain.piece(*cellPiece(range, f, r, c, k));
           const Eigen::Vector3d normal = prism.faceNormal(0);  // the top triangle
           EXPECT_GT(normal.z(), 0.0);
           const PointQuery above = queryPoint(prism, {x, y, z + offset});
@@ -172,7 +173,7 @@ TEST(HeightfieldTest, EachCellTakesItsOwnMaterial) {
     for (int r = 0; r < 3; ++r) {
       for (int c = 0; c < 4; ++c) {
         for (int k = 0; k < 2; ++k) {
-          EXPECT_EQ(terrain.materialId(cellPiece(range, f, r, c, k)), r == 1 && c == 2 ? gravel : asphalt)
+          EXPECT_EQ(terrain.materialId(*cellPiece(range, f, r, c, k)), r == 1 && c == 2 ? gravel : asphalt)
               << (compact ? "compact" : "prisms") << " cell (" << r << ", " << c << ")";
         }
       }
@@ -193,6 +194,69 @@ TEST(HeightfieldTest, EachCellTakesItsOwnMaterial) {
                          HasSubstr("cell (row 2, col 1) has material id 7, which is not registered (1 materials)")));
     EXPECT_EQ(builder.pieceCount(), 0u);
   }
+}
+
+// Case: holes. A hole cell has no pieces, no surface and no triangles; the
+// other cells keep their prisms, numbered on without gaps, stored or
+// compact alike. A hole mask of the wrong size, or one without ground, is
+// refused.
+TEST(HeightfieldTest, AHoleCellHasNoGround) {
+  const Heightfield whole = randomField(4, 5, 0.1, 3);
+  Heightfield f = whole;
+  f.cell_holes.assign(3 * 4, 0);
+  f.cell_holes[0 * 4 + 1] = f.cell_holes[1 * 4 + 2] = 1;  // cells (0, 1) and (1, 2)
+  EXPECT_EQ(f.pieceCount(), 2u * 10);
+  EXPECT_TRUE(f.hasHoles());
+  EXPECT_FALSE(whole.hasHoles());
+  for (const bool compact : {false, true}) {
+    SCOPED_TRACE(compact ? "compact" : "prisms");
+    TerrainBuilder builder;
+    const MaterialId m = builder.addMaterial(Material{});
+    const PieceRange all = addHeightfield(builder, whole, m);
+    const PieceRange range = compact ? addCompactHeightfield(builder, f, m) : addHeightfield(builder, f, m);
+    const Terrain terrain = std::move(builder).build();
+    ASSERT_EQ(range.count, 20);
+    PieceId next = range.first;
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 4; ++c) {
+        for (int k = 0; k < 2; ++k) {
+          const std::optional<PieceId> id = cellPiece(range, f, r, c, k);
+          ASSERT_EQ(id.has_value(), !f.isHole(r, c)) << "cell (" << r << ", " << c << ")";
+          if (!id) continue;
+          EXPECT_EQ(*id, next++);
+          // The same prism as the field without holes has on that cell.
+          std::optional<ConvexPolyhedron> scratch;
+          const ConvexPolyhedron& p = terrain.piece(*id, scratch);
+          const ConvexPolyhedron& q = terrain.piece(*cellPiece(all, whole, r, c, k));
+          for (int v = 0; v < p.vertexCount(); ++v) EXPECT_EQ(p.vertex(v), q.vertex(v));
+        }
+      }
+    }
+  }
+  // The surface: none over a hole, the same elsewhere; the mesh's triangle
+  // k on piece k.
+  const Eigen::Vector3d in_hole = f.origin + Eigen::Vector3d(1.5 * f.spacing_x, 0.4 * f.spacing_y, 0.0);
+  EXPECT_FALSE(surfaceHeight(f, in_hole.x(), in_hole.y()).has_value());
+  EXPECT_FALSE(pieceUnder({0, 20}, f, in_hole.x(), in_hole.y()).has_value());
+  const Eigen::Vector3d beside = in_hole + Eigen::Vector3d(f.spacing_x, 0.0, 0.0);
+  EXPECT_EQ(surfaceHeight(f, beside.x(), beside.y()), surfaceHeight(whole, beside.x(), beside.y()));
+  EXPECT_EQ(pieceUnder({0, 20}, f, beside.x(), beside.y()), PieceId{2});  // cell (0, 2) follows one hole
+  const TriangleMesh mesh = surfaceMesh(f);
+  EXPECT_EQ(mesh.vertices.size(), whole.heights.size());
+  ASSERT_EQ(mesh.triangles.size(), 20u);
+  const TriangleMesh full = surfaceMesh(whole);
+  EXPECT_EQ(mesh.triangles[2], full.triangles[4]);    // cell (0, 2)
+  EXPECT_EQ(mesh.triangles[19], full.triangles[23]);  // cell (2, 3)
+  // Refused: a mask of the wrong size, and holes everywhere.
+  Heightfield wrong = f;
+  wrong.cell_holes.pop_back();
+  EXPECT_THAT(messageOf(wrong),
+              HasSubstr("cell_holes has 11 entries, but the grid has (rows - 1) x (cols - 1) = 12 cells"));
+  wrong.cell_holes.assign(12, 1);
+  EXPECT_THAT(messageOf(wrong), HasSubstr("every one of the 12 cells is a hole; the field has no ground"));
+  TerrainBuilder builder;
+  EXPECT_THROW(addCompactHeightfield(builder, wrong, builder.addMaterial(Material{})), InvalidInputError);
+  EXPECT_EQ(builder.pieceCount(), 0u);
 }
 
 TEST(HeightfieldTest, TriangularPrismRejectsABaseAboveTheTriangle) {

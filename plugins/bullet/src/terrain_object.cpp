@@ -137,8 +137,14 @@ TerrainObject::TerrainObject(const Terrain& terrain) : terrain_(terrain) {
   for (int k = 0; k < field_count; ++k) {
     const Terrain::CompactField part = terrain.compactField(k);
     btTransform placement = btTransform::getIdentity();
-    if (part.field != nullptr) {
+    if (part.field != nullptr && part.field->cell_holes.empty()) {
       fields_.push_back(makeFieldShape(*part.field, placement));
+    } else if (part.field != nullptr) {
+      // Bullet's heightfield has no holes: the field's surface as a mesh,
+      // triangle k on piece k like a compact mesh's.
+      const TriangleMesh& surface =
+          *field_meshes_.emplace_back(std::make_unique<TriangleMesh>(surfaceMesh(*part.field)));
+      fields_.push_back(makeMeshShape(surface, mesh_arrays_.emplace_back()));
     } else {
       fields_.push_back(makeMeshShape(*part.mesh, mesh_arrays_.emplace_back()));
     }

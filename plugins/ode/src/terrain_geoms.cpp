@@ -50,10 +50,15 @@ TerrainGeoms::TerrainGeoms(const Terrain& terrain, dSpaceID parent, TerrainShape
     dSpaceClean(space_);
   }
   for (std::size_t k = 0; k < terrain.compactFieldCount(); ++k) {
-    if (terrain.compactField(k).field != nullptr) {
+    const Terrain::CompactField part = terrain.compactField(k);
+    if (part.field != nullptr && part.field->cell_holes.empty()) {
       addField(k);
+    } else if (part.field != nullptr) {
+      // ODE's heightfield has no holes: the field's surface as a mesh,
+      // triangle k on piece k like a compact mesh's.
+      addMesh(k, *field_meshes_.emplace_back(std::make_unique<TriangleMesh>(surfaceMesh(*part.field))));
     } else {
-      addMesh(k);
+      addMesh(k, *part.mesh);
     }
   }
 }
@@ -80,7 +85,9 @@ PieceId TerrainGeoms::piece(dGeomID geom, const Eigen::Vector3d& point) const {
   const auto data = static_cast<PieceId>(reinterpret_cast<std::intptr_t>(dGeomGetData(geom)));
   if (data >= 0) return data;
   const Terrain::CompactField part = terrain_.compactField(static_cast<std::size_t>(-2 - data));
-  if (part.field != nullptr) return pieceUnder({part.first, part.count}, *part.field, point.x(), point.y());
+  if (part.field != nullptr && part.field->cell_holes.empty()) {
+    return *pieceUnder({part.first, part.count}, *part.field, point.x(), point.y());
+  }
   return terrain_.nearestPiece(point, part.first, part.count, kMeshContactReachM);
 }
 
@@ -96,8 +103,7 @@ dReal fieldHeight(void* field, int x, int z) {
 
 }  // namespace
 
-void TerrainGeoms::addMesh(std::size_t k) {
-  const TriangleMesh& m = *terrain_.compactField(k).mesh;
+void TerrainGeoms::addMesh(std::size_t k, const TriangleMesh& m) {
   static_assert(sizeof(Eigen::Vector3d) == 3 * sizeof(dReal) && sizeof(m.triangles[0]) == 3 * sizeof(dTriIndex));
   // ODE reads the mesh's own arrays (its indices are unsigned 32-bit, the
   // mesh's signed and non-negative); triangle i is the part's piece i.

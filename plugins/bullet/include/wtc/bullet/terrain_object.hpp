@@ -10,6 +10,8 @@
 // prisms (Bullet's flipQuadEdges), so a chassis meets the same surface. A
 // compact triangle mesh (MeshExtrusionOptions::compact) is one child too:
 // a btBvhTriangleMeshShape over the mesh's own vertices and triangles.
+// Bullet's heightfield has no holes, so a compact field with holes is its
+// surface as such a mesh (surfaceMesh), at a mesh's memory (docs/terrain.md).
 // Unlike the prisms both are surfaces, not solids: a body that has sunk
 // through one is not pushed back up. The wheels never see them: WTC
 // answers them from the terrain itself.
@@ -69,7 +71,8 @@ class TerrainObject {
  private:
   const Terrain& terrain_;
   std::vector<std::unique_ptr<btConvexHullShape>> hulls_;
-  std::vector<std::unique_ptr<btConcaveShape>> fields_;  // one per compact field or mesh, in their order
+  std::vector<std::unique_ptr<btConcaveShape>> fields_;      // one per compact field or mesh, in their order
+  std::vector<std::unique_ptr<TriangleMesh>> field_meshes_;  // the surfaces of the compact fields with holes
   std::vector<std::unique_ptr<btTriangleIndexVertexArray>> mesh_arrays_;  // the compact meshes' views
   std::vector<std::unique_ptr<btCompoundShape>> groups_;
   std::unique_ptr<btCompoundShape> compound_;

@@ -29,7 +29,9 @@
 // that reads the field's samples through a callback (nothing copied),
 // turned so that its up axis is WTC's z; ODE splits each cell along the
 // prisms' diagonal p00-p11 in that orientation (tested). ODE treats the
-// ground below its surface, down to the field's base, as solid.
+// ground below its surface, down to the field's base, as solid. ODE's
+// heightfield has no holes: a compact field with holes is its surface
+// (surfaceMesh) as a trimesh geom, as a compact mesh is.
 //
 // A compact triangle mesh (MeshExtrusionOptions::compact) is one trimesh
 // geom over the mesh's own vertices and triangles (nothing copied): a
@@ -42,12 +44,14 @@
 //
 // The plugin tells terrain geoms by their space (contains()).
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <ode/ode.h>
 #include <Eigen/Core>
 
 #include "wtc/terrain.hpp"
+#include "wtc/triangle_mesh.hpp"
 
 namespace wtc::ode {
 
@@ -97,11 +101,12 @@ class TerrainGeoms {
   TerrainShape shape_;
   dSpaceID space_ = nullptr;
   void addField(std::size_t k);
-  void addMesh(std::size_t k);
+  void addMesh(std::size_t k, const TriangleMesh& mesh);
 
   std::vector<dGeomID> geoms_;  // the stored pieces' (Terrain::pieces() order), then one per compact field or mesh
-  std::vector<dTriMeshDataID> meshes_;      // the stored pieces' (kTriMesh), then the compact meshes'
-  std::vector<dHeightfieldDataID> fields_;  // one per compact field
+  std::vector<std::unique_ptr<TriangleMesh>> field_meshes_;  // the surfaces of the compact fields with holes
+  std::vector<dTriMeshDataID> meshes_;                       // the stored pieces' (kTriMesh), then the compact meshes'
+  std::vector<dHeightfieldDataID> fields_;                   // one per compact field
   // ODE keeps pointers into these (it copies nothing): one buffer per piece,
   // never resized once its geom exists.
   std::vector<std::vector<dReal>> numbers_;          // points, then planes (convex)
