@@ -22,6 +22,10 @@ inline constexpr double kCellM = 0.5;     // cell size (m)
 inline constexpr double kRadius = 0.19;   // r_f (m)
 inline constexpr double kStepM = 0.001;   // rolling: 1 m/s at a 1 ms step (m)
 inline constexpr int kColdPoints = 4096;  // cold: random positions
+// The heightfields' sizes (cells): 10^8 is 0.8 GB of samples, which the
+// compact field and Bullet's shape keep; stored prisms, FCL and meshes stop
+// earlier (each benchmark says where).
+inline constexpr long kFieldCells[] = {10'000L, 100'000L, 1'000'000L, 10'000'000L, 100'000'000L};
 
 inline double relief(double x, double y) {
   return 0.05 * std::sin(0.7 * x) * std::cos(0.9 * y) + 0.02 * std::sin(2.3 * x + 1.1 * y);

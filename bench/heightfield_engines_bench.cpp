@@ -123,7 +123,7 @@ void contactsFcl(benchmark::State& state, bool cold) {
 }
 
 const bool kRegistered = [] {
-  for (long cells : {10'000L, 100'000L, 1'000'000L, 10'000'000L}) {
+  for (const long cells : kFieldCells) {
     const std::string tail = join("/", std::to_string(cells));
     benchmark::RegisterBenchmark(join("Build/bullet", tail).c_str(), buildBullet)
         ->Arg(cells)

@@ -50,7 +50,7 @@ bool readCompactStorage(const YamlReader& in, const YAML::Node& p) {
 
 Heightfield readHeightfield(const YamlReader& in, const YAML::Node& p) {
   in.checkKeys(p, kCommonKeys,
-               {"heights", "file", "spacing", "base_depth", "height_scale", "storage", "cell_materials"});
+               {"heights", "file", "spacing", "base_depth", "height_scale", "storage", "cell_materials", "holes"});
   if (YamlReader::get(p, "rotation")) {
     in.fail(p["rotation"], "a heightfield takes no rotation (its grid is aligned with x and y)");
   }
@@ -109,31 +109,56 @@ Heightfield readHeightfield(const YamlReader& in, const YAML::Node& p) {
 
 using MaterialNames = std::map<std::string, MaterialId>;
 
-// A heightfield's cell_materials: (rows - 1) rows of (cols - 1) material
-// names, north (largest y) first, as the heights.
-std::vector<MaterialId> readCellMaterials(const YamlReader& in, const YAML::Node& rows, const Heightfield& field,
-                                          const MaterialNames& materials) {
+// One value per cell of a heightfield under `key`: (rows - 1) rows of
+// (cols - 1) values, north (largest y) first, as the heights; `read` turns
+// one entry (and its name, for errors) into a value.
+template <class T, class Read>
+std::vector<T> readCellGrid(const YamlReader& in, const YAML::Node& rows, const Heightfield& field,
+                            const std::string& key, const std::string& values, Read read) {
   const int cell_rows = field.rows - 1, cell_cols = field.cols - 1;
   if (!rows.IsSequence() || static_cast<int>(rows.size()) != cell_rows) {
-    in.fail(rows, "cell_materials: expected " + std::to_string(cell_rows) + " rows (one per row of cells, north " +
+    in.fail(rows, key + ": expected " + std::to_string(cell_rows) + " rows (one per row of cells, north " +
                       "first), got " + (rows.IsSequence() ? std::to_string(rows.size()) : std::string("no list")));
   }
-  std::vector<MaterialId> cells(static_cast<std::size_t>(cell_rows) * cell_cols);
+  std::vector<T> cells(static_cast<std::size_t>(cell_rows) * cell_cols);
   for (int k = 0; k < cell_rows; ++k) {
     const YAML::Node row = rows[k];
-    const std::string name = "cell_materials[" + std::to_string(k) + "]";
+    const std::string name = key + "[" + std::to_string(k) + "]";
     if (!row.IsSequence() || static_cast<int>(row.size()) != cell_cols) {
-      in.fail(row, name + ": expected " + std::to_string(cell_cols) + " material names (one per cell)");
+      in.fail(row, name + ": expected " + std::to_string(cell_cols) + " " + values + " (one per cell)");
     }
     for (int c = 0; c < cell_cols; ++c) {
-      const std::string material = in.string(row[c], name + "[" + std::to_string(c) + "]");
-      const auto found = materials.find(material);
-      if (found == materials.end())
-        in.fail(row[c], name + "[" + std::to_string(c) + "]: unknown material '" + material + "'");
-      cells[static_cast<std::size_t>(cell_rows - 1 - k) * cell_cols + c] = found->second;
+      cells[static_cast<std::size_t>(cell_rows - 1 - k) * cell_cols + c] =
+          read(row[c], name + "[" + std::to_string(c) + "]");
     }
   }
   return cells;
+}
+
+// A heightfield's cell_materials: a material name per cell.
+std::vector<MaterialId> readCellMaterials(const YamlReader& in, const YAML::Node& rows, const Heightfield& field,
+                                          const MaterialNames& materials) {
+  return readCellGrid<MaterialId>(in, rows, field, "cell_materials", "material names",
+                                  [&](const YAML::Node& cell, const std::string& name) {
+                                    const std::string material = in.string(cell, name);
+                                    const auto found = materials.find(material);
+                                    if (found == materials.end()) {
+                                      in.fail(cell, name + ": unknown material '" + material + "'");
+                                    }
+                                    return found->second;
+                                  });
+}
+
+// A heightfield's holes: 1 for a hole, 0 for ground, per cell.
+std::vector<std::uint8_t> readHoles(const YamlReader& in, const YAML::Node& rows, const Heightfield& field) {
+  return readCellGrid<std::uint8_t>(
+      in, rows, field, "holes", "entries of 0 or 1", [&](const YAML::Node& cell, const std::string& name) {
+        const double v = in.number(cell, name);
+        if (v != 0.0 && v != 1.0) {
+          in.fail(cell, name + " = " + cell.Scalar() + " (expected 0, ground, or 1, a hole)");
+        }
+        return static_cast<std::uint8_t>(v);
+      });
 }
 
 // Adds one piece; returns the degenerate triangles a mesh skipped.
@@ -205,6 +230,7 @@ std::int64_t addPiece(TerrainBuilder& builder, const YamlReader& in, const YAML:
     if (const auto cells = YamlReader::get(p, "cell_materials")) {
       field.cell_materials = readCellMaterials(in, *cells, field, materials);
     }
+    if (const auto holes = YamlReader::get(p, "holes")) field.cell_holes = readHoles(in, *holes, field);
     if (compact) {
       addCompactHeightfield(builder, std::move(field), material);
     } else {

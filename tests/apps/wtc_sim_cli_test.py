@@ -78,7 +78,13 @@ def main():
             with open(os.path.join(out, name + ".csv")) as f:
                 text = f.read()
             rows = list(csv.reader(text.splitlines()))
-            check(text.endswith("\n") and len(rows) > 2 and all(len(r) == len(rows[0]) for r in rows),
+            if sig == signal.SIGKILL and not text.endswith("\n"):
+                # Each row is written and flushed whole, but Linux may stop a
+                # write at a page boundary when a kill lands in it: only the
+                # last row can be cut (the plotting script skips it).
+                rows.pop()
+            check(len(rows) > 2 and all(len(r) == len(rows[0]) for r in rows)
+                  and (sig == signal.SIGKILL or text.endswith("\n")),
                   f"after {sig.name} {name}.csv holds {len(rows) - 1} whole rows")
     if FAILURES:
         sys.exit(f"{len(FAILURES)} checks failed")

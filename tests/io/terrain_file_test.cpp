@@ -223,6 +223,38 @@ TEST_F(TerrainFileTest, AHeightfieldTakesAMaterialPerCell) {
   EXPECT_THAT(loadError(field), HasSubstr("missing key 'material'"));
 }
 
+// holes: 1 for a hole, 0 for ground, per cell, north row first; the hole
+// cell has no pieces, prisms or compact. Bad rows and entries are named
+// at their line, a field of holes only as the validation names it.
+TEST_F(TerrainFileTest, AHeightfieldTakesHoles) {
+  const std::string field = std::string(kMaterials) +
+                            "pieces:\n"
+                            "  - type: heightfield\n"
+                            "    material: ground\n"
+                            "    spacing: 0.5\n"
+                            "    heights: [[0.5, 0.6, 0.4], [0.0, 0.1, 0.2], [0.3, 0.0, 0.1]]\n";
+  for (const std::string storage : {"prisms", "compact"}) {
+    const Terrain terrain =
+        loadTerrain(write(storage + ".yaml", field + "    storage: " + storage + "\n    holes: [[0, 0], [1, 0]]\n"));
+    // The first row of cells is the north one: cell (0, 0) is the hole.
+    EXPECT_EQ(terrain.pieceCount(), 6u) << storage;
+    const Eigen::Vector3d above_hole(0.25, 0.25, 2.0), above_ground(0.75, 0.25, 2.0);
+    std::vector<PieceId> found;
+    terrain.overlapping({above_hole - Eigen::Vector3d(0.1, 0.1, 5.0), above_hole + Eigen::Vector3d(0.1, 0.1, 0)},
+                        found);
+    EXPECT_TRUE(found.empty()) << storage;
+    terrain.overlapping({above_ground - Eigen::Vector3d(0.1, 0.1, 5.0), above_ground + Eigen::Vector3d(0.1, 0.1, 0)},
+                        found);
+    EXPECT_EQ(found.size(), 2u) << storage;
+  }
+  EXPECT_THAT(loadError(field + "    holes: [[0, 0]]\n"),
+              HasSubstr(at(8, 12) + "pieces[0] (heightfield): holes: expected 2 rows"));
+  EXPECT_THAT(loadError(field + "    holes: [[0, 0], [2, 0]]\n"),
+              HasSubstr(at(8, 22) + "pieces[0] (heightfield): holes[1][0] = 2 (expected 0, ground, or 1, a hole)"));
+  EXPECT_THAT(loadError(field + "    holes: [[1, 1], [1, 1]]\n"),
+              HasSubstr("pieces[0] (heightfield): wtc::Heightfield: every one of the 4 cells is a hole"));
+}
+
 TEST_F(TerrainFileTest, ErrorsNameTheFileLineAndColumn) {
   // Case: YAML syntax.
   EXPECT_THAT(loadError(std::string(kMaterials) + "pieces:\n  - {type: box, size: [1, 2\n"),

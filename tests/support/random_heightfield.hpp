@@ -6,6 +6,7 @@
 // to a stored ledge.
 #include <algorithm>
 #include <cstdint>
+#include <ostream>
 #include <random>
 
 #include <Eigen/Core>
@@ -43,8 +44,18 @@ inline Heightfield randomHeightfield(int rows, int cols, double amplitude, std::
 /// whose cells x in [1, 3], y in [6.5, 9.5] are flat at kPatchHeightM, and
 /// the spec's ledge (stored) beside it. `compact`: the field by
 /// addCompactHeightfield, else addHeightfield (the same pieces and ids).
-/// `as_mesh`: the field's surface as a triangle mesh instead (surfaceMesh,
-/// extruded base_depth; compact or not by MeshExtrusionOptions::compact).
+/// `part`: the field; the field's surface as a triangle mesh (surfaceMesh,
+/// extruded base_depth; compact or not by MeshExtrusionOptions::compact);
+/// or the field with holes in seven cells, none near the patch or on the
+/// line y = 5 m (the plugins' wheel tests roll along it).
+enum class CompactPart { kField, kMesh, kFieldWithHoles };
+
+/// Its name, for test names and messages.
+inline const char* nameOf(CompactPart part) {
+  return part == CompactPart::kField ? "Field" : part == CompactPart::kMesh ? "Mesh" : "FieldWithHoles";
+}
+inline void PrintTo(CompactPart part, std::ostream* out) { *out << nameOf(part); }
+
 struct PluginFieldScene {
   static constexpr double kPatchHeightM = 0.25;  // above the field's origin (m)
   Heightfield field;
@@ -52,19 +63,27 @@ struct PluginFieldScene {
   Terrain terrain;
 };
 
-inline PluginFieldScene pluginFieldScene(bool compact, double amplitude = 0.15, bool as_mesh = false) {
+inline PluginFieldScene pluginFieldScene(bool compact, double amplitude = 0.15,
+                                         CompactPart part = CompactPart::kField) {
   Heightfield field = randomHeightfield(16, 20, amplitude, 20261124);
   for (int r = 6; r <= 10; ++r) {
     for (int c = 8; c <= 12; ++c) field.heights[r * field.cols + c] = PluginFieldScene::kPatchHeightM;
   }
+  if (part == CompactPart::kFieldWithHoles) {
+    field.cell_holes.assign(field.cellCount(), 0);
+    for (const int cell : {12 * 19 + 2, 12 * 19 + 3, 13 * 19 + 2, 13 * 19 + 3, 13 * 19 + 4, 1 * 19 + 15, 18}) {
+      field.cell_holes[cell] = 1;
+    }
+  }
   TerrainBuilder builder;
   const MaterialId material = builder.addMaterial({});
   addLedge(builder, {}, material);
-  const PieceRange range = as_mesh ? addTriangleMesh(builder, surfaceMesh(field), material,
-                                                     {.thickness = field.base_depth, .compact = compact})
-                                         .pieces
-                           : compact ? addCompactHeightfield(builder, field, material)
-                                     : addHeightfield(builder, field, material);
+  const PieceRange range =
+      part == CompactPart::kMesh
+          ? addTriangleMesh(builder, surfaceMesh(field), material, {.thickness = field.base_depth, .compact = compact})
+                .pieces
+      : compact ? addCompactHeightfield(builder, field, material)
+                : addHeightfield(builder, field, material);
   return {field, range, std::move(builder).build()};
 }
 
