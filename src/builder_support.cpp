@@ -74,12 +74,30 @@ ConvexPolyhedron makePrism(const std::array<Eigen::Vector3d, 3>& top, const std:
   return ConvexPolyhedron::fromMesh(prismVertices(top, bottom), kPrismFaces);
 }
 
-ConvexPolyhedron makeCheckedPrism(const std::array<Eigen::Vector3d, 3>& top,
-                                  const std::array<Eigen::Vector3d, 3>& bottom) {
+namespace {
+
+// The prism whose topology every checked prism copies.
+const ConvexPolyhedron& referencePrism() {
   static const ConvexPolyhedron kReference =
       makePrism({Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(1, 0, 1), Eigen::Vector3d(0, 1, 1)},
                 {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0)});
-  return sameTopologyAs(kReference, prismVertices(top, bottom), kPrismFaces);
+  return kReference;
+}
+
+}  // namespace
+
+// referencePrism() is called before prismVertices: its first call builds
+// the reference through the same per-thread vertex list.
+ConvexPolyhedron makeCheckedPrism(const std::array<Eigen::Vector3d, 3>& top,
+                                  const std::array<Eigen::Vector3d, 3>& bottom) {
+  const ConvexPolyhedron& like = referencePrism();
+  return sameTopologyAs(like, prismVertices(top, bottom), kPrismFaces);
+}
+
+void makeCheckedPrism(const std::array<Eigen::Vector3d, 3>& top, const std::array<Eigen::Vector3d, 3>& bottom,
+                      ConvexPolyhedron& into) {
+  const ConvexPolyhedron& like = referencePrism();
+  sameTopologyInto(into, like, prismVertices(top, bottom), kPrismFaces);
 }
 
 }  // namespace wtc::detail

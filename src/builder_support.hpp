@@ -33,5 +33,8 @@ ConvexPolyhedron makePrism(const std::array<Eigen::Vector3d, 3>& top, const std:
 /// prism instead of matched anew. For prisms formed on demand.
 ConvexPolyhedron makeCheckedPrism(const std::array<Eigen::Vector3d, 3>& top,
                                   const std::array<Eigen::Vector3d, 3>& bottom);
+/// The same prism made into `into`, reusing its buffers (a prism's).
+void makeCheckedPrism(const std::array<Eigen::Vector3d, 3>& top, const std::array<Eigen::Vector3d, 3>& bottom,
+                      ConvexPolyhedron& into);
 
 }  // namespace wtc::detail

@@ -83,13 +83,27 @@ void CompactHeightfield::corners(std::size_t k, Eigen::Vector3d p[3]) const {
   p[2] = k % 2 == 0 ? field_.sample(r + 1, c + 1) : field_.sample(r + 1, c);
 }
 
-ConvexPolyhedron CompactHeightfield::piece(std::size_t k) const {
+void CompactHeightfield::prismCorners(std::size_t k, std::array<Eigen::Vector3d, 3>& top,
+                                      std::array<Eigen::Vector3d, 3>& bottom) const {
   Eigen::Vector3d p[3];
   corners(k, p);
-  // makeTriangularPrism's corners, checked once for the whole field.
-  return makeCheckedPrism({p[0], p[1], p[2]},
-                          {Eigen::Vector3d(p[0].x(), p[0].y(), base_z_), Eigen::Vector3d(p[1].x(), p[1].y(), base_z_),
-                           Eigen::Vector3d(p[2].x(), p[2].y(), base_z_)});
+  top = {p[0], p[1], p[2]};
+  bottom = {Eigen::Vector3d(p[0].x(), p[0].y(), base_z_), Eigen::Vector3d(p[1].x(), p[1].y(), base_z_),
+            Eigen::Vector3d(p[2].x(), p[2].y(), base_z_)};
+}
+
+// makeTriangularPrism's prism; the corners were checked once for the whole
+// field.
+ConvexPolyhedron CompactHeightfield::piece(std::size_t k) const {
+  std::array<Eigen::Vector3d, 3> top, bottom;
+  prismCorners(k, top, bottom);
+  return makeCheckedPrism(top, bottom);
+}
+
+void CompactHeightfield::formInto(std::size_t k, ConvexPolyhedron& into) const {
+  std::array<Eigen::Vector3d, 3> top, bottom;
+  prismCorners(k, top, bottom);
+  makeCheckedPrism(top, bottom, into);
 }
 
 Aabb CompactHeightfield::pieceBounds(std::size_t k) const {

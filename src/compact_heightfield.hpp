@@ -17,6 +17,7 @@
 // one per block of kBlockCells cells, maps a cell to its first piece (the
 // count, then at most kBlockCells - 1 entries) and a piece to its cell (a
 // binary search over the counts, then the block).
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -36,6 +37,7 @@ class CompactHeightfield final : public FormedPieces {
   /// Piece k in addHeightfield's order (the cells row-major, holes skipped,
   /// triangle k % 2), bit for bit the prism addHeightfield builds.
   ConvexPolyhedron piece(std::size_t k) const override;
+  void formInto(std::size_t k, ConvexPolyhedron& into) const override;
   /// piece(k).bounds(), without forming the piece.
   Aabb pieceBounds(std::size_t k) const override;
   /// Appends first + k for every piece k whose bounds overlap `box` (as
@@ -63,6 +65,8 @@ class CompactHeightfield final : public FormedPieces {
   std::size_t piecesBefore(std::size_t cell) const;
   // The three corners of piece k (addHeightfield's triangle order).
   void corners(std::size_t k, Eigen::Vector3d p[3]) const;
+  // The top and bottom corners of piece k's prism (makeTriangularPrism's).
+  void prismCorners(std::size_t k, std::array<Eigen::Vector3d, 3>& top, std::array<Eigen::Vector3d, 3>& bottom) const;
 
   Heightfield field_;
   std::size_t piece_count_ = 0;

@@ -58,6 +58,12 @@ ConvexPolyhedron CompactTriangleMesh::piece(std::size_t k) const {
   return makeCheckedPrism(top, bottom);
 }
 
+void CompactTriangleMesh::formInto(std::size_t k, ConvexPolyhedron& into) const {
+  std::array<Eigen::Vector3d, 3> top, bottom;
+  corners(k, top, bottom);
+  makeCheckedPrism(top, bottom, into);
+}
+
 Aabb CompactTriangleMesh::pieceBounds(std::size_t k) const {
   std::array<Eigen::Vector3d, 3> top, bottom;
   corners(k, top, bottom);

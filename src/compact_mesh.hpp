@@ -42,6 +42,7 @@ class CompactTriangleMesh final : public FormedPieces {
 
   std::size_t pieceCount() const override { return mesh_.triangles.size(); }
   ConvexPolyhedron piece(std::size_t k) const override;
+  void formInto(std::size_t k, ConvexPolyhedron& into) const override;
   Aabb pieceBounds(std::size_t k) const override;
   void overlapping(const Aabb& box, PieceId first, std::vector<PieceId>& out) const override;
   const Aabb& bounds() const override { return bounds_; }

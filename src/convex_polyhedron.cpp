@@ -167,11 +167,25 @@ ConvexPolyhedron detail::sameTopologyAs(const ConvexPolyhedron& like, const std:
   return ConvexPolyhedron::assemble(vertices, faces, like.flat_, nullptr, &like.topology_);
 }
 
+void detail::sameTopologyInto(ConvexPolyhedron& into, const ConvexPolyhedron& like,
+                              const std::vector<Eigen::Vector3d>& vertices,
+                              const std::vector<std::vector<int>>& faces) {
+  ConvexPolyhedron::assembleInto(into, vertices, faces, like.flat_, nullptr, &like.topology_);
+}
+
 ConvexPolyhedron ConvexPolyhedron::assemble(const std::vector<Eigen::Vector3d>& vertices,
                                             const std::vector<std::vector<int>>& faces, bool flat,
                                             const std::vector<Eigen::Vector3d>* hull_normals,
                                             const std::vector<std::int32_t>* topology) {
   ConvexPolyhedron poly;
+  assembleInto(poly, vertices, faces, flat, hull_normals, topology);
+  return poly;
+}
+
+void ConvexPolyhedron::assembleInto(ConvexPolyhedron& poly, const std::vector<Eigen::Vector3d>& vertices,
+                                    const std::vector<std::vector<int>>& faces, bool flat,
+                                    const std::vector<Eigen::Vector3d>* hull_normals,
+                                    const std::vector<std::int32_t>* topology) {
   poly.bounds_ = Aabb::of(vertices);
   poly.origin_ = poly.bounds_.center();
   poly.size_ = poly.bounds_.extent().norm();
@@ -204,6 +218,11 @@ ConvexPolyhedron ConvexPolyhedron::assemble(const std::vector<Eigen::Vector3d>& 
     num[2 * nv + i] = local[i].z();
   }
   const double planar_tol = tolerance::kHullMergeRelative * poly.size_;
+  // Planarity is checked on a new face list; Qhull's facets are planar by
+  // its hyperplanes, and a copied topology's caller vouches for its faces
+  // (prisms formed from checked corners: triangles and the vertical or
+  // parallel quads between them). Zero area and volume are always checked.
+  const bool check_planar = hull_normals == nullptr && topology == nullptr;
   double* n_out = num + 3 * nv;
   for (int f = 0; f < nf; ++f) {
     Eigen::Vector3d n;
@@ -221,10 +240,12 @@ ConvexPolyhedron ConvexPolyhedron::assemble(const std::vector<Eigen::Vector3d>& 
     // d = max over ALL vertices keeps every vertex inside every plane, so the
     // plane bound stays a true lower bound (see the header's design note).
     double d = -std::numeric_limits<double>::infinity();
-    double face_min = std::numeric_limits<double>::infinity();
-    for (int i : faces[f]) face_min = std::min(face_min, n.dot(local[i]));
     for (int i = 0; i < nv; ++i) d = std::max(d, n.dot(local[i]));
-    if (hull_normals == nullptr && d - face_min > planar_tol) {
+    double face_min = d;
+    if (check_planar) {
+      for (int i : faces[f]) face_min = std::min(face_min, n.dot(local[i]));
+    }
+    if (d - face_min > planar_tol) {
       fail("face " + std::to_string(f) + " is not planar, or the mesh is not convex or not oriented " +
            "outward: a vertex lies " + formatNumber(d - face_min) + " m above the face's plane (tolerance " +
            formatNumber(planar_tol) + " m)");
@@ -242,7 +263,7 @@ ConvexPolyhedron ConvexPolyhedron::assemble(const std::vector<Eigen::Vector3d>& 
     const Eigen::Vector3d n(n_out[f], n_out[nf + f], n_out[2 * nf + f]);
     const auto& face = faces[f];
     for (std::size_t k = 0; k < face.size(); ++k) {
-      const Eigen::Vector3d& a = local[face[(k + face.size() - 1) % face.size()]];
+      const Eigen::Vector3d& a = local[face[k == 0 ? face.size() - 1 : k - 1]];
       const Eigen::Vector3d s_in = n.cross(local[face[k]] - a);
       side[0] = s_in.x();
       side[1] = s_in.y();
@@ -257,12 +278,13 @@ ConvexPolyhedron ConvexPolyhedron::assemble(const std::vector<Eigen::Vector3d>& 
 
   poly.has_adjacency_ = nv >= tolerance::kHillClimbMinVertices;
   if (topology != nullptr) {
-    poly.topology_ = *topology;
+    poly.topology_ = *topology;  // assignment: into's buffer if it is large enough
     poly.numbers_.shrink_to_fit();
-    return poly;
+    return;
   }
   // Topology: face lists, then (large pieces only) vertex adjacency.
   auto& topo = poly.topology_;
+  topo.clear();
   topo.reserve(1 + faces.size() + 2 * face_edges);  // offsets, face lists, twins: one allocation
   topo.push_back(0);
   std::size_t total = 0;
@@ -288,7 +310,6 @@ ConvexPolyhedron ConvexPolyhedron::assemble(const std::vector<Eigen::Vector3d>& 
   }
   topo.shrink_to_fit();
   poly.numbers_.shrink_to_fit();
-  return poly;
 }
 
 }  // namespace wtc

@@ -28,6 +28,8 @@ class FormedPieces {
   virtual std::size_t pieceCount() const = 0;
   /// Piece k, bit for bit the stored builder's.
   virtual ConvexPolyhedron piece(std::size_t k) const = 0;
+  /// piece(k) made into `into`, reusing its buffers.
+  virtual void formInto(std::size_t k, ConvexPolyhedron& into) const = 0;
   /// piece(k).bounds(), without forming the piece.
   virtual Aabb pieceBounds(std::size_t k) const = 0;
   /// Appends first + k for every piece k whose bounds overlap `box`, exactly

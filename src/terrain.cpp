@@ -128,6 +128,11 @@ const ConvexPolyhedron& Terrain::piece(PieceId id, std::optional<ConvexPolyhedro
   return *scratch;
 }
 
+void Terrain::formPiece(PieceId id, ConvexPolyhedron& into) const {
+  const Field& f = fields_[place(id).field];
+  f.formed->formInto(static_cast<std::size_t>(id - f.first), into);
+}
+
 PieceId Terrain::storedId(std::size_t stored) const {
   // The last field that starts at or before stored position `stored` (field
   // f starts where f.first - f.formed_before stored pieces precede it).

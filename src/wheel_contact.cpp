@@ -89,16 +89,16 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
           next_caches_.emplace_back(id, cache);
           continue;
         }
-        std::optional<ConvexPolyhedron> scratch;
-        terrain.piece(id, scratch);
         std::shared_ptr<ConvexPolyhedron> formed;
         if (!spare_.empty()) {
           formed = std::move(spare_.back());
           spare_.pop_back();
         }
         if (formed && formed.use_count() == 1) {
-          *formed = std::move(*scratch);
+          terrain.formPiece(id, *formed);  // into a dropped prism's buffers
         } else {
+          std::optional<ConvexPolyhedron> scratch;
+          terrain.piece(id, scratch);
           formed = std::make_shared<ConvexPolyhedron>(std::move(*scratch));
         }
         next_formed_.emplace_back(id, std::move(formed));

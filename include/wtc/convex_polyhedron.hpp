@@ -38,9 +38,15 @@ namespace detail {
 // A piece with the same face list as `like` (and as many vertices), built
 // from `vertices` with like's topology copied instead of matched anew: the
 // same piece, bit for bit, as fromMesh(vertices, faces) would build (for
-// pieces formed by the million: compact heightfields). Internal to the core.
+// pieces formed by the million: compact heightfields and meshes). The
+// caller vouches that the faces are planar (fromMesh checks it; zero
+// areas and a missing volume are still refused). Internal to the core.
 ConvexPolyhedron sameTopologyAs(const ConvexPolyhedron& like, const std::vector<Eigen::Vector3d>& vertices,
                                 const std::vector<std::vector<int>>& faces);
+// The same piece made into `into`, reusing its buffers (no allocation when
+// `into` had as many vertices, faces and face edges).
+void sameTopologyInto(ConvexPolyhedron& into, const ConvexPolyhedron& like,
+                      const std::vector<Eigen::Vector3d>& vertices, const std::vector<std::vector<int>>& faces);
 }  // namespace detail
 
 class ConvexPolyhedron {
@@ -143,9 +149,17 @@ class ConvexPolyhedron {
                                    const std::vector<std::vector<int>>& faces, bool flat,
                                    const std::vector<Eigen::Vector3d>* hull_normals,
                                    const std::vector<std::int32_t>* topology = nullptr);
+  // assemble's piece made into `poly`, every member overwritten, its
+  // buffers reused.
+  static void assembleInto(ConvexPolyhedron& poly, const std::vector<Eigen::Vector3d>& vertices,
+                           const std::vector<std::vector<int>>& faces, bool flat,
+                           const std::vector<Eigen::Vector3d>* hull_normals, const std::vector<std::int32_t>* topology);
   friend ConvexPolyhedron detail::sameTopologyAs(const ConvexPolyhedron& like,
                                                  const std::vector<Eigen::Vector3d>& vertices,
                                                  const std::vector<std::vector<int>>& faces);
+  friend void detail::sameTopologyInto(ConvexPolyhedron& into, const ConvexPolyhedron& like,
+                                       const std::vector<Eigen::Vector3d>& vertices,
+                                       const std::vector<std::vector<int>>& faces);
   int hillClimb(const Eigen::Vector3d& dir, int start) const;
   std::span<const std::int32_t> vertexNeighbors(int i) const;
 

@@ -103,6 +103,10 @@ class Terrain {
   /// Piece `id`: a stored piece itself, or a formed one made into `scratch`
   /// (which the result then refers to).
   const ConvexPolyhedron& piece(PieceId id, std::optional<ConvexPolyhedron>& scratch) const;
+  /// Formed piece `id` made into `into`, reusing its buffers (a former
+  /// piece's: how the contact finder forms pieces without allocating).
+  /// Precondition: isFormed(id).
+  void formPiece(PieceId id, ConvexPolyhedron& into) const;
   /// True for a compact part's piece, formed when asked for.
   bool isFormed(PieceId id) const;
   /// The piece's bounding box, without forming it.

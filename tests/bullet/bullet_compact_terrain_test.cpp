@@ -86,8 +86,9 @@ TEST_P(BulletCompactTerrainTest, ARayMeetsTheSurfaceOfThePrisms) {
     const std::optional<double> surface = surfaceHeight(scene.field, p.x(), p.y());
     holes += !surface;
     ASSERT_EQ(hit.hasHit(), surface.has_value()) << "at (" << p.x() << ", " << p.y() << ")";  // through a hole
-    if (surface)
+    if (surface) {
       EXPECT_NEAR(hit.m_hitPointWorld.z(), *surface, kRayToleranceM) << "at (" << p.x() << ", " << p.y() << ")";
+    }
   }
   EXPECT_EQ(holes > 0, scene.field.hasHoles());
 }

@@ -84,7 +84,9 @@ TEST_P(OdeCompactTerrainTest, ARayMeetsTheSurfaceOfThePrisms) {
     holes += !surface;
     ASSERT_EQ(dCollide(ray, field, 1, &contact, sizeof(dContactGeom)), surface ? 1 : 0)  // none through a hole
         << "at (" << p.x() << ", " << p.y() << ")";
-    if (surface) EXPECT_NEAR(contact.pos[2], *surface, onSurface()) << "at (" << p.x() << ", " << p.y() << ")";
+    if (surface) {
+      EXPECT_NEAR(contact.pos[2], *surface, onSurface()) << "at (" << p.x() << ", " << p.y() << ")";
+    }
   }
   EXPECT_EQ(holes > 0, scene.field.hasHoles());
   dGeomDestroy(ray);
