@@ -92,20 +92,6 @@ void CompactHeightfield::prismCorners(std::size_t k, std::array<Eigen::Vector3d,
             Eigen::Vector3d(p[2].x(), p[2].y(), base_z_)};
 }
 
-// makeTriangularPrism's prism; the corners were checked once for the whole
-// field.
-ConvexPolyhedron CompactHeightfield::piece(std::size_t k) const {
-  std::array<Eigen::Vector3d, 3> top, bottom;
-  prismCorners(k, top, bottom);
-  return makeCheckedPrism(top, bottom);
-}
-
-void CompactHeightfield::formInto(std::size_t k, ConvexPolyhedron& into) const {
-  std::array<Eigen::Vector3d, 3> top, bottom;
-  prismCorners(k, top, bottom);
-  makeCheckedPrism(top, bottom, into);
-}
-
 Aabb CompactHeightfield::pieceBounds(std::size_t k) const {
   Eigen::Vector3d p[3];
   corners(k, p);

@@ -35,9 +35,9 @@ class CompactHeightfield final : public FormedPieces {
   /// Two per cell that is not a hole, as Heightfield::pieceCount().
   std::size_t pieceCount() const override { return piece_count_; }
   /// Piece k in addHeightfield's order (the cells row-major, holes skipped,
-  /// triangle k % 2), bit for bit the prism addHeightfield builds.
-  ConvexPolyhedron piece(std::size_t k) const override;
-  void formInto(std::size_t k, ConvexPolyhedron& into) const override;
+  /// triangle k % 2): makeTriangularPrism's corners.
+  void prismCorners(std::size_t k, std::array<Eigen::Vector3d, 3>& top,
+                    std::array<Eigen::Vector3d, 3>& bottom) const override;
   /// piece(k).bounds(), without forming the piece.
   Aabb pieceBounds(std::size_t k) const override;
   /// Appends first + k for every piece k whose bounds overlap `box` (as
@@ -65,8 +65,6 @@ class CompactHeightfield final : public FormedPieces {
   std::size_t piecesBefore(std::size_t cell) const;
   // The three corners of piece k (addHeightfield's triangle order).
   void corners(std::size_t k, Eigen::Vector3d p[3]) const;
-  // The top and bottom corners of piece k's prism (makeTriangularPrism's).
-  void prismCorners(std::size_t k, std::array<Eigen::Vector3d, 3>& top, std::array<Eigen::Vector3d, 3>& bottom) const;
 
   Heightfield field_;
   std::size_t piece_count_ = 0;

@@ -43,30 +43,16 @@ CompactTriangleMesh::CompactTriangleMesh(TriangleMesh mesh, double thickness)
   }
 }
 
-void CompactTriangleMesh::corners(std::size_t k, std::array<Eigen::Vector3d, 3>& top,
-                                  std::array<Eigen::Vector3d, 3>& bottom) const {
+void CompactTriangleMesh::prismCorners(std::size_t k, std::array<Eigen::Vector3d, 3>& top,
+                                       std::array<Eigen::Vector3d, 3>& bottom) const {
   const auto& t = mesh_.triangles[k];
   top = {mesh_.vertices[t[0]], mesh_.vertices[t[1]], mesh_.vertices[t[2]]};
   bottom = extrudedBottom(top[0], top[1], top[2], thickness_);
 }
 
-ConvexPolyhedron CompactTriangleMesh::piece(std::size_t k) const {
-  std::array<Eigen::Vector3d, 3> top, bottom;
-  corners(k, top, bottom);
-  // makeExtrudedTriangle's prism; its corners were checked when the mesh
-  // was added.
-  return makeCheckedPrism(top, bottom);
-}
-
-void CompactTriangleMesh::formInto(std::size_t k, ConvexPolyhedron& into) const {
-  std::array<Eigen::Vector3d, 3> top, bottom;
-  corners(k, top, bottom);
-  makeCheckedPrism(top, bottom, into);
-}
-
 Aabb CompactTriangleMesh::pieceBounds(std::size_t k) const {
   std::array<Eigen::Vector3d, 3> top, bottom;
-  corners(k, top, bottom);
+  prismCorners(k, top, bottom);
   // ConvexPolyhedron's bounds are the min and max of its six vertices.
   Aabb box{top[0], top[0]};
   for (int i = 0; i < 3; ++i) {

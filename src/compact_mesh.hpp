@@ -41,8 +41,9 @@ class CompactTriangleMesh final : public FormedPieces {
   CompactTriangleMesh(TriangleMesh mesh, double thickness);
 
   std::size_t pieceCount() const override { return mesh_.triangles.size(); }
-  ConvexPolyhedron piece(std::size_t k) const override;
-  void formInto(std::size_t k, ConvexPolyhedron& into) const override;
+  /// makeExtrudedTriangle's corners for triangle k.
+  void prismCorners(std::size_t k, std::array<Eigen::Vector3d, 3>& top,
+                    std::array<Eigen::Vector3d, 3>& bottom) const override;
   Aabb pieceBounds(std::size_t k) const override;
   void overlapping(const Aabb& box, PieceId first, std::vector<PieceId>& out) const override;
   const Aabb& bounds() const override { return bounds_; }
@@ -52,8 +53,6 @@ class CompactTriangleMesh final : public FormedPieces {
   double thickness() const override { return thickness_; }
 
  private:
-  void corners(std::size_t k, std::array<Eigen::Vector3d, 3>& top, std::array<Eigen::Vector3d, 3>& bottom) const;
-
   TriangleMesh mesh_;
   double thickness_ = 0.0;
   struct FloatBox {

@@ -5,6 +5,7 @@
 // geometry (samples, or vertices and triangles) and its own index, and
 // forms piece k bit for bit as the matching builder (addHeightfield,
 // addTriangleMesh) would have stored it.
+#include <array>
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -26,10 +27,15 @@ class FormedPieces {
  public:
   virtual ~FormedPieces() = default;
   virtual std::size_t pieceCount() const = 0;
-  /// Piece k, bit for bit the stored builder's.
-  virtual ConvexPolyhedron piece(std::size_t k) const = 0;
+  /// The corners of piece k, a prism: its top triangle and, under each
+  /// corner, the bottom one (makeCheckedPrism's arguments).
+  virtual void prismCorners(std::size_t k, std::array<Eigen::Vector3d, 3>& top,
+                            std::array<Eigen::Vector3d, 3>& bottom) const = 0;
+  /// Piece k, bit for bit the stored builder's: the prism on its corners,
+  /// which were checked when the geometry was added.
+  ConvexPolyhedron piece(std::size_t k) const;
   /// piece(k) made into `into`, reusing its buffers.
-  virtual void formInto(std::size_t k, ConvexPolyhedron& into) const = 0;
+  void formInto(std::size_t k, ConvexPolyhedron& into) const;
   /// piece(k).bounds(), without forming the piece.
   virtual Aabb pieceBounds(std::size_t k) const = 0;
   /// Appends first + k for every piece k whose bounds overlap `box`, exactly

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "box_tree.hpp"
+#include "builder_support.hpp"
 #include "formed_pieces.hpp"
 #include "wtc/error.hpp"
 #include "wtc/point_query.hpp"
@@ -67,6 +68,18 @@ void TerrainBuilder::reserve(std::size_t count) {
   const std::size_t grown = std::max(wanted, 2 * pieces_.capacity());
   pieces_.reserve(grown);
   piece_material_.reserve(grown);
+}
+
+ConvexPolyhedron detail::FormedPieces::piece(std::size_t k) const {
+  std::array<Eigen::Vector3d, 3> top, bottom;
+  prismCorners(k, top, bottom);
+  return makeCheckedPrism(top, bottom);
+}
+
+void detail::FormedPieces::formInto(std::size_t k, ConvexPolyhedron& into) const {
+  std::array<Eigen::Vector3d, 3> top, bottom;
+  prismCorners(k, top, bottom);
+  makeCheckedPrism(top, bottom, into);
 }
 
 PieceRange detail::addFormedPieces(TerrainBuilder& builder, std::shared_ptr<const FormedPieces> pieces,
