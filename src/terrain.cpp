@@ -142,7 +142,12 @@ const ConvexPolyhedron& Terrain::piece(PieceId id, std::optional<ConvexPolyhedro
 }
 
 void Terrain::formPiece(PieceId id, ConvexPolyhedron& into) const {
-  const Field& f = fields_[place(id).field];
+  const int field = id >= 0 && static_cast<std::size_t>(id) < piece_count_ && !fields_.empty() ? place(id).field : -1;
+  if (field < 0) {
+    throw InvalidInputError("wtc::Terrain::formPiece: piece " + std::to_string(id) +
+                            " is not a formed piece of this terrain (" + std::to_string(piece_count_) + " pieces)");
+  }
+  const Field& f = fields_[field];
   f.formed->formInto(static_cast<std::size_t>(id - f.first), into);
 }
 

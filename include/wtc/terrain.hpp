@@ -105,7 +105,7 @@ class Terrain {
   const ConvexPolyhedron& piece(PieceId id, std::optional<ConvexPolyhedron>& scratch) const;
   /// Formed piece `id` made into `into`, reusing its buffers (a former
   /// piece's: how the contact finder forms pieces without allocating).
-  /// Precondition: isFormed(id).
+  /// Throws InvalidInputError unless isFormed(id).
   void formPiece(PieceId id, ConvexPolyhedron& into) const;
   /// True for a compact part's piece, formed when asked for.
   bool isFormed(PieceId id) const;

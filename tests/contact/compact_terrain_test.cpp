@@ -146,11 +146,19 @@ TEST(CompactTerrainTest, NumbersItsPiecesAsTheStoredTerrainDoes) {
     if (compact.isFormed(id)) {
       ++formed;
       EXPECT_THROW(compact.piece(id), InvalidInputError);
+      ConvexPolyhedron into = ConvexPolyhedron::box({0, 0, 0}, {1, 1, 1});  // a box's buffers, reused
+      compact.formPiece(id, into);
+      for (int v = 0; v < p.vertexCount(); ++v) EXPECT_EQ(into.vertex(v), stored.piece(id).vertex(v));
+      for (int f = 0; f < p.faceCount(); ++f) EXPECT_EQ(into.faceOffset(f), stored.piece(id).faceOffset(f));
     } else {
       EXPECT_EQ(&compact.piece(id), &compact.piece(id, scratch));  // stored: itself, no copy
     }
   }
   EXPECT_EQ(formed, static_cast<int>(stored.pieceCount()) - 3);
+  ConvexPolyhedron into = ConvexPolyhedron::box({0, 0, 0}, {1, 1, 1});
+  for (const PieceId id : {PieceId{0}, PieceId{-1}, static_cast<PieceId>(stored.pieceCount())}) {
+    EXPECT_THROW(compact.formPiece(id, into), InvalidInputError) << id;  // stored, or no piece
+  }
   // All in, indexes counted (the compact meshes keep one each).
   EXPECT_LT((compact.pieceMemoryBytes() + compact.indexMemoryBytes()) * 30,
             stored.pieceMemoryBytes() + stored.indexMemoryBytes());
