@@ -1,8 +1,6 @@
 // Heightfield prisms formed on demand (design note in compact_heightfield.hpp).
 #include "compact_heightfield.hpp"
 
-#include "builder_support.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -15,9 +13,9 @@ CompactHeightfield::CompactHeightfield(Heightfield field) : field_(std::move(fie
   field_.heights.shrink_to_fit();  // the samples and nothing more
   field_.cell_materials.shrink_to_fit();
   field_.cell_holes.shrink_to_fit();
-  piece_count_ = field_.pieceCount();
   base_z_ = field_.baseZ();
   if (field_.cell_holes.empty()) {
+    piece_count_ = 2 * field_.cellCount();
     // The corners' coordinates as sample() computes them; origin.z + h is
     // monotonic in h, so the highest sample gives the highest top.
     const double highest = *std::max_element(field_.heights.begin(), field_.heights.end());
@@ -33,6 +31,7 @@ CompactHeightfield::CompactHeightfield(Heightfield field) : field_(std::move(fie
     if (cell % kBlockCells == 0) ground_before_.push_back(ground);
     if (field_.cell_holes[cell] == 0) ++ground;
   }
+  piece_count_ = 2 * static_cast<std::size_t>(ground);
   // The union of the ground cells' pieces: their corners, down to the base.
   bool first = true;
   for (int r = 0; r + 1 < field_.rows; ++r) {
@@ -72,37 +71,18 @@ std::size_t CompactHeightfield::cellOf(std::size_t k) const {
   }
 }
 
-void CompactHeightfield::corners(std::size_t k, Eigen::Vector3d p[3]) const {
+void CompactHeightfield::prismCorners(std::size_t k, std::array<Eigen::Vector3d, 3>& top,
+                                      std::array<Eigen::Vector3d, 3>& bottom) const {
   const std::size_t cell = cellOf(k);
   const auto cells_per_row = static_cast<std::size_t>(field_.cols - 1);
   const int r = static_cast<int>(cell / cells_per_row);
   const int c = static_cast<int>(cell % cells_per_row);
-  // addHeightfield: (p00, p01, p11) first, then (p00, p11, p10).
-  p[0] = field_.sample(r, c);
-  p[1] = k % 2 == 0 ? field_.sample(r, c + 1) : field_.sample(r + 1, c + 1);
-  p[2] = k % 2 == 0 ? field_.sample(r + 1, c + 1) : field_.sample(r + 1, c);
-}
-
-void CompactHeightfield::prismCorners(std::size_t k, std::array<Eigen::Vector3d, 3>& top,
-                                      std::array<Eigen::Vector3d, 3>& bottom) const {
-  Eigen::Vector3d p[3];
-  corners(k, p);
-  top = {p[0], p[1], p[2]};
-  bottom = {Eigen::Vector3d(p[0].x(), p[0].y(), base_z_), Eigen::Vector3d(p[1].x(), p[1].y(), base_z_),
-            Eigen::Vector3d(p[2].x(), p[2].y(), base_z_)};
-}
-
-Aabb CompactHeightfield::pieceBounds(std::size_t k) const {
-  Eigen::Vector3d p[3];
-  corners(k, p);
-  // ConvexPolyhedron's bounds are the min and max of its vertices: the
-  // three corners and their feet on the base.
-  Aabb box{p[0], p[0]};
-  for (const Eigen::Vector3d& q : p) {
-    box.include(q);
-    box.include(Eigen::Vector3d(q.x(), q.y(), base_z_));
-  }
-  return box;
+  // addHeightfield: (p00, p01, p11) first, then (p00, p11, p10), each
+  // corner's foot on the base.
+  top[0] = field_.sample(r, c);
+  top[1] = k % 2 == 0 ? field_.sample(r, c + 1) : field_.sample(r + 1, c + 1);
+  top[2] = k % 2 == 0 ? field_.sample(r + 1, c + 1) : field_.sample(r + 1, c);
+  for (int i = 0; i < 3; ++i) bottom[i] = Eigen::Vector3d(top[i].x(), top[i].y(), base_z_);
 }
 
 namespace {

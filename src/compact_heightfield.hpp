@@ -38,8 +38,6 @@ class CompactHeightfield final : public FormedPieces {
   /// triangle k % 2): makeTriangularPrism's corners.
   void prismCorners(std::size_t k, std::array<Eigen::Vector3d, 3>& top,
                     std::array<Eigen::Vector3d, 3>& bottom) const override;
-  /// piece(k).bounds(), without forming the piece.
-  Aabb pieceBounds(std::size_t k) const override;
   /// Appends first + k for every piece k whose bounds overlap `box` (as
   /// Aabb::overlaps decides), cell by cell in row-major order.
   void overlapping(const Aabb& box, PieceId first, std::vector<PieceId>& out) const override;
@@ -63,8 +61,6 @@ class CompactHeightfield final : public FormedPieces {
   // The pieces of the cells before `cell` (row-major index): the first
   // piece of `cell` unless it is a hole.
   std::size_t piecesBefore(std::size_t cell) const;
-  // The three corners of piece k (addHeightfield's triangle order).
-  void corners(std::size_t k, Eigen::Vector3d p[3]) const;
 
   Heightfield field_;
   std::size_t piece_count_ = 0;

@@ -50,18 +50,6 @@ void CompactTriangleMesh::prismCorners(std::size_t k, std::array<Eigen::Vector3d
   bottom = extrudedBottom(top[0], top[1], top[2], thickness_);
 }
 
-Aabb CompactTriangleMesh::pieceBounds(std::size_t k) const {
-  std::array<Eigen::Vector3d, 3> top, bottom;
-  prismCorners(k, top, bottom);
-  // ConvexPolyhedron's bounds are the min and max of its six vertices.
-  Aabb box{top[0], top[0]};
-  for (int i = 0; i < 3; ++i) {
-    box.include(top[i]);
-    box.include(bottom[i]);
-  }
-  return box;
-}
-
 void CompactTriangleMesh::overlapping(const Aabb& box, PieceId first, std::vector<PieceId>& out) const {
   tree_.visit(box, [&](std::int32_t position) {
     const FloatBox& f = boxes_[position];

@@ -44,7 +44,6 @@ class CompactTriangleMesh final : public FormedPieces {
   /// makeExtrudedTriangle's corners for triangle k.
   void prismCorners(std::size_t k, std::array<Eigen::Vector3d, 3>& top,
                     std::array<Eigen::Vector3d, 3>& bottom) const override;
-  Aabb pieceBounds(std::size_t k) const override;
   void overlapping(const Aabb& box, PieceId first, std::vector<PieceId>& out) const override;
   const Aabb& bounds() const override { return bounds_; }
   std::size_t memoryBytes() const override;

@@ -36,8 +36,9 @@ class FormedPieces {
   ConvexPolyhedron piece(std::size_t k) const;
   /// piece(k) made into `into`, reusing its buffers.
   void formInto(std::size_t k, ConvexPolyhedron& into) const;
-  /// piece(k).bounds(), without forming the piece.
-  virtual Aabb pieceBounds(std::size_t k) const = 0;
+  /// piece(k).bounds(), without forming the piece: the box of its six
+  /// corners.
+  Aabb pieceBounds(std::size_t k) const;
   /// Appends first + k for every piece k whose bounds overlap `box`, exactly
   /// as Aabb::overlaps decides on pieceBounds(k).
   virtual void overlapping(const Aabb& box, PieceId first, std::vector<PieceId>& out) const = 0;

@@ -89,14 +89,14 @@ void validate(const Heightfield& f) {
                             " entries, but the grid has (rows - 1) x (cols - 1) = " + std::to_string(cells) +
                             " cells (or give none)");
   }
-  if (f.pieceCount() == 0) {
+  const std::size_t pieces = f.pieceCount();
+  if (pieces == 0) {
     throw InvalidInputError(std::string(kWhere) + ": every one of the " + std::to_string(cells) +
                             " cells is a hole; the field has no ground");
   }
-  if (f.pieceCount() > static_cast<std::size_t>(std::numeric_limits<PieceId>::max())) {
+  if (pieces > static_cast<std::size_t>(std::numeric_limits<PieceId>::max())) {
     throw InvalidInputError(std::string(kWhere) + ": " + std::to_string(f.rows) + " x " + std::to_string(f.cols) +
-                            " samples make " + std::to_string(f.pieceCount()) +
-                            " pieces, more than a PieceId can number");
+                            " samples make " + std::to_string(pieces) + " pieces, more than a PieceId can number");
   }
   for (int r = 0; r < f.rows; ++r) {
     for (int c = 0; c < f.cols; ++c) {

@@ -82,6 +82,18 @@ void detail::FormedPieces::formInto(std::size_t k, ConvexPolyhedron& into) const
   makeCheckedPrism(top, bottom, into);
 }
 
+Aabb detail::FormedPieces::pieceBounds(std::size_t k) const {
+  std::array<Eigen::Vector3d, 3> top, bottom;
+  prismCorners(k, top, bottom);
+  // ConvexPolyhedron's bounds are the min and max of its vertices.
+  Aabb box{top[0], top[0]};
+  for (int i = 0; i < 3; ++i) {
+    box.include(top[i]);
+    box.include(bottom[i]);
+  }
+  return box;
+}
+
 PieceRange detail::addFormedPieces(TerrainBuilder& builder, std::shared_ptr<const FormedPieces> pieces,
                                    MaterialId material, const std::string& where) {
   builder.requireMaterial(material, where.c_str());
