@@ -39,6 +39,10 @@ class FormedPieces {
   /// piece(k).bounds(), without forming the piece: the box of its six
   /// corners.
   Aabb pieceBounds(std::size_t k) const;
+  /// True when queryPoint, asked for piece(k) within `reach` (m) of
+  /// `point`, answers kBeyond by its first two tests (the box, the face
+  /// planes), decided without forming the piece; false says nothing.
+  bool beyond(std::size_t k, const Eigen::Vector3d& point, double reach) const;
   /// Appends first + k for every piece k whose bounds overlap `box`, exactly
   /// as Aabb::overlaps decides on pieceBounds(k).
   virtual void overlapping(const Aabb& box, PieceId first, std::vector<PieceId>& out) const = 0;

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -15,6 +16,7 @@
 #include "wtc/error.hpp"
 #include "wtc/point_query.hpp"
 #include "wtc/terrain_primitives.hpp"
+#include "wtc/tolerances.hpp"
 
 namespace wtc {
 
@@ -82,16 +84,58 @@ void detail::FormedPieces::formInto(std::size_t k, ConvexPolyhedron& into) const
   makeCheckedPrism(top, bottom, into);
 }
 
-Aabb detail::FormedPieces::pieceBounds(std::size_t k) const {
-  std::array<Eigen::Vector3d, 3> top, bottom;
-  prismCorners(k, top, bottom);
-  // ConvexPolyhedron's bounds are the min and max of its vertices.
+namespace {
+
+// ConvexPolyhedron's bounds are the min and max of its vertices.
+Aabb cornerBox(const std::array<Eigen::Vector3d, 3>& top, const std::array<Eigen::Vector3d, 3>& bottom) {
   Aabb box{top[0], top[0]};
   for (int i = 0; i < 3; ++i) {
     box.include(top[i]);
     box.include(bottom[i]);
   }
   return box;
+}
+
+}  // namespace
+
+Aabb detail::FormedPieces::pieceBounds(std::size_t k) const {
+  std::array<Eigen::Vector3d, 3> top, bottom;
+  prismCorners(k, top, bottom);
+  return cornerBox(top, bottom);
+}
+
+bool detail::FormedPieces::beyond(std::size_t k, const Eigen::Vector3d& point, double reach) const {
+  std::array<Eigen::Vector3d, 3> top, bottom;
+  prismCorners(k, top, bottom);
+  // queryPoint's first test, bit for bit: the formed piece's bounds are
+  // these corners' box.
+  const Aabb box = cornerBox(top, bottom);
+  if (box.squaredDistance(point) > reach * reach) return true;
+  // Its second: the largest n . p - d over the faces. Each face's plane is
+  // computed here from its corners, in the world frame; it is the formed
+  // piece's own (local frame, Newell normal, d the largest n . c over the
+  // corners) to within roundoff, so clearing the reach by the margin clears
+  // it there too. Each face by a corner and its two edges there,
+  // n = (a - apex) x (b - apex) outward (makeCheckedPrism's faces): the top,
+  // the three sides, the bottom (a mesh's underside can face a wheel).
+  static constexpr std::array<std::array<int, 3>, 5> kFaces = {{{0, 1, 2}, {0, 3, 1}, {1, 4, 2}, {2, 5, 0}, {3, 5, 4}}};
+  const std::array<Eigen::Vector3d, 6> c = {top[0], top[1], top[2], bottom[0], bottom[1], bottom[2]};
+  const double scale =
+      std::max({point.cwiseAbs().maxCoeff(), box.min.cwiseAbs().maxCoeff(), box.max.cwiseAbs().maxCoeff()});  // (m)
+  const double limit = reach + tolerance::kFormedPlaneMarginRelative * scale;
+  constexpr double kMinSine2 = tolerance::kFormedPlaneMinSine * tolerance::kFormedPlaneMinSine;
+  for (const auto& [apex, a, b] : kFaces) {
+    const Eigen::Vector3d u = c[a] - c[apex], v = c[b] - c[apex];
+    const Eigen::Vector3d n = u.cross(v);
+    const double n2 = n.squaredNorm();
+    const double above = n.dot(point - c[apex]);  // |n| times the plane's value
+    // Beyond: above / |n| > limit, unless the face is a sliver (its normal
+    // then roundoff's; the other faces still decide).
+    if (above > 0.0 && above * above > limit * limit * n2 && n2 > kMinSine2 * u.squaredNorm() * v.squaredNorm()) {
+      return true;
+    }
+  }
+  return false;
 }
 
 PieceRange detail::addFormedPieces(TerrainBuilder& builder, std::shared_ptr<const FormedPieces> pieces,
@@ -202,6 +246,14 @@ Aabb Terrain::pieceBounds(PieceId id) const {
   if (at.field < 0) return pieces_[at.stored].bounds();
   const Field& f = fields_[at.field];
   return f.formed->pieceBounds(static_cast<std::size_t>(id - f.first));
+}
+
+bool Terrain::formedPieceBeyond(PieceId id, const Eigen::Vector3d& point, double reach) const {
+  if (fields_.empty() || id < 0 || static_cast<std::size_t>(id) >= piece_count_) return false;
+  const Place at = place(id);
+  if (at.field < 0) return false;
+  const Field& f = fields_[at.field];
+  return f.formed->beyond(static_cast<std::size_t>(id - f.first), point, reach);
 }
 
 MaterialId Terrain::fieldAwareMaterialId(PieceId id) const {

@@ -80,11 +80,11 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
       if (previous_formed != formed_.end() && previous_formed->first == id) {
         next_formed_.emplace_back(id, std::move(previous_formed->second));
       } else {
-        // queryPoint's first test, on the box the grid gives without
-        // forming the piece (bit for bit the formed piece's bounds): a piece
-        // whose box lies beyond the reach is beyond, its cache untouched,
-        // exactly as queryPoint decides for a stored one.
-        if (terrain.pieceBounds(id).squaredDistance(o) > cap_reach * cap_reach) {
+        // queryPoint's first two tests, the box and the face planes, on
+        // the piece's corners without forming it: a piece they put beyond
+        // the reach is beyond, its cache untouched, exactly as queryPoint
+        // decides for a stored one.
+        if (terrain.formedPieceBeyond(id, o, cap_reach)) {
           candidate_pieces_.push_back(nullptr);  // never a contact's piece
           next_caches_.emplace_back(id, cache);
           continue;

@@ -111,6 +111,13 @@ class Terrain {
   bool isFormed(PieceId id) const;
   /// The piece's bounding box, without forming it.
   Aabb pieceBounds(PieceId id) const;
+  /// True when queryPoint(piece(id), point, {max_distance = reach}) would
+  /// answer kBeyond by its first two tests, the box and the face planes,
+  /// leaving a cache untouched; decided from the corners of formed piece
+  /// `id` without forming it (how the contact finder forms only the pieces
+  /// that may touch). False for a piece that may be within reach, and for a
+  /// stored one.
+  bool formedPieceBeyond(PieceId id, const Eigen::Vector3d& point, double reach) const;
   /// The stored pieces (all of them when the terrain has no compact field).
   std::span<const ConvexPolyhedron> pieces() const { return pieces_; }
   /// The id of pieces()[stored] (ids skip the compact fields' ranges).

@@ -34,6 +34,21 @@ inline constexpr double kHullMergeRelative = 1e-9;
 /// Thickness below which a point set is a flat piece (relative to size).
 inline constexpr double kFlatRelative = 1e-9;
 
+/// A compact part's piece is found beyond a wheel's reach from its corners'
+/// face planes, without forming it, only when they clear the reach by this
+/// margin (relative to the largest coordinate of the point and the
+/// corners, m / m). The formed piece's planes are the same ones computed
+/// another way (in its local frame, Newell normals): they differ by
+/// roundoff, a few ulps of those coordinates divided by a face's sine
+/// (below). 1e-9 is far above that, and far below any reach: at worst a
+/// piece 5 um beyond a wheel 5 km from the origin is formed, not skipped.
+inline constexpr double kFormedPlaneMarginRelative = 1e-9;
+
+/// A face whose two edges at a corner make a smaller sine than this
+/// (dimensionless) is a sliver: its normal is left to roundoff, so its plane
+/// is not used to skip the piece (the others still are).
+inline constexpr double kFormedPlaneMinSine = 1e-3;
+
 /// Default iteration cap of the point query. GJK on a polyhedron with V
 /// vertices needs at most a handful more iterations than simplex changes;
 /// 64 is never reached on valid pieces (see the characterisation tests).

@@ -18,6 +18,7 @@
 #include "random_heightfield.hpp"
 #include "wtc/error.hpp"
 #include "wtc/heightfield.hpp"
+#include "wtc/point_query.hpp"
 #include "wtc/terrain.hpp"
 #include "wtc/terrain_primitives.hpp"
 #include "wtc/triangle_mesh.hpp"
@@ -330,6 +331,65 @@ TEST(CompactTerrainTest, AWheelDrivenOverItMeetsTheSameContactsBitForBit) {
   EXPECT_GT(seams, 0u);         // and the seam rule had creases to share
   EXPECT_GT(on_meshes, 1500u);  // the sheet and the rock carried it for their 2 m
   EXPECT_GT(over_hole, 200u);   // and it met nothing over field A's 0.5 m hole
+}
+
+// The contact finder forms a compact piece only where formedPieceBeyond
+// cannot put it beyond the reach. Sound: wherever it does, queryPoint on
+// the stored piece says kBeyond and leaves the cache as it was (so the
+// finder's caches stay the stored terrain's). Useful: a piece whose plane
+// bound clears the reach by a micrometre is always put beyond, and the
+// planes do put some beyond that the box does not. Near the origin (the
+// mixed terrain) and 5 km from it (a compact field alone).
+void expectBeyondOnlyWhereQueryPointIs(const Terrain& stored, const Terrain& compact, const Aabb& over,
+                                       std::uint32_t seed) {
+  std::mt19937 gen(seed);
+  std::vector<PieceId> near;
+  int beyond = 0, by_planes = 0, within = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const Eigen::Vector3d p(uniform(gen, over.min.x(), over.max.x()), uniform(gen, over.min.y(), over.max.y()),
+                            uniform(gen, over.min.z(), over.max.z()));
+    const double reach = uniform(gen, 0.02, 0.4);
+    near.clear();
+    stored.overlapping({p.array() - reach, p.array() + reach}, near);
+    for (const PieceId id : near) {
+      const bool skipped = compact.formedPieceBeyond(id, p, reach);
+      if (!compact.isFormed(id)) {
+        EXPECT_FALSE(skipped) << "stored piece " << id;
+        continue;
+      }
+      const ConvexPolyhedron& piece = stored.piece(id);
+      QueryCache cache{.count = 2, .vertex = {1, 4, 0}};
+      const PointQuery q = queryPoint(piece, p, {.max_distance = reach}, cache);
+      const bool box_beyond = piece.bounds().squaredDistance(p) > reach * reach;
+      if (skipped) {
+        ++beyond;
+        by_planes += !box_beyond;
+        EXPECT_EQ(q.status, QueryStatus::kBeyond) << "piece " << id << ", trial " << trial;
+        EXPECT_EQ(cache.count, 2) << "piece " << id << ", trial " << trial;
+        EXPECT_EQ(cache.vertex[0], 1);
+        EXPECT_EQ(cache.vertex[1], 4);
+      } else {
+        ++within;
+        EXPECT_FALSE(box_beyond) << "piece " << id << ", trial " << trial;
+        EXPECT_LE(piece.planeBound(p), reach + 1e-6) << "piece " << id << ", trial " << trial;
+      }
+      if (::testing::Test::HasFailure()) return;
+    }
+  }
+  EXPECT_GT(by_planes, 500);  // the planes skip pieces the box keeps
+  EXPECT_GT(within, 2000);    // and many are left to form
+  EXPECT_GT(beyond, by_planes);
+}
+
+TEST(CompactTerrainTest, FormsOnlyPiecesThatMayBeWithinReach) {
+  expectBeyondOnlyWhereQueryPointIs(mixed(false), mixed(true), {{-2.5, -2.0, -0.4}, {9.0, 2.0, 0.5}}, 7);
+  const Heightfield far = testing::randomHeightfield(
+      30, 30, 0.05, 9, {.spacing_x = 0.5, .spacing_y = 0.5, .origin = {4000.0, -3000.0, 120.0}, .base_depth = 1.0});
+  TerrainBuilder stored, compact;
+  addHeightfield(stored, far, stored.addMaterial({}));
+  addCompactHeightfield(compact, far, compact.addMaterial({}));
+  expectBeyondOnlyWhereQueryPointIs(std::move(stored).build(), std::move(compact).build(),
+                                    {{4000.0, -3000.0, 119.8}, {4014.5, -2985.5, 120.6}}, 8);
 }
 
 TEST(CompactTerrainTest, RefusesAnUnregisteredMaterialAndABadField) {
