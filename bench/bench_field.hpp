@@ -26,6 +26,7 @@ inline constexpr int kColdPoints = 4096;  // cold: random positions
 // compact field and Bullet's shape keep; stored prisms, FCL and meshes stop
 // earlier (each benchmark says where).
 inline constexpr long kFieldCells[] = {10'000L, 100'000L, 1'000'000L, 10'000'000L, 100'000'000L};
+inline constexpr long kMillionPieceCells = 500'000L;  // 10^6 pieces, two a cell
 
 inline double relief(double x, double y) {
   return 0.05 * std::sin(0.7 * x) * std::cos(0.9 * y) + 0.02 * std::sin(2.3 * x + 1.1 * y);

@@ -140,6 +140,14 @@ const bool kRegistered = [] {
       }
     }
   }
+  // The contact steps also at the size large terrains' targets name: 10^6
+  // pieces (two a cell).
+  const std::string tail = join("/", std::to_string(kMillionPieceCells));
+  for (bool cold : {false, true}) {
+    const std::string path = tail + (cold ? "/cold" : "/rolling");
+    benchmark::RegisterBenchmark(join("Contacts/compact", path).c_str(), contacts, true, cold)->Arg(kMillionPieceCells);
+    benchmark::RegisterBenchmark(join("Contacts/prisms", path).c_str(), contacts, false, cold)->Arg(kMillionPieceCells);
+  }
   return true;
 }();
 
