@@ -1,5 +1,6 @@
 #include "wtc/bullet/sim_engine.hpp"
 
+#include <algorithm>
 #include <limits>
 #include <mutex>
 #include <vector>
@@ -114,6 +115,60 @@ bool engineWheelContactAdded(btManifoldPoint& point, const btCollisionObjectWrap
   return true;
 }
 
+// A velocity-controlled drive whose solve starts from the last step's
+// effort. Bullet's multibody solver starts every joint-motor row from zero
+// impulse each step (btMultiBodyConstraint::fillMultiBodyConstraint), and a
+// drive holding a wheel against the tyre's traction then needs many
+// Gauss-Seidel sweeps to build its torque up again. Here the last effort is
+// applied first as a joint torque (integrated with the other external
+// forces), and the row solves only for the change, within the limits
+// shifted by what is already applied: the total, feedforward + row, stays
+// in [-max, max], and the solution the solver converges to is the same.
+class WarmStartedMotor final : public btMultiBodyJointMotor {
+ public:
+  WarmStartedMotor(btMultiBody* body, int link) : btMultiBodyJointMotor(body, link, 0.0, 0.0), link_(link) {}
+
+  // This step's target: rate (rad/s or m/s), effort cap (N m or N; an
+  // infinite one is the largest finite impulse), off when !active. The
+  // last effort, within this cap, is applied first; a second target before
+  // the step replaces the first, it does not add to it.
+  void setTarget(double rate, double cap, bool active, double h) {
+    setVelocityTarget(rate);
+    setMaxAppliedImpulse(active ? std::min(cap * h, std::numeric_limits<double>::max()) : 0.0);
+    const double feedforward = active ? std::clamp(last_effort_, -cap, cap) : 0.0;
+    getMultiBodyA()->addJointTorque(link_, feedforward - feedforward_);
+    feedforward_ = feedforward;
+    active_ = active;
+    h_ = h;
+  }
+
+  // After the engine's step (which cleared the joint torques): the effort
+  // the drive applied in it, feedforward + row.
+  void stepped() {
+    last_effort_ = active_ && h_ > 0.0 ? feedforward_ + getAppliedImpulse(0) / h_ : 0.0;
+    feedforward_ = 0.0;
+  }
+
+  double effort() const { return last_effort_; }  // (N m or N)
+
+  void createConstraintRows(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data,
+                            const btContactSolverInfo& info) override {
+    const int first = rows.size();
+    btMultiBodyJointMotor::createConstraintRows(rows, data, info);
+    for (int k = first; k < rows.size(); ++k) {
+      rows[k].m_lowerLimit = -getMaxAppliedImpulse() - feedforward_ * h_;
+      rows[k].m_upperLimit = getMaxAppliedImpulse() - feedforward_ * h_;
+    }
+  }
+
+ private:
+  int link_;
+  double feedforward_ = 0.0;  // applied this step, not yet stepped (N m or N)
+  double last_effort_ = 0.0;  // (N m or N)
+  double h_ = 0.0;            // the step the impulses are over (s)
+  bool active_ = false;
+};
+
 class SimEngine final : public sim::Engine {
  public:
   SimEngine(const sim::EngineSettings& settings, const Terrain& terrain, const vehicle::VehicleDescription& v,
@@ -150,13 +205,9 @@ class SimEngine final : public sim::Engine {
   }
 
   void setMotorTarget(int body, const vehicle::MotorTarget& target) override {
-    btMultiBodyJointMotor* motor = refs_.at(body).motor;
+    WarmStartedMotor* motor = refs_.at(body).motor;
     if (motor == nullptr) return;
-    const double h = settings().step_seconds;
-    motor->setVelocityTarget(target.rate);
-    // An infinite cap (drive limits off) is the largest finite impulse.
-    const double cap = std::min(target.max_effort * h, std::numeric_limits<double>::max());
-    motor->setMaxAppliedImpulse(target.active ? cap : 0.0);
+    motor->setTarget(target.rate, target.max_effort, target.active, settings().step_seconds);
   }
 
   void addForce(int body, const Eigen::Vector3d& force, const Eigen::Vector3d& point) override {
@@ -174,6 +225,9 @@ class SimEngine final : public sim::Engine {
   // One internal step of exactly h (maxSubSteps = 0: Bullet's variable step).
   void step() override {
     world_.stepSimulation(settings().step_seconds, 0, settings().step_seconds);
+    for (Ref& r : refs_) {
+      if (r.motor != nullptr) r.motor->stepped();
+    }
     for (LinkStates& s : link_states_) s.valid = false;
     if (!engine_wheels_.empty()) readEngineWheels();
   }
@@ -207,9 +261,8 @@ class SimEngine final : public sim::Engine {
     return hasCoordinate(body) ? r.multibody->getJointVel(r.link) : 0.0;
   }
   double motorEffort(int body) const override {
-    const btMultiBodyJointMotor* motor = refs_.at(body).motor;
-    return motor == nullptr ? 0.0
-                            : const_cast<btMultiBodyJointMotor*>(motor)->getAppliedImpulse(0) / settings().step_seconds;
+    WarmStartedMotor* motor = refs_.at(body).motor;
+    return motor == nullptr ? 0.0 : motor->effort();
   }
   const WheelForces& wheelForces(int body) const override {
     return engine_wheels_.empty() ? plugin_->applied(wheelId(body)) : engine_wheels_[wheelId(body)].forces();
@@ -260,7 +313,7 @@ class SimEngine final : public sim::Engine {
     btMultiBody* multibody = nullptr;
     int tree = -1;  // index in trees_
     int link = -1;  // -1: the tree's base
-    btMultiBodyJointMotor* motor = nullptr;
+    WarmStartedMotor* motor = nullptr;
     btMultiBodyLinkCollider* collider = nullptr;
     WheelId wheel = -1;  // the plugin's, or with engine wheels the index in engine_wheels_
   };
@@ -414,7 +467,7 @@ class SimEngine final : public sim::Engine {
       constraints_.push_back(std::move(limit));
     }
     if (b.joint.actuator) {
-      auto motor = std::make_unique<btMultiBodyJointMotor>(&mb, r.link, 0.0, 0.0);
+      auto motor = std::make_unique<WarmStartedMotor>(&mb, r.link);
       r.motor = motor.get();
       world_.addMultiBodyConstraint(motor.get());
       constraints_.push_back(std::move(motor));
