@@ -115,6 +115,15 @@ void contacts(benchmark::State& state, bool compact_store, bool cold) {
   runContactSteps(state, std::move(builder).build(), boxes);
 }
 
+// The contact steps at `cells`, rolling or cold, compact and (with_prisms)
+// stored.
+void registerContactSteps(long cells, bool cold, bool with_prisms) {
+  const std::string path = join("/", std::to_string(cells)) + (cold ? "/cold" : "/rolling");
+  benchmark::RegisterBenchmark(join("Contacts/compact", path).c_str(), contacts, true, cold)->Arg(cells);
+  if (with_prisms)
+    benchmark::RegisterBenchmark(join("Contacts/prisms", path).c_str(), contacts, false, cold)->Arg(cells);
+}
+
 const bool kRegistered = [] {
   for (const long cells : kFieldCells) {
     const std::string tail = join("/", std::to_string(cells));
@@ -134,20 +143,12 @@ const bool kRegistered = [] {
       if (cells <= 1'000'000L) {
         benchmark::RegisterBenchmark(join("Overlap/prisms", tail + path).c_str(), overlap, false, cold)->Arg(cells);
       }
-      benchmark::RegisterBenchmark(join("Contacts/compact", tail + path).c_str(), contacts, true, cold)->Arg(cells);
-      if (cells <= 1'000'000L) {
-        benchmark::RegisterBenchmark(join("Contacts/prisms", tail + path).c_str(), contacts, false, cold)->Arg(cells);
-      }
+      registerContactSteps(cells, cold, cells <= 1'000'000L);
     }
   }
   // The contact steps also at the size large terrains' targets name: 10^6
   // pieces (two a cell).
-  const std::string tail = join("/", std::to_string(kMillionPieceCells));
-  for (bool cold : {false, true}) {
-    const std::string path = tail + (cold ? "/cold" : "/rolling");
-    benchmark::RegisterBenchmark(join("Contacts/compact", path).c_str(), contacts, true, cold)->Arg(kMillionPieceCells);
-    benchmark::RegisterBenchmark(join("Contacts/prisms", path).c_str(), contacts, false, cold)->Arg(kMillionPieceCells);
-  }
+  for (bool cold : {false, true}) registerContactSteps(kMillionPieceCells, cold, true);
   return true;
 }();
 

@@ -176,7 +176,13 @@ Terrain::Place Terrain::place(PieceId id) const {
   return {-1, static_cast<std::size_t>(id - f.formed_before - f.count)};
 }
 
-bool Terrain::isFormed(PieceId id) const { return !fields_.empty() && place(id).field >= 0; }
+const Terrain::Field* Terrain::formedField(PieceId id) const {
+  if (fields_.empty()) return nullptr;
+  const int field = place(id).field;  // -1 for a stored id and for no piece
+  return field < 0 ? nullptr : &fields_[field];
+}
+
+bool Terrain::isFormed(PieceId id) const { return formedField(id) != nullptr; }
 
 const ConvexPolyhedron& Terrain::storedPiece(PieceId id) const {
   const Place at = place(id);
@@ -198,13 +204,12 @@ const ConvexPolyhedron& Terrain::piece(PieceId id, std::optional<ConvexPolyhedro
 }
 
 void Terrain::formPiece(PieceId id, ConvexPolyhedron& into) const {
-  const int field = id >= 0 && static_cast<std::size_t>(id) < piece_count_ && !fields_.empty() ? place(id).field : -1;
-  if (field < 0) {
+  const Field* f = formedField(id);
+  if (f == nullptr) {
     throw InvalidInputError("wtc::Terrain::formPiece: piece " + std::to_string(id) +
                             " is not a formed piece of this terrain (" + std::to_string(piece_count_) + " pieces)");
   }
-  const Field& f = fields_[field];
-  f.formed->formInto(static_cast<std::size_t>(id - f.first), into);
+  f->formed->formInto(static_cast<std::size_t>(id - f->first), into);
 }
 
 PieceId Terrain::storedId(std::size_t stored) const {
@@ -249,11 +254,8 @@ Aabb Terrain::pieceBounds(PieceId id) const {
 }
 
 bool Terrain::formedPieceBeyond(PieceId id, const Eigen::Vector3d& point, double reach) const {
-  if (fields_.empty() || id < 0 || static_cast<std::size_t>(id) >= piece_count_) return false;
-  const Place at = place(id);
-  if (at.field < 0) return false;
-  const Field& f = fields_[at.field];
-  return f.formed->beyond(static_cast<std::size_t>(id - f.first), point, reach);
+  const Field* f = formedField(id);
+  return f != nullptr && f->formed->beyond(static_cast<std::size_t>(id - f->first), point, reach);
 }
 
 MaterialId Terrain::fieldAwareMaterialId(PieceId id) const {

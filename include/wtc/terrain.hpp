@@ -172,6 +172,8 @@ class Terrain {
   friend class TerrainBuilder;
   using Field = TerrainBuilder::Field;
   const ConvexPolyhedron& storedPiece(PieceId id) const;
+  // The compact part holding piece `id`; null for a stored piece or no piece.
+  const Field* formedField(PieceId id) const;
   MaterialId fieldAwareMaterialId(PieceId id) const;
   void buildIndex();
 

@@ -145,7 +145,7 @@ class WarmStartedMotor final : public btMultiBodyJointMotor {
   // After the engine's step (which cleared the joint torques): the effort
   // the drive applied in it, feedforward + row.
   void stepped() {
-    last_effort_ = active_ && h_ > 0.0 ? feedforward_ + getAppliedImpulse(0) / h_ : 0.0;
+    last_effort_ = active_ ? feedforward_ + getAppliedImpulse(0) / h_ : 0.0;  // active_: h_ was set
     feedforward_ = 0.0;
   }
 
