@@ -10,10 +10,10 @@
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
 #include <BulletDynamics/Featherstone/btMultiBodyJointLimitConstraint.h>
-#include <BulletDynamics/Featherstone/btMultiBodyJointMotor.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 #include <btBulletDynamicsCommon.h>
 
+#include "warm_started_motor.hpp"
 #include "wtc/bullet/plugin.hpp"
 #include "wtc/bullet/terrain_object.hpp"
 #include "wtc/constants.hpp"
@@ -114,60 +114,6 @@ bool engineWheelContactAdded(btManifoldPoint& point, const btCollisionObjectWrap
   point.m_combinedFriction = g->mu[pieces.materialId(piece)];
   return true;
 }
-
-// A velocity-controlled drive whose solve starts from the last step's
-// effort. Bullet's multibody solver starts every joint-motor row from zero
-// impulse each step (btMultiBodyConstraint::fillMultiBodyConstraint), and a
-// drive holding a wheel against the tyre's traction then needs many
-// Gauss-Seidel sweeps to build its torque up again. Here the last effort is
-// applied first as a joint torque (integrated with the other external
-// forces), and the row solves only for the change, within the limits
-// shifted by what is already applied: the total, feedforward + row, stays
-// in [-max, max], and the solution the solver converges to is the same.
-class WarmStartedMotor final : public btMultiBodyJointMotor {
- public:
-  WarmStartedMotor(btMultiBody* body, int link) : btMultiBodyJointMotor(body, link, 0.0, 0.0), link_(link) {}
-
-  // This step's target: rate (rad/s or m/s), effort cap (N m or N; an
-  // infinite one is the largest finite impulse), off when !active. The
-  // last effort, within this cap, is applied first; a second target before
-  // the step replaces the first, it does not add to it.
-  void setTarget(double rate, double cap, bool active, double h) {
-    setVelocityTarget(rate);
-    setMaxAppliedImpulse(active ? std::min(cap * h, std::numeric_limits<double>::max()) : 0.0);
-    const double feedforward = active ? std::clamp(last_effort_, -cap, cap) : 0.0;
-    getMultiBodyA()->addJointTorque(link_, feedforward - feedforward_);
-    feedforward_ = feedforward;
-    active_ = active;
-    h_ = h;
-  }
-
-  // After the engine's step (which cleared the joint torques): the effort
-  // the drive applied in it, feedforward + row.
-  void stepped() {
-    last_effort_ = active_ ? feedforward_ + getAppliedImpulse(0) / h_ : 0.0;  // active_: h_ was set
-    feedforward_ = 0.0;
-  }
-
-  double effort() const { return last_effort_; }  // (N m or N)
-
-  void createConstraintRows(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data,
-                            const btContactSolverInfo& info) override {
-    const int first = rows.size();
-    btMultiBodyJointMotor::createConstraintRows(rows, data, info);
-    for (int k = first; k < rows.size(); ++k) {
-      rows[k].m_lowerLimit = -getMaxAppliedImpulse() - feedforward_ * h_;
-      rows[k].m_upperLimit = getMaxAppliedImpulse() - feedforward_ * h_;
-    }
-  }
-
- private:
-  int link_;
-  double feedforward_ = 0.0;  // applied this step, not yet stepped (N m or N)
-  double last_effort_ = 0.0;  // (N m or N)
-  double h_ = 0.0;            // the step the impulses are over (s)
-  bool active_ = false;
-};
 
 class SimEngine final : public sim::Engine {
  public:

@@ -1,0 +1,131 @@
+// The Bullet engine's drive (plugins/bullet/sim/src/warm_started_motor.hpp)
+// against Bullet's own btMultiBodyJointMotor: the same joint-motor row, so
+// the same motion and effort, to the solver's convergence.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+#include <BulletDynamics/Featherstone/btMultiBody.h>
+#include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
+#include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
+#include <BulletDynamics/Featherstone/btMultiBodyJointMotor.h>
+#include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
+#include <btBulletDynamicsCommon.h>
+
+#include "warm_started_motor.hpp"
+
+namespace {
+
+constexpr double kStepS = 1e-3;
+
+// An arm on a fixed base, turning about y, with a wheel at its tip (also
+// about y) and a slider along the arm beyond the wheel: both joint types,
+// each driven, in gravity. A drive is Bullet's motor or WarmStartedMotor.
+class Pendulum {
+ public:
+  explicit Pendulum(bool bullets_motor) : world_(&dispatcher_, &broadphase_, &solver_, &configuration_) {
+    world_.setGravity(btVector3(0, 0, -9.81));
+    world_.getSolverInfo().m_numIterations = 2000;
+    world_.getSolverInfo().m_leastSquaresResidualThreshold = 1e-30;  // converged: all sweeps
+    body_ = std::make_unique<btMultiBody>(3, 0.0, btVector3(0, 0, 0), true, false);
+    const btQuaternion level(0, 0, 0, 1);
+    const btVector3 y(0, 1, 0), x(1, 0, 0);
+    body_->setupRevolute(0, 2.0, btVector3(0.01, 0.05, 0.05), -1, level, y, btVector3(0, 0, 0), btVector3(0.25, 0, 0),
+                         true);
+    body_->setupRevolute(1, 1.0, btVector3(0.02, 0.04, 0.02), 0, level, y, btVector3(0.25, 0, 0), btVector3(0, 0, 0),
+                         true);
+    body_->setupPrismatic(2, 0.5, btVector3(0.01, 0.01, 0.01), 0, level, x, btVector3(0.35, 0, 0), btVector3(0, 0, 0),
+                          true);
+    body_->finalizeMultiDof();
+    world_.addMultiBody(body_.get());
+    // The solver takes a multibody's constraints with its island, which
+    // its colliders make: a small sphere on each link, colliding with
+    // nothing (one multibody, no self-collision).
+    for (int link = 0; link < 3; ++link) {
+      auto collider = std::make_unique<btMultiBodyLinkCollider>(body_.get(), link);
+      collider->setCollisionShape(&sphere_);
+      world_.addCollisionObject(collider.get(), btBroadphaseProxy::DefaultFilter, btBroadphaseProxy::AllFilter);
+      body_->getLink(link).m_collider = collider.get();
+      colliders_[link] = std::move(collider);
+    }
+    for (int link = 0; link < 3; ++link) {
+      if (bullets_motor) {
+        auto motor = std::make_unique<btMultiBodyJointMotor>(body_.get(), link, 0.0, 0.0);
+        bullet_[link] = motor.get();
+        world_.addMultiBodyConstraint(motor.get());
+        owned_[link] = std::move(motor);
+      } else {
+        auto motor = std::make_unique<wtc::bullet::WarmStartedMotor>(body_.get(), link);
+        ours_[link] = motor.get();
+        world_.addMultiBodyConstraint(motor.get());
+        owned_[link] = std::move(motor);
+      }
+    }
+  }
+  ~Pendulum() {
+    for (auto& c : owned_) world_.removeMultiBodyConstraint(c.get());
+    for (auto& c : colliders_) world_.removeCollisionObject(c.get());
+    world_.removeMultiBody(body_.get());
+  }
+
+  void step(const double (&rate)[3], const double (&cap)[3]) {
+    for (int link = 0; link < 3; ++link) {
+      if (bullet_[link] != nullptr) {
+        bullet_[link]->setVelocityTarget(rate[link]);
+        bullet_[link]->setMaxAppliedImpulse(cap[link] * kStepS);
+      } else {
+        ours_[link]->setTarget(rate[link], cap[link], true, kStepS);
+      }
+    }
+    world_.stepSimulation(kStepS, 0, kStepS);
+    for (wtc::bullet::WarmStartedMotor* m : ours_) {
+      if (m != nullptr) m->stepped();
+    }
+  }
+
+  double position(int link) const { return body_->getJointPos(link); }
+  double rate(int link) const { return body_->getJointVel(link); }
+  double effort(int link) const {
+    return bullet_[link] != nullptr ? bullet_[link]->getAppliedImpulse(0) / kStepS : ours_[link]->effort();
+  }
+
+ private:
+  btDefaultCollisionConfiguration configuration_;
+  btCollisionDispatcher dispatcher_{&configuration_};
+  btDbvtBroadphase broadphase_;
+  btMultiBodyConstraintSolver solver_;
+  btMultiBodyDynamicsWorld world_;
+  btSphereShape sphere_{0.01};
+  std::unique_ptr<btMultiBody> body_;
+  std::unique_ptr<btMultiBodyLinkCollider> colliders_[3];
+  std::unique_ptr<btMultiBodyConstraint> owned_[3];
+  btMultiBodyJointMotor* bullet_[3] = {};
+  wtc::bullet::WarmStartedMotor* ours_[3] = {};
+};
+
+// Driven through free, tracking and saturated phases (the arm's cap is
+// below gravity's torque on it at times), the drive moves the joints as
+// Bullet's motor does and reports the same effort.
+TEST(WarmStartedMotorTest, MovesTheJointsAsBulletsOwnJointMotorDoes) {
+  Pendulum bullet(true), ours(false);
+  int saturated = 0;
+  for (int k = 0; k < 2000; ++k) {
+    const double t = k * kStepS;
+    const double rate[3] = {0.8 * std::sin(3.0 * t), 20.0 * std::cos(2.0 * t), 0.1 * std::sin(5.0 * t)};
+    const double cap[3] = {6.0, 0.5, 40.0};
+    bullet.step(rate, cap);
+    ours.step(rate, cap);
+    if (std::abs(std::abs(bullet.effort(0)) - cap[0]) < 1e-9) ++saturated;
+    for (int link = 0; link < 3; ++link) {
+      ASSERT_NEAR(ours.position(link), bullet.position(link), 1e-9) << "link " << link << " at step " << k;
+      ASSERT_NEAR(ours.rate(link), bullet.rate(link), 1e-7) << "link " << link << " at step " << k;
+      ASSERT_NEAR(ours.effort(link), bullet.effort(link), 1e-6 * (1.0 + cap[link]))
+          << "link " << link << " at step " << k;
+    }
+  }
+  EXPECT_GT(saturated, 100);  // the limit was exercised
+  EXPECT_LT(saturated, 1900);
+}
+
+}  // namespace
