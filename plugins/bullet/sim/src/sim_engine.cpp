@@ -9,10 +9,10 @@
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
-#include <BulletDynamics/Featherstone/btMultiBodyJointLimitConstraint.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 #include <btBulletDynamicsCommon.h>
 
+#include "warm_started_joint_limit.hpp"
 #include "warm_started_motor.hpp"
 #include "wtc/bullet/plugin.hpp"
 #include "wtc/bullet/terrain_object.hpp"
@@ -170,10 +170,12 @@ class SimEngine final : public sim::Engine {
 
   // One internal step of exactly h (maxSubSteps = 0: Bullet's variable step).
   void step() override {
+    for (WarmStartedJointLimit* limit : limits_) limit->prepare(settings().step_seconds);
     world_.stepSimulation(settings().step_seconds, 0, settings().step_seconds);
     for (Ref& r : refs_) {
       if (r.motor != nullptr) r.motor->stepped();
     }
+    for (WarmStartedJointLimit* limit : limits_) limit->stepped();
     for (LinkStates& s : link_states_) s.valid = false;
     if (!engine_wheels_.empty()) readEngineWheels();
   }
@@ -407,8 +409,8 @@ class SimEngine final : public sim::Engine {
         break;
     }
     if (b.joint.limits) {
-      auto limit =
-          std::make_unique<btMultiBodyJointLimitConstraint>(&mb, r.link, b.joint.limits->lower, b.joint.limits->upper);
+      auto limit = std::make_unique<WarmStartedJointLimit>(&mb, r.link, b.joint.limits->lower, b.joint.limits->upper);
+      limits_.push_back(limit.get());
       world_.addMultiBodyConstraint(limit.get());
       constraints_.push_back(std::move(limit));
     }
@@ -450,6 +452,7 @@ class SimEngine final : public sim::Engine {
   std::vector<std::unique_ptr<btMultiBody>> trees_;
   std::vector<std::unique_ptr<btMultiBodyLinkCollider>> colliders_;
   std::vector<std::unique_ptr<btMultiBodyConstraint>> constraints_;
+  std::vector<WarmStartedJointLimit*> limits_;  // in constraints_
   std::vector<Ref> refs_;
   std::unique_ptr<Plugin> plugin_;
   sim::EngineWheelSet engine_wheels_;            // with sim::EngineWheels only

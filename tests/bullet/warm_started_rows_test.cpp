@@ -1,18 +1,23 @@
-// The Bullet engine's drive (plugins/bullet/sim/src/warm_started_motor.hpp)
-// against Bullet's own btMultiBodyJointMotor: the same joint-motor row, so
-// the same motion and effort, to the solver's convergence.
+// The Bullet engine's drive and joint bounds (plugins/bullet/sim/src:
+// WarmStartedMotor, WarmStartedJointLimit) against Bullet's own
+// btMultiBodyJointMotor and btMultiBodyJointLimitConstraint: the same rows,
+// so the same motion and effort, to the solver's convergence.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <memory>
+#include <tuple>
+#include <vector>
 
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
+#include <BulletDynamics/Featherstone/btMultiBodyJointLimitConstraint.h>
 #include <BulletDynamics/Featherstone/btMultiBodyJointMotor.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 #include <btBulletDynamicsCommon.h>
 
+#include "warm_started_joint_limit.hpp"
 #include "warm_started_motor.hpp"
 
 namespace {
@@ -21,10 +26,13 @@ constexpr double kStepS = 1e-3;
 
 // An arm on a fixed base, turning about y, with a wheel at its tip (also
 // about y) and a slider along the arm beyond the wheel: both joint types,
-// each driven, in gravity. A drive is Bullet's motor or WarmStartedMotor.
+// each driven, in gravity. The drives are Bullet's motors or
+// WarmStartedMotor; the arm and the slider have bounds, Bullet's
+// btMultiBodyJointLimitConstraint or WarmStartedJointLimit, when asked.
 class Pendulum {
  public:
-  explicit Pendulum(bool bullets_motor) : world_(&dispatcher_, &broadphase_, &solver_, &configuration_) {
+  explicit Pendulum(bool bullets, bool limited = false)
+      : world_(&dispatcher_, &broadphase_, &solver_, &configuration_) {
     world_.setGravity(btVector3(0, 0, -9.81));
     world_.getSolverInfo().m_numIterations = 2000;
     world_.getSolverInfo().m_leastSquaresResidualThreshold = 1e-30;  // converged: all sweeps
@@ -49,8 +57,20 @@ class Pendulum {
       body_->getLink(link).m_collider = collider.get();
       colliders_[link] = std::move(collider);
     }
+    if (limited) {
+      for (const auto& [link, lower, upper] : {std::tuple{0, -0.3, 0.2}, std::tuple{2, -0.05, 0.05}}) {
+        if (bullets) {
+          owned_limits_.push_back(std::make_unique<btMultiBodyJointLimitConstraint>(body_.get(), link, lower, upper));
+        } else {
+          auto limit = std::make_unique<wtc::bullet::WarmStartedJointLimit>(body_.get(), link, lower, upper);
+          limits_.push_back(limit.get());
+          owned_limits_.push_back(std::move(limit));
+        }
+        world_.addMultiBodyConstraint(owned_limits_.back().get());
+      }
+    }
     for (int link = 0; link < 3; ++link) {
-      if (bullets_motor) {
+      if (bullets) {
         auto motor = std::make_unique<btMultiBodyJointMotor>(body_.get(), link, 0.0, 0.0);
         bullet_[link] = motor.get();
         world_.addMultiBodyConstraint(motor.get());
@@ -65,6 +85,7 @@ class Pendulum {
   }
   ~Pendulum() {
     for (auto& c : owned_) world_.removeMultiBodyConstraint(c.get());
+    for (auto& c : owned_limits_) world_.removeMultiBodyConstraint(c.get());
     for (auto& c : colliders_) world_.removeCollisionObject(c.get());
     world_.removeMultiBody(body_.get());
   }
@@ -78,10 +99,12 @@ class Pendulum {
         ours_[link]->setTarget(rate[link], cap[link], true, kStepS);
       }
     }
+    for (wtc::bullet::WarmStartedJointLimit* l : limits_) l->prepare(kStepS);
     world_.stepSimulation(kStepS, 0, kStepS);
     for (wtc::bullet::WarmStartedMotor* m : ours_) {
       if (m != nullptr) m->stepped();
     }
+    for (wtc::bullet::WarmStartedJointLimit* l : limits_) l->stepped();
   }
 
   double position(int link) const { return body_->getJointPos(link); }
@@ -102,6 +125,8 @@ class Pendulum {
   std::unique_ptr<btMultiBodyConstraint> owned_[3];
   btMultiBodyJointMotor* bullet_[3] = {};
   wtc::bullet::WarmStartedMotor* ours_[3] = {};
+  std::vector<std::unique_ptr<btMultiBodyConstraint>> owned_limits_;
+  std::vector<wtc::bullet::WarmStartedJointLimit*> limits_;
 };
 
 // Driven through free, tracking and saturated phases (the arm's cap is
@@ -126,6 +151,28 @@ TEST(WarmStartedMotorTest, MovesTheJointsAsBulletsOwnJointMotorDoes) {
   }
   EXPECT_GT(saturated, 100);  // the limit was exercised
   EXPECT_LT(saturated, 1900);
+}
+
+// Driven into its bounds and held there by gravity and the drives (the
+// arm's drive is too weak to lift it off its lower stop at times), the
+// bounded joints move as they do under Bullet's own limits.
+TEST(WarmStartedJointLimitTest, HoldsTheJointsAtTheirStopsAsBulletsOwnLimitDoes) {
+  Pendulum bullet(true, true), ours(false, true);
+  int at_stop = 0;
+  for (int k = 0; k < 2000; ++k) {
+    const double t = k * kStepS;
+    const double rate[3] = {1.5 * std::sin(4.0 * t), 20.0 * std::cos(2.0 * t), 0.4 * std::sin(7.0 * t)};
+    const double cap[3] = {6.0, 0.5, 40.0};
+    bullet.step(rate, cap);
+    ours.step(rate, cap);
+    if (bullet.position(0) < -0.3 + 1e-4 || bullet.position(0) > 0.2 - 1e-4) ++at_stop;
+    for (int link = 0; link < 3; ++link) {
+      ASSERT_NEAR(ours.position(link), bullet.position(link), 1e-9) << "link " << link << " at step " << k;
+      ASSERT_NEAR(ours.rate(link), bullet.rate(link), 1e-7) << "link " << link << " at step " << k;
+    }
+  }
+  EXPECT_GT(at_stop, 200);  // the stops were reached and held
+  EXPECT_LT(at_stop, 1800);
 }
 
 }  // namespace
