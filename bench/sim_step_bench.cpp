@@ -9,11 +9,13 @@
 //   robot_floor/<engine>: the same vehicle and commands, placed 1 km away
 //     from any ground: everything but contacts.
 //
-// Counters: us_per_step (wall time per step) and real_time_factor
-// (h / wall time per step). Usage:
+// Counters: us_per_step (wall time per step), real_time_factor
+// (h / wall time per step) and wtc_share (of the wall time, WTC's plugin's:
+// Engine::contactSeconds). Usage:
 //   build/bench/wtc_bench_sim --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
+#include <chrono>
 #include <filesystem>
 #include <memory>
 
@@ -36,7 +38,11 @@ void stepScene(benchmark::State& state, const char* engine, const char* mode, bo
   wtc::sim::Run run(*e, controller.get(), scene.vehicle_effects);
   // The floor falls freely: it warms up the same number of steps.
   while (run.time() < kWarmupSeconds) run.step();
+  const double wtc0 = e->contactSeconds();
+  const auto t0 = std::chrono::steady_clock::now();
   for (auto _ : state) run.step();
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  state.counters["wtc_share"] = wall > 0.0 ? (e->contactSeconds() - wtc0) / wall : 0.0;
   const double h = scene.engine.step_seconds;
   state.counters["us_per_step"] = benchmark::Counter(1e-6 * static_cast<double>(state.iterations()),
                                                      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);

@@ -169,8 +169,10 @@ int main(int argc, char** argv) {
     if (!quiet) {
       std::printf("%s in %s (%s mode, dt %g s): %s\n", summary.scene.c_str(), summary.engine.c_str(),
                   summary.mode.c_str(), summary.dt, summary.success ? "success" : "FAILED");
-      std::printf("  %.3f s simulated in %.3f s wall: %.1fx real time, %llu steps\n", summary.sim_time,
-                  summary.wall_time, summary.real_time_factor, static_cast<unsigned long long>(summary.steps));
+      std::printf("  %.3f s simulated in %.3f s wall: %.1fx real time, %llu steps, %.1f %% of the wall time in WTC\n",
+                  summary.sim_time, summary.wall_time, summary.real_time_factor,
+                  static_cast<unsigned long long>(summary.steps),
+                  summary.wall_time > 0.0 ? 100.0 * summary.wtc_time / summary.wall_time : 0.0);
       for (const auto& [key, value] : summary.fields) std::printf("  %s: %.4g\n", key.c_str(), value);
       std::printf("  outputs: %s (series, summary.json, replay.html; figures %s)\n", dir.c_str(), figures.c_str());
     }

@@ -29,6 +29,8 @@ const std::set<std::string>& fixedKeys() {
                                              "sim_time",
                                              "wall_time",
                                              "real_time_factor",
+                                             "wtc_time",
+                                             "wtc_share",
                                              "steps",
                                              "success",
                                              "nan",
@@ -58,6 +60,8 @@ void writeRunSummary(const std::filesystem::path& file, const sim::RunSummary& s
                       {"sim_time", s.sim_time},
                       {"wall_time", s.wall_time},
                       {"real_time_factor", s.real_time_factor},
+                      {"wtc_time", s.wtc_time},
+                      {"wtc_share", s.wall_time > 0.0 ? s.wtc_time / s.wall_time : 0.0},
                       {"steps", s.steps},
                       {"success", s.success},
                       {"nan", s.nan},
@@ -128,6 +132,7 @@ sim::RunSummary readRunSummary(const std::filesystem::path& file) {
     s.sim_time = j.at("sim_time").get<double>();
     s.wall_time = j.at("wall_time").get<double>();
     s.real_time_factor = j.at("real_time_factor").get<double>();
+    s.wtc_time = j.value("wtc_time", 0.0);  // absent from summaries written before it was measured
     s.steps = j.at("steps").get<std::uint64_t>();
     s.nan = j.at("nan").get<bool>();
     s.diverged = j.at("diverged").get<bool>();

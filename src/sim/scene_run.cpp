@@ -91,6 +91,7 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
   std::uint64_t contact_breaks = 0;
   double hitch_peak = 0.0, hitch_sum_x = 0.0;
   const auto t0 = std::chrono::steady_clock::now();
+  const double wtc0 = engine.contactSeconds();
   if (recorder) recorder->record(run);
   if (options.replay != nullptr) options.replay->observe(run);
   while (run.steps() < steps) {
@@ -125,6 +126,7 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
     }
   }
   summary.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  summary.wtc_time = engine.contactSeconds() - wtc0;
   engine.setWheelListener(nullptr);
 
   summary.steps = run.steps();

@@ -108,6 +108,9 @@ class Engine {
   /// Called for each wheel at each step after its tyre model ran; null:
   /// none. Its WheelId k is the k-th wheel of vehicle().wheels().
   virtual void setWheelListener(WheelListener* listener) = 0;
+  /// Wall time (s) WTC's plugin took in the steps so far (its
+  /// contactSeconds): WTC's part of the steps' cost.
+  virtual double contactSeconds() const = 0;
 
   const EngineSettings& settings() const { return settings_; }
   const vehicle::VehicleDescription& vehicle() const { return vehicle_; }

@@ -47,6 +47,10 @@ struct RunSummary {
   double dt = 0.0, sim_time = 0.0;
   double wall_time = 0.0;         ///< Of the stepping loop, recording included (s).
   double real_time_factor = 0.0;  ///< sim_time / wall_time.
+  /// Of wall_time, the time WTC's plugin took (Engine::contactSeconds):
+  /// finding the contacts, the tyre model, reading and writing the wheels
+  /// (s); wtc_time / wall_time is WTC's share of the run.
+  double wtc_time = 0.0;
   std::uint64_t steps = 0;
   bool success = false;
   bool nan = false;          ///< A body state went non-finite (the run stopped there).

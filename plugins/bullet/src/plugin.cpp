@@ -213,6 +213,7 @@ const LinkVelocities& Plugin::Impl::linkVelocities(const btMultiBody& multibody)
 
 void Plugin::Impl::preTick(double h) {
   if (pre_tick) pre_tick(h);
+  const StepClock::Section timed(clock);
   for (LinkVelocities& v : link_velocities) v.valid = false;
   const Terrain& ground = terrain.terrain();
   const Eigen::Vector3d gravity = toEigen(world.getGravity());
@@ -240,6 +241,7 @@ void Plugin::Impl::preTick(double h) {
 }
 
 void Plugin::Impl::postTick(double h) {
+  const StepClock::Section timed(clock);
   if (mode == ContactMode::kConstraint) {
     for (const auto& w : wheels) readSolvedForces(*w, h);
   }
@@ -349,6 +351,7 @@ const WheelState& Plugin::state(WheelId wheel) const {
   return impl_->wheels.at(static_cast<std::size_t>(wheel))->mounted.state();
 }
 int Plugin::wheelCount() const { return static_cast<int>(impl_->wheels.size()); }
+double Plugin::contactSeconds() const { return impl_->clock.seconds(); }
 ContactMode Plugin::mode() const { return impl_->mode; }
 btCollisionObject& Plugin::terrainObject() { return impl_->terrain.object(); }
 const TerrainObject& Plugin::terrainShapes() const { return impl_->terrain; }

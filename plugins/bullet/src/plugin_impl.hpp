@@ -12,6 +12,7 @@
 #include "wtc/bullet/terrain_object.hpp"
 #include "wtc/bullet/wheel_shape.hpp"
 #include "wtc/mounted_wheel.hpp"
+#include "wtc/step_clock.hpp"
 
 namespace wtc::bullet {
 
@@ -73,6 +74,7 @@ struct Plugin::Impl {
   std::function<void(double)> pre_tick;
   const LinkVelocities& linkVelocities(const btMultiBody& multibody);
   std::vector<LinkVelocities> link_velocities;  // per multibody with wheels
+  StepClock clock;                              // preTick and postTick, the caller's callback not included
 };
 
 }  // namespace wtc::bullet

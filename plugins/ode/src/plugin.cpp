@@ -123,6 +123,7 @@ void Plugin::Impl::beginStep(double h) {
     fail("wtc::ode::Plugin::beginStep", "step_seconds = " + formatNumber(h) + " is not positive and finite");
   }
   step_seconds = h;
+  const StepClock::Section timed(clock);
   const Terrain& ground = terrain.terrain();
   dVector3 world_gravity;
   dWorldGetGravity(world, world_gravity);
@@ -167,6 +168,7 @@ bool Plugin::Impl::handlePair(dGeomID a, dGeomID b, dJointGroupID group) {
     ground = a;
     if (found == wheel_of.end() || !terrain.contains(a)) return false;
   }
+  const StepClock::Section timed(clock);
   Wheel& w = *wheels[found->second];
   if (!w.mounted.state().capContacts().empty()) collideCaps(w, ground, group);
   // The wheel's contacts are the core's, for all pieces at once: they go to
@@ -262,6 +264,7 @@ const WheelState& Plugin::state(WheelId wheel) const { return impl_->wheel(wheel
 std::span<const SolvedContact> Plugin::solvedContacts(WheelId wheel) const { return impl_->wheel(wheel).contacts; }
 const WheelDiagnostics& Plugin::diagnostics(WheelId wheel) const { return impl_->wheel(wheel).diagnostics; }
 int Plugin::wheelCount() const { return static_cast<int>(impl_->wheels.size()); }
+double Plugin::contactSeconds() const { return impl_->clock.seconds(); }
 ContactMode Plugin::mode() const { return impl_->mode; }
 const TerrainGeoms& Plugin::terrainGeoms() const { return impl_->terrain; }
 void Plugin::setListener(WheelListener* listener) { impl_->listener = listener; }

@@ -6,6 +6,7 @@
 
 #include "wtc/mounted_wheel.hpp"
 #include "wtc/ode/plugin.hpp"
+#include "wtc/step_clock.hpp"
 
 namespace wtc::ode {
 
@@ -49,6 +50,7 @@ struct Plugin::Impl {
   std::vector<std::unique_ptr<Wheel>> wheels;
   std::unordered_map<dGeomID, WheelId> wheel_of;
   WheelListener* listener = nullptr;
+  StepClock clock;  // beginStep and the wheel-terrain pairs of handlePair
 };
 
 }  // namespace wtc::ode

@@ -227,6 +227,7 @@ class SimEngine final : public sim::Engine {
   }
   // The engine's own wheels run no tyre model: nothing to tell.
   void setWheelListener(WheelListener* listener) override { plugin_->setListener(listener); }
+  double contactSeconds() const override { return plugin_->contactSeconds(); }
 
  private:
   struct Ref {

@@ -97,6 +97,11 @@ class Plugin {
   const WheelForces& applied(WheelId wheel) const;
   const WheelState& state(WheelId wheel) const;
   int wheelCount() const;
+  /// Wall time (s) the plugin's own per-step work took since construction:
+  /// reading the wheels' state, their contacts, the tyre model and handing
+  /// the result to the engine (wtc::StepClock), the engine's solve not
+  /// included. Against the simulation's wall time: WTC's share of a step.
+  double contactSeconds() const;
 
   ContactMode mode() const;
   btCollisionObject& terrainObject();

@@ -148,6 +148,11 @@ class Plugin {
   /// Non-fatal conditions met by the wheel since its registration.
   const WheelDiagnostics& diagnostics(WheelId wheel) const;
   int wheelCount() const;
+  /// Wall time (s) the plugin's own per-step work took since construction:
+  /// reading the wheels' state, their contacts, the tyre model and handing
+  /// the result to the engine (wtc::StepClock), the engine's solve not
+  /// included. Against the simulation's wall time: WTC's share of a step.
+  double contactSeconds() const;
 
   ContactMode mode() const;
   const TerrainGeoms& terrainGeoms() const;
