@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <memory>
+#include <numbers>
 #include <tuple>
 #include <vector>
 
@@ -129,48 +130,64 @@ class Pendulum {
   std::vector<wtc::bullet::WarmStartedJointLimit*> limits_;
 };
 
+// Each joint's position (to 1e-9), rate (1e-7) and drive effort (1e-6 of
+// its cap) the same in both.
+::testing::AssertionResult sameMotion(const Pendulum& ours, const Pendulum& bullet, const double (&cap)[3]) {
+  for (int link = 0; link < 3; ++link) {
+    const double dq = std::abs(ours.position(link) - bullet.position(link));
+    const double dv = std::abs(ours.rate(link) - bullet.rate(link));
+    const double de = std::abs(ours.effort(link) - bullet.effort(link));
+    if (dq > 1e-9 || dv > 1e-7 || de > 1e-6 * (1.0 + cap[link])) {
+      return ::testing::AssertionFailure()
+             << "link " << link << ": position, rate, effort off by " << dq << ", " << dv << ", " << de;
+    }
+  }
+  return ::testing::AssertionSuccess();
+}
+
+// Drives both for 2 s, joint i at a_i sin(w_i t + phi_i) (rad/s or m/s)
+// within the caps below, each step checked with sameMotion; returns the
+// steps at which `counted(bullet)` holds.
+constexpr double kCap[3] = {6.0, 0.5, 40.0};  // arm, wheel (N m), slider (N)
+template <class Counted>
+int driveBoth(Pendulum& bullet, Pendulum& ours, const double (&a)[3], const double (&w)[3], Counted counted) {
+  constexpr double kPhase[3] = {0.0, std::numbers::pi / 2, 0.0};
+  int n = 0;
+  for (int k = 0; k < 2000; ++k) {
+    double rate[3];
+    for (int i = 0; i < 3; ++i) rate[i] = a[i] * std::sin(w[i] * k * kStepS + kPhase[i]);
+    bullet.step(rate, kCap);
+    ours.step(rate, kCap);
+    if (counted(bullet)) ++n;
+    const ::testing::AssertionResult same = sameMotion(ours, bullet, kCap);
+    if (!same) {
+      ADD_FAILURE() << same.message() << " at step " << k;
+      return n;
+    }
+  }
+  return n;
+}
+
 // Driven through free, tracking and saturated phases (the arm's cap is
 // below gravity's torque on it at times), the drive moves the joints as
 // Bullet's motor does and reports the same effort.
 TEST(WarmStartedMotorTest, MovesTheJointsAsBulletsOwnJointMotorDoes) {
   Pendulum bullet(true), ours(false);
-  int saturated = 0;
-  for (int k = 0; k < 2000; ++k) {
-    const double t = k * kStepS;
-    const double rate[3] = {0.8 * std::sin(3.0 * t), 20.0 * std::cos(2.0 * t), 0.1 * std::sin(5.0 * t)};
-    const double cap[3] = {6.0, 0.5, 40.0};
-    bullet.step(rate, cap);
-    ours.step(rate, cap);
-    if (std::abs(std::abs(bullet.effort(0)) - cap[0]) < 1e-9) ++saturated;
-    for (int link = 0; link < 3; ++link) {
-      ASSERT_NEAR(ours.position(link), bullet.position(link), 1e-9) << "link " << link << " at step " << k;
-      ASSERT_NEAR(ours.rate(link), bullet.rate(link), 1e-7) << "link " << link << " at step " << k;
-      ASSERT_NEAR(ours.effort(link), bullet.effort(link), 1e-6 * (1.0 + cap[link]))
-          << "link " << link << " at step " << k;
-    }
-  }
+  const int saturated = driveBoth(bullet, ours, {0.8, 20.0, 0.1}, {3.0, 2.0, 5.0},
+                                  [](const Pendulum& p) { return std::abs(std::abs(p.effort(0)) - kCap[0]) < 1e-9; });
   EXPECT_GT(saturated, 100);  // the limit was exercised
   EXPECT_LT(saturated, 1900);
 }
 
 // Driven into its bounds and held there by gravity and the drives (the
 // arm's drive is too weak to lift it off its lower stop at times), the
-// bounded joints move as they do under Bullet's own limits.
+// bounded joints move as they do under Bullet's own limits, with the same
+// drive efforts.
 TEST(WarmStartedJointLimitTest, HoldsTheJointsAtTheirStopsAsBulletsOwnLimitDoes) {
   Pendulum bullet(true, true), ours(false, true);
-  int at_stop = 0;
-  for (int k = 0; k < 2000; ++k) {
-    const double t = k * kStepS;
-    const double rate[3] = {1.5 * std::sin(4.0 * t), 20.0 * std::cos(2.0 * t), 0.4 * std::sin(7.0 * t)};
-    const double cap[3] = {6.0, 0.5, 40.0};
-    bullet.step(rate, cap);
-    ours.step(rate, cap);
-    if (bullet.position(0) < -0.3 + 1e-4 || bullet.position(0) > 0.2 - 1e-4) ++at_stop;
-    for (int link = 0; link < 3; ++link) {
-      ASSERT_NEAR(ours.position(link), bullet.position(link), 1e-9) << "link " << link << " at step " << k;
-      ASSERT_NEAR(ours.rate(link), bullet.rate(link), 1e-7) << "link " << link << " at step " << k;
-    }
-  }
+  const int at_stop = driveBoth(bullet, ours, {1.5, 20.0, 0.4}, {4.0, 2.0, 7.0}, [](const Pendulum& p) {
+    return p.position(0) < -0.3 + 1e-4 || p.position(0) > 0.2 - 1e-4;
+  });
   EXPECT_GT(at_stop, 200);  // the stops were reached and held
   EXPECT_LT(at_stop, 1800);
 }
