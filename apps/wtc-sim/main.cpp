@@ -171,8 +171,7 @@ int main(int argc, char** argv) {
                   summary.mode.c_str(), summary.dt, summary.success ? "success" : "FAILED");
       std::printf("  %.3f s simulated in %.3f s wall: %.1fx real time, %llu steps, %.1f %% of the wall time in WTC\n",
                   summary.sim_time, summary.wall_time, summary.real_time_factor,
-                  static_cast<unsigned long long>(summary.steps),
-                  summary.wall_time > 0.0 ? 100.0 * summary.wtc_time / summary.wall_time : 0.0);
+                  static_cast<unsigned long long>(summary.steps), 100.0 * summary.wtcShare());
       for (const auto& [key, value] : summary.fields) std::printf("  %s: %.4g\n", key.c_str(), value);
       std::printf("  outputs: %s (series, summary.json, replay.html; figures %s)\n", dir.c_str(), figures.c_str());
     }

@@ -8,7 +8,8 @@ namespace wtc {
 /// wheels' state, finding their contacts, the tyre model, handing the
 /// result to the engine), summed over its steps: what WTC costs a
 /// simulation, beside what the engine costs. Two readings of the steady
-/// clock a step, whatever the number of wheels.
+/// clock per timed section (Bullet's plugin: its pre- and post-tick; ODE's:
+/// its beginStep and each wheel-terrain pair its near callback hands it).
 class StepClock {
  public:
   /// Times its own lifetime into `clock`.

@@ -61,7 +61,7 @@ void writeRunSummary(const std::filesystem::path& file, const sim::RunSummary& s
                       {"wall_time", s.wall_time},
                       {"real_time_factor", s.real_time_factor},
                       {"wtc_time", s.wtc_time},
-                      {"wtc_share", s.wall_time > 0.0 ? s.wtc_time / s.wall_time : 0.0},
+                      {"wtc_share", s.wtcShare()},
                       {"steps", s.steps},
                       {"success", s.success},
                       {"nan", s.nan},

@@ -51,6 +51,7 @@ struct RunSummary {
   /// finding the contacts, the tyre model, reading and writing the wheels
   /// (s); wtc_time / wall_time is WTC's share of the run.
   double wtc_time = 0.0;
+  double wtcShare() const { return wall_time > 0.0 ? wtc_time / wall_time : 0.0; }
   std::uint64_t steps = 0;
   bool success = false;
   bool nan = false;          ///< A body state went non-finite (the run stopped there).

@@ -7,8 +7,9 @@
 namespace wtc::bullet {
 
 btMultiBodySolverConstraint& appendJointRow(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data,
-                                            btMultiBody& body, int link, double sign, btMultiBodyConstraint& origin,
-                                            int origin_row, double& rate) {
+                                            btMultiBody& body, int link, double sign, double lower, double upper,
+                                            double applied, btMultiBodyConstraint& origin, int origin_row,
+                                            double& rate) {
   const int n = body.getNumDofs() + 6;  // the base's 6, then the joints'
   const btMultibodyLink& l = body.getLink(link);
   const int dof = 6 + l.m_dofOffset;
@@ -41,6 +42,8 @@ btMultiBodySolverConstraint& appendJointRow(btMultiBodyConstraintArray& rows, bt
   row.m_friction = 0.0;
   row.m_appliedImpulse = 0.0;
   row.m_appliedPushImpulse = 0.0;
+  row.m_lowerLimit = lower - applied;
+  row.m_upperLimit = upper - applied;
 
   // The reaction the solver records on the link (its constraint force), as
   // Bullet's joint constraints have it: a torque about a revolute axis, a

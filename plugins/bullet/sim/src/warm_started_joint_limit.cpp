@@ -23,10 +23,10 @@ void WarmStartedJointLimit::finalizeMultiDof() {
 
 int WarmStartedJointLimit::getIslandIdA() const { return islandOf(*m_bodyA); }
 
-// Bullet's test: penetration = q - lower (resp. upper - q) <= 0.
-bool WarmStartedJointLimit::atBound(int bound) const {
+// Bullet's: q - lower, upper - q; its row exists when <= 0.
+double WarmStartedJointLimit::penetration(int bound) const {
   const double q = m_bodyA->getJointPos(m_linkA);
-  return (bound == 0 ? q - bound_[0] : bound_[1] - q) <= 0.0;
+  return bound == 0 ? q - bound_[0] : bound_[1] - q;
 }
 
 void WarmStartedJointLimit::prepare(double h) {
@@ -34,7 +34,7 @@ void WarmStartedJointLimit::prepare(double h) {
   const double cap = getMaxAppliedImpulse() / h;
   double torque = 0.0;
   for (int b = 0; b < 2; ++b) {
-    feedforward_[b] = atBound(b) ? std::min(last_reaction_[b], cap) : 0.0;
+    feedforward_[b] = penetration(b) <= 0.0 ? std::min(last_reaction_[b], cap) : 0.0;
     torque += kDirection[b] * feedforward_[b];
   }
   if (torque != 0.0) m_bodyA->addJointTorque(m_linkA, torque);
@@ -51,23 +51,21 @@ void WarmStartedJointLimit::stepped() {
 void WarmStartedJointLimit::createConstraintRows(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data,
                                                  const btContactSolverInfo& info) {
   if (m_numDofsFinalized != m_jacSizeBoth) finalizeMultiDof();
-  const double q = m_bodyA->getJointPos(m_linkA);
   for (int b = 0; b < 2; ++b) {
-    const double penetration = b == 0 ? q - bound_[0] : bound_[1] - q;
-    if (penetration > 0.0) continue;
+    const double overlap = penetration(b);
+    if (overlap > 0.0) continue;
     double rate = 0.0;
-    btMultiBodySolverConstraint& row = appendJointRow(rows, data, *m_bodyA, m_linkA, kDirection[b], *this, b, rate);
+    btMultiBodySolverConstraint& row = appendJointRow(rows, data, *m_bodyA, m_linkA, kDirection[b], 0.0,
+                                                      getMaxAppliedImpulse(), feedforward_[b] * h_, *this, b, rate);
     row_made_[b] = true;
     // Bullet's right-hand side: the rate along the row to zero, and the
     // overlap closed by erp of it a step.
-    const bool split = info.m_splitImpulse && penetration <= info.m_splitImpulsePenetrationThreshold;
+    const bool split = info.m_splitImpulse && overlap <= info.m_splitImpulsePenetrationThreshold;
     const double erp = split ? info.m_erp2 : info.m_erp;
-    const double position_impulse = -penetration * erp / info.m_timeStep * row.m_jacDiagABInv;
+    const double position_impulse = -overlap * erp / info.m_timeStep * row.m_jacDiagABInv;
     const double velocity_impulse = -rate * row.m_jacDiagABInv;
     row.m_rhs = split ? velocity_impulse : position_impulse + velocity_impulse;
     row.m_rhsPenetration = split ? position_impulse : 0.0;
-    row.m_lowerLimit = -feedforward_[b] * h_;
-    row.m_upperLimit = getMaxAppliedImpulse() - feedforward_[b] * h_;
   }
 }
 

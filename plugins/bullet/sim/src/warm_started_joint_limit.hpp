@@ -29,8 +29,6 @@ class WarmStartedJointLimit final : public btMultiBodyConstraint {
   // After it: each bound's reaction in it (N m or N, >= 0, away from the stop).
   void stepped();
 
-  double reaction(int bound) const { return last_reaction_[bound]; }  // 0 lower, 1 upper
-
   void finalizeMultiDof() override;
   int getIslandIdA() const override;
   int getIslandIdB() const override { return getIslandIdA(); }  // no body B: A's island
@@ -39,7 +37,9 @@ class WarmStartedJointLimit final : public btMultiBodyConstraint {
   void debugDraw(btIDebugDraw*) override {}
 
  private:
-  bool atBound(int bound) const;  // the joint at or beyond it: its row will be made
+  // Of the joint past bound 0 (lower) or 1 (upper), negative when past it:
+  // the step makes the bound's row when <= 0.
+  double penetration(int bound) const;
 
   double bound_[2];                       // lower, upper (rad or m)
   double feedforward_[2] = {0.0, 0.0};    // applied this step, away from each stop (N m or N)

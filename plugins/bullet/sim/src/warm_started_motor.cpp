@@ -10,8 +10,7 @@
 
 namespace wtc::bullet {
 
-WarmStartedMotor::WarmStartedMotor(btMultiBody* body, int link)
-    : btMultiBodyJointMotor(body, link, 0.0, 0.0), link_(link) {
+WarmStartedMotor::WarmStartedMotor(btMultiBody* body, int link) : btMultiBodyJointMotor(body, link, 0.0, 0.0) {
   m_bodyB = nullptr;  // before the Jacobians are sized (finalizeMultiDof): A's alone
 }
 
@@ -19,15 +18,16 @@ void WarmStartedMotor::setTarget(double rate, double cap, bool active, double h)
   setVelocityTarget(rate);
   setMaxAppliedImpulse(active ? std::min(cap * h, std::numeric_limits<double>::max()) : 0.0);
   const double feedforward = active ? std::clamp(last_effort_, -cap, cap) : 0.0;
-  getMultiBodyA()->addJointTorque(link_, feedforward - feedforward_);
+  m_bodyA->addJointTorque(m_linkA, feedforward - feedforward_);
   feedforward_ = feedforward;
-  active_ = active;
   h_ = h;
 }
 
 void WarmStartedMotor::stepped() {
-  // active_: h_ was set; no row (a zero cap, or a body the solver skipped): none of its impulse.
-  last_effort_ = active_ ? feedforward_ + (row_made_ ? getAppliedImpulse(0) / h_ : 0.0) : 0.0;
+  // Off: no feedforward and no row (a zero cap). A row was made only after
+  // a target set h_; without one (or for a body the solver skipped), none
+  // of an older step's impulse.
+  last_effort_ = feedforward_ + (row_made_ ? getAppliedImpulse(0) / h_ : 0.0);
   feedforward_ = 0.0;
   row_made_ = false;
 }
@@ -40,11 +40,10 @@ void WarmStartedMotor::createConstraintRows(btMultiBodyConstraintArray& rows, bt
   if (m_numDofsFinalized != m_jacSizeBoth) finalizeMultiDof();
   if (m_numDofsFinalized != m_jacSizeBoth || getMaxAppliedImpulse() == 0.0) return;  // off
   double rate = 0.0;
-  btMultiBodySolverConstraint& row = appendJointRow(rows, data, *m_bodyA, m_linkA, 1.0, *this, 0, rate);
+  btMultiBodySolverConstraint& row = appendJointRow(rows, data, *m_bodyA, m_linkA, 1.0, -getMaxAppliedImpulse(),
+                                                    getMaxAppliedImpulse(), feedforward_ * h_, *this, 0, rate);
   row_made_ = true;
   row.m_rhs = (m_desiredVelocity - rate) * row.m_jacDiagABInv;
-  row.m_lowerLimit = -getMaxAppliedImpulse() - feedforward_ * h_;
-  row.m_upperLimit = getMaxAppliedImpulse() - feedforward_ * h_;
 }
 
 }  // namespace wtc::bullet

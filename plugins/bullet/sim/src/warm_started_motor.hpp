@@ -44,12 +44,10 @@ class WarmStartedMotor final : public btMultiBodyJointMotor {
   int getIslandIdB() const override { return getIslandIdA(); }  // no body B: A's island
 
  private:
-  int link_;
   double feedforward_ = 0.0;  // applied this step, not yet stepped (N m or N)
   double last_effort_ = 0.0;  // (N m or N)
   double h_ = 0.0;            // the step the impulses are over (s)
-  bool active_ = false;
-  bool row_made_ = false;  // this step: the solver has the row and set its impulse
+  bool row_made_ = false;     // this step: the solver has the row and set its impulse
 };
 
 }  // namespace wtc::bullet
