@@ -35,6 +35,11 @@ MotorTarget motorTarget(const ActuatorLimits& drive, const std::optional<JointLi
   return target;
 }
 
+double wheelDriveTorque(const MotorTarget& target, double rate, double tau_axle, double spin_inertia, double h) {
+  if (!target.active) return 0.0;
+  return std::clamp(spin_inertia * (target.rate - rate) / h - tau_axle, -target.max_effort, target.max_effort);
+}
+
 void record(DriveReport& report, const MotorTarget& target, double applied_effort) {
   report.last_effort = applied_effort;
   report.last_saturated = false;

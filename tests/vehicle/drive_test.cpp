@@ -70,6 +70,22 @@ TEST(DriveTest, EffortAtTheCapCountsAsSaturated) {
 
 TEST(DriveTest, OffCommandGivesNoMotor) { EXPECT_FALSE(motorTarget(kFold, kTravel, {}, 0.0, true).active); }
 
+// A wheel's drive in closed form, stepped as a wheel turns (Newton about
+// its axle, I dw = (T + tau) h): it lands on the target rate in one step
+// whatever the load, when its cap allows; otherwise it gives its cap and
+// the wheel gains what the cap and the load give.
+TEST(DriveTest, AWheelDriveInClosedFormReachesItsRateInOneStepWithinItsCap) {
+  constexpr double kInertia = 0.0668, kStep = 4e-4, kLoad = -40.0;  // kg m^2, s, N m
+  const MotorTarget target{.active = true, .rate = 3.0, .max_effort = 100.0};
+  const auto stepped = [&](double rate, double torque) { return rate + kStep * (torque + kLoad) / kInertia; };
+  const double near = 2.9;  // needs 56.7 N m: within the cap
+  EXPECT_NEAR(stepped(near, wheelDriveTorque(target, near, kLoad, kInertia, kStep)), 3.0, kTolerance);
+  const double far = 1.0;  // needs 374 N m
+  EXPECT_EQ(wheelDriveTorque(target, far, kLoad, kInertia, kStep), 100.0);
+  EXPECT_EQ(wheelDriveTorque({.active = true, .rate = -3.0, .max_effort = 100.0}, far, kLoad, kInertia, kStep), -100.0);
+  EXPECT_EQ(wheelDriveTorque(MotorTarget{}, near, kLoad, kInertia, kStep), 0.0);
+}
+
 TEST(DriveTest, NonFiniteCommandIsRefusedByName) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   try {

@@ -7,7 +7,9 @@
 // btMultiBodyJointMotor, ODE's dParamVel/dParamFMax), capped at the drive's
 // effort: an explicit PD loop would need gains the 0.4 ms step cannot keep
 // stable for a 1500 N m fold drive. This file is what is engine-free: the
-// rate the motor is given this step and the accounting of saturation.
+// rate the motor is given this step, the accounting of saturation, and a
+// wheel's drive in closed form (wheelDriveTorque) for an engine whose
+// solver rows cost more than the one-line solve.
 //
 // Position mode turns the position error into a rate, rate = k (q* - q),
 // clamped to max_speed; a target beyond the joint's limits is clamped to
@@ -46,6 +48,20 @@ struct MotorTarget {
 /// joint's travel. Throws InvalidInputError for a non-finite command.
 MotorTarget motorTarget(const ActuatorLimits& drive, const std::optional<JointLimits>& travel,
                         const DriveCommand& command, double position, bool limits_on);
+
+/// A wheel's drive solved for one step in closed form: the torque that
+/// brings the wheel's rate relative to its carrier from `rate` to
+/// target.rate in one step h,
+///   T = I (target.rate - rate) / h - tau_axle,   |T| <= target.max_effort,
+/// 0 when the target is inactive. I is the wheel's moment about its axle
+/// (kg m^2), tau_axle the torque the step's other loads (the tyre's, in
+/// force mode) put on the wheel about it (N m). Exact for the wheel's spin,
+/// which nothing but those torques and the drive turns; the engine's own
+/// motor row solves the same equation with the carrier's share added,
+/// I / I_carrier (under 1 % for a robot's wheel), which this leaves out.
+/// Not for contacts the solver adds during the step (constraint mode):
+/// their torque is unknown here.
+double wheelDriveTorque(const MotorTarget& target, double rate, double tau_axle, double spin_inertia, double h);
 
 /// A drive's record over a run.
 struct DriveReport {

@@ -12,6 +12,7 @@
 #include "wtc/error.hpp"
 #include "wtc/ode/plugin.hpp"
 #include "wtc/sim/engine_wheel_contacts.hpp"
+#include "wtc/vehicle/drive.hpp"
 
 namespace wtc::ode {
 namespace {
@@ -142,7 +143,11 @@ class SimEngine final : public sim::Engine {
   }
 
   void setMotorTarget(int body, const vehicle::MotorTarget& target) override {
-    const Ref& r = refs_.at(body);
+    Ref& r = refs_.at(body);
+    if (r.wheel_drive) {
+      r.target = target;
+      return;
+    }
     if (r.motor == nullptr) return;
     const bool angular = dJointGetType(r.motor) == dJointTypeAMotor;
     const auto set = angular ? dJointSetAMotorParam : dJointSetLMotorParam;
@@ -159,6 +164,9 @@ class SimEngine final : public sim::Engine {
     plugin_->beginStep(h);
     recorded_ = 0;
     dSpaceCollide(space_, this, &SimEngine::nearCallback);
+    for (Ref& r : refs_) {
+      if (r.wheel_drive) driveWheel(r, h);
+    }
     if (settings().kind == sim::EngineKind::kOdeQuick) {
       const std::lock_guard<std::mutex> lock(odeGlobalsLock());
       dRandSetSeed(quickstep_seed_);
@@ -208,6 +216,7 @@ class SimEngine final : public sim::Engine {
   // The motor's force or torque on the child along the joint's axis.
   double motorEffort(int body) const override {
     const Ref& r = refs_.at(body);
+    if (r.wheel_drive) return r.effort;
     if (r.motor == nullptr) return 0.0;
     Eigen::Vector3d axis;
     if (dJointGetType(r.motor) == dJointTypeAMotor) {
@@ -236,8 +245,28 @@ class SimEngine final : public sim::Engine {
     dJointID joint = nullptr;  // to the parent
     dJointID motor = nullptr;  // the drive, if any
     dJointFeedback feedback{};
-    WheelId wheel = -1;  // the plugin's, or with engine wheels the index in engine_wheels_
+    WheelId wheel = -1;           // the plugin's, or with engine wheels the index in engine_wheels_
+    bool wheel_drive = false;     // solved here (driveWheel), not a motor row in ODE's solver
+    double spin_inertia = 0.0;    // the wheel's moment about its axle (kg m^2)
+    vehicle::MotorTarget target;  // the wheel drive's, this step
+    double effort = 0.0;          // the wheel drive's torque, this step (N m)
   };
+
+  // A wheel's drive in force mode (vehicle::wheelDriveTorque): WTC has put
+  // the tyre's forces on the wheel by now (beginStep), so the torque that
+  // holds the wheel's rate is known before the step, and six one-row
+  // motors, each a pivot of ODE's direct solver, leave its LCP (a quarter
+  // of the ledge climb's instructions; docs/vehicles-and-scenes.md).
+  void driveWheel(Ref& r, double h) {
+    dVector3 a;
+    dJointGetHingeAxis(r.joint, a);
+    const Eigen::Vector3d axis = toEigen(a);
+    const double tau_axle = toEigen(dBodyGetTorque(r.body)).dot(axis);
+    r.effort = vehicle::wheelDriveTorque(r.target, dJointGetHingeAngleRate(r.joint), tau_axle, r.spin_inertia, h);
+    const Eigen::Vector3d t = r.effort * axis;
+    dBodyAddTorque(r.body, t.x(), t.y(), t.z());
+    dBodyAddTorque(dJointGetBody(r.joint, 1), -t.x(), -t.y(), -t.z());
+  }
 
   // One contact of an engine wheel this step: ODE writes the force on the
   // wheel (body 1) into `feedback`.
@@ -318,6 +347,16 @@ class SimEngine final : public sim::Engine {
     if (b.parent >= 0) buildJoint(i, placement);
   }
 
+  // Whether the body's drive is a wheel's solved in closed form: force mode
+  // with WTC's wheels (no contact rows in the solver), a revolute joint
+  // about the wheel's own axle.
+  bool solvesWheelDrive(const Body& b) const {
+    constexpr double kParallel = 1e-9;  // |axle x axis| of a wheel on its own axle
+    return b.wheel && b.joint.type == JointType::kRevolute && settings().mode == ContactMode::kForce &&
+           settings().engine_wheels == sim::EngineWheels::kNone &&
+           (b.pose.linear() * b.wheel->axle).cross(b.joint.axis).norm() < kParallel;
+  }
+
   // The joint to the parent, at the start pose (where its coordinate is 0).
   void buildJoint(int i, const Eigen::Isometry3d& placement) {
     const Body& b = vehicle().bodies[i];
@@ -357,6 +396,11 @@ class SimEngine final : public sim::Engine {
         break;
     }
     if (!b.joint.actuator) return;
+    if (solvesWheelDrive(b)) {
+      r.wheel_drive = true;
+      r.spin_inertia = b.inertia.dot(b.wheel->axle.cwiseAbs2());
+      return;
+    }
     // The drive: off until the first command.
     if (b.joint.type == JointType::kRevolute) {
       r.motor = dJointCreateAMotor(world_, nullptr);
