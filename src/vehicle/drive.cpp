@@ -22,6 +22,9 @@ MotorTarget motorTarget(const ActuatorLimits& drive, const std::optional<JointLi
     if (travel) {
       goal = std::clamp(goal, travel->lower, travel->upper);
       target.clamped = goal != command.value;
+      if (travel->upper - travel->lower > 2.0 * kDriveStopMargin) {
+        goal = std::clamp(goal, travel->lower + kDriveStopMargin, travel->upper - kDriveStopMargin);
+      }
     }
     target.rate = drive.position_gain * (goal - position);
     // Moving to a position at full speed is the drive's job, not saturation.

@@ -49,11 +49,26 @@ TEST(DriveTest, PositionCommandGivesProportionalRateClampedToMaxSpeed) {
 
 TEST(DriveTest, PositionBeyondTheTravelIsClampedAndCounted) {
   const MotorTarget t = motorTarget(kFold, kTravel, {DriveMode::kPosition, 2.0}, 1.45, true);
-  EXPECT_NEAR(t.rate, 5.0 * (1.5 - 1.45), kTolerance);
+  EXPECT_NEAR(t.rate, 5.0 * (1.5 - kDriveStopMargin - 1.45), kTolerance);  // held just inside the stop
   EXPECT_TRUE(t.clamped);
   DriveReport report;
   record(report, t, 10.0);
   EXPECT_EQ(report.saturated_steps, 1u);
+}
+
+// Commanded to the stop itself, the drive holds just inside it and leaves
+// the stop alone: no saturation (the command asked for nothing the drive
+// lacks), and no second row on the stop's axis while the load is the drive's.
+TEST(DriveTest, PositionAtTheStopIsHeldJustInsideItWithoutSaturation) {
+  const MotorTarget at_upper = motorTarget(kFold, kTravel, {DriveMode::kPosition, 1.5}, 1.5, true);
+  EXPECT_NEAR(at_upper.rate, -5.0 * kDriveStopMargin, kTolerance);
+  EXPECT_FALSE(at_upper.clamped);
+  const MotorTarget at_lower = motorTarget(kFold, kTravel, {DriveMode::kPosition, -1.5}, -1.5, true);
+  EXPECT_NEAR(at_lower.rate, 5.0 * kDriveStopMargin, kTolerance);
+  // A travel narrower than the two margins keeps its own bounds.
+  const JointLimits narrow{.lower = 0.0, .upper = kDriveStopMargin};
+  EXPECT_NEAR(motorTarget(kFold, narrow, {DriveMode::kPosition, 1.0}, 0.0, true).rate, 5.0 * kDriveStopMargin,
+              kTolerance);
 }
 
 TEST(DriveTest, EffortAtTheCapCountsAsSaturated) {

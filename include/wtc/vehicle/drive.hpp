@@ -13,9 +13,10 @@
 //
 // Position mode turns the position error into a rate, rate = k (q* - q),
 // clamped to max_speed; a target beyond the joint's limits is clamped to
-// them. A command that asks for more than the drive has (a rate above
-// max_speed, a position past a limit, or an effort at max_effort) is a
-// saturated step: counted per drive and reported, never hidden.
+// them, and the drive holds kDriveStopMargin inside them. A command that
+// asks for more than the drive has (a rate above max_speed, a position past
+// a limit, or an effort at max_effort) is a saturated step: counted per
+// drive and reported, never hidden.
 #include <cstdint>
 #include <optional>
 
@@ -71,6 +72,14 @@ struct DriveReport {
   double last_effort = 0.0;           ///< Effort of the last step (N m or N).
   bool last_saturated = false;
 };
+
+/// A position target stops this far inside the joint's travel (m or rad):
+/// a drive's soft limit short of its stop, as a real one has. Commanded to
+/// the stop itself, the drive and the stop would hold one axis with two
+/// rows of the solver, and a direct solver may split the load between them
+/// any way it likes (ODE's put a slider's full 3000 N against its stop, a
+/// saturated step, in 8404 of the ledge climb's 62500).
+inline constexpr double kDriveStopMargin = 1e-4;
 
 /// A motor is at full effort when |effort| >= (1 - kFullEffortFraction) cap:
 /// the engine's solver stops at its cap to within its own tolerance.
