@@ -112,7 +112,9 @@ TEST_P(SimEngineTest, AWheelDriveSpinsAWheelInTheAirAsNewtonSays) {
   vehicle::ScheduleController spin(robot, schedules, "test");
   sim::Run run(*engine, &spin);
   const double cap = robot.bodies[left].joint.actuator->max_effort;
-  const double inertia = robot.bodies[left].inertia.dot(robot.bodies[left].wheel->axle.cwiseAbs2());
+  // The wheel's tread as a solid disc (the vehicle file gives no inertia): I = m r^2 / 2.
+  const double radius = robot.bodies[left].wheel->geometry.free_radius;
+  const double inertia = 0.5 * robot.bodies[left].mass * radius * radius;
   for (int k = 0; k < kHeldSteps; ++k) run.step();
   const double left0 = engine->jointRate(left), right0 = engine->jointRate(right);
   for (int k = 0; k < kCappedSteps; ++k) run.step();

@@ -77,8 +77,8 @@ struct DriveReport {
 /// a drive's soft limit short of its stop, as a real one has. Commanded to
 /// the stop itself, the drive and the stop would hold one axis with two
 /// rows of the solver, and a direct solver may split the load between them
-/// any way it likes (ODE's put a slider's full 3000 N against its stop, a
-/// saturated step, in 8404 of the ledge climb's 62500).
+/// any way it likes: ODE's put a slider's full effort against its stop, a
+/// saturated step (docs/vehicles-and-scenes.md).
 inline constexpr double kDriveStopMargin = 1e-4;
 
 /// A motor is at full effort when |effort| >= (1 - kFullEffortFraction) cap:

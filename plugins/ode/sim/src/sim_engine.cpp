@@ -254,9 +254,9 @@ class SimEngine final : public sim::Engine {
 
   // A wheel's drive in force mode (vehicle::wheelDriveTorque): WTC has put
   // the tyre's forces on the wheel by now (beginStep), so the torque that
-  // holds the wheel's rate is known before the step, and six one-row
-  // motors, each a pivot of ODE's direct solver, leave its LCP (a quarter
-  // of the ledge climb's instructions; docs/vehicles-and-scenes.md).
+  // holds the wheel's rate is known before the step, and the wheels'
+  // one-row motors, each a pivot of ODE's direct solver, leave its LCP
+  // (what that saves: docs/vehicles-and-scenes.md, Speed).
   void driveWheel(Ref& r, double h) {
     dVector3 a;
     dJointGetHingeAxis(r.joint, a);
@@ -398,7 +398,7 @@ class SimEngine final : public sim::Engine {
     if (!b.joint.actuator) return;
     if (solvesWheelDrive(b)) {
       r.wheel_drive = true;
-      r.spin_inertia = b.inertia.dot(b.wheel->axle.cwiseAbs2());
+      r.spin_inertia = sim::wheelDescription(b).inertia.axial_inertia;
       return;
     }
     // The drive: off until the first command.
