@@ -10,11 +10,11 @@
 #include <cstdio>
 #include <vector>
 
-#include <wtc/convex_polyhedron.hpp>
+#include <wtc/geometry/convex_polyhedron.hpp>
 #include <wtc/io/terrain_file.hpp>
-#include <wtc/point_query.hpp>
-#include <wtc/tyre_model.hpp>
-#include <wtc/wheel_contact.hpp>
+#include <wtc/geometry/point_query.hpp>
+#include <wtc/tyre/tyre_model.hpp>
+#include <wtc/contact/wheel_contact.hpp>
 
 namespace {
 

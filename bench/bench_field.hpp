@@ -10,11 +10,11 @@
 
 #include <benchmark/benchmark.h>
 
-#include <wtc/aabb.hpp>
-#include <wtc/heightfield.hpp>
-#include <wtc/terrain.hpp>
-#include <wtc/triangle_mesh.hpp>
-#include <wtc/wheel_contact.hpp>
+#include <wtc/geometry/aabb.hpp>
+#include <wtc/terrain/heightfield.hpp>
+#include <wtc/terrain/terrain.hpp>
+#include <wtc/terrain/triangle_mesh.hpp>
+#include <wtc/contact/wheel_contact.hpp>
 
 namespace wtc::bench {
 

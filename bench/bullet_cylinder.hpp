@@ -9,7 +9,7 @@
 
 #include <vector>
 
-#include <wtc/aabb.hpp>
+#include <wtc/geometry/aabb.hpp>
 
 #include "bench_field.hpp"
 

@@ -26,12 +26,12 @@
 #include <string>
 #include <vector>
 
-#include <wtc/heightfield.hpp>
-#include <wtc/terrain.hpp>
-#include <wtc/wheel_contact.hpp>
+#include <wtc/terrain/heightfield.hpp>
+#include <wtc/terrain/terrain.hpp>
+#include <wtc/contact/wheel_contact.hpp>
 
 #include "bench_field.hpp"
-#include "compact_heightfield.hpp"
+#include "terrain/compact_heightfield.hpp"
 
 namespace {
 

@@ -28,9 +28,9 @@
 #include <vector>
 
 #include <wtc/bullet/terrain_object.hpp>
-#include <wtc/terrain.hpp>
-#include <wtc/triangle_mesh.hpp>
-#include <wtc/wheel_contact.hpp>
+#include <wtc/terrain/terrain.hpp>
+#include <wtc/terrain/triangle_mesh.hpp>
+#include <wtc/contact/wheel_contact.hpp>
 
 #include "bench_field.hpp"
 #include "bullet_cylinder.hpp"

@@ -42,7 +42,7 @@
 
 #include "brute_force.hpp"
 #include "scenarios.hpp"
-#include "wtc/point_query.hpp"
+#include "wtc/geometry/point_query.hpp"
 
 namespace {
 

@@ -11,7 +11,7 @@
 // (depth <= `depth`).
 #include <algorithm>
 
-#include <wtc/wheel_contact.hpp>
+#include <wtc/contact/wheel_contact.hpp>
 
 namespace wtc::bench {
 

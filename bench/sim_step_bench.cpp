@@ -19,7 +19,7 @@
 #include <filesystem>
 #include <memory>
 
-#include "wtc/io/scene_file.hpp"
+#include "wtc/sim/scene_file.hpp"
 #include "wtc/sim/make_engine.hpp"
 #include "wtc/sim/run.hpp"
 
@@ -30,9 +30,9 @@ constexpr double kWarmupSeconds = 1.5;  // the robot settles and reaches its spe
 const std::filesystem::path kScene = std::filesystem::path(WTC_SOURCE_DIR) / "scenes/robot_rough.yaml";
 
 void stepScene(benchmark::State& state, const char* engine, const char* mode, bool floor) {
-  std::vector<wtc::io::Override> overrides = {{"engine", engine}, {"mode", mode}};
+  std::vector<wtc::sim::Override> overrides = {{"engine", engine}, {"mode", mode}};
   if (floor) overrides.push_back({"vehicle.translation", "[1000, 0, 0]"});
-  const wtc::sim::Scene scene = wtc::io::loadScene(kScene, overrides);
+  const wtc::sim::Scene scene = wtc::sim::loadScene(kScene, overrides);
   const auto e = wtc::sim::makeEngine(scene.engine, *scene.terrain, scene.vehicle, scene.placement);
   const std::unique_ptr<wtc::vehicle::Controller> controller = scene.make_controller();
   wtc::sim::Run run(*e, controller.get(), scene.vehicle_effects);

@@ -23,8 +23,8 @@
 #include <string>
 #include <vector>
 
-#include "wtc/constants.hpp"
-#include "wtc/io/scene_file.hpp"
+#include "wtc/base/constants.hpp"
+#include "wtc/sim/scene_file.hpp"
 #include "wtc/sim/make_engine.hpp"
 #include "wtc/sim/run.hpp"
 
@@ -71,9 +71,9 @@ struct Result {
 };
 
 Result soak(const fs::path& file, const std::string& engine, double minutes) {
-  std::vector<wtc::io::Override> overrides = {{"duration", std::to_string(60.0 * minutes)}};
+  std::vector<wtc::sim::Override> overrides = {{"duration", std::to_string(60.0 * minutes)}};
   if (!engine.empty()) overrides.push_back({"engine", engine});
-  const wtc::sim::Scene scene = wtc::io::loadScene(file, overrides);
+  const wtc::sim::Scene scene = wtc::sim::loadScene(file, overrides);
   const auto e = wtc::sim::makeEngine(scene.engine, *scene.terrain, scene.vehicle, scene.placement);
   const auto controller = scene.make_controller();
   wtc::sim::Run run(*e, controller.get(), scene.vehicle_effects);

@@ -20,7 +20,7 @@
 #include <string>
 
 #include "wheel_sim.hpp"
-#include "wtc/traction_law.hpp"
+#include "wtc/tyre/traction_law.hpp"
 
 namespace {
 

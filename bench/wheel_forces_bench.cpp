@@ -50,10 +50,10 @@
 #include <utility>
 #include <vector>
 
-#include <wtc/effects.hpp>
-#include <wtc/heightfield.hpp>
-#include <wtc/terrain_primitives.hpp>
-#include <wtc/tyre_model.hpp>
+#include <wtc/tyre/effects.hpp>
+#include <wtc/terrain/heightfield.hpp>
+#include <wtc/terrain/terrain_primitives.hpp>
+#include <wtc/tyre/tyre_model.hpp>
 
 #include "resting_centre.hpp"
 

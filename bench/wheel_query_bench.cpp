@@ -46,10 +46,10 @@
 #include <string>
 #include <vector>
 
-#include <wtc/heightfield.hpp>
-#include <wtc/point_query.hpp>
-#include <wtc/triangle_mesh.hpp>
-#include <wtc/wheel_contact.hpp>
+#include <wtc/terrain/heightfield.hpp>
+#include <wtc/geometry/point_query.hpp>
+#include <wtc/terrain/triangle_mesh.hpp>
+#include <wtc/contact/wheel_contact.hpp>
 
 #include "resting_centre.hpp"
 

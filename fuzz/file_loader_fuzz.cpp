@@ -11,11 +11,11 @@
 #include <fstream>
 #include <string>
 
-#include "wtc/error.hpp"
+#include "wtc/base/error.hpp"
 #include "wtc/io/mesh_file.hpp"
-#include "wtc/io/scene_file.hpp"
+#include "wtc/sim/scene_file.hpp"
 #include "wtc/io/terrain_file.hpp"
-#include "wtc/io/vehicle_file.hpp"
+#include "wtc/vehicle/vehicle_file.hpp"
 
 namespace {
 
@@ -32,9 +32,9 @@ void load(const std::filesystem::path& path) {
   if (loader == "terrain") {
     (void)wtc::io::loadTerrain(path);
   } else if (loader == "vehicle") {
-    (void)wtc::io::loadVehicle(path);
+    (void)wtc::vehicle::loadVehicle(path);
   } else if (loader == "scene") {
-    (void)wtc::io::loadScene(path);
+    (void)wtc::sim::loadScene(path);
   } else {
     (void)wtc::io::readMeshFile(path);
   }

@@ -13,9 +13,9 @@
 #include <vector>
 
 #include "brute_force.hpp"
-#include "wtc/convex_polyhedron.hpp"
-#include "wtc/error.hpp"
-#include "wtc/point_query.hpp"
+#include "wtc/geometry/convex_polyhedron.hpp"
+#include "wtc/base/error.hpp"
+#include "wtc/geometry/point_query.hpp"
 
 namespace {
 

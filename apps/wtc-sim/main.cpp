@@ -11,10 +11,10 @@
 #include <iostream>
 
 #include "app_files.hpp"
-#include "wtc/error.hpp"
-#include "wtc/io/content_hash.hpp"
-#include "wtc/io/run_summary_file.hpp"
-#include "wtc/io/scene_file.hpp"
+#include "wtc/base/error.hpp"
+#include "io/content_hash.hpp"
+#include "wtc/sim/run_summary_file.hpp"
+#include "wtc/sim/scene_file.hpp"
 #include "wtc/sim/make_engine.hpp"
 #include "wtc/sim/replay.hpp"
 #include "wtc/sim/scene_run.hpp"
@@ -101,20 +101,20 @@ int main(int argc, char** argv) {
     std::cerr << "wtc-sim: --skip-done needs --out (the directory that holds the run)\n";
     return 2;
   }
-  if (skip_done && wtc::io::runEnded(out)) {
+  if (skip_done && wtc::sim::runEnded(out)) {
     if (!quiet) std::printf("%s: finished earlier, skipped\n", out.c_str());
     return 0;
   }
 
   wtc::sim::Scene scene;
   try {
-    std::vector<wtc::io::Override> overrides;
+    std::vector<wtc::sim::Override> overrides;
     if (!engine.empty()) overrides.push_back({"engine", engine});
     if (!mode.empty()) overrides.push_back({"mode", mode});
     if (app.count("--dt")) overrides.push_back({"dt", wtc::formatNumber(dt)});
     if (app.count("--duration")) overrides.push_back({"duration", wtc::formatNumber(duration)});
-    for (const std::string& s : sets) overrides.push_back(wtc::io::parseOverride(s));
-    scene = wtc::io::loadScene(scene_file, overrides);
+    for (const std::string& s : sets) overrides.push_back(wtc::sim::parseOverride(s));
+    scene = wtc::sim::loadScene(scene_file, overrides);
   } catch (const std::exception& e) {
     std::cerr << "wtc-sim: " << e.what() << '\n';
     return 2;
@@ -143,7 +143,7 @@ int main(int argc, char** argv) {
     }
     // A summary from the start: a run killed before its end (SIGKILL, a
     // power cut) leaves one that says so; the end replaces it whole.
-    wtc::io::writeRunStarted(dir / "summary.json", scene);
+    wtc::sim::writeRunStarted(dir / "summary.json", scene);
     // Said on stderr when it happens, even with --quiet (a warning, not progress).
     options.warn = [bar](const std::string& warning) {
       std::fprintf(stderr, "%swtc-sim: warning: %s\n", bar ? "\n" : "", warning.c_str());
@@ -153,7 +153,7 @@ int main(int argc, char** argv) {
     wtc::sim::RunSummary summary = wtc::sim::runScene(scene, *engine_ptr, options);
     summary.program = programIdentity();
     if (bar) std::fprintf(stderr, "\n");
-    wtc::io::writeRunSummary(dir / "summary.json", summary);
+    wtc::sim::writeRunSummary(dir / "summary.json", summary);
     replay.write(dir / "replay_data.js", summary);
     if (const std::string problem = writeReplayPage(dir); !problem.empty()) {
       std::cerr << "wtc-sim: warning: replay page not written: " << problem << '\n';

@@ -10,8 +10,8 @@
 #include <thread>
 
 #include "app_files.hpp"
-#include "wtc/error.hpp"
-#include "wtc/io/study_file.hpp"
+#include "wtc/base/error.hpp"
+#include "wtc/study/study_file.hpp"
 #include "wtc/study/study_results.hpp"
 #include "wtc/study/study_runner.hpp"
 
@@ -73,7 +73,7 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
 
   try {
-    const wtc::study::StudyPlan plan = wtc::io::loadStudyPlan(study_file);
+    const wtc::study::StudyPlan plan = wtc::study::loadStudyPlan(study_file);
     const fs::path dir = out.empty() ? fs::path("study") / plan.name : fs::path(out);
     fs::create_directories(dir);
     if (app.got_subcommand("run")) {

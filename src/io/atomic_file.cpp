@@ -1,8 +1,8 @@
-#include "wtc/io/atomic_file.hpp"
+#include "atomic_file.hpp"
 
 #include <fstream>
 
-#include "wtc/error.hpp"
+#include "wtc/base/error.hpp"
 
 namespace wtc::io {
 

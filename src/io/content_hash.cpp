@@ -1,4 +1,4 @@
-#include "wtc/io/content_hash.hpp"
+#include "content_hash.hpp"
 
 #include <cstdio>
 

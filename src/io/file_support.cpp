@@ -5,7 +5,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "wtc/error.hpp"
+#include "wtc/base/error.hpp"
 
 namespace wtc::io::detail {
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "file_support.hpp"
-#include "wtc/error.hpp"
+#include "wtc/base/error.hpp"
 
 namespace wtc::io {
 namespace {

@@ -12,10 +12,11 @@
 #include <assimp/scene.h>
 // clang-format on
 
-#include "../builder_support.hpp"  // wtc::core's parameter checks, shared
+
 #include "file_support.hpp"
 #include "mesh_header_check.hpp"
-#include "wtc/error.hpp"
+#include "wtc/base/checks.hpp"
+#include "wtc/base/error.hpp"
 
 namespace wtc::io {
 namespace {
@@ -32,8 +33,8 @@ Eigen::Matrix4d toEigen(const aiMatrix4x4& m) {
 
 void checkOptions(const std::filesystem::path& path, const MeshFileOptions& options) {
   const std::string file = path.string();
-  wtc::detail::requirePositive(options.scale, file.c_str(), "scale", "dimensionless");
-  wtc::detail::requireRigid(options.pose_WM, file.c_str(), "pose_WM");
+  requirePositive(options.scale, file.c_str(), "scale", "dimensionless");
+  requireRigid(options.pose_WM, file.c_str(), "pose_WM");
 }
 
 // Appends the triangles of `mesh`, transformed by `transform`, as one part.

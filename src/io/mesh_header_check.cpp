@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "file_support.hpp"
-#include "wtc/error.hpp"
+#include "wtc/base/error.hpp"
 
 namespace wtc::io::detail {
 namespace {

@@ -10,12 +10,12 @@
 #include <numbers>
 
 #include "file_support.hpp"
-#include "wtc/error.hpp"
-#include "wtc/heightfield.hpp"
+#include "wtc/base/error.hpp"
+#include "wtc/terrain/heightfield.hpp"
 #include "wtc/io/heightfield_file.hpp"
 #include "wtc/io/mesh_file.hpp"
-#include "wtc/traction_law.hpp"
-#include "wtc/triangle_mesh.hpp"
+#include "wtc/tyre/traction_law.hpp"
+#include "wtc/terrain/triangle_mesh.hpp"
 #include "yaml_reader.hpp"
 
 namespace wtc::io {

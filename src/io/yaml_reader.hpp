@@ -10,7 +10,7 @@
 #include <optional>
 #include <string>
 
-#include "wtc/error.hpp"
+#include "wtc/base/error.hpp"
 
 namespace wtc::io::detail {
 

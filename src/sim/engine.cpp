@@ -3,8 +3,8 @@
 #include <cmath>
 #include <utility>
 
-#include "wtc/error.hpp"
-#include "wtc/traction_law.hpp"
+#include "wtc/base/error.hpp"
+#include "wtc/tyre/traction_law.hpp"
 
 namespace wtc::sim {
 

@@ -1,8 +1,8 @@
-#include "wtc/sim/recorder.hpp"
+#include "recorder.hpp"
 
 #include <algorithm>
 
-#include "wtc/error.hpp"
+#include "wtc/base/error.hpp"
 
 namespace wtc::sim {
 

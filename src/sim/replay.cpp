@@ -4,7 +4,7 @@
 #include <fstream>
 #include <optional>
 
-#include "wtc/error.hpp"
+#include "wtc/base/error.hpp"
 
 namespace wtc::sim {
 namespace {

@@ -7,9 +7,10 @@
 #include <limits>
 #include <numbers>
 
-#include "wtc/constants.hpp"
-#include "wtc/error.hpp"
-#include "wtc/sim/recorder.hpp"
+#include "wtc/base/constants.hpp"
+#include "wtc/sim/sim_constants.hpp"
+#include "wtc/base/error.hpp"
+#include "recorder.hpp"
 #include "wtc/sim/replay.hpp"
 #include "wtc/sim/run.hpp"
 

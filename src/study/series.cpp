@@ -4,7 +4,7 @@
 #include <charconv>
 #include <fstream>
 
-#include "wtc/error.hpp"
+#include "wtc/base/error.hpp"
 
 namespace wtc::study::detail {
 

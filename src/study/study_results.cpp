@@ -11,9 +11,9 @@
 #include <Eigen/Core>
 
 #include "series.hpp"
-#include "wtc/error.hpp"
-#include "wtc/io/atomic_file.hpp"
-#include "wtc/io/run_summary_file.hpp"
+#include "wtc/base/error.hpp"
+#include "io/atomic_file.hpp"
+#include "wtc/sim/run_summary_file.hpp"
 #include "wtc/study/study_runner.hpp"
 
 namespace wtc::study {
@@ -152,7 +152,7 @@ double contactBreaksPerSecond(const sim::RunSummary& s) {
 std::vector<RunResult> gatherResults(const StudyPlan& plan, const fs::path& out) {
   std::string unfinished;
   for (const PlannedRun& run : plan.runs) {
-    if (!io::runEnded(runDirectory(out, run))) unfinished += "\n  " + run.key + " (" + run.label + ")";
+    if (!sim::runEnded(runDirectory(out, run))) unfinished += "\n  " + run.key + " (" + run.label + ")";
   }
   if (!unfinished.empty()) {
     throw InvalidInputError("study " + plan.name + ": runs not finished in " + (out / "runs").string() + ":" +
@@ -162,7 +162,7 @@ std::vector<RunResult> gatherResults(const StudyPlan& plan, const fs::path& out)
   for (const PlannedRun& run : plan.runs) {
     if (!run.reference) continue;
     const fs::path dir = runDirectory(out, run);
-    const sim::RunSummary s = io::readRunSummary(dir / "summary.json");
+    const sim::RunSummary s = sim::readRunSummary(dir / "summary.json");
     if (s.crashed) {
       throw InvalidInputError("study " + plan.name + ": the reference of " + run.scenario + " (" + run.label +
                               ") crashed: " + s.warnings.front() + "; nothing can be measured against it");
@@ -174,7 +174,7 @@ std::vector<RunResult> gatherResults(const StudyPlan& plan, const fs::path& out)
     RunResult r;
     r.run = &run;
     const fs::path dir = runDirectory(out, run);
-    r.summary = io::readRunSummary(dir / "summary.json");
+    r.summary = sim::readRunSummary(dir / "summary.json");
     if (r.summary.crashed) {
       // Nothing it recorded can be trusted to its end: no figures.
       const double nan = std::numeric_limits<double>::quiet_NaN();

@@ -14,8 +14,8 @@
 #include <optional>
 #include <sstream>
 
-#include "wtc/error.hpp"
-#include "wtc/io/run_summary_file.hpp"
+#include "wtc/base/error.hpp"
+#include "wtc/sim/run_summary_file.hpp"
 
 extern char** environ;
 
@@ -81,11 +81,11 @@ sim::RunSummary makeRun(const PlannedRun& run, const fs::path& out, const fs::pa
     const std::string reason = std::string("the run's process died of signal ") + std::to_string(WTERMSIG(status)) +
                                " (" + strsignal(WTERMSIG(status)) + ")" + (last.empty() ? "" : ": " + last);
     fs::create_directories(dir);
-    io::writeRunCrashed(dir / "summary.json", reason);
+    sim::writeRunCrashed(dir / "summary.json", reason);
   } else if (WEXITSTATUS(status) != 0 && WEXITSTATUS(status) != 1) {  // 1: the scene's criterion failed
     throw InvalidInputError(fileText(log));
   }
-  return io::readRunSummary(dir / "summary.json");
+  return sim::readRunSummary(dir / "summary.json");
 }
 
 }  // namespace
@@ -95,7 +95,7 @@ fs::path runDirectory(const fs::path& out, const PlannedRun& run) { return out /
 std::vector<std::string> wtcSimArguments(const PlannedRun& run, const fs::path& out) {
   std::vector<std::string> args = {run.scene_file.string(), "--out",   runDirectory(out, run).string(),
                                    "--skip-done",           "--quiet", "--no-plots"};
-  for (const io::Override& o : run.overrides) {
+  for (const sim::Override& o : run.overrides) {
     args.push_back("--set");
     args.push_back(o.path + "=" + o.value);
   }
@@ -115,7 +115,7 @@ void runPlan(const StudyPlan& plan, const fs::path& out, int workers, const fs::
       for (std::size_t i = range.begin(); i != range.end(); ++i) {
         const PlannedRun& run = plan.runs[i];
         std::optional<sim::RunSummary> summary;
-        if (!io::runEnded(runDirectory(out, run))) {
+        if (!sim::runEnded(runDirectory(out, run))) {
           try {
             summary = makeRun(run, out, wtc_sim);
           } catch (const std::exception& e) {

@@ -5,7 +5,7 @@
 #include <limits>
 #include <numbers>
 
-#include "wtc/error.hpp"
+#include "wtc/base/error.hpp"
 
 namespace wtc::vehicle {
 namespace {

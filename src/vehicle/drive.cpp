@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "wtc/error.hpp"
+#include "wtc/base/error.hpp"
 
 namespace wtc::vehicle {
 

@@ -1,7 +1,7 @@
 #include "wtc/vehicle/hitch_law.hpp"
 
-#include "wtc/error.hpp"
-#include "wtc/tolerances.hpp"
+#include "wtc/base/error.hpp"
+#include "wtc/base/tolerances.hpp"
 
 namespace wtc::vehicle {
 namespace {

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "wtc/error.hpp"
+#include "wtc/base/error.hpp"
 
 namespace wtc::vehicle {
 

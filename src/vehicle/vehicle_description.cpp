@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "wtc/error.hpp"
-#include "wtc/tolerances.hpp"
+#include "wtc/base/error.hpp"
+#include "wtc/base/tolerances.hpp"
 
 namespace wtc::vehicle {
 namespace {

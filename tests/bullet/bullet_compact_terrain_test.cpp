@@ -16,7 +16,7 @@
 #include "bullet_fixture.hpp"
 #include "random_heightfield.hpp"
 #include "wtc/bullet/terrain_object.hpp"
-#include "wtc/heightfield.hpp"
+#include "wtc/terrain/heightfield.hpp"
 
 namespace wtc {
 namespace {

@@ -1,6 +1,6 @@
 #include "bullet_fixture.hpp"
 
-#include "wtc/terrain_primitives.hpp"
+#include "wtc/terrain/terrain_primitives.hpp"
 
 namespace wtc::testing {
 

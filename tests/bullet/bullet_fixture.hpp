@@ -9,7 +9,7 @@
 
 #include "wheel_sim.hpp"
 #include "wtc/bullet/plugin.hpp"
-#include "wtc/terrain.hpp"
+#include "wtc/terrain/terrain.hpp"
 
 namespace wtc::testing {
 

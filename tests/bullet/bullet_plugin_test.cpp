@@ -13,9 +13,9 @@
 
 #include "bullet_fixture.hpp"
 #include "wheel_sim.hpp"
-#include "wtc/error.hpp"
-#include "wtc/terrain_primitives.hpp"
-#include "wtc/traction_law.hpp"
+#include "wtc/base/error.hpp"
+#include "wtc/terrain/terrain_primitives.hpp"
+#include "wtc/tyre/traction_law.hpp"
 
 namespace wtc {
 namespace {

@@ -16,13 +16,13 @@
 #include <vector>
 
 #include "random_heightfield.hpp"
-#include "wtc/error.hpp"
-#include "wtc/heightfield.hpp"
-#include "wtc/point_query.hpp"
-#include "wtc/terrain.hpp"
-#include "wtc/terrain_primitives.hpp"
-#include "wtc/triangle_mesh.hpp"
-#include "wtc/wheel_contact.hpp"
+#include "wtc/base/error.hpp"
+#include "wtc/terrain/heightfield.hpp"
+#include "wtc/geometry/point_query.hpp"
+#include "wtc/terrain/terrain.hpp"
+#include "wtc/terrain/terrain_primitives.hpp"
+#include "wtc/terrain/triangle_mesh.hpp"
+#include "wtc/contact/wheel_contact.hpp"
 
 namespace wtc {
 namespace {

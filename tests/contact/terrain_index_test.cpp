@@ -6,9 +6,9 @@
 #include <random>
 #include <vector>
 
-#include <wtc/error.hpp>
-#include <wtc/terrain.hpp>
-#include <wtc/wheel_contact.hpp>
+#include <wtc/base/error.hpp>
+#include <wtc/terrain/terrain.hpp>
+#include <wtc/contact/wheel_contact.hpp>
 
 namespace {
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include <wtc/error.hpp>
-#include <wtc/wheel_contact.hpp>
+#include <wtc/base/error.hpp>
+#include <wtc/contact/wheel_contact.hpp>
 
 namespace {
 

@@ -8,10 +8,10 @@
 
 #include <Eigen/Core>
 
-#include "wtc/engine_contact.hpp"
-#include "wtc/terrain.hpp"
-#include "wtc/tyre_parameters.hpp"
-#include "wtc/wheel_forces.hpp"
+#include "wtc/adapter/solver_contact.hpp"
+#include "wtc/terrain/terrain.hpp"
+#include "wtc/tyre/tyre_parameters.hpp"
+#include "wtc/tyre/wheel_forces.hpp"
 
 namespace wtc::testing {
 

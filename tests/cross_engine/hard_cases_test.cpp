@@ -17,10 +17,10 @@
 
 #include "engine_sim.hpp"
 #include "wheel_sim.hpp"
-#include "wtc/constants.hpp"
+#include "wtc/base/constants.hpp"
 #include "wtc/io/terrain_file.hpp"
-#include "wtc/terrain_primitives.hpp"
-#include "wtc/traction_law.hpp"
+#include "wtc/terrain/terrain_primitives.hpp"
+#include "wtc/tyre/traction_law.hpp"
 
 namespace wtc::testing {
 namespace {

@@ -10,8 +10,8 @@
 #include <cmath>
 
 #include "random_pieces.hpp"
-#include "wtc/convex_polyhedron.hpp"
-#include "wtc/error.hpp"
+#include "wtc/geometry/convex_polyhedron.hpp"
+#include "wtc/base/error.hpp"
 
 namespace {
 

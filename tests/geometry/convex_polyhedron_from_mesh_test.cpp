@@ -12,9 +12,9 @@
 #include "brute_force.hpp"
 #include "query_checks.hpp"
 #include "random_pieces.hpp"
-#include "wtc/convex_polyhedron.hpp"
-#include "wtc/error.hpp"
-#include "wtc/point_query.hpp"
+#include "wtc/geometry/convex_polyhedron.hpp"
+#include "wtc/base/error.hpp"
+#include "wtc/geometry/point_query.hpp"
 
 namespace {
 

@@ -3,7 +3,7 @@
 // every input point inside, every vertex an input point), flat pieces have
 // two opposite faces, degenerate input throws with a message that says why,
 // and support() and planeBound() are what their names promise.
-#include "wtc/convex_polyhedron.hpp"
+#include "wtc/geometry/convex_polyhedron.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -18,7 +18,7 @@
 
 #include "random_pieces.hpp"
 #include "scenarios.hpp"
-#include "wtc/error.hpp"
+#include "wtc/base/error.hpp"
 
 namespace {
 

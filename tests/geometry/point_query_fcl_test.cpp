@@ -40,8 +40,8 @@
 #include "brute_force.hpp"
 #include "random_pieces.hpp"
 #include "scenarios.hpp"
-#include "wtc/error.hpp"
-#include "wtc/point_query.hpp"
+#include "wtc/base/error.hpp"
+#include "wtc/geometry/point_query.hpp"
 
 namespace {
 

@@ -13,8 +13,8 @@
 #include "query_checks.hpp"
 #include "random_pieces.hpp"
 #include "scenarios.hpp"
-#include "wtc/error.hpp"
-#include "wtc/point_query.hpp"
+#include "wtc/base/error.hpp"
+#include "wtc/geometry/point_query.hpp"
 
 namespace {
 

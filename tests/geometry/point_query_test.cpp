@@ -5,7 +5,7 @@
 // bounding box, far away), and the benchmark's own inputs: 184,000 cases
 // in all, every one required to agree with the oracle to kTolerance x the
 // piece's size.
-#include "wtc/point_query.hpp"
+#include "wtc/geometry/point_query.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,7 +17,7 @@
 #include "query_checks.hpp"
 #include "random_pieces.hpp"
 #include "scenarios.hpp"
-#include "wtc/error.hpp"
+#include "wtc/base/error.hpp"
 
 namespace {
 

@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "random_pieces.hpp"
-#include "wtc/error.hpp"
+#include "wtc/base/error.hpp"
 
 namespace wtc::test {
 namespace {

@@ -23,7 +23,7 @@
 #include <string>
 
 #include "brute_force.hpp"
-#include "wtc/point_query.hpp"
+#include "wtc/geometry/point_query.hpp"
 
 namespace wtc::test {
 

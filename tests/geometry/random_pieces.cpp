@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "wtc/error.hpp"
+#include "wtc/base/error.hpp"
 
 namespace wtc::test {
 

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "wtc/convex_polyhedron.hpp"
+#include "wtc/geometry/convex_polyhedron.hpp"
 
 namespace wtc::test {
 

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "temp_dir.hpp"
-#include "wtc/error.hpp"
+#include "wtc/base/error.hpp"
 
 namespace wtc::io {
 namespace {

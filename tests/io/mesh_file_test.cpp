@@ -14,9 +14,9 @@
 #include <string>
 
 #include "temp_dir.hpp"
-#include "wtc/error.hpp"
-#include "wtc/point_query.hpp"
-#include "wtc/terrain.hpp"
+#include "wtc/base/error.hpp"
+#include "wtc/geometry/point_query.hpp"
+#include "wtc/terrain/terrain.hpp"
 
 namespace wtc::io {
 namespace {

@@ -10,10 +10,10 @@
 #include <vector>
 
 #include "temp_dir.hpp"
-#include "wtc/error.hpp"
-#include "wtc/heightfield.hpp"
-#include "wtc/point_query.hpp"
-#include "wtc/terrain_primitives.hpp"
+#include "wtc/base/error.hpp"
+#include "wtc/terrain/heightfield.hpp"
+#include "wtc/geometry/point_query.hpp"
+#include "wtc/terrain/terrain_primitives.hpp"
 
 namespace wtc::io {
 namespace {

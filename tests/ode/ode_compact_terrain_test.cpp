@@ -14,7 +14,7 @@
 
 #include "ode_fixture.hpp"
 #include "random_heightfield.hpp"
-#include "wtc/heightfield.hpp"
+#include "wtc/terrain/heightfield.hpp"
 #include "wtc/ode/terrain_geoms.hpp"
 
 namespace wtc {

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "wtc/terrain_primitives.hpp"
+#include "wtc/terrain/terrain_primitives.hpp"
 
 namespace wtc::testing {
 namespace {

@@ -11,7 +11,7 @@
 
 #include "wheel_sim.hpp"
 #include "wtc/ode/plugin.hpp"
-#include "wtc/terrain.hpp"
+#include "wtc/terrain/terrain.hpp"
 
 namespace wtc::testing {
 

@@ -10,8 +10,8 @@
 #include <gtest/gtest.h>
 
 #include "ode_fixture.hpp"
-#include "wtc/error.hpp"
-#include "wtc/terrain_primitives.hpp"
+#include "wtc/base/error.hpp"
+#include "wtc/terrain/terrain_primitives.hpp"
 
 namespace wtc {
 namespace {

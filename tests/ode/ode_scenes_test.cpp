@@ -14,8 +14,8 @@
 #include <gtest/gtest.h>
 
 #include "ode_fixture.hpp"
-#include "wtc/terrain_primitives.hpp"
-#include "wtc/traction_law.hpp"
+#include "wtc/terrain/terrain_primitives.hpp"
+#include "wtc/tyre/traction_law.hpp"
 
 namespace wtc {
 namespace {

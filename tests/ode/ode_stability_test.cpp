@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "ode_fixture.hpp"
-#include "wtc/explicit_stability.hpp"
+#include "wtc/tyre/explicit_stability.hpp"
 
 namespace wtc {
 namespace {

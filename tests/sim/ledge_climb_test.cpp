@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "wtc/error.hpp"
-#include "wtc/io/scene_file.hpp"
-#include "wtc/io/vehicle_file.hpp"
+#include "wtc/base/error.hpp"
+#include "wtc/sim/scene_file.hpp"
+#include "wtc/vehicle/vehicle_file.hpp"
 #include "wtc/sim/make_engine.hpp"
 #include "wtc/sim/scene_run.hpp"
 #include "wtc/vehicle/climb_controller.hpp"
@@ -22,9 +22,9 @@ namespace fs = std::filesystem;
 const fs::path kRoot = fs::path(WTC_SOURCE_DIR);
 
 sim::RunSummary climb(const std::string& engine, const std::string& height, const std::string& mode = "force") {
-  const sim::Scene s = io::loadScene(
+  const sim::Scene s = sim::loadScene(
       kRoot / "scenes" / "robot_ledge.yaml",
-      std::vector<io::Override>{{"engine", engine}, {"mode", mode}, {"ledge_height", height}, {"duration", "22"}});
+      std::vector<sim::Override>{{"engine", engine}, {"mode", mode}, {"ledge_height", height}, {"duration", "22"}});
   const auto e = sim::makeEngine(s.engine, *s.terrain, s.vehicle, s.placement);
   return sim::runScene(s, *e);
 }
@@ -77,14 +77,14 @@ TEST(LedgeClimbTest, AStepOutOfReachFailsCleanly) {
 }
 
 TEST(LedgeClimbTest, AVehicleWithoutTheRobotsSectionsIsRefusedByName) {
-  const vehicle::VehicleDescription towed = io::loadVehicle(kRoot / "vehicles" / "towed_system.yaml");
+  const vehicle::VehicleDescription towed = vehicle::loadVehicle(kRoot / "vehicles" / "towed_system.yaml");
   try {
     vehicle::ClimbController c(towed, {}, "scene.yaml: controller");
     FAIL() << "accepted a vehicle without sections";
   } catch (const InvalidInputError& e) {
     EXPECT_NE(std::string(e.what()).find("'middle'"), std::string::npos) << e.what();
   }
-  const vehicle::VehicleDescription robot = io::loadVehicle(kRoot / "vehicles" / "six_wheel_robot.yaml");
+  const vehicle::VehicleDescription robot = vehicle::loadVehicle(kRoot / "vehicles" / "six_wheel_robot.yaml");
   EXPECT_THROW(vehicle::ClimbController(robot, {.approach_speed = 2.0}, "c"),
                InvalidInputError);  // above 5 rad/s x 0.19 m
   EXPECT_THROW(vehicle::ClimbController(robot, {.crawl_speed = -0.1}, "c"), InvalidInputError);

@@ -1,7 +1,7 @@
 // Scene files: every shipped scene loads; overrides reach any value (lists
 // included) and parameters; bad scenes are refused before anything runs,
 // naming the file, the line, the key and the problem.
-#include "wtc/io/scene_file.hpp"
+#include "wtc/sim/scene_file.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -9,10 +9,10 @@
 #include <filesystem>
 #include <fstream>
 
-#include "wtc/error.hpp"
-#include "wtc/traction_law.hpp"
+#include "wtc/base/error.hpp"
+#include "wtc/tyre/traction_law.hpp"
 
-namespace wtc::io {
+namespace wtc::sim {
 namespace {
 
 using ::testing::HasSubstr;
@@ -160,4 +160,4 @@ TEST(SceneFileTest, BadScenesAreRefusedWithFileLineKeyAndProblem) {
 }
 
 }  // namespace
-}  // namespace wtc::io
+}  // namespace wtc::sim

@@ -8,10 +8,10 @@
 #include <numbers>
 
 #include "sim_test_support.hpp"
-#include "wtc/constants.hpp"
+#include "wtc/base/constants.hpp"
 #include "wtc/sim/make_engine.hpp"
 #include "wtc/sim/run.hpp"
-#include "wtc/terrain_primitives.hpp"
+#include "wtc/terrain/terrain_primitives.hpp"
 #include "wtc/vehicle/schedule_controller.hpp"
 
 namespace wtc::testing {

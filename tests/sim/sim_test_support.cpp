@@ -1,12 +1,12 @@
 #include "sim_test_support.hpp"
 
-#include "wtc/io/vehicle_file.hpp"
-#include "wtc/terrain_primitives.hpp"
+#include "wtc/vehicle/vehicle_file.hpp"
+#include "wtc/terrain/terrain_primitives.hpp"
 
 namespace wtc::testing {
 
 vehicle::VehicleDescription shippedVehicle(const std::string& file) {
-  return io::loadVehicle(std::string(WTC_SOURCE_DIR) + "/vehicles/" + file);
+  return vehicle::loadVehicle(std::string(WTC_SOURCE_DIR) + "/vehicles/" + file);
 }
 
 Terrain flatGround() {

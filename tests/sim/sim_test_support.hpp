@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "wtc/sim/engine.hpp"
-#include "wtc/terrain.hpp"
+#include "wtc/terrain/terrain.hpp"
 
 namespace wtc::testing {
 

@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "allocation_counter.hpp"
-#include "wtc/io/scene_file.hpp"
+#include "wtc/sim/scene_file.hpp"
 #include "wtc/sim/make_engine.hpp"
 #include "wtc/sim/run.hpp"
 
@@ -27,8 +27,8 @@ constexpr int kCountedSteps = 5000;
 TEST(StepAllocationTest, AWarmStepOfTheLedgeClimbAllocatesNothingInAnyEngineOrMode) {
   for (const char* engine : {"bullet", "ode", "ode_quick"}) {
     for (const char* mode : {"force", "constraint"}) {
-      const sim::Scene s = io::loadScene(fs::path(WTC_SOURCE_DIR) / "scenes" / "robot_ledge.yaml",
-                                         std::vector<io::Override>{{"engine", engine}, {"mode", mode}});
+      const sim::Scene s = sim::loadScene(fs::path(WTC_SOURCE_DIR) / "scenes" / "robot_ledge.yaml",
+                                         std::vector<sim::Override>{{"engine", engine}, {"mode", mode}});
       const auto e = sim::makeEngine(s.engine, *s.terrain, s.vehicle, s.placement);
       const auto controller = s.make_controller();
       sim::Run run(*e, controller.get(), s.vehicle_effects);

@@ -7,7 +7,7 @@
 
 #include <filesystem>
 
-#include "wtc/io/scene_file.hpp"
+#include "wtc/sim/scene_file.hpp"
 #include "wtc/sim/make_engine.hpp"
 #include "wtc/sim/run.hpp"
 #include "wtc/sim/scene_run.hpp"
@@ -18,8 +18,8 @@ namespace {
 namespace fs = std::filesystem;
 const fs::path kScenes = fs::path(WTC_SOURCE_DIR) / "scenes";
 
-sim::Scene scene(const std::string& name, std::vector<io::Override> overrides) {
-  return io::loadScene(kScenes / (name + ".yaml"), overrides);
+sim::Scene scene(const std::string& name, std::vector<sim::Override> overrides) {
+  return sim::loadScene(kScenes / (name + ".yaml"), overrides);
 }
 
 sim::RunSummary run(const sim::Scene& s) {

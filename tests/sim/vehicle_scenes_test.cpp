@@ -8,12 +8,12 @@
 #include <numbers>
 
 #include "sim_test_support.hpp"
-#include "wtc/io/scene_file.hpp"
+#include "wtc/sim/scene_file.hpp"
 #include "wtc/sim/make_engine.hpp"
 #include "wtc/sim/run.hpp"
 #include "wtc/sim/scene_run.hpp"
-#include "wtc/terrain_primitives.hpp"
-#include "wtc/traction_law.hpp"
+#include "wtc/terrain/terrain_primitives.hpp"
+#include "wtc/tyre/traction_law.hpp"
 #include "wtc/vehicle/schedule_controller.hpp"
 
 namespace wtc::testing {
@@ -24,8 +24,8 @@ const fs::path kScenes = fs::path(WTC_SOURCE_DIR) / "scenes";
 constexpr double kJointGapM = 1e-3;                              // the bound on joint error
 constexpr double kJointAngleRad = 0.1 * std::numbers::pi / 180;  // and on its angle
 
-sim::Scene scene(const std::string& name, std::vector<io::Override> overrides = {}) {
-  return io::loadScene(kScenes / (name + ".yaml"), overrides);
+sim::Scene scene(const std::string& name, std::vector<sim::Override> overrides = {}) {
+  return sim::loadScene(kScenes / (name + ".yaml"), overrides);
 }
 
 sim::RunSummary run(const sim::Scene& s) {
@@ -43,8 +43,8 @@ TEST(VehicleScenesTest, EveryShippedSceneRunsShortenedInEveryEngineWithoutNaN) {
     for (const char* engine : {"bullet", "ode", "ode_quick"}) {
       for (const char* mode : {"force", "constraint", "engine_cylinder", "engine_sphere"}) {
         if (std::string(engine) == "ode_quick" && std::string(mode) == "constraint") continue;
-        const sim::Scene s = io::loadScene(
-            entry.path(), std::vector<io::Override>{{"engine", engine}, {"mode", mode}, {"duration", "1"}});
+        const sim::Scene s = sim::loadScene(
+            entry.path(), std::vector<sim::Override>{{"engine", engine}, {"mode", mode}, {"duration", "1"}});
         const sim::RunSummary r = run(s);
         const std::string label = s.name + " in " + engine + "/" + mode;
         EXPECT_FALSE(r.nan) << label;

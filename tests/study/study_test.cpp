@@ -9,9 +9,9 @@
 #include <fstream>
 #include <set>
 
-#include "wtc/error.hpp"
-#include "wtc/io/run_summary_file.hpp"
-#include "wtc/io/study_file.hpp"
+#include "wtc/base/error.hpp"
+#include "wtc/sim/run_summary_file.hpp"
+#include "wtc/study/study_file.hpp"
 #include "wtc/study/study_results.hpp"
 #include "wtc/study/study_runner.hpp"
 
@@ -64,7 +64,7 @@ void expectSameResults(const std::vector<RunResult>& a, const std::vector<RunRes
 }
 
 TEST(StudyPlanTest, ExpandsSweepsIntoDistinctRunsWithTheReferenceFirst) {
-  const StudyPlan plan = wtc::io::loadStudyPlan(kTinyStudy);
+  const StudyPlan plan = wtc::study::loadStudyPlan(kTinyStudy);
   EXPECT_EQ(plan.name, "tiny");
   EXPECT_EQ(plan.scenarios, (std::vector<std::string>{"towed", "robot"}));
   // Per scenario: the reference, 2 engines x 2 steps, and one effect set.
@@ -78,14 +78,14 @@ TEST(StudyPlanTest, ExpandsSweepsIntoDistinctRunsWithTheReferenceFirst) {
   EXPECT_EQ(plan.runs[5].label, "bullet force 0.4 ms effects=coulomb");
   EXPECT_THAT(plan.runs[0].key, testing::StartsWith("towed-"));
   // The key is the settings', not the file order's nor the load's.
-  EXPECT_EQ(wtc::io::loadStudyPlan(kTinyStudy).runs[3].key, plan.runs[3].key);
+  EXPECT_EQ(wtc::study::loadStudyPlan(kTinyStudy).runs[3].key, plan.runs[3].key);
 }
 
 TEST(StudyPlanTest, ASweptSettingEqualToTheReferenceIsTheReferenceRunOnce) {
   const fs::path dir = freshDirectory("dedupe");
   const fs::path file = writeFile(
       dir, "s.yaml", towedStudy("d", "{engine: ode, dt: 0.0002}", "{step: {engine: [ode, bullet], dt: [0.0002]}}"));
-  const StudyPlan plan = wtc::io::loadStudyPlan(file);
+  const StudyPlan plan = wtc::study::loadStudyPlan(file);
   ASSERT_EQ(plan.runs.size(), 2u);
   EXPECT_TRUE(plan.runs[0].reference);
   EXPECT_EQ(plan.runs[0].label, "ode force 0.2 ms");
@@ -99,7 +99,7 @@ TEST(StudyPlanTest, OnlyLimitsASweepToTheScenariosItNames) {
       "name: o\nbase: {engine: bullet, mode: force, dt: 0.0004}\nreference: {dt: 0.0002}\n"
       "scenarios: {towed: {scene: " WTC_SOURCE_DIR "/scenes/towed_incline.yaml}, robot: {scene: " WTC_SOURCE_DIR
       "/scenes/robot_straight.yaml}}\n";
-  const StudyPlan plan = wtc::io::loadStudyPlan(writeFile(
+  const StudyPlan plan = wtc::study::loadStudyPlan(writeFile(
       dir, "s.yaml", head + "sweeps: {step: {dt: [0.001]}, solver: {only: [robot], solver_iterations: [5]}}\n"));
   std::vector<std::string> labels;
   for (const PlannedRun& r : plan.runs) labels.push_back(r.scenario + ": " + r.label);
@@ -107,7 +107,7 @@ TEST(StudyPlanTest, OnlyLimitsASweepToTheScenariosItNames) {
                                               "robot: bullet force 0.2 ms", "robot: bullet force 1 ms",
                                               "robot: bullet force 0.4 ms solver_iterations=5"}));
   EXPECT_THAT(
-      [&] { wtc::io::loadStudyPlan(writeFile(dir, "t.yaml", head + "sweeps: {s: {only: [robt], dt: [1]}}\n")); },
+      [&] { wtc::study::loadStudyPlan(writeFile(dir, "t.yaml", head + "sweeps: {s: {only: [robt], dt: [1]}}\n")); },
       testing::ThrowsMessage<wtc::InvalidInputError>(
           testing::AllOf(HasSubstr("t.yaml:5:"), HasSubstr("only: no scenario 'robt'"))));
   fs::remove_all(dir);
@@ -119,7 +119,7 @@ TEST(StudyPlanTest, BadStudyFilesAreNamedWithTheirPlace) {
   const std::string scene = "scenarios: {t: {scene: " WTC_SOURCE_DIR "/scenes/towed_incline.yaml}}\n";
   const auto error = [&](const std::string& text) {
     try {
-      wtc::io::loadStudyPlan(writeFile(dir, "bad.yaml", text));
+      wtc::study::loadStudyPlan(writeFile(dir, "bad.yaml", text));
     } catch (const wtc::InvalidInputError& e) {
       return std::string(e.what());
     }
@@ -138,7 +138,7 @@ TEST(StudyPlanTest, BadStudyFilesAreNamedWithTheirPlace) {
 }
 
 TEST(StudyRunTest, ResultsDoNotDependOnTheNumberOfWorkers) {
-  const StudyPlan plan = wtc::io::loadStudyPlan(kTinyStudy);
+  const StudyPlan plan = wtc::study::loadStudyPlan(kTinyStudy);
   const fs::path one = freshDirectory("one"), two = freshDirectory("two");
   std::size_t made = 0;
   wtc::study::runPlan(plan, one, 1, WTC_SIM_EXE, [&](const wtc::study::RunDone& d) { made += d.summary != nullptr; });
@@ -162,7 +162,7 @@ TEST(StudyRunTest, ResultsDoNotDependOnTheNumberOfWorkers) {
 }
 
 TEST(StudyRunTest, AJobListThroughGnuParallelGathersToTheSameTable) {
-  const StudyPlan plan = wtc::io::loadStudyPlan(kTinyStudy);
+  const StudyPlan plan = wtc::study::loadStudyPlan(kTinyStudy);
   const fs::path local = freshDirectory("local"), jobs = freshDirectory("jobs");
   wtc::study::runPlan(plan, local, 2, WTC_SIM_EXE);
   {
@@ -184,7 +184,7 @@ TEST(StudyRunTest, AJobListThroughGnuParallelGathersToTheSameTable) {
 }
 
 TEST(StudyRunTest, RunsOfDifferentBuildsAreSaidToBeMixed) {
-  const StudyPlan plan = wtc::io::loadStudyPlan(kTinyStudy);
+  const StudyPlan plan = wtc::study::loadStudyPlan(kTinyStudy);
   const fs::path out = freshDirectory("builds");
   wtc::study::runPlan(plan, out, 2, WTC_SIM_EXE);
   std::vector<RunResult> results = wtc::study::gatherResults(plan, out);
@@ -195,10 +195,10 @@ TEST(StudyRunTest, RunsOfDifferentBuildsAreSaidToBeMixed) {
   EXPECT_EQ(one.begin()->second, static_cast<int>(plan.runs.size()));
   // As if run 3 had been made by another build (and read back from its file).
   const fs::path file = wtc::study::runDirectory(out, plan.runs[3]) / "summary.json";
-  wtc::sim::RunSummary other = wtc::io::readRunSummary(file);
+  wtc::sim::RunSummary other = wtc::sim::readRunSummary(file);
   EXPECT_EQ(other.program, one.begin()->first);
   other.program = "0123456789abcdef";
-  wtc::io::writeRunSummary(file, other);
+  wtc::sim::writeRunSummary(file, other);
   results = wtc::study::gatherResults(plan, out);
   EXPECT_EQ(wtc::study::programsOf(results).size(), 2u);
   wtc::study::writeResultsMarkdown(out / "results.md", plan, results);
@@ -210,14 +210,14 @@ TEST(StudyRunTest, RunsOfDifferentBuildsAreSaidToBeMixed) {
 }
 
 TEST(StudyRunTest, AnInterruptedRunIsMadeAgainAndOnlyIt) {
-  const StudyPlan plan = wtc::io::loadStudyPlan(kTinyStudy);
+  const StudyPlan plan = wtc::study::loadStudyPlan(kTinyStudy);
   const fs::path out = freshDirectory("resume");
   wtc::study::runPlan(plan, out, 2, WTC_SIM_EXE);
   const std::vector<RunResult> first = wtc::study::gatherResults(plan, out);
   // A run killed mid-way leaves its "running" summary and partial series.
   const fs::path killed = wtc::study::runDirectory(out, plan.runs[4]);
-  const wtc::sim::Scene scene = wtc::io::loadScene(plan.runs[4].scene_file, plan.runs[4].overrides);
-  wtc::io::writeRunStarted(killed / "summary.json", scene);
+  const wtc::sim::Scene scene = wtc::sim::loadScene(plan.runs[4].scene_file, plan.runs[4].overrides);
+  wtc::sim::writeRunStarted(killed / "summary.json", scene);
   fs::resize_file(killed / "bodies.csv", fs::file_size(killed / "bodies.csv") / 2);
   EXPECT_THAT([&] { wtc::study::gatherResults(plan, out); },
               testing::ThrowsMessage<wtc::InvalidInputError>(HasSubstr(plan.runs[4].key)));
@@ -233,7 +233,7 @@ TEST(StudyRunTest, AnInterruptedRunIsMadeAgainAndOnlyIt) {
 TEST(StudyRunTest, ARunThatCannotLoadIsNamed) {
   const fs::path dir = freshDirectory("badrun");
   const fs::path file = writeFile(dir, "s.yaml", towedStudy("e", "{dt: 0.0002}", "{bad: {engine: [bulet]}}"));
-  const StudyPlan plan = wtc::io::loadStudyPlan(file);
+  const StudyPlan plan = wtc::study::loadStudyPlan(file);
   EXPECT_THAT([&] { wtc::study::runPlan(plan, dir / "out", 2, WTC_SIM_EXE); },
               testing::ThrowsMessage<wtc::InvalidInputError>(
                   testing::AllOf(HasSubstr("bulet force 0.4 ms"), HasSubstr("engine"))));
@@ -241,7 +241,7 @@ TEST(StudyRunTest, ARunThatCannotLoadIsNamed) {
 }
 
 TEST(StudyRunTest, ARunWhoseProcessDiesIsRecordedAsCrashedAndTheStudyGoesOn) {
-  const StudyPlan plan = wtc::io::loadStudyPlan(kTinyStudy);
+  const StudyPlan plan = wtc::study::loadStudyPlan(kTinyStudy);
   const fs::path dir = freshDirectory("crash");
   // A wtc-sim that dies as an engine's failed assertion does.
   const fs::path fake =
@@ -254,7 +254,7 @@ TEST(StudyRunTest, ARunWhoseProcessDiesIsRecordedAsCrashedAndTheStudyGoesOn) {
     EXPECT_THAT(d.summary->warnings.at(0), testing::AllOf(HasSubstr("signal 6"), HasSubstr("ODE INTERNAL ERROR")));
   });
   EXPECT_EQ(crashed, plan.runs.size());
-  EXPECT_TRUE(wtc::io::runEnded(wtc::study::runDirectory(dir / "out", plan.runs[3])));
+  EXPECT_TRUE(wtc::sim::runEnded(wtc::study::runDirectory(dir / "out", plan.runs[3])));
   EXPECT_THAT([&] { wtc::study::gatherResults(plan, dir / "out"); },
               testing::ThrowsMessage<wtc::InvalidInputError>(HasSubstr("the reference of towed")));
   fs::remove_all(dir);

@@ -25,7 +25,7 @@
 #include <Eigen/Core>
 #include <memory>
 
-#include "wtc/convex_polyhedron.hpp"
+#include "wtc/geometry/convex_polyhedron.hpp"
 
 namespace wtc::testing {
 

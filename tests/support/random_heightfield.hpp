@@ -11,11 +11,11 @@
 
 #include <Eigen/Core>
 
-#include "wtc/convex_polyhedron.hpp"
-#include "wtc/heightfield.hpp"
-#include "wtc/terrain.hpp"
-#include "wtc/terrain_primitives.hpp"
-#include "wtc/triangle_mesh.hpp"
+#include "wtc/geometry/convex_polyhedron.hpp"
+#include "wtc/terrain/heightfield.hpp"
+#include "wtc/terrain/terrain.hpp"
+#include "wtc/terrain/terrain_primitives.hpp"
+#include "wtc/terrain/triangle_mesh.hpp"
 
 namespace wtc::testing {
 

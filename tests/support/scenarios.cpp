@@ -11,7 +11,7 @@
 
 #include <Eigen/Geometry>
 
-#include "wtc/error.hpp"
+#include "wtc/base/error.hpp"
 
 namespace wtc::testing {
 namespace {

@@ -27,7 +27,7 @@
 
 #include <Eigen/Core>
 
-#include "wtc/convex_polyhedron.hpp"
+#include "wtc/geometry/convex_polyhedron.hpp"
 
 namespace wtc::testing {
 

@@ -2,7 +2,7 @@
 
 #include <Eigen/Geometry>
 
-#include "wtc/terrain_primitives.hpp"
+#include "wtc/terrain/terrain_primitives.hpp"
 
 namespace wtc::testing {
 

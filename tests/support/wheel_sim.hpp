@@ -7,8 +7,8 @@
 // force mode inherits. Scenes: a flat slab, or one tilted about y.
 #include <Eigen/Core>
 
-#include "wtc/terrain.hpp"
-#include "wtc/tyre_model.hpp"
+#include "wtc/terrain/terrain.hpp"
+#include "wtc/tyre/tyre_model.hpp"
 
 namespace wtc::testing {
 

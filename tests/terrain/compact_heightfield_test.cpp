@@ -2,7 +2,7 @@
 // wtc::core) against the prisms addHeightfield stores: the same pieces bit
 // for bit, the same bounds, the same answer to "which pieces overlap this
 // box".
-#include "compact_heightfield.hpp"
+#include "terrain/compact_heightfield.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "random_heightfield.hpp"
-#include "wtc/error.hpp"
-#include "wtc/terrain.hpp"
+#include "wtc/base/error.hpp"
+#include "wtc/terrain/terrain.hpp"
 
 namespace wtc {
 namespace {

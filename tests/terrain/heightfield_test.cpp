@@ -1,4 +1,4 @@
-#include "wtc/heightfield.hpp"
+#include "wtc/terrain/heightfield.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -12,9 +12,9 @@
 #include <random>
 
 #include "random_heightfield.hpp"
-#include "wtc/error.hpp"
-#include "wtc/point_query.hpp"
-#include "wtc/terrain.hpp"
+#include "wtc/base/error.hpp"
+#include "wtc/geometry/point_query.hpp"
+#include "wtc/terrain/terrain.hpp"
 
 namespace wtc {
 namespace {

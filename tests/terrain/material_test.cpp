@@ -1,4 +1,4 @@
-#include "wtc/material.hpp"
+#include "wtc/terrain/material.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-#include "wtc/error.hpp"
+#include "wtc/base/error.hpp"
 
 namespace wtc {
 namespace {

@@ -1,4 +1,4 @@
-#include "wtc/terrain_primitives.hpp"
+#include "wtc/terrain/terrain_primitives.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "wtc/error.hpp"
-#include "wtc/point_query.hpp"
-#include "wtc/terrain.hpp"
+#include "wtc/base/error.hpp"
+#include "wtc/geometry/point_query.hpp"
+#include "wtc/terrain/terrain.hpp"
 
 namespace wtc {
 namespace {

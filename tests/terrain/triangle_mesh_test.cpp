@@ -1,4 +1,4 @@
-#include "wtc/triangle_mesh.hpp"
+#include "wtc/terrain/triangle_mesh.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -6,9 +6,9 @@
 #include <cmath>
 #include <limits>
 
-#include "wtc/error.hpp"
-#include "wtc/point_query.hpp"
-#include "wtc/terrain.hpp"
+#include "wtc/base/error.hpp"
+#include "wtc/geometry/point_query.hpp"
+#include "wtc/terrain/terrain.hpp"
 
 namespace wtc {
 namespace {

@@ -6,7 +6,7 @@
 
 #include "allocation_counter.hpp"
 #include "wheel_sim.hpp"
-#include "wtc/terrain_primitives.hpp"
+#include "wtc/terrain/terrain_primitives.hpp"
 
 namespace wtc {
 namespace {

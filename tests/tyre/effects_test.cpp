@@ -1,11 +1,11 @@
 // Effects: names as scenes write them, and the assembly of the tyre model.
-#include "wtc/effects.hpp"
+#include "wtc/tyre/effects.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "wtc/error.hpp"
-#include "wtc/tyre_model.hpp"
+#include "wtc/base/error.hpp"
+#include "wtc/tyre/tyre_model.hpp"
 
 namespace wtc {
 namespace {

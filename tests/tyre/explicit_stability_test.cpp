@@ -1,7 +1,7 @@
 // The explicit spring-damper stability limit against the integrator it
 // describes: just below the limit a disturbance stays bounded (|x| <= 5 for
 // an undamped spring at 0.98 of the limit), just above it grows.
-#include "wtc/explicit_stability.hpp"
+#include "wtc/tyre/explicit_stability.hpp"
 
 #include <cmath>
 

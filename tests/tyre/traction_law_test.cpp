@@ -1,13 +1,13 @@
 // The traction law mu(s) of the wheel-terrain model, section 4, against its
 // stated properties, and the static/dynamic mapping of the vehicles spec.
-#include "wtc/traction_law.hpp"
+#include "wtc/tyre/traction_law.hpp"
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include "wtc/error.hpp"
-#include "wtc/tolerances.hpp"
+#include "wtc/base/error.hpp"
+#include "wtc/base/tolerances.hpp"
 
 namespace wtc {
 namespace {

@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "wheel_sim.hpp"
-#include "wtc/traction_law.hpp"
+#include "wtc/tyre/traction_law.hpp"
 
 namespace wtc {
 namespace {

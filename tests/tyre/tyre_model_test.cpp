@@ -2,7 +2,7 @@
 // law, traction's direction and bound, its steady state (the spec's law),
 // rolling resistance, the wrench split, the removal of each effect, bounded
 // gain near zero velocity, finiteness, and named errors.
-#include "wtc/tyre_model.hpp"
+#include "wtc/tyre/tyre_model.hpp"
 
 #include <array>
 #include <cmath>
@@ -13,9 +13,9 @@
 #include <gtest/gtest.h>
 
 #include "wheel_sim.hpp"
-#include "wtc/error.hpp"
-#include "wtc/terrain_primitives.hpp"
-#include "wtc/traction_law.hpp"
+#include "wtc/base/error.hpp"
+#include "wtc/terrain/terrain_primitives.hpp"
+#include "wtc/tyre/traction_law.hpp"
 
 namespace wtc {
 namespace {

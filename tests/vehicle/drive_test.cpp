@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-#include "wtc/error.hpp"
+#include "wtc/base/error.hpp"
 
 namespace wtc::vehicle {
 namespace {

@@ -6,7 +6,7 @@
 #include <numbers>
 #include <random>
 
-#include "wtc/error.hpp"
+#include "wtc/base/error.hpp"
 
 namespace wtc::vehicle {
 namespace {

@@ -1,6 +1,6 @@
 // Vehicle files: the shipped vehicles load with the spec's numbers, and bad
 // files are refused with the file, line, body and problem.
-#include "wtc/io/vehicle_file.hpp"
+#include "wtc/vehicle/vehicle_file.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -9,9 +9,9 @@
 #include <fstream>
 #include <numbers>
 
-#include "wtc/error.hpp"
+#include "wtc/base/error.hpp"
 
-namespace wtc::io {
+namespace wtc::vehicle {
 namespace {
 
 using ::testing::HasSubstr;
@@ -116,4 +116,4 @@ TEST(VehicleFileTest, BadFilesAreRefusedWithFileLineBodyAndProblem) {
 }
 
 }  // namespace
-}  // namespace wtc::io
+}  // namespace wtc::vehicle

@@ -24,7 +24,7 @@
 #include <Eigen/Core>
 #include <filesystem>
 
-#include "wtc/heightfield.hpp"
+#include "wtc/terrain/heightfield.hpp"
 
 namespace wtc::io {
 

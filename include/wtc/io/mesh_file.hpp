@@ -25,7 +25,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "wtc/triangle_mesh.hpp"
+#include "wtc/terrain/triangle_mesh.hpp"
 
 namespace wtc::io {
 

@@ -25,8 +25,8 @@
 // referenced CSV/PGM/mesh file carry that file's own position after it.
 #include <filesystem>
 
-#include "wtc/terrain.hpp"
-#include "wtc/terrain_primitives.hpp"
+#include "wtc/terrain/terrain.hpp"
+#include "wtc/terrain/terrain_primitives.hpp"
 
 namespace wtc::io {
 

@@ -43,7 +43,7 @@ class Run {
   double maxDeflection() const { return max_deflection_; }
   bool nonFinite() const { return non_finite_; }
   /// Whether any body state went beyond kDivergedSpeedMps,
-  /// kDivergedAngularSpeedRadps or kDivergedDistanceM (wtc/constants.hpp):
+  /// kDivergedAngularSpeedRadps or kDivergedDistanceM (wtc/sim/sim_constants.hpp):
   /// the run should stop, as at a non-finite state.
   bool diverged() const { return diverged_; }
 

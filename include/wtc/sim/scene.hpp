@@ -2,7 +2,7 @@
 // A scene (wtc::sim): everything one run needs, engine-free — the engine
 // and its settings, the terrain, the vehicle and where it starts, the
 // effects, the controller, what to record and how the scene judges its own
-// success. wtc::io::loadScene reads one from YAML (scenes/README.md).
+// success. wtc::sim::loadScene reads one from YAML (scenes/README.md).
 #include <functional>
 #include <map>
 #include <memory>

@@ -2,7 +2,7 @@
 // An accuracy study's plan (wtc::study): every distinct run it makes. A
 // study file (bench/accuracy_study.yaml; format in docs/accuracy-study.md)
 // names scenarios (a scene each), one reference setting and sweeps of
-// settings; wtc::io::loadStudyPlan expands it. Each run is a scene file and
+// settings; wtc::study::loadStudyPlan expands it. Each run is a scene file and
 // its overrides (as `wtc-sim --set`), keyed by a hash of both, so the same
 // settings always land in the same directory and a finished run is never
 // made twice.
@@ -10,14 +10,14 @@
 #include <string>
 #include <vector>
 
-#include "wtc/io/scene_file.hpp"
+#include "wtc/sim/scene_file.hpp"
 
 namespace wtc::study {
 
 struct PlannedRun {
   std::string scenario;                 ///< The study's name for the scene.
   std::filesystem::path scene_file;     ///< Absolute.
-  std::vector<io::Override> overrides;  ///< engine, mode and dt always; then the scenario's and the sweep's.
+  std::vector<sim::Override> overrides;  ///< engine, mode and dt always; then the scenario's and the sweep's.
   std::string sweep;                    ///< The first sweep that asked for it ("reference" for the reference).
   std::string label;                    ///< "bullet force 0.4 ms", then any other setting ("effects=coulomb").
   std::string key;                      ///< <scenario>-<16 hex digits of FNV-1a over the scene file and the overrides>.

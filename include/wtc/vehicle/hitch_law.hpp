@@ -16,16 +16,10 @@
 // <= 0 and the hitch never feeds energy in.
 #include <Eigen/Geometry>
 
+#include "wtc/vehicle/body_kinematics.hpp"
 #include "wtc/vehicle/vehicle_description.hpp"
 
 namespace wtc::vehicle {
-
-/// A body's pose and the velocity of its centre of mass, world frame.
-struct BodyKinematics {
-  Eigen::Isometry3d pose{Eigen::Isometry3d::Identity()};      ///< Centre-of-mass frame (m).
-  Eigen::Vector3d linear_velocity{Eigen::Vector3d::Zero()};   ///< Of the centre of mass (m/s).
-  Eigen::Vector3d angular_velocity{Eigen::Vector3d::Zero()};  ///< (rad/s).
-};
 
 struct HitchForce {
   Eigen::Vector3d point_a{Eigen::Vector3d::Zero()};      ///< D1, world (m).

@@ -23,7 +23,7 @@
 
 #include <Eigen/Geometry>
 
-#include "wtc/tyre_parameters.hpp"
+#include "wtc/tyre/tyre_parameters.hpp"
 
 namespace wtc::vehicle {
 

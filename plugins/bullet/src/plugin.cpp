@@ -13,8 +13,8 @@
 
 #include "plugin_impl.hpp"
 #include "wheel_terrain_algorithm.hpp"
-#include "wtc/error.hpp"
-#include "wtc/scratch_capacity.hpp"
+#include "wtc/base/error.hpp"
+#include "base/scratch_capacity.hpp"
 
 namespace wtc::bullet {
 namespace {

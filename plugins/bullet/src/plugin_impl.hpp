@@ -10,9 +10,9 @@
 #include "wheel_friction_constraint.hpp"
 #include "wtc/bullet/plugin.hpp"
 #include "wtc/bullet/terrain_object.hpp"
-#include "wtc/bullet/wheel_shape.hpp"
-#include "wtc/mounted_wheel.hpp"
-#include "wtc/step_clock.hpp"
+#include "wheel_shape.hpp"
+#include "adapter/mounted_wheel.hpp"
+#include "adapter/step_clock.hpp"
 
 namespace wtc::bullet {
 

@@ -25,12 +25,12 @@ int WheelFrictionConstraint::getIslandIdA() const {
   return collider != nullptr ? collider->getIslandTag() : -1;
 }
 
-void WheelFrictionConstraint::set(std::span<const EngineContact> contacts, std::span<const ContactForce> model,
+void WheelFrictionConstraint::set(std::span<const SolverContact> contacts, std::span<const ContactForce> model,
                                   double h) {
   active_.clear();
   const std::size_t n = std::min({contacts.size(), model.size(), static_cast<std::size_t>(getNumRows())});
   for (std::size_t i = 0; i < n; ++i) {
-    const EngineContact& c = contacts[i];
+    const SolverContact& c = contacts[i];
     active_.push_back({toBullet(c.tread_point), toBullet(c.friction_direction),
                        std::max(c.friction * model[i].normal_force * h, 0.0)});
     internalSetAppliedImpulse(static_cast<int>(i), 0.0);

@@ -20,8 +20,8 @@
 
 #include <BulletDynamics/Featherstone/btMultiBodyConstraint.h>
 
-#include "wtc/engine_contact.hpp"
-#include "wtc/wheel_forces.hpp"
+#include "wtc/adapter/solver_contact.hpp"
+#include "wtc/tyre/wheel_forces.hpp"
 
 namespace wtc::bullet {
 
@@ -32,7 +32,7 @@ class WheelFrictionConstraint final : public btMultiBodyConstraint {
 
   /// This step's rows: contacts[i] with the normal force of model[i]
   /// (same order), step h.
-  void set(std::span<const EngineContact> contacts, std::span<const ContactForce> model, double h);
+  void set(std::span<const SolverContact> contacts, std::span<const ContactForce> model, double h);
   /// The force (N, world) the solver applied on the wheel at contact i of
   /// the last set(), along its direction; zero for a contact without a row.
   /// (Not const: this Bullet's getAppliedImpulse is not.)

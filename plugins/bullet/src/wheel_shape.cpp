@@ -1,4 +1,4 @@
-#include "wtc/bullet/wheel_shape.hpp"
+#include "wheel_shape.hpp"
 
 namespace wtc::bullet {
 

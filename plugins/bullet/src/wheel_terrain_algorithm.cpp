@@ -56,7 +56,7 @@ void WheelTerrainAlgorithm::writeWtcContacts(int wheel, bool wheel_is_body0, con
   w.manifold = manifold_;
   w.wheel_is_body0 = manifold_->getBody0() == (wheel_is_body0 ? body0 : body1)->getCollisionObject();
   w.manifold_point.clear();
-  for (const EngineContact& c : w.mounted.last().contacts) {
+  for (const SolverContact& c : w.mounted.last().contacts) {
     // Bullet's normal on B points from B to A; the point is on B; a
     // negative distance is a penetration.
     const btVector3 normal_on_b = toBullet(wheel_is_body0 ? c.normal : Eigen::Vector3d(-c.normal));
@@ -109,7 +109,7 @@ void WheelTerrainAlgorithm::writeWtcContacts(int wheel, bool wheel_is_body0, con
 // and the ERP that keeps the positional error (Z - slop) erp / h: the same
 // row as the true depth's without the split. (The multibody solver has no
 // split; the same row holds there.)
-void WheelTerrainAlgorithm::setSpring(btManifoldPoint& p, const EngineContact& c, double step_seconds) const {
+void WheelTerrainAlgorithm::setSpring(btManifoldPoint& p, const SolverContact& c, double step_seconds) const {
   const btContactSolverInfo& info = impl_.world.getSolverInfo();
   const double slop = info.m_linearSlop, threshold = info.m_splitImpulsePenetrationThreshold;
   const bool split = info.m_splitImpulse && threshold < 0.0 && -c.depth + slop <= threshold;

@@ -7,6 +7,7 @@
 // original shape.
 #include <btBulletCollisionCommon.h>
 
+#include "wtc/adapter/solver_contact.hpp"
 #include "wtc/bullet/plugin.hpp"
 
 namespace wtc::bullet {
@@ -41,7 +42,7 @@ class WheelTerrainAlgorithm : public btCollisionAlgorithm {
   void writeWtcContacts(int wheel, bool wheel_is_body0, const btCollisionObjectWrapper* body0,
                         const btCollisionObjectWrapper* body1, const btDispatcherInfo& dispatch_info,
                         btManifoldResult* result);
-  void setSpring(btManifoldPoint& point, const EngineContact& contact, double step_seconds) const;
+  void setSpring(btManifoldPoint& point, const SolverContact& contact, double step_seconds) const;
   void writeCapContacts(const Wheel& wheel, const btCollisionObjectWrapper* body0,
                         const btCollisionObjectWrapper* body1, const btDispatcherInfo& dispatch_info,
                         btManifoldResult* result);

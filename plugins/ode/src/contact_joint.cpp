@@ -2,7 +2,7 @@
 
 namespace wtc::ode {
 
-dContact toOdeContact(const EngineContact& c, double h, double surface_layer, dGeomID wheel, dGeomID ground) {
+dContact toOdeContact(const SolverContact& c, double h, double surface_layer, dGeomID wheel, dGeomID ground) {
   dContact j{};
   // The tyre's c and b as an implicit spring-damper: ODE's soft ERP/CFM.
   const SoftConstraint soft = softConstraint(c.stiffness, c.damping, h);
@@ -36,7 +36,7 @@ dContact toOdeContact(const EngineContact& c, double h, double surface_layer, dG
   return j;
 }
 
-double correctingVelocity(const EngineContact& c, double h) {
+double correctingVelocity(const SolverContact& c, double h) {
   return softConstraint(c.stiffness, c.damping, h).erp * c.depth / h;
 }
 

@@ -4,7 +4,7 @@
 // this file only says where each number goes in a dContact.
 #include <ode/ode.h>
 
-#include "wtc/engine_contact.hpp"
+#include "wtc/adapter/solver_contact.hpp"
 
 namespace wtc::ode {
 
@@ -12,11 +12,11 @@ namespace wtc::ode {
 /// `wheel` (body 1: the normal points into it) and `ground`. ODE subtracts
 /// its contact surface layer from every depth; `surface_layer` (m) is added
 /// back so that the spring sees the tyre's deflection Z.
-dContact toOdeContact(const EngineContact& contact, double step_seconds, double surface_layer, dGeomID wheel,
+dContact toOdeContact(const SolverContact& contact, double step_seconds, double surface_layer, dGeomID wheel,
                       dGeomID ground);
 
 /// The normal velocity (m/s) ODE's solver asks of the contact to remove its
 /// depth, ERP Z / h: the quantity dWorldSetContactMaxCorrectingVel caps.
-double correctingVelocity(const EngineContact& contact, double step_seconds);
+double correctingVelocity(const SolverContact& contact, double step_seconds);
 
 }  // namespace wtc::ode

@@ -10,9 +10,9 @@
 
 #include "contact_joint.hpp"
 #include "plugin_impl.hpp"
-#include "wtc/error.hpp"
-#include "wtc/scratch_capacity.hpp"
-#include "wtc/tolerances.hpp"
+#include "wtc/base/error.hpp"
+#include "base/scratch_capacity.hpp"
+#include "wtc/base/tolerances.hpp"
 
 namespace wtc::ode {
 namespace {
@@ -153,7 +153,7 @@ void Plugin::Impl::beginStep(double h) {
     // clears both after the world step, so they act on exactly this step.
     dBodyAddForceAtPos(w.body, r.force.x(), r.force.y(), r.force.z(), centre[0], centre[1], centre[2]);
     dBodyAddTorque(w.body, r.torque.x(), r.torque.y(), r.torque.z());
-    for (const EngineContact& contact : r.contacts) w.contacts.push_back({contact});
+    for (const SolverContact& contact : r.contacts) w.contacts.push_back({contact});
     // Counted now, taken back when handlePair hands the contacts to ODE.
     if (!w.contacts.empty()) ++w.diagnostics.unhandled_steps;
     w.mounted.tell(listener, static_cast<WheelId>(id), h);

@@ -4,9 +4,9 @@
 #include <unordered_map>
 #include <vector>
 
-#include "wtc/mounted_wheel.hpp"
+#include "adapter/mounted_wheel.hpp"
 #include "wtc/ode/plugin.hpp"
-#include "wtc/step_clock.hpp"
+#include "adapter/step_clock.hpp"
 
 namespace wtc::ode {
 

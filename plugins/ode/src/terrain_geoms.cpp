@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <span>
 
-#include "wtc/heightfield.hpp"
-#include "wtc/triangle_mesh.hpp"
+#include "wtc/terrain/heightfield.hpp"
+#include "wtc/terrain/triangle_mesh.hpp"
 
 namespace wtc::ode {
 namespace {

@@ -7,11 +7,11 @@
 #include <cstdio>
 #include <exception>
 #include <wtc/bullet/plugin.hpp>
-#include <wtc/convex_polyhedron.hpp>
+#include <wtc/geometry/convex_polyhedron.hpp>
 #include <wtc/io/terrain_file.hpp>
 #include <wtc/ode/plugin.hpp>
-#include <wtc/point_query.hpp>
-#include <wtc/terrain_primitives.hpp>
+#include <wtc/geometry/point_query.hpp>
+#include <wtc/terrain/terrain_primitives.hpp>
 
 int main() {
   const wtc::ConvexPolyhedron box = wtc::ConvexPolyhedron::box(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(2, 1, 1));

@@ -16,9 +16,10 @@
 #include "warm_started_motor.hpp"
 #include "wtc/bullet/plugin.hpp"
 #include "wtc/bullet/terrain_object.hpp"
-#include "wtc/constants.hpp"
-#include "wtc/error.hpp"
-#include "wtc/sim/engine_wheel_contacts.hpp"
+#include "wtc/base/constants.hpp"
+#include "wtc/sim/sim_constants.hpp"
+#include "wtc/base/error.hpp"
+#include "sim/native_wheel_contacts.hpp"
 
 namespace wtc::bullet {
 namespace {
@@ -431,7 +432,7 @@ class SimEngine final : public sim::Engine {
     auto collider = std::make_unique<btMultiBodyLinkCollider>(r.multibody, r.link);
     collider->setCollisionShape(shape);
     collider->setWorldTransform(toBtTransform(sim::startPose(vehicle(), i, placement)));
-    collider->setFriction(kBodyGroundFriction);
+    collider->setFriction(sim::kBodyGroundFriction);
     // A dynamic body's filters (a plain collision object defaults to the
     // static group, which never meets the terrain).
     world_.addCollisionObject(collider.get(), btBroadphaseProxy::DefaultFilter, btBroadphaseProxy::AllFilter);

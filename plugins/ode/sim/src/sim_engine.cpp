@@ -8,10 +8,11 @@
 #include <ode/ode.h>
 #include <ode/threading_impl.h>
 
-#include "wtc/constants.hpp"
-#include "wtc/error.hpp"
+#include "wtc/base/constants.hpp"
+#include "wtc/sim/sim_constants.hpp"
+#include "wtc/base/error.hpp"
 #include "wtc/ode/plugin.hpp"
-#include "wtc/sim/engine_wheel_contacts.hpp"
+#include "sim/native_wheel_contacts.hpp"
 #include "wtc/vehicle/drive.hpp"
 
 namespace wtc::ode {
@@ -304,7 +305,7 @@ class SimEngine final : public sim::Engine {
       const dReal* at = contact[k].geom.pos;
       const PieceId piece = plugin_->terrainGeoms().piece(ground, Eigen::Vector3d(at[0], at[1], at[2]));
       contact[k].surface.mode = dContactApprox1;
-      contact[k].surface.mu = piece >= 0 ? engine_wheel_mu_[terrain_.materialId(piece)] : kBodyGroundFriction;
+      contact[k].surface.mu = piece >= 0 ? engine_wheel_mu_[terrain_.materialId(piece)] : sim::kBodyGroundFriction;
       // Stable addresses: ODE keeps a pointer to the feedback until the step.
       if (recorded_ == recorded_contacts_.size()) recorded_contacts_.emplace_back();
       RecordedContact& r = recorded_contacts_[recorded_++];
@@ -447,7 +448,7 @@ class SimEngine final : public sim::Engine {
     const int n = dCollide(a, b, kMaxBodyContacts, &contact[0].geom, sizeof(dContact));
     for (int k = 0; k < n; ++k) {
       contact[k].surface.mode = dContactApprox1;
-      contact[k].surface.mu = kBodyGroundFriction;
+      contact[k].surface.mu = sim::kBodyGroundFriction;
       dJointAttach(dJointCreateContact(e.world_, e.contacts_, &contact[k]), body_a, body_b);
     }
   }

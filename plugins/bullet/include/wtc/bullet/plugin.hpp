@@ -33,11 +33,11 @@
 #include <btBulletDynamicsCommon.h>
 
 #include "wtc/bullet/terrain_object.hpp"
-#include "wtc/effects.hpp"
-#include "wtc/engine_contact.hpp"
-#include "wtc/terrain.hpp"
-#include "wtc/tyre_model.hpp"
-#include "wtc/wheel_listener.hpp"
+#include "wtc/tyre/effects.hpp"
+#include "wtc/tyre/contact_mode.hpp"
+#include "wtc/terrain/terrain.hpp"
+#include "wtc/tyre/tyre_model.hpp"
+#include "wtc/adapter/wheel_listener.hpp"
 
 class btMultiBody;
 

@@ -29,8 +29,8 @@
 #include <BulletCollision/CollisionShapes/btTriangleIndexVertexArray.h>
 #include <btBulletCollisionCommon.h>
 
-#include "wtc/terrain.hpp"
-#include "wtc/triangle_mesh.hpp"
+#include "wtc/terrain/terrain.hpp"
+#include "wtc/terrain/triangle_mesh.hpp"
 
 namespace wtc::bullet {
 

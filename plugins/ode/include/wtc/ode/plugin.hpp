@@ -29,7 +29,7 @@
 // forces over the next step and clears them at its end, so they act on
 // exactly that step and never pile up (unlike Bullet's substeps). The
 // pairs handled by handlePair create no joint.
-// Constraint mode: handlePair turns the wheel's contacts (wtc::EngineContact,
+// Constraint mode: handlePair turns the wheel's contacts (wtc::SolverContact,
 // one per contact the core found, even if ODE reports the wheel against
 // several pieces) into dContact joints: soft ERP and CFM from
 // wtc::softConstraint (the tyre's spring-damper, implicit in ODE's solver),
@@ -50,12 +50,12 @@
 #include <ode/ode.h>
 #include <Eigen/Core>
 
-#include "wtc/effects.hpp"
-#include "wtc/engine_contact.hpp"
+#include "wtc/tyre/effects.hpp"
+#include "wtc/adapter/solver_contact.hpp"
 #include "wtc/ode/terrain_geoms.hpp"
-#include "wtc/terrain.hpp"
-#include "wtc/tyre_model.hpp"
-#include "wtc/wheel_listener.hpp"
+#include "wtc/terrain/terrain.hpp"
+#include "wtc/tyre/tyre_model.hpp"
+#include "wtc/adapter/wheel_listener.hpp"
 
 namespace wtc::ode {
 
@@ -81,7 +81,7 @@ struct RigidWheel {
 /// contact joint's dJointFeedback: ODE fills it during the world step, so
 /// the forces are those of the last completed step.
 struct SolvedContact {
-  EngineContact contact;      ///< What the plugin gave ODE.
+  SolverContact contact;      ///< What the plugin gave ODE.
   dJointFeedback feedback{};  ///< f1, t1: the joint's force and torque on the wheel body.
   /// The joint's force on the wheel (N, world).
   Eigen::Vector3d force() const { return {feedback.f1[0], feedback.f1[1], feedback.f1[2]}; }

@@ -50,8 +50,8 @@
 #include <ode/ode.h>
 #include <Eigen/Core>
 
-#include "wtc/terrain.hpp"
-#include "wtc/triangle_mesh.hpp"
+#include "wtc/terrain/terrain.hpp"
+#include "wtc/terrain/triangle_mesh.hpp"
 
 namespace wtc::ode {
 

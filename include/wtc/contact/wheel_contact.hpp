@@ -1,0 +1,139 @@
+#pragma once
+// Wheel-terrain contact generation (wheel-terrain model, sections 1-2):
+// every piece near the wheel gives at most one contact, where the distance
+// from the wheel centre O to the piece is below the free radius r_f.
+//
+// One call reads top to bottom:
+//   candidate pieces (terrain index, box O +- r_f)
+//   -> point queries (modified GJK, max_distance = r_f, warm-started)
+//   -> seam rule (drop contacts that are internal seams of the ground)
+//   -> tread filter (drop contacts on the cut caps of the truncated sphere)
+//   -> optionally keep only the deepest.
+//
+// Seam rule. The ground is the union of its pieces. A contact from piece B
+// whose ground point lies on or inside (within tolerance::kSeamGapRelative
+// x r_f) another touching piece A nearer to O is not a local minimum of the
+// distance to the union: it is an internal seam (two prisms of one flat
+// ground) and is dropped. "Nearer" is the strict order on (distance, piece
+// id), so the nearest contact always survives and ties keep one. Contacts at
+// distinct places (a ledge's vertical face and the ground in front of it)
+// are all kept. Between the two, the rule is continuous: B's load share is
+// delta / L, clamped to [0, 1], where delta is how far B's ground point lies
+// outside A and L = sqrt(2 r_f Z_B) the half-length of B's contact patch, so
+// a concave crease between two nearly coplanar pieces (a heightfield's
+// gentle valley) loads the wheel like the flat ground it nearly is, instead
+// of doubling the load as soon as the crease is bent. A real edge (B's
+// ground point on an edge or vertex of B that no other touching piece
+// covers: a kerb's top edge, a crack's lip) is not a crease: it keeps at
+// least min(1, clear / Z_B), where clear is how far it stands off the rest
+// of the ground. See docs/wheel-contact.md for why this is exact on flat
+// seams and ridges.
+#include <cmath>
+#include <memory>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "wtc/geometry/point_query.hpp"
+#include "wtc/terrain/terrain.hpp"
+
+namespace wtc {
+
+struct WheelGeometry {
+  double free_radius = 0.19;  ///< r_f (m), > 0.
+  double tread_width = 0.12;  ///< w (m), > 0; w >= 2 r_f makes a full sphere.
+};
+
+/// Throws InvalidInputError naming the field, its value and `where`.
+/// Allocates nothing unless it throws (it runs every step).
+void validate(const WheelGeometry& wheel, const char* where);
+
+/// True when the unit direction `d` from the wheel centre meets a cut cap
+/// rather than the tread: |r_f d . a| > w / 2, with `unit_axle` a. The tread
+/// filter's test; the engine adapters apply it to their own contact normals
+/// (the sign of d does not matter).
+inline bool onCap(const WheelGeometry& wheel, const Eigen::Vector3d& d, const Eigen::Vector3d& unit_axle) {
+  return std::abs(wheel.free_radius * d.dot(unit_axle)) > 0.5 * wheel.tread_width;
+}
+
+struct WheelPose {
+  Eigen::Vector3d center{Eigen::Vector3d::Zero()};  ///< O (world, m).
+  Eigen::Vector3d axle{Eigen::Vector3d::UnitY()};   ///< Axle direction a (world; normalised here).
+};
+
+struct ContactOptions {
+  bool multiple_contacts = true;  ///< Off: only the deepest contact is kept.
+  bool tread_truncation = true;   ///< Off: the wheel is a full sphere.
+  bool seam_rule = true;          ///< Off: every touching piece gives a contact.
+};
+
+struct WheelContact {
+  Eigen::Vector3d point{Eigen::Vector3d::Zero()};         ///< P = O + r_f e, on the undeformed tread (world, m).
+  Eigen::Vector3d ground_point{Eigen::Vector3d::Zero()};  ///< Closest point of the piece (world, m).
+  Eigen::Vector3d e{Eigen::Vector3d::UnitZ()};            ///< Unit, from O toward the ground.
+  double deflection = 0.0;                                ///< Z = r_f - signed distance (m), > 0.
+  double signed_distance = 0.0;                           ///< From O to the piece (m); < 0 inside.
+  double load_share = 1.0;  ///< Fraction of this contact's normal force the wheel feels, (0, 1]: below 1 only
+                            ///< next to a nearer piece at a shallow concave crease, or on an edge
+                            ///< standing less than Z off the rest of the ground (seam rule).
+  PieceId piece = -1;
+  MaterialId material = -1;
+};
+
+/// Per-wheel state: scratch memory and warm-start caches, reused across
+/// steps so that a step allocates nothing once warmed up.
+class WheelContactFinder {
+ public:
+  /// Reserves the scratch memory a step needs (see wtc/scratch_capacity.hpp).
+  WheelContactFinder();
+
+  /// The contacts of `wheel` at `pose`, valid until the next call. Throws
+  /// InvalidInputError for a non-finite pose, a zero axle or invalid
+  /// geometry.
+  std::span<const WheelContact> find(const Terrain& terrain, const WheelGeometry& wheel, const WheelPose& pose,
+                                     const ContactOptions& options = {});
+
+  /// Candidate pieces of the last call (for diagnostics and benchmarks).
+  std::span<const PieceId> candidates() const { return candidates_; }
+
+  /// The contacts of the last call that the tread filter dropped: the ground
+  /// touches a cut cap (a wheel cambered beyond asin(w / 2 r_f) against its
+  /// ground, or lying on its side). They carry no tyre force; an engine
+  /// adapter can let the engine collide the caps (a rigid cylinder of radius
+  /// sqrt(r_f^2 - (w/2)^2) and width w) there, so that a fallen wheel does
+  /// not sink (docs/wheel-contact.md). After a call with cap contacts, the
+  /// next reports them out to r_f (1 + kCapHysteresisRelative).
+  std::span<const WheelContact> capContacts() const { return caps_; }
+
+ private:
+  void applySeamRule(double gap, double radius);
+  double realEdgeShare(const WheelContact& b, double gap) const;
+  // The piece of candidate `id` (stored, or formed and kept in formed_).
+  const ConvexPolyhedron& candidatePiece(PieceId id) const;
+  void exitWhereEntered(const ConvexPolyhedron& piece, PieceId id, const Eigen::Vector3d& centre, double radius,
+                        WheelContact& c);
+  std::vector<PieceId> candidates_;
+  std::vector<WheelContact> contacts_, caps_;
+  std::vector<std::pair<PieceId, QueryCache>> caches_, next_caches_;
+  std::vector<double> shares_;
+  // This call's candidates' pieces (candidates_ order), and the pieces
+  // formed for them (compact parts'), kept for the next call. Held by
+  // pointer: a kept prism moves from call to call as one pointer, not as
+  // its dozen buffers; the prisms dropped wait in spare_ to be formed into
+  // again. Shared, so that a copied finder shares its formed prisms (never
+  // changed while shared: only a spare held by no one else is reused).
+  std::vector<const ConvexPolyhedron*> candidate_pieces_;
+  std::vector<std::pair<PieceId, std::shared_ptr<ConvexPolyhedron>>> formed_, next_formed_;
+  std::vector<std::shared_ptr<ConvexPolyhedron>> spare_;
+  // The centre of the last call, and for each piece the centre was inside
+  // then, the outward normal of the face it was pushed out by.
+  Eigen::Vector3d previous_centre_{Eigen::Vector3d::Zero()};
+  bool has_previous_ = false;
+  bool caps_last_ = false;  // the last call saw the ground at a cap
+  std::vector<std::pair<PieceId, Eigen::Vector3d>> exits_, next_exits_;
+};
+
+}  // namespace wtc

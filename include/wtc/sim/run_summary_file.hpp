@@ -1,0 +1,32 @@
+#pragma once
+// summary.json (wtc::io): a run's summary as wtc-sim and wtc-study write it
+// (the fields: docs/vehicles-and-scenes.md). Written whole, then renamed,
+// so a reader never sees half of one; read back to gather a study.
+#include <filesystem>
+
+#include "wtc/sim/scene.hpp"
+#include "wtc/sim/scene_run.hpp"
+
+namespace wtc::sim {
+
+void writeRunSummary(const std::filesystem::path& file, const sim::RunSummary& summary);
+
+/// What a run writes before its first step: status "running", success
+/// false. A run killed before its end (SIGKILL, a power cut) leaves it;
+/// the end replaces it.
+void writeRunStarted(const std::filesystem::path& file, const sim::Scene& scene);
+
+/// Over the summary a run left when its process died of `signal`:
+/// status "crashed", success false, `reason` as its warning.
+void writeRunCrashed(const std::filesystem::path& file, const std::string& reason);
+
+/// The summary in `file`; a run that did not end reads as interrupted.
+/// InvalidInputError naming the file if it is missing or not a summary.
+sim::RunSummary readRunSummary(const std::filesystem::path& file);
+
+/// Whether `dir` holds a run that ended: its summary.json says "completed",
+/// or "crashed" (made again, it would crash again; delete the directory to
+/// retry).
+bool runEnded(const std::filesystem::path& dir);
+
+}  // namespace wtc::sim

@@ -1,0 +1,46 @@
+#pragma once
+// Scene files (YAML): scenes/README.md has the reference, scenes/*.yaml are
+// the shipped ones. In short:
+//
+//   name: robot_straight
+//   parameters: {wheel_rate: 2.0}     # named numbers; "$wheel_rate" anywhere below
+//   engine: bullet                    # bullet | ode | ode_quick
+//   mode: force                       # force | constraint
+//   dt: 0.0004                        # step (s)
+//   duration: 5                       # (s)
+//   solver_iterations: 50             # optional
+//   solver_residual: 1.0e-6           # optional (Bullet)
+//   terrain: ../terrains/flat.yaml    # a terrain file, or the file's body inline
+//   vehicle: {file: ../vehicles/six_wheel_robot.yaml, translation: [0, 0, 0]}
+//   effects: [full]                   # tyre effects and actuator_limits, hitch_damping
+//   controller: {type: schedule, schedules: [...]}
+//   output: {rate_hz: 100, plots: true}
+//   success: {min_distance: 1.0, max_tilt_deg: 45}
+//
+// Paths are relative to the scene file. Overrides (`--set key.path=value`)
+// change the document before it is read: the path's parts are map keys or
+// list indices, the value is YAML (numbers, strings, lists); a first part
+// that is not a key of the document but a parameter's name sets that
+// parameter. Errors are InvalidInputError "<file>:<line>:<col>: <key>: <problem>"
+// (an override's errors name the override).
+#include <filesystem>
+#include <span>
+#include <string>
+
+#include "wtc/sim/scene.hpp"
+
+namespace wtc::sim {
+
+struct Override {
+  std::string path;   ///< "controller.schedules.0.points"
+  std::string value;  ///< YAML text: "2.5", "[[0, 0], [1, 2]]"
+};
+
+/// "key.path=value" as --set gives it. Throws InvalidInputError naming the
+/// text when there is no '=' or the path is empty.
+Override parseOverride(const std::string& text);
+
+/// Reads, overrides, checks and builds (terrain and vehicle loaded).
+sim::Scene loadScene(const std::filesystem::path& path, std::span<const Override> overrides = {});
+
+}  // namespace wtc::sim

@@ -1,0 +1,20 @@
+#pragma once
+// The constants of whole-vehicle runs (wtc::sim), with units, in one place;
+// the core's physical constants are in wtc/base/constants.hpp.
+namespace wtc::sim {
+
+/// Coulomb friction of a vehicle's non-wheel bodies (chassis, carriers)
+/// against the ground, in every engine (dimensionless): what a steel frame
+/// scraping asphalt has, roughly; only off-design contacts use it.
+inline constexpr double kBodyGroundFriction = 0.6;
+
+/// A body beyond any of these has diverged (an unstable step, an
+/// explosion), and a run stops there as it does at a non-finite state:
+/// no vehicle of WTC's comes near them, and ODE's hash space aborts the
+/// process on bounding boxes beyond about 1e9 m (an assertion in
+/// collision_space.cpp), which a run that went on would reach.
+inline constexpr double kDivergedSpeedMps = 1e3;
+inline constexpr double kDivergedAngularSpeedRadps = 1e4;
+inline constexpr double kDivergedDistanceM = 1e6;
+
+}  // namespace wtc::sim

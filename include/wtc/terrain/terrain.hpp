@@ -1,0 +1,196 @@
+#pragma once
+// The ground: a static set of convex pieces, each with a material, and a
+// spatial index that answers "which pieces can touch this box" (a wheel's
+// bounding box). Immutable once built; build it with TerrainBuilder.
+//
+// Index: a static 4-wide bounding-volume hierarchy over the pieces' boxes,
+// tested four at a time in single precision, with an exact test on the
+// double boxes at the leaves (docs/terrain.md). Chosen over FCL's
+// DynamicAABBTreeCollisionManager and Bullet's btDbvt by the benchmark
+// bench/wheel_query_bench.cpp.
+//
+// Stored and formed pieces. A piece is stored (a ConvexPolyhedron kept in
+// the terrain) or formed: a compact heightfield (addCompactHeightfield,
+// wtc/heightfield.hpp) keeps its samples, a compact triangle mesh
+// (MeshExtrusionOptions::compact, wtc/triangle_mesh.hpp) its vertices and
+// triangles, and each forms a prism when asked, bit for bit the one
+// addHeightfield or addTriangleMesh would store. Ids run over all pieces in
+// the order they were added. piece(id, scratch) gives either; piece(id)
+// only a stored one. A compact part is found by its own index (the grid, or
+// the mesh's hierarchy), not the stored pieces'.
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "wtc/geometry/aabb.hpp"
+#include "wtc/geometry/convex_polyhedron.hpp"
+#include "wtc/terrain/material.hpp"
+
+namespace wtc {
+
+using PieceId = std::int32_t;
+using MaterialId = std::int32_t;
+
+class Terrain;
+struct Heightfield;
+struct TriangleMesh;
+namespace detail {
+class FormedPieces;          // a compact part's pieces, formed on demand (src/terrain/formed_pieces.hpp)
+class BoxTree;               // the index (src/terrain/box_tree.hpp)
+struct TerrainBuilderAccess;  // how the compact builders add their parts
+}  // namespace detail
+
+/// The ids of the pieces a builder added: [first, first + count). Piece ids
+/// are dense and in insertion order, so a builder's pieces are contiguous.
+struct PieceRange {
+  PieceId first = 0;
+  PieceId count = 0;
+  PieceId end() const { return first + count; }
+};
+
+
+class TerrainBuilder {
+ public:
+  /// Registers a material (validated); returns its id.
+  MaterialId addMaterial(const Material& material);
+  /// Adds a piece of the given material; returns its id (ids are dense,
+  /// in insertion order, shared with compact fields' pieces). Throws if
+  /// `material` is not a registered id.
+  PieceId addPiece(ConvexPolyhedron piece, MaterialId material);
+  /// Reserves room for `count` more pieces (large heightfields).
+  void reserve(std::size_t count);
+  /// Throws InvalidInputError naming `where` when `count` more pieces would
+  /// pass PieceId's range or cannot fit in this machine's memory (counted
+  /// at sizeof(ConvexPolyhedron) each, a lower bound): a terrain file
+  /// asking for 10^10 tiles is refused before anything is allocated.
+  void requireRoomFor(std::uint64_t count, const std::string& where) const;
+  /// Throws InvalidInputError naming `where` unless `material` is a
+  /// registered id.
+  void requireMaterial(MaterialId material, const char* where) const;
+  /// Pieces added so far, stored and formed: the next piece's id.
+  std::size_t pieceCount() const { return next_id_; }
+  MaterialId materialCount() const { return static_cast<MaterialId>(materials_.size()); }
+  /// Builds the index. Throws InvalidInputError if there are no pieces.
+  Terrain build() &&;
+
+ private:
+  friend class Terrain;
+  friend struct detail::TerrainBuilderAccess;
+  // A compact part's pieces: ids first ... first + count - 1.
+  struct Field {
+    PieceId first = 0;
+    PieceId count = 0;
+    PieceId formed_before = 0;  // formed ids of the parts before this one
+    std::shared_ptr<const detail::FormedPieces> formed;
+    MaterialId material = 0;
+  };
+  // Throws InvalidInputError naming `where` when `count` more ids would
+  // pass PieceId's range (requireRoomFor's first check).
+  void requireIdsFor(std::uint64_t count, const std::string& where) const;
+
+  std::vector<ConvexPolyhedron> pieces_;
+  std::vector<MaterialId> piece_material_;
+  std::vector<Material> materials_;
+  std::vector<Field> fields_;
+  std::size_t next_id_ = 0;
+};
+
+class Terrain {
+ public:
+  /// Pieces, stored and formed (ids 0 ... pieceCount() - 1).
+  std::size_t pieceCount() const { return piece_count_; }
+  /// Stored piece `id`. Throws InvalidInputError for a formed one (use the
+  /// overload with a scratch).
+  const ConvexPolyhedron& piece(PieceId id) const { return fields_.empty() ? pieces_[id] : storedPiece(id); }
+  /// Piece `id`: a stored piece itself, or a formed one made into `scratch`
+  /// (which the result then refers to).
+  const ConvexPolyhedron& piece(PieceId id, std::optional<ConvexPolyhedron>& scratch) const;
+  /// Formed piece `id` made into `into`, reusing its buffers (a former
+  /// piece's: how the contact finder forms pieces without allocating).
+  /// Throws InvalidInputError unless isFormed(id).
+  void formPiece(PieceId id, ConvexPolyhedron& into) const;
+  /// True for a compact part's piece, formed when asked for.
+  bool isFormed(PieceId id) const;
+  /// The piece's bounding box, without forming it.
+  Aabb pieceBounds(PieceId id) const;
+  /// True when queryPoint(piece(id), point, {max_distance = reach}) would
+  /// answer kBeyond by its first two tests, the box and the face planes,
+  /// leaving a cache untouched; decided from the corners of formed piece
+  /// `id` without forming it (how the contact finder forms only the pieces
+  /// that may touch). False for a piece that may be within reach, and for a
+  /// stored one.
+  bool formedPieceBeyond(PieceId id, const Eigen::Vector3d& point, double reach) const;
+  /// The stored pieces (all of them when the terrain has no compact field).
+  std::span<const ConvexPolyhedron> pieces() const { return pieces_; }
+  /// The id of pieces()[stored] (ids skip the compact fields' ranges).
+  PieceId storedId(std::size_t stored) const;
+  /// Where piece `id` lives: compact part `field` (>= 0), or pieces()[stored]
+  /// (field = -1); storedId's inverse for a stored piece.
+  struct Place {
+    int field = -1;
+    std::size_t stored = 0;
+  };
+  Place place(PieceId id) const;
+
+  /// A compact part of this terrain, a heightfield or a triangle mesh: its
+  /// pieces' ids and its geometry (an engine plugin gives it to the engine
+  /// as one heightfield or triangle-mesh shape). Exactly one of field and
+  /// mesh is set; both live as long as the terrain.
+  struct CompactField {
+    PieceId first = 0;  ///< Its pieces are first ... first + count - 1.
+    PieceId count = 0;
+    /// A heightfield's samples; its pieces in addHeightfield's order. Its
+    /// cell_holes is empty unless a cell is a hole.
+    const Heightfield* field = nullptr;
+    /// A mesh's vertices and triangles: piece first + k is triangle k,
+    /// wound outward, extruded `thickness` (m) along minus its normal.
+    const TriangleMesh* mesh = nullptr;
+    double thickness = 0.0;
+    MaterialId material = 0;  ///< Of every piece, unless the field has cell_materials.
+  };
+  std::size_t compactFieldCount() const { return fields_.size(); }
+  CompactField compactField(std::size_t k) const;
+  /// The piece among ids first ... first + count - 1 nearest `point`: the
+  /// smallest signed distance (queryPoint) among those whose boxes come
+  /// within `reach` (m) of it; -1 if none does. How an engine plugin names
+  /// the piece a contact met on a compact mesh's engine shape.
+  PieceId nearestPiece(const Eigen::Vector3d& point, PieceId first, PieceId count, double reach) const;
+  const Material& material(PieceId id) const { return materials_[materialId(id)]; }
+  MaterialId materialId(PieceId id) const { return fields_.empty() ? piece_material_[id] : fieldAwareMaterialId(id); }
+  std::span<const Material> materials() const { return materials_; }
+  const Aabb& bounds() const { return bounds_; }
+
+  /// Appends to `out` every piece whose bounding box overlaps `box`
+  /// (allocation-free once `out` has capacity). Order unspecified.
+  void overlapping(const Aabb& box, std::vector<PieceId>& out) const;
+
+  /// Memory (bytes) of the pieces (stored pieces, and compact parts'
+  /// samples, vertices and triangles) and of the index (the stored pieces'
+  /// hierarchy and the compact meshes' own).
+  std::size_t pieceMemoryBytes() const;
+  std::size_t indexMemoryBytes() const;
+
+ private:
+  friend class TerrainBuilder;
+  using Field = TerrainBuilder::Field;
+  const ConvexPolyhedron& storedPiece(PieceId id) const;
+  // The compact part holding piece `id`; null for a stored piece or no piece.
+  const Field* formedField(PieceId id) const;
+  MaterialId fieldAwareMaterialId(PieceId id) const;
+  void buildIndex();
+
+  std::vector<ConvexPolyhedron> pieces_;
+  std::vector<MaterialId> piece_material_;
+  std::vector<Material> materials_;
+  std::vector<Field> fields_;
+  std::size_t piece_count_ = 0;
+  std::shared_ptr<const detail::BoxTree> tree_;  // over the stored pieces; null when there are none
+  std::vector<PieceId> order_;                   // piece ids in tree order
+  std::vector<Aabb> leaf_boxes_;                 // piece boxes in tree (order_) order
+  Aabb bounds_;
+};
+
+}  // namespace wtc

@@ -1,0 +1,270 @@
+#include "wtc/contact/wheel_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "wtc/base/checks.hpp"
+#include "wtc/base/error.hpp"
+#include "base/scratch_capacity.hpp"
+
+namespace wtc {
+
+void validate(const WheelGeometry& wheel, const char* where) {
+  requirePositive(wheel.free_radius, where, "wheel free_radius", "m");
+  requirePositive(wheel.tread_width, where, "wheel tread_width", "m");
+}
+
+WheelContactFinder::WheelContactFinder() {
+  candidates_.reserve(kReservedCandidates);
+  caches_.reserve(kReservedCandidates);
+  next_caches_.reserve(kReservedCandidates);
+  // Every touching piece is a contact until the seam rule: as many as candidates.
+  contacts_.reserve(kReservedCandidates);
+  caps_.reserve(kReservedCandidates);
+  shares_.reserve(kReservedCandidates);
+  exits_.reserve(kReservedCandidates);
+  next_exits_.reserve(kReservedCandidates);
+  candidate_pieces_.reserve(kReservedCandidates);
+  formed_.reserve(kReservedCandidates);
+  next_formed_.reserve(kReservedCandidates);
+}
+
+std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, const WheelGeometry& wheel,
+                                                       const WheelPose& pose, const ContactOptions& options) {
+  static constexpr const char* kWhere = "wtc::WheelContactFinder::find";
+  validate(wheel, kWhere);
+  const double axle_norm = pose.axle.norm();
+  if (!isFinite(pose.center) || !std::isfinite(axle_norm) || axle_norm < tolerance::kMinAxleNorm) {
+    throw InvalidInputError(std::string(kWhere) + ": wheel pose centre = " + formatVector(pose.center) +
+                            ", axle = " + formatVector(pose.axle) + " is not finite or has a zero axle");
+  }
+  const double r = wheel.free_radius;
+  const Eigen::Vector3d& o = pose.center;
+
+  caps_.clear();
+
+  // 1. Candidate pieces.
+  candidates_.clear();
+  terrain.overlapping({o.array() - r, o.array() + r}, candidates_);
+
+  // 2. Point queries, warm-started from the previous call's simplices.
+  QueryOptions query;
+  // Right after a call that saw the ground at a cap, the caps are looked for
+  // a little farther (hysteresis): an engine holding the wheel on a cap's
+  // rim holds it at about r_f, and the cap contacts must not come and go
+  // with every micrometre (they switch the engine's cap collision).
+  const double cap_reach = caps_last_ ? r * (1.0 + tolerance::kCapHysteresisRelative) : r;
+  query.max_distance = cap_reach;
+  contacts_.clear();
+  next_caches_.clear();
+  next_exits_.clear();
+  // Candidates in piece order, so that caches_ (last call's, in the same
+  // order) is matched in one merge walk: a search per candidate made a fine
+  // heightfield's few hundred candidates quadratic.
+  std::sort(candidates_.begin(), candidates_.end());
+  auto previous = caches_.begin();
+  // A compact part's pieces are formed once and kept while they stay
+  // candidates (the same merge walk): a rolling wheel meets new cells every
+  // few hundred steps.
+  auto previous_formed = formed_.begin();
+  next_formed_.clear();
+  candidate_pieces_.clear();
+  for (const PieceId id : candidates_) {
+    QueryCache cache;
+    while (previous != caches_.end() && previous->first < id) ++previous;
+    if (previous != caches_.end() && previous->first == id) cache = previous->second;
+    const ConvexPolyhedron* piece = nullptr;
+    if (terrain.isFormed(id)) {
+      while (previous_formed != formed_.end() && previous_formed->first < id) ++previous_formed;
+      if (previous_formed != formed_.end() && previous_formed->first == id) {
+        next_formed_.emplace_back(id, std::move(previous_formed->second));
+      } else {
+        // queryPoint's first two tests, the box and the face planes, on
+        // the piece's corners without forming it: a piece they put beyond
+        // the reach is beyond, its cache untouched, exactly as queryPoint
+        // decides for a stored one.
+        if (terrain.formedPieceBeyond(id, o, cap_reach)) {
+          candidate_pieces_.push_back(nullptr);  // never a contact's piece
+          next_caches_.emplace_back(id, cache);
+          continue;
+        }
+        std::shared_ptr<ConvexPolyhedron> formed;
+        if (!spare_.empty()) {
+          formed = std::move(spare_.back());
+          spare_.pop_back();
+        }
+        if (formed && formed.use_count() == 1) {
+          terrain.formPiece(id, *formed);  // into a dropped prism's buffers
+        } else {
+          std::optional<ConvexPolyhedron> scratch;
+          terrain.piece(id, scratch);
+          formed = std::make_shared<ConvexPolyhedron>(std::move(*scratch));
+        }
+        next_formed_.emplace_back(id, std::move(formed));
+      }
+      piece = next_formed_.back().second.get();
+    } else {
+      piece = &terrain.piece(id);
+    }
+    candidate_pieces_.push_back(piece);
+    const PointQuery q = queryPoint(*piece, o, query, cache);
+    next_caches_.emplace_back(id, cache);
+    if (q.status == QueryStatus::kBeyond || !(q.signed_distance < cap_reach)) continue;
+    WheelContact c;
+    c.e = -q.normal;
+    c.point = o + r * c.e;
+    c.ground_point = q.closest_point;
+    c.signed_distance = q.signed_distance;
+    c.deflection = r - q.signed_distance;
+    c.piece = id;
+    c.material = terrain.materialId(id);
+    if (q.signed_distance < 0.0) exitWhereEntered(*piece, id, o, r, c);
+    if (q.signed_distance >= r) {  // within the caps' hysteresis only
+      if (options.tread_truncation && onCap(wheel, c.e, pose.axle / axle_norm)) caps_.push_back(c);
+      continue;
+    }
+    contacts_.push_back(c);
+  }
+  std::swap(caches_, next_caches_);
+  std::swap(exits_, next_exits_);
+  for (auto& [id, dropped] : formed_) {
+    if (dropped) spare_.push_back(std::move(dropped));
+  }
+  std::swap(formed_, next_formed_);
+  previous_centre_ = o;
+  has_previous_ = true;
+
+  // 3. Seam rule.
+  if (options.seam_rule && contacts_.size() > 1) applySeamRule(tolerance::kSeamGapRelative * r, r);
+
+  // 4. Tread filter: keep contacts with |OP . a| <= w / 2; the others are
+  // the caps'.
+  if (options.tread_truncation) {
+    const Eigen::Vector3d a = pose.axle / axle_norm;
+    std::size_t out = 0;
+    for (const WheelContact& c : contacts_) {
+      if (onCap(wheel, c.e, a)) {
+        caps_.push_back(c);
+      } else {
+        contacts_[out++] = c;
+      }
+    }
+    contacts_.resize(out);
+  }
+
+  // 5. Deepest only.
+  if (!options.multiple_contacts && contacts_.size() > 1) {
+    auto deepest = std::max_element(contacts_.begin(), contacts_.end(),
+                                    [](const auto& x, const auto& y) { return x.deflection < y.deflection; });
+    std::swap(contacts_.front(), *deepest);
+    contacts_.resize(1);
+  }
+  caps_last_ = !caps_.empty();
+  return contacts_;
+}
+
+// The centre is inside the piece: it leaves by the face it came in through.
+// The nearest face is not always that one: a large step can carry the centre
+// past the middle of a thin piece, and pushing out by the far face pushes it
+// on through (issue 11). The faces whose planes the last call's centre was
+// in front of are the ones it crossed; of those, the shallowest. A centre
+// that was already inside keeps the face it was pushed out by then; with
+// neither (a first call, a teleport), the nearest face stays.
+void WheelContactFinder::exitWhereEntered(const ConvexPolyhedron& piece, PieceId id, const Eigen::Vector3d& o, double r,
+                                          WheelContact& c) {
+  const auto previous_exit = std::find_if(exits_.begin(), exits_.end(), [id](const auto& e) { return e.first == id; });
+  const bool came_in = has_previous_ && piece.planeBound(previous_centre_) > 0.0;
+  int best = -1;
+  double best_depth = 0.0, best_alignment = -2.0;
+  for (int f = 0; f < piece.faceCount(); ++f) {
+    const Eigen::Vector3d n = piece.faceNormal(f);
+    const double depth = piece.faceOffset(f) - n.dot(o);
+    if (came_in) {
+      if (n.dot(previous_centre_) - piece.faceOffset(f) <= 0.0) continue;  // not crossed
+      if (best < 0 || depth < best_depth) best = f, best_depth = depth;
+    } else if (previous_exit != exits_.end()) {
+      const double alignment = n.dot(previous_exit->second);
+      if (alignment > best_alignment) best = f, best_depth = depth, best_alignment = alignment;
+    }
+  }
+  if (best >= 0) {
+    const Eigen::Vector3d n = piece.faceNormal(best);
+    if (n.dot(-c.e) < tolerance::kSameFaceNormalCos) {  // another face than the nearest
+      c.e = -n;
+      c.point = o + r * c.e;
+      c.ground_point = o + best_depth * n;
+      c.signed_distance = -best_depth;
+      c.deflection = r + best_depth;
+    }
+  }
+  next_exits_.emplace_back(id, -c.e);
+}
+
+const ConvexPolyhedron& WheelContactFinder::candidatePiece(PieceId id) const {
+  const auto at = std::lower_bound(candidates_.begin(), candidates_.end(), id);
+  return *candidate_pieces_[static_cast<std::size_t>(at - candidates_.begin())];
+}
+
+void WheelContactFinder::applySeamRule(double gap, double radius) {
+  // Contacts are ranked strictly by (distance, piece id): the nearest one
+  // keeps its whole load, and no two contacts can shadow each other.
+  auto share = [&](const WheelContact& b) {
+    // L = sqrt(2 r Z): half the chord the ground cuts from the undeformed tread.
+    const double patch = std::sqrt(2.0 * radius * b.deflection);
+    double least = 1.0;
+    bool covered = false;  // B's ground point lies on another touching piece: a seam, not a real edge
+    for (const WheelContact& a : contacts_) {
+      if (a.piece == b.piece) continue;
+      const double outside = candidatePiece(a.piece).planeBound(b.ground_point) - gap;  // (m)
+      covered = covered || outside <= 0.0;
+      const bool nearer =
+          a.signed_distance < b.signed_distance || (a.signed_distance == b.signed_distance && a.piece < b.piece);
+      if (nearer) least = std::min(least, outside <= 0.0 ? 0.0 : std::min(1.0, outside / patch));
+    }
+    return least < 1.0 && !covered ? std::max(least, realEdgeShare(b, gap)) : least;
+  };
+  // Decide on the unfiltered set, then erase: the rule is symmetric in order.
+  shares_.resize(contacts_.size());
+  for (std::size_t k = 0; k < contacts_.size(); ++k) shares_[k] = share(contacts_[k]);
+  std::size_t out = 0;
+  for (std::size_t k = 0; k < contacts_.size(); ++k) {
+    if (shares_[k] == 0.0) continue;
+    contacts_[out] = contacts_[k];
+    contacts_[out++].load_share = shares_[k];
+  }
+  contacts_.resize(out);
+}
+
+// A real edge (issue 11, defect 3): B's ground point lies on an edge or a
+// vertex of B (two or more of B's face planes pass through it) that no other
+// touching piece covers: a kerb's top edge, a crack's lip, a box's corner.
+// A seam's or a crease's edge is always covered, by the piece on its other
+// side. Such an edge stands `clear` off the rest of the ground (the kerb's
+// height, the crack's width) and presses into the tread by min(Z_B, clear),
+// as a brush tyre's bristles over a step: share min(1, clear / Z_B). It is 0
+// on every seam (so flat tessellated ground is untouched, bit for bit) and
+// continuous as contacts come and go: a piece that starts touching the wheel
+// is at least Z_B from B's ground point (triangle inequality), so distances
+// below Z_B are measured exactly, not by the plane bound. Called for a
+// contact that no other touching piece covers (applySeamRule knows).
+double WheelContactFinder::realEdgeShare(const WheelContact& b, double gap) const {
+  const ConvexPolyhedron& piece = candidatePiece(b.piece);
+  const Eigen::Vector3d& p = b.ground_point;
+  int planes_through = 0;
+  for (int f = 0; f < piece.faceCount() && planes_through < 2; ++f) {
+    if (std::abs(piece.faceNormal(f).dot(p) - piece.faceOffset(f)) <= gap) ++planes_through;
+  }
+  if (planes_through < 2) return 0.0;  // a face: the crease rule alone
+  double clear = b.deflection;         // only clearances below Z_B matter
+  for (const WheelContact& a : contacts_) {
+    if (a.piece == b.piece) continue;
+    const ConvexPolyhedron& other = candidatePiece(a.piece);
+    double outside = other.planeBound(p) - gap;  // (m), > 0 (not covered), a lower bound
+    if (outside < clear) outside = queryPoint(other, p).signed_distance - gap;
+    clear = std::min(clear, outside);
+  }
+  return clear / b.deflection;
+}
+
+}  // namespace wtc

@@ -1,0 +1,315 @@
+#include "wtc/geometry/convex_polyhedron.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <set>
+#include <string>
+
+#include "wtc/base/error.hpp"
+#include "wtc/base/tolerances.hpp"
+
+namespace wtc {
+namespace {
+
+[[noreturn]] void fail(const std::string& what) { throw InvalidInputError("wtc::ConvexPolyhedron::fromMesh: " + what); }
+
+// Newell's method: the area-weighted normal of a polygon, robust for
+// polygons that are planar only to roundoff (merged hull facets).
+Eigen::Vector3d newellNormal(const std::vector<Eigen::Vector3d>& local, const std::vector<int>& face) {
+  // Edge vectors from the first vertex: no cancellation from large
+  // coordinates.
+  Eigen::Vector3d n = Eigen::Vector3d::Zero();
+  const Eigen::Vector3d& first = local[face[0]];
+  for (std::size_t k = 1; k + 1 < face.size(); ++k) {
+    n += (local[face[k]] - first).cross(local[face[k + 1]] - first);
+  }
+  return n;
+}
+
+// Twin of each face-edge (edge k of a face runs from its vertex k - 1 to
+// vertex k): the same edge run the other way in the neighbouring face. A
+// closed, consistently oriented surface has exactly one twin for every
+// edge and no edge twice in one direction; anything else is named. Small
+// pieces (terrain prisms: 18 face-edges) are matched by one pass over the
+// pairs in stack buffers, larger ones by sorting.
+void matchTwins(const std::vector<std::vector<int>>& faces, std::int32_t* twins) {
+  struct Directed {
+    std::int32_t from, to, face;
+  };
+  constexpr std::size_t kScanEdges = 64;
+  std::size_t total = 0;
+  for (const auto& face : faces) total += face.size();
+  Directed small[kScanEdges];
+  std::vector<Directed> large;
+  Directed* edges = small;
+  if (total > kScanEdges) {
+    large.resize(total);
+    edges = large.data();
+  }
+  std::size_t index = 0;
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const auto& face = faces[f];
+    for (std::size_t k = 0; k < face.size(); ++k) {
+      edges[index++] = {face[(k + face.size() - 1) % face.size()], face[k], static_cast<std::int32_t>(f)};
+    }
+  }
+  auto name = [](const Directed& e) {
+    return "edge (" + std::to_string(e.from) + ", " + std::to_string(e.to) + ") of face " + std::to_string(e.face);
+  };
+  auto key = [](const Directed& e) { return std::pair{e.from, e.to}; };
+  std::vector<std::int32_t> order;  // large pieces: edge indices sorted by (from, to)
+  if (total > kScanEdges) {
+    order.resize(total);
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(),
+              [&](std::int32_t x, std::int32_t y) { return key(edges[x]) < key(edges[y]); });
+  }
+  if (total <= kScanEdges) {
+    // One pass over the pairs: each edge's first twin (the lowest index run
+    // the other way) and whether any other edge runs the same way; then the
+    // checks in edge order, so the first bad edge is named as before.
+    std::int32_t first_twin[kScanEdges];
+    bool repeated[kScanEdges] = {};
+    std::fill_n(first_twin, total, -1);
+    for (std::size_t i = 0; i < total; ++i) {
+      for (std::size_t j = i + 1; j < total; ++j) {
+        if (edges[j].from == edges[i].from && edges[j].to == edges[i].to) {
+          repeated[i] = repeated[j] = true;
+        } else if (edges[j].from == edges[i].to && edges[j].to == edges[i].from) {
+          if (first_twin[i] < 0) first_twin[i] = static_cast<std::int32_t>(j);
+          if (first_twin[j] < 0) first_twin[j] = static_cast<std::int32_t>(i);
+        }
+      }
+    }
+    for (std::size_t i = 0; i < total; ++i) {
+      if (repeated[i]) {
+        fail(name(edges[i]) + " is used twice in the same direction: faces overlap or are inconsistently oriented");
+      }
+      // An edge from a vertex to itself is its own opposite (the sorted
+      // search below finds it so).
+      if (first_twin[i] < 0 && edges[i].from == edges[i].to) first_twin[i] = static_cast<std::int32_t>(i);
+      if (first_twin[i] < 0) fail(name(edges[i]) + " has no opposite edge: the mesh is not closed");
+      twins[i] = first_twin[i];
+    }
+    return;
+  }
+  auto find = [&](std::int32_t from, std::int32_t to, std::size_t skip) -> std::int64_t {
+    auto it = std::lower_bound(
+        order.begin(), order.end(), std::pair{from, to},
+        [&](std::int32_t x, const std::pair<std::int32_t, std::int32_t>& k) { return key(edges[x]) < k; });
+    for (; it != order.end() && key(edges[*it]) == std::pair{from, to}; ++it) {
+      if (static_cast<std::size_t>(*it) != skip) return *it;
+    }
+    return -1;
+  };
+  for (std::size_t i = 0; i < total; ++i) {
+    if (find(edges[i].from, edges[i].to, i) >= 0) {
+      fail(name(edges[i]) + " is used twice in the same direction: faces overlap or are inconsistently oriented");
+    }
+    const std::int64_t twin = find(edges[i].to, edges[i].from, total);
+    if (twin < 0) fail(name(edges[i]) + " has no opposite edge: the mesh is not closed");
+    twins[i] = static_cast<std::int32_t>(twin);
+  }
+}
+
+}  // namespace
+
+ConvexPolyhedron ConvexPolyhedron::fromMesh(const std::vector<Eigen::Vector3d>& vertices,
+                                            const std::vector<std::vector<int>>& faces) {
+  if (vertices.size() < 3) {
+    fail("needs at least 3 vertices, got " + std::to_string(vertices.size()));
+  }
+  if (vertices.size() > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max() / 4)) {
+    fail("too many vertices: " + std::to_string(vertices.size()));
+  }
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    if (!isFinite(vertices[i])) {
+      fail("vertex " + std::to_string(i) + " = " + formatVector(vertices[i]) + " is not finite");
+    }
+  }
+  if (faces.size() < 2) fail("needs at least 2 faces, got " + std::to_string(faces.size()));
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    if (faces[f].size() < 3) {
+      fail("face " + std::to_string(f) + " has " + std::to_string(faces[f].size()) +
+           " vertices; a face needs at least 3");
+    }
+    for (int i : faces[f]) {
+      if (i < 0 || static_cast<std::size_t>(i) >= vertices.size()) {
+        fail("face " + std::to_string(f) + " refers to vertex " + std::to_string(i) + ", but there are " +
+             std::to_string(vertices.size()) + " vertices");
+      }
+    }
+  }
+  // A two-faced mesh is a flat polygon given from both sides.
+  const bool flat = faces.size() == 2;
+  return assemble(vertices, faces, flat, nullptr);
+}
+
+ConvexPolyhedron ConvexPolyhedron::box(const Eigen::Vector3d& min, const Eigen::Vector3d& max) {
+  if (!isFinite(min) || !isFinite(max) || !(min.array() < max.array()).all()) {
+    throw InvalidInputError("wtc::ConvexPolyhedron::box: needs finite min < max on every axis, got min = " +
+                            formatVector(min) + ", max = " + formatVector(max));
+  }
+  std::vector<Eigen::Vector3d> v(8);
+  for (int i = 0; i < 8; ++i) {
+    v[i] = {(i & 1) ? max.x() : min.x(), (i & 2) ? max.y() : min.y(), (i & 4) ? max.z() : min.z()};
+  }
+  // Counter-clockwise seen from outside: -x, +x, -y, +y, -z, +z.
+  const std::vector<std::vector<int>> faces = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4},
+                                               {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
+  return assemble(v, faces, false, nullptr);
+}
+
+ConvexPolyhedron detail::sameTopologyAs(const ConvexPolyhedron& like, const std::vector<Eigen::Vector3d>& vertices,
+                                        const std::vector<std::vector<int>>& faces) {
+  return ConvexPolyhedron::assemble(vertices, faces, like.flat_, nullptr, &like.topology_);
+}
+
+void detail::sameTopologyInto(ConvexPolyhedron& into, const ConvexPolyhedron& like,
+                              const std::vector<Eigen::Vector3d>& vertices,
+                              const std::vector<std::vector<int>>& faces) {
+  ConvexPolyhedron::assembleInto(into, vertices, faces, like.flat_, nullptr, &like.topology_);
+}
+
+ConvexPolyhedron ConvexPolyhedron::assemble(const std::vector<Eigen::Vector3d>& vertices,
+                                            const std::vector<std::vector<int>>& faces, bool flat,
+                                            const std::vector<Eigen::Vector3d>* hull_normals,
+                                            const std::vector<std::int32_t>* topology) {
+  ConvexPolyhedron poly;
+  assembleInto(poly, vertices, faces, flat, hull_normals, topology);
+  return poly;
+}
+
+void ConvexPolyhedron::assembleInto(ConvexPolyhedron& poly, const std::vector<Eigen::Vector3d>& vertices,
+                                    const std::vector<std::vector<int>>& faces, bool flat,
+                                    const std::vector<Eigen::Vector3d>* hull_normals,
+                                    const std::vector<std::int32_t>* topology) {
+  poly.bounds_ = Aabb::of(vertices);
+  poly.origin_ = poly.bounds_.center();
+  poly.size_ = poly.bounds_.extent().norm();
+  if (!(poly.size_ > 0.0) || !std::isfinite(poly.size_)) {
+    fail("all vertices coincide at " + formatVector(vertices.front()));
+  }
+  const int nv = static_cast<int>(vertices.size());
+  const int nf = static_cast<int>(faces.size());
+  poly.vertex_count_ = nv;
+  poly.face_count_ = nf;
+  poly.flat_ = flat;
+
+  // One scratch list per thread: heightfields form prisms by the million.
+  thread_local std::vector<Eigen::Vector3d> local;
+  local.resize(nv);
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (int i = 0; i < nv; ++i) {
+    local[i] = vertices[i] - poly.origin_;
+    sum += local[i];
+  }
+  poly.centroid_local_ = sum / nv;
+
+  std::size_t face_edges = 0;
+  for (const auto& face : faces) face_edges += face.size();
+  poly.numbers_.resize(3 * static_cast<std::size_t>(nv) + 4 * static_cast<std::size_t>(nf) + 4 * face_edges);
+  double* num = poly.numbers_.data();
+  for (int i = 0; i < nv; ++i) {
+    num[i] = local[i].x();
+    num[nv + i] = local[i].y();
+    num[2 * nv + i] = local[i].z();
+  }
+  const double planar_tol = tolerance::kHullMergeRelative * poly.size_;
+  // Planarity is checked on a new face list; Qhull's facets are planar by
+  // its hyperplanes, and a copied topology's caller vouches for its faces
+  // (prisms formed from checked corners: triangles and the vertical or
+  // parallel quads between them). Zero area and volume are always checked.
+  const bool check_planar = hull_normals == nullptr && topology == nullptr;
+  double* n_out = num + 3 * nv;
+  for (int f = 0; f < nf; ++f) {
+    Eigen::Vector3d n;
+    if (hull_normals != nullptr) {
+      // Qhull's hyperplane: robust where a sliver facet's vertices are not.
+      n = (*hull_normals)[f].normalized();
+    } else {
+      const Eigen::Vector3d area = newellNormal(local, faces[f]);
+      const double twice_area = area.norm();
+      if (!(twice_area > planar_tol * planar_tol)) {
+        fail("face " + std::to_string(f) + " has zero area (its vertices are collinear or coincide)");
+      }
+      n = area / twice_area;
+    }
+    // d = max over ALL vertices keeps every vertex inside every plane, so the
+    // plane bound stays a true lower bound (see the header's design note).
+    double d = -std::numeric_limits<double>::infinity();
+    for (int i = 0; i < nv; ++i) d = std::max(d, n.dot(local[i]));
+    double face_min = d;
+    if (check_planar) {
+      for (int i : faces[f]) face_min = std::min(face_min, n.dot(local[i]));
+    }
+    if (d - face_min > planar_tol) {
+      fail("face " + std::to_string(f) + " is not planar, or the mesh is not convex or not oriented " +
+           "outward: a vertex lies " + formatNumber(d - face_min) + " m above the face's plane (tolerance " +
+           formatNumber(planar_tol) + " m)");
+    }
+    n_out[f] = n.x();
+    n_out[nf + f] = n.y();
+    n_out[2 * nf + f] = n.z();
+    n_out[3 * nf + f] = d;
+  }
+  // Side planes of the face edges, in face order: edge k of face f runs from
+  // vertex k - 1 (cyclically) to vertex k; s = n x (b - a) points into the
+  // face, so s . q >= s . a when q projects onto the face's side of the edge.
+  double* side = n_out + 4 * nf;
+  for (int f = 0; f < nf; ++f) {
+    const Eigen::Vector3d n(n_out[f], n_out[nf + f], n_out[2 * nf + f]);
+    const auto& face = faces[f];
+    for (std::size_t k = 0; k < face.size(); ++k) {
+      const Eigen::Vector3d& a = local[face[k == 0 ? face.size() - 1 : k - 1]];
+      const Eigen::Vector3d s_in = n.cross(local[face[k]] - a);
+      side[0] = s_in.x();
+      side[1] = s_in.y();
+      side[2] = s_in.z();
+      side[3] = s_in.dot(a);
+      side += 4;
+    }
+  }
+  if (!flat && poly.planeBoundLocal(poly.centroid_local_, nullptr) >= -planar_tol) {
+    fail("the faces do not enclose a volume (the centroid is not strictly inside every face plane)");
+  }
+
+  poly.has_adjacency_ = nv >= tolerance::kHillClimbMinVertices;
+  if (topology != nullptr) {
+    poly.topology_ = *topology;  // assignment: into's buffer if it is large enough
+    poly.numbers_.shrink_to_fit();
+    return;
+  }
+  // Topology: face lists, then (large pieces only) vertex adjacency.
+  auto& topo = poly.topology_;
+  topo.clear();
+  topo.reserve(1 + faces.size() + 2 * face_edges);  // offsets, face lists, twins: one allocation
+  topo.push_back(0);
+  std::size_t total = 0;
+  for (const auto& face : faces) topo.push_back(static_cast<std::int32_t>(total += face.size()));
+  for (const auto& face : faces) topo.insert(topo.end(), face.begin(), face.end());
+  const std::size_t twins_at = topo.size();
+  topo.resize(twins_at + total);
+  matchTwins(faces, topo.data() + twins_at);
+  if (poly.has_adjacency_) {
+    std::vector<std::set<int>> neighbors(nv);
+    for (const auto& face : faces) {
+      for (std::size_t k = 0; k < face.size(); ++k) {
+        const int a = face[k];
+        const int b = face[(k + 1) % face.size()];
+        neighbors[a].insert(b);
+        neighbors[b].insert(a);
+      }
+    }
+    std::int32_t count = 0;
+    topo.push_back(0);
+    for (const auto& n : neighbors) topo.push_back(count += static_cast<std::int32_t>(n.size()));
+    for (const auto& n : neighbors) topo.insert(topo.end(), n.begin(), n.end());
+  }
+  topo.shrink_to_fit();
+  poly.numbers_.shrink_to_fit();
+}
+
+}  // namespace wtc

@@ -1,0 +1,366 @@
+// Scene files: the format is in include/wtc/io/scene_file.hpp and
+// scenes/README.md.
+#include "wtc/sim/scene_file.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "io/file_support.hpp"
+#include "io/terrain_node.hpp"
+#include "wtc/base/error.hpp"
+#include "wtc/vehicle/vehicle_file.hpp"
+#include "wtc/vehicle/climb_controller.hpp"
+#include "wtc/vehicle/path_controller.hpp"
+#include "wtc/vehicle/schedule_controller.hpp"
+#include "io/yaml_reader.hpp"
+
+namespace wtc::sim {
+namespace {
+
+using io::detail::YamlReader;
+
+constexpr const char* kVehicleEffects[] = {"actuator_limits", "hitch_damping"};
+
+// Applies one override to the document; `parameters` names the numbers a
+// first part that is not a key may set.
+void applyOverride(YAML::Node& root, const Override& o, const std::string& where) {
+  std::vector<std::string> parts;
+  for (std::size_t start = 0;;) {
+    const std::size_t dot = o.path.find('.', start);
+    parts.push_back(o.path.substr(start, dot - start));
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  if (std::any_of(parts.begin(), parts.end(), [](const std::string& p) { return p.empty(); })) {
+    throw InvalidInputError(where + ": '" + o.path + "' has an empty part");
+  }
+  YAML::Node value;
+  try {
+    value = YAML::Load(o.value);
+  } catch (const YAML::Exception& e) {
+    throw InvalidInputError(where + ": value '" + o.value + "' is not YAML: " + e.msg);
+  }
+  if (!root[parts.front()] && root["parameters"] && root["parameters"].IsMap() && root["parameters"][parts.front()]) {
+    parts.insert(parts.begin(), "parameters");
+  }
+  // yaml-cpp's Node is a handle: walk with copies, assign through the last.
+  YAML::Node node = root;
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+    const std::string& part = parts[i];
+    if (node.IsSequence()) {
+      const bool digits = std::all_of(part.begin(), part.end(), [](char c) { return c >= '0' && c <= '9'; });
+      if (!digits || std::stoul(part) >= node.size()) {
+        throw InvalidInputError(where + ": '" + part + "' is not an index of the list at '" + o.path + "' (size " +
+                                std::to_string(node.size()) + ")");
+      }
+      node.reset(node[std::stoul(part)]);
+    } else if (node.IsMap() || node.IsNull()) {
+      YAML::Node next = node[part];
+      node.reset(next);
+    } else {
+      throw InvalidInputError(where + ": '" + part + "' in '" + o.path + "' is below a value, not a map or list");
+    }
+  }
+  const std::string& last = parts.back();
+  if (node.IsScalar()) {
+    throw InvalidInputError(where + ": '" + parts[parts.size() - 2] + "' in '" + o.path +
+                            "' is below a value, not a map or list");
+  }
+  if (node.IsSequence()) {
+    const bool digits = std::all_of(last.begin(), last.end(), [](char c) { return c >= '0' && c <= '9'; });
+    if (!digits || std::stoul(last) >= node.size()) {
+      throw InvalidInputError(where + ": '" + last + "' is not an index of the list at '" + o.path + "'");
+    }
+    node[std::stoul(last)] = value;
+  } else {
+    node[last] = value;
+  }
+}
+
+// Replaces every scalar "$name" ("-$name") outside `parameters` by the parameter's value.
+void substitute(const YamlReader& in, YAML::Node node, const std::map<std::string, double>& parameters) {
+  if (node.IsScalar()) {
+    // "$name", or "-$name" for its negative.
+    const std::string& s = node.Scalar();
+    const bool negative = s.size() > 2 && s[0] == '-' && s[1] == '$';
+    if (negative || (s.size() > 1 && s.front() == '$')) {
+      const auto found = parameters.find(s.substr(negative ? 2 : 1));
+      if (found == parameters.end()) in.fail(node, "'" + s + "' names no parameter of the scene");
+      node = negative ? -found->second : found->second;
+    }
+    return;
+  }
+  if (node.IsSequence()) {
+    for (std::size_t i = 0; i < node.size(); ++i) substitute(in, node[i], parameters);
+  } else if (node.IsMap()) {
+    for (auto entry : node) {
+      if (entry.first.Scalar() != "parameters") substitute(in, entry.second, parameters);
+    }
+  }
+}
+
+std::vector<vehicle::DriveSchedule> readSchedules(const YamlReader& in, const YAML::Node& node) {
+  if (!node.IsSequence()) in.fail(node, "schedules: expected a list");
+  std::vector<vehicle::DriveSchedule> schedules;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const YamlReader s = in.with("controller.schedules[" + std::to_string(i) + "]: ");
+    const YAML::Node n = node[i];
+    s.requireMap(n, "a schedule");
+    s.checkKeys(n, {"drives", "mode", "points"});
+    vehicle::DriveSchedule schedule;
+    const YAML::Node drives = s.require(n, "drives");
+    if (!drives.IsSequence()) s.fail(drives, "drives: expected a list of body names");
+    for (const auto& d : drives) schedule.drives.push_back(s.string(d, "drives"));
+    const std::string mode = s.string(s.require(n, "mode"), "mode");
+    if (mode == "velocity") {
+      schedule.mode = vehicle::DriveMode::kVelocity;
+    } else if (mode == "position") {
+      schedule.mode = vehicle::DriveMode::kPosition;
+    } else if (mode == "off") {
+      schedule.mode = vehicle::DriveMode::kOff;
+    } else {
+      s.fail(n["mode"], "mode: '" + mode + "' (expected velocity, position or off)");
+    }
+    const YAML::Node points = s.require(n, "points");
+    if (!points.IsSequence() || points.size() == 0) s.fail(points, "points: expected a list of [time, value]");
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      const Eigen::Vector2d p = s.vector<2>(points[k], "points[" + std::to_string(k) + "]");
+      schedule.points.push_back({.time = p.x(), .value = p.y()});
+    }
+    schedules.push_back(std::move(schedule));
+  }
+  return schedules;
+}
+
+void readController(const YamlReader& in, const YAML::Node& node, sim::Scene& scene) {
+  in.requireMap(node, "controller");
+  scene.controller_type = in.string(in.require(node, "type"), "controller.type");
+  if (scene.controller_type == "none") {
+    in.checkKeys(node, {"type"});
+    scene.make_controller = [] { return std::unique_ptr<vehicle::Controller>(); };
+  } else if (scene.controller_type == "schedule") {
+    in.checkKeys(node, {"type", "schedules"});
+    auto schedules = readSchedules(in, in.require(node, "schedules"));
+    try {
+      vehicle::ScheduleController check(scene.vehicle, schedules, "controller");
+    } catch (const InvalidInputError& e) {
+      in.fail(node, e.what());
+    }
+    scene.make_controller = [schedules, v = scene.vehicle] {
+      return std::unique_ptr<vehicle::Controller>(
+          std::make_unique<vehicle::ScheduleController>(v, schedules, "controller"));
+    };
+  } else if (scene.controller_type == "path") {
+    in.checkKeys(node, {"type", "body", "left_drive", "right_drive", "lead", "x", "y", "gains", "max_tracking_error",
+                        "end_time"});
+    vehicle::PathControllerParams p;
+    p.body = in.string(in.require(node, "body"), "controller.body");
+    p.left_drive = in.string(in.require(node, "left_drive"), "controller.left_drive");
+    p.right_drive = in.string(in.require(node, "right_drive"), "controller.right_drive");
+    p.lead = in.number(node, "lead", p.lead);
+    for (const auto& [key, coefficients] : {std::pair{"x", &p.x_coefficients}, std::pair{"y", &p.y_coefficients}}) {
+      const YAML::Node list = in.require(node, key);
+      if (!list.IsSequence() || list.size() == 0 || list.size() > 6) {
+        in.fail(list, std::string("controller.") + key + ": expected 1 to 6 polynomial coefficients (degree <= 5)");
+      }
+      for (std::size_t i = 0; i < list.size(); ++i) {
+        (*coefficients)[i] = in.number(list[i], std::string("controller.") + key + "[" + std::to_string(i) + "]");
+      }
+    }
+    if (const auto gains = YamlReader::get(node, "gains")) {
+      const Eigen::Vector2d k = in.vector<2>(*gains, "controller.gains");
+      p.gain_x = k.x();
+      p.gain_y = k.y();
+    }
+    p.max_tracking_error = in.number(node, "max_tracking_error", p.max_tracking_error);
+    if (YamlReader::get(node, "end_time")) p.end_time = in.number(node, "end_time", p.end_time);
+    try {
+      vehicle::PathController check(scene.vehicle, p, "controller");
+    } catch (const InvalidInputError& e) {
+      in.fail(node, e.what());
+    }
+    scene.make_controller = [p, v = scene.vehicle] {
+      return std::unique_ptr<vehicle::Controller>(std::make_unique<vehicle::PathController>(v, p, "controller"));
+    };
+  } else if (scene.controller_type == "climb") {
+    in.checkKeys(node, {"type", "approach_speed", "crawl_speed", "drive_on_time", "phase_timeout"});
+    vehicle::ClimbControllerParams p;
+    p.approach_speed = in.number(node, "approach_speed", p.approach_speed);
+    p.crawl_speed = in.number(node, "crawl_speed", p.crawl_speed);
+    p.drive_on_time = in.number(node, "drive_on_time", p.drive_on_time);
+    p.phase_timeout = in.number(node, "phase_timeout", p.phase_timeout);
+    try {
+      vehicle::ClimbController check(scene.vehicle, p, "controller");
+    } catch (const InvalidInputError& e) {
+      in.fail(node, e.what());
+    }
+    scene.make_controller = [p, v = scene.vehicle] {
+      return std::unique_ptr<vehicle::Controller>(std::make_unique<vehicle::ClimbController>(v, p, "controller"));
+    };
+  } else {
+    in.fail(node["type"], "controller.type: '" + scene.controller_type + "' (expected none, schedule, path or climb)");
+  }
+}
+
+// `cases: {name: {value: {derived: number, ...}, ...}}`: the value of the
+// parameter `name` picks a set of further parameters (a friction case
+// picks its coefficients).
+void applyCases(const YamlReader& in, const YAML::Node& cases, std::map<std::string, double>& parameters) {
+  in.requireMap(cases, "cases");
+  for (const auto& entry : cases) {
+    const std::string name = entry.first.Scalar();
+    const auto chosen = parameters.find(name);
+    if (chosen == parameters.end()) in.fail(entry.first, "cases: '" + name + "' is not a parameter of the scene");
+    in.requireMap(entry.second, ("cases." + name).c_str());
+    bool found = false;
+    std::string known;
+    for (const auto& option : entry.second) {
+      const double value = in.number(option.first, "cases." + name + " key");
+      known += (known.empty() ? "" : ", ") + option.first.Scalar();
+      if (value != chosen->second) continue;
+      found = true;
+      in.requireMap(option.second, ("cases." + name + "." + option.first.Scalar()).c_str());
+      for (const auto& derived : option.second) {
+        parameters[derived.first.Scalar()] = in.number(derived.second, "cases." + name + "." + derived.first.Scalar());
+      }
+    }
+    if (!found) {
+      in.fail(entry.second, "cases." + name + ": no case " + formatNumber(chosen->second) + " (known: " + known + ")");
+    }
+  }
+}
+
+void readEffects(const YamlReader& in, const YAML::Node& node, sim::Scene& scene) {
+  if (!node.IsSequence()) in.fail(node, "effects: expected a list of names");
+  std::vector<std::string> tyre;
+  scene.vehicle_effects = {.actuator_limits = false, .hitch_damping = false};
+  for (const auto& n : node) {
+    const std::string name = in.string(n, "effects");
+    if (name == "full") {
+      scene.vehicle_effects = {};
+      tyre.push_back(name);
+    } else if (name == kVehicleEffects[0]) {
+      scene.vehicle_effects.actuator_limits = true;
+    } else if (name == kVehicleEffects[1]) {
+      scene.vehicle_effects.hitch_damping = true;
+    } else {
+      tyre.push_back(name);
+    }
+  }
+  try {
+    scene.engine.tyre_effects = EffectSet::parse(tyre, "effects");
+  } catch (const InvalidInputError& e) {
+    in.fail(node, std::string(e.what()) + " (or a vehicle effect: actuator_limits, hitch_damping)");
+  }
+}
+
+}  // namespace
+
+Override parseOverride(const std::string& text) {
+  const std::size_t eq = text.find('=');
+  if (eq == std::string::npos || eq == 0) {
+    throw InvalidInputError("--set '" + text + "': expected key.path=value");
+  }
+  return {.path = text.substr(0, eq), .value = text.substr(eq + 1)};
+}
+
+namespace {
+
+sim::Scene readSceneFile(const std::filesystem::path& path, std::span<const Override> overrides) {
+  YAML::Node root = io::detail::loadYamlFile(path);
+  const YamlReader in(path);
+  in.requireMap(root, "scene file");
+  for (const Override& o : overrides) applyOverride(root, o, "--set " + o.path + "=" + o.value);
+  in.checkKeys(root, {"name", "description", "parameters", "engine", "mode", "dt", "duration", "solver_iterations",
+                      "solver_residual", "terrain", "vehicle", "effects", "controller", "output", "success", "cases"});
+
+  sim::Scene scene;
+  scene.source = path.string();
+  if (const auto p = YamlReader::get(root, "parameters")) {
+    in.requireMap(*p, "parameters");
+    for (const auto& entry : *p) {
+      scene.parameters[entry.first.Scalar()] = in.number(entry.second, "parameters." + entry.first.Scalar());
+    }
+  }
+  if (const auto cases = YamlReader::get(root, "cases")) applyCases(in, *cases, scene.parameters);
+  substitute(in, root, scene.parameters);
+
+  scene.name = in.string(in.require(root, "name"), "name");
+  if (const auto d = YamlReader::get(root, "description")) scene.description = in.string(*d, "description");
+  scene.engine.kind = sim::EngineKind::kBullet;
+  if (const auto e = YamlReader::get(root, "engine")) {
+    try {
+      scene.engine.kind = sim::parseEngine(in.string(*e, "engine"), "engine");
+    } catch (const InvalidInputError& error) {
+      in.fail(*e, error.what());
+    }
+  }
+  if (const auto m = YamlReader::get(root, "mode")) {
+    try {
+      sim::parseMode(in.string(*m, "mode"), scene.engine, "mode");
+    } catch (const InvalidInputError& error) {
+      in.fail(*m, error.what());
+    }
+  }
+  scene.engine.step_seconds = in.number(root, "dt", scene.engine.step_seconds);
+  if (!(scene.engine.step_seconds > 0.0)) in.fail(root["dt"], "dt: must be > 0 s");
+  scene.engine.solver_iterations = static_cast<int>(in.integer(root, "solver_iterations", 50));
+  if (scene.engine.solver_iterations <= 0) in.fail(root["solver_iterations"], "solver_iterations: must be > 0");
+  scene.engine.solver_residual = in.number(root, "solver_residual", scene.engine.solver_residual);
+  if (!(scene.engine.solver_residual > 0.0)) in.fail(root["solver_residual"], "solver_residual: must be > 0 (m/s)^2");
+  scene.duration_seconds = in.number(in.require(root, "duration"), "duration");
+  if (!(scene.duration_seconds > 0.0)) in.fail(root["duration"], "duration: must be > 0 s");
+
+  const std::filesystem::path dir = path.parent_path();
+  const YAML::Node terrain = in.require(root, "terrain");
+  TerrainBuilder builder;
+  if (terrain.IsScalar()) {
+    io::addTerrainFile(builder, dir / in.string(terrain, "terrain"));
+  } else {
+    io::detail::addTerrainNode(builder, in.with("terrain: "), terrain);
+  }
+  if (builder.pieceCount() == 0) in.fail(terrain, "terrain: no pieces");
+  scene.terrain = std::make_shared<const Terrain>(std::move(builder).build());
+
+  const YAML::Node v = in.require(root, "vehicle");
+  if (v.IsScalar()) {
+    scene.vehicle = vehicle::loadVehicle(dir / in.string(v, "vehicle"));
+  } else {
+    in.requireMap(v, "vehicle");
+    in.checkKeys(v, {"file", "translation", "rotation"});
+    scene.vehicle = vehicle::loadVehicle(dir / in.string(in.require(v, "file"), "vehicle.file"));
+    scene.placement = in.with("vehicle: ").pose(v);
+  }
+
+  readEffects(in, YamlReader::get(root, "effects").value_or(YAML::Load("[full]")), scene);
+  readController(in, in.require(root, "controller"), scene);
+
+  if (const auto o = YamlReader::get(root, "output")) {
+    in.requireMap(*o, "output");
+    in.checkKeys(*o, {"rate_hz", "plots", "replay_fps"});
+    scene.output.rate_hz = in.number(*o, "rate_hz", scene.output.rate_hz);
+    if (!(scene.output.rate_hz > 0.0)) in.fail((*o)["rate_hz"], "output.rate_hz: must be > 0");
+    scene.output.plots = in.boolean(*o, "plots", scene.output.plots);
+    scene.output.replay_fps = in.number(*o, "replay_fps", scene.output.replay_fps);
+    if (!(scene.output.replay_fps > 0.0)) in.fail((*o)["replay_fps"], "output.replay_fps: must be > 0");
+  }
+  if (const auto s = YamlReader::get(root, "success")) {
+    in.requireMap(*s, "success");
+    in.checkKeys(*s, {"min_distance", "max_distance", "max_tilt_deg", "min_wheel_height"});
+    if (const auto d = YamlReader::get(*s, "min_distance")) scene.success.min_distance = in.number(*d, "min_distance");
+    if (const auto d = YamlReader::get(*s, "max_distance")) scene.success.max_distance = in.number(*d, "max_distance");
+    scene.success.max_tilt_deg = in.number(*s, "max_tilt_deg", scene.success.max_tilt_deg);
+    if (const auto d = YamlReader::get(*s, "min_wheel_height")) {
+      scene.success.min_wheel_height = in.number(*d, "min_wheel_height");
+    }
+  }
+  return scene;
+}
+
+}  // namespace
+
+sim::Scene loadScene(const std::filesystem::path& path, std::span<const Override> overrides) {
+  return io::detail::withYamlErrors(path, [&] { return readSceneFile(path, overrides); });
+}
+
+}  // namespace wtc::sim

@@ -1,0 +1,74 @@
+#pragma once
+// A heightfield kept as its heights (internal to wtc::core): the prisms of
+// addHeightfield (wtc/heightfield.hpp) are formed when asked for, not
+// stored.
+//
+// A stored prism is a ConvexPolyhedron of about 1.2 kB plus its index
+// entry; the field it comes from is 8 bytes a sample. Everything a query
+// needs is computed from the samples the same way addHeightfield computes
+// it, so piece(k) is bit for bit the prism addHeightfield adds as piece k,
+// and pieceBounds(k) its bounds(). The index is the grid itself: the cells
+// under a box come from the cell lines and each triangle's top from its
+// corners, which decides exactly as Aabb::overlaps on the pieces' bounds
+// (Terrain::overlapping's leaf test) would.
+//
+// Holes. Without holes piece k lies on cell k / 2. With holes the pieces
+// skip the hole cells, and a running count of the cells that are ground,
+// one per block of kBlockCells cells, maps a cell to its first piece (the
+// count, then at most kBlockCells - 1 entries) and a piece to its cell (a
+// binary search over the counts, then the block).
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "formed_pieces.hpp"
+#include "wtc/terrain/heightfield.hpp"
+
+namespace wtc::detail {
+
+class CompactHeightfield final : public FormedPieces {
+ public:
+  /// Validates `field` (wtc::validate(const Heightfield&)) and keeps it.
+  explicit CompactHeightfield(Heightfield field);
+
+  /// Two per cell that is not a hole, as Heightfield::pieceCount().
+  std::size_t pieceCount() const override { return piece_count_; }
+  /// Piece k in addHeightfield's order (the cells row-major, holes skipped,
+  /// triangle k % 2): makeTriangularPrism's corners.
+  void prismCorners(std::size_t k, std::array<Eigen::Vector3d, 3>& top,
+                    std::array<Eigen::Vector3d, 3>& bottom) const override;
+  /// Appends first + k for every piece k whose bounds overlap `box` (as
+  /// Aabb::overlaps decides), cell by cell in row-major order.
+  void overlapping(const Aabb& box, PieceId first, std::vector<PieceId>& out) const override;
+  /// The union of all pieces' bounds.
+  const Aabb& bounds() const override { return bounds_; }
+  /// The field's samples and description (bytes).
+  std::size_t memoryBytes() const override;
+  /// The cell's material (two pieces a cell), or `whole` without cell_materials.
+  MaterialId materialId(std::size_t k, MaterialId whole) const override {
+    return field_.cell_materials.empty() ? whole : field_.cell_materials[cellOf(k)];
+  }
+  const Heightfield* heightfield() const override { return &field_; }
+  const Heightfield& field() const { return field_; }
+
+ private:
+  // Cells per running count of the ground cells (count).
+  static constexpr std::size_t kBlockCells = 64;
+
+  // The cell (row-major index) piece k lies on.
+  std::size_t cellOf(std::size_t k) const;
+  // The pieces of the cells before `cell` (row-major index): the first
+  // piece of `cell` unless it is a hole.
+  std::size_t piecesBefore(std::size_t cell) const;
+
+  Heightfield field_;
+  std::size_t piece_count_ = 0;
+  // With holes: ground_before_[b] = cells that are not holes among cells
+  // 0 ... b kBlockCells - 1. Empty without holes.
+  std::vector<std::uint32_t> ground_before_;
+  double base_z_ = 0.0;
+  Aabb bounds_;
+};
+
+}  // namespace wtc::detail

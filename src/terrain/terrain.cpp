@@ -1,0 +1,317 @@
+#include "wtc/terrain/terrain.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <numeric>
+#include <string>
+
+#include "box_tree.hpp"
+#include "builder_support.hpp"
+#include "formed_pieces.hpp"
+#include "wtc/base/error.hpp"
+#include "wtc/geometry/point_query.hpp"
+#include "wtc/terrain/terrain_primitives.hpp"
+#include "wtc/base/tolerances.hpp"
+
+namespace wtc {
+
+MaterialId TerrainBuilder::addMaterial(const Material& material) {
+  validate(material, "TerrainBuilder::addMaterial (material '" + material.name + "')");
+  materials_.push_back(material);
+  return static_cast<MaterialId>(materials_.size() - 1);
+}
+
+void TerrainBuilder::requireMaterial(MaterialId material, const char* where) const {
+  if (material < 0 || material >= materialCount()) {
+    throw InvalidInputError(std::string(where) + ": material id " + std::to_string(material) + " is not registered (" +
+                            std::to_string(materials_.size()) + " materials)");
+  }
+}
+
+PieceId TerrainBuilder::addPiece(ConvexPolyhedron piece, MaterialId material) {
+  requireMaterial(material, "wtc::TerrainBuilder::addPiece");
+  pieces_.push_back(std::move(piece));
+  piece_material_.push_back(material);
+  return static_cast<PieceId>(next_id_++);
+}
+
+void TerrainBuilder::requireIdsFor(std::uint64_t count, const std::string& where) const {
+  if (count > static_cast<std::uint64_t>(std::numeric_limits<PieceId>::max()) ||
+      next_id_ + count > static_cast<std::uint64_t>(std::numeric_limits<PieceId>::max())) {
+    throw InvalidInputError(where + ": " + std::to_string(count) + " pieces would pass the largest terrain (" +
+                            std::to_string(std::numeric_limits<PieceId>::max()) + " pieces)");
+  }
+}
+
+void TerrainBuilder::requireRoomFor(std::uint64_t count, const std::string& where) const {
+  requireIdsFor(count, where);
+  const std::uint64_t total = next_id_ + count;
+  const long pages = sysconf(_SC_PHYS_PAGES), page_bytes = sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || page_bytes <= 0) return;  // unknown: let the allocation decide
+  const long double needed = static_cast<long double>(total) * sizeof(ConvexPolyhedron);
+  const long double memory = static_cast<long double>(pages) * static_cast<long double>(page_bytes);
+  if (needed > memory) {
+    throw InvalidInputError(where + ": " + std::to_string(count) + " pieces need more than " +
+                            formatNumber(static_cast<double>(needed / 1e9)) + " GB, more than this machine's " +
+                            formatNumber(static_cast<double>(memory / 1e9)) + " GB of memory");
+  }
+}
+
+void TerrainBuilder::reserve(std::size_t count) {
+  // Grow geometrically: many small reservations must not make building
+  // quadratic.
+  const std::size_t wanted = pieces_.size() + count;
+  if (wanted <= pieces_.capacity()) return;
+  const std::size_t grown = std::max(wanted, 2 * pieces_.capacity());
+  pieces_.reserve(grown);
+  piece_material_.reserve(grown);
+}
+
+ConvexPolyhedron detail::FormedPieces::piece(std::size_t k) const {
+  std::array<Eigen::Vector3d, 3> top, bottom;
+  prismCorners(k, top, bottom);
+  return makeCheckedPrism(top, bottom);
+}
+
+void detail::FormedPieces::formInto(std::size_t k, ConvexPolyhedron& into) const {
+  std::array<Eigen::Vector3d, 3> top, bottom;
+  prismCorners(k, top, bottom);
+  makeCheckedPrism(top, bottom, into);
+}
+
+namespace {
+
+// ConvexPolyhedron's bounds are the min and max of its vertices.
+Aabb cornerBox(const std::array<Eigen::Vector3d, 3>& top, const std::array<Eigen::Vector3d, 3>& bottom) {
+  Aabb box{top[0], top[0]};
+  for (int i = 0; i < 3; ++i) {
+    box.include(top[i]);
+    box.include(bottom[i]);
+  }
+  return box;
+}
+
+}  // namespace
+
+Aabb detail::FormedPieces::pieceBounds(std::size_t k) const {
+  std::array<Eigen::Vector3d, 3> top, bottom;
+  prismCorners(k, top, bottom);
+  return cornerBox(top, bottom);
+}
+
+bool detail::FormedPieces::beyond(std::size_t k, const Eigen::Vector3d& point, double reach) const {
+  std::array<Eigen::Vector3d, 3> top, bottom;
+  prismCorners(k, top, bottom);
+  // queryPoint's first test, bit for bit: the formed piece's bounds are
+  // these corners' box.
+  const Aabb box = cornerBox(top, bottom);
+  if (box.squaredDistance(point) > reach * reach) return true;
+  // Its second: the largest n . p - d over the faces. Each face's plane is
+  // computed here from its corners, in the world frame; it is the formed
+  // piece's own (local frame, Newell normal, d the largest n . c over the
+  // corners) to within roundoff, so clearing the reach by the margin clears
+  // it there too. Each face by a corner and its two edges there,
+  // n = (a - apex) x (b - apex) outward (makeCheckedPrism's faces): the top,
+  // the three sides, the bottom (a mesh's underside can face a wheel).
+  static constexpr std::array<std::array<int, 3>, 5> kFaces = {{{0, 1, 2}, {0, 3, 1}, {1, 4, 2}, {2, 5, 0}, {3, 5, 4}}};
+  const std::array<Eigen::Vector3d, 6> c = {top[0], top[1], top[2], bottom[0], bottom[1], bottom[2]};
+  const double scale =
+      std::max({point.cwiseAbs().maxCoeff(), box.min.cwiseAbs().maxCoeff(), box.max.cwiseAbs().maxCoeff()});  // (m)
+  const double limit = reach + tolerance::kFormedPlaneMarginRelative * scale;
+  constexpr double kMinSine2 = tolerance::kFormedPlaneMinSine * tolerance::kFormedPlaneMinSine;
+  for (const auto& [apex, a, b] : kFaces) {
+    const Eigen::Vector3d u = c[a] - c[apex], v = c[b] - c[apex];
+    const Eigen::Vector3d n = u.cross(v);
+    const double n2 = n.squaredNorm();
+    const double above = n.dot(point - c[apex]);  // |n| times the plane's value
+    // Beyond: above / |n| > limit, unless the face is a sliver (its normal
+    // then roundoff's; the other faces still decide).
+    if (above > 0.0 && above * above > limit * limit * n2 && n2 > kMinSine2 * u.squaredNorm() * v.squaredNorm()) {
+      return true;
+    }
+  }
+  return false;
+}
+
+PieceRange detail::TerrainBuilderAccess::addFormedPieces(TerrainBuilder& builder,
+                                                         std::shared_ptr<const FormedPieces> pieces,
+                                                         MaterialId material, const std::string& where) {
+  builder.requireMaterial(material, where.c_str());
+  // Only the ids are needed: formed pieces take no memory of their own.
+  builder.requireIdsFor(pieces->pieceCount(), where);
+  TerrainBuilder::Field f;
+  f.first = static_cast<PieceId>(builder.next_id_);
+  f.count = static_cast<PieceId>(pieces->pieceCount());
+  f.formed_before = builder.fields_.empty() ? 0 : builder.fields_.back().formed_before + builder.fields_.back().count;
+  f.formed = std::move(pieces);
+  f.material = material;
+  builder.next_id_ += static_cast<std::size_t>(f.count);
+  builder.fields_.push_back(std::move(f));
+  return {builder.fields_.back().first, builder.fields_.back().count};
+}
+
+Terrain TerrainBuilder::build() && {
+  if (next_id_ == 0) throw InvalidInputError("wtc::TerrainBuilder::build: the terrain has no pieces");
+  Terrain terrain;
+  terrain.pieces_ = std::move(pieces_);
+  terrain.piece_material_ = std::move(piece_material_);
+  terrain.materials_ = std::move(materials_);
+  terrain.fields_ = std::move(fields_);
+  terrain.piece_count_ = next_id_;
+  terrain.buildIndex();
+  return terrain;
+}
+
+Terrain::Place Terrain::place(PieceId id) const {
+  // The last field starting at or before id (fields are in id order).
+  const auto after =
+      std::upper_bound(fields_.begin(), fields_.end(), id, [](PieceId i, const Field& f) { return i < f.first; });
+  if (after == fields_.begin()) return {-1, static_cast<std::size_t>(id)};
+  const Field& f = *(after - 1);
+  if (id < f.first + f.count) return {static_cast<int>(after - 1 - fields_.begin()), 0};
+  return {-1, static_cast<std::size_t>(id - f.formed_before - f.count)};
+}
+
+const Terrain::Field* Terrain::formedField(PieceId id) const {
+  if (fields_.empty()) return nullptr;
+  const int field = place(id).field;  // -1 for a stored id and for no piece
+  return field < 0 ? nullptr : &fields_[field];
+}
+
+bool Terrain::isFormed(PieceId id) const { return formedField(id) != nullptr; }
+
+const ConvexPolyhedron& Terrain::storedPiece(PieceId id) const {
+  const Place at = place(id);
+  if (at.field >= 0) {
+    throw InvalidInputError(
+        "wtc::Terrain::piece: piece " + std::to_string(id) +
+        " belongs to a compact heightfield or mesh and is formed on demand; use piece(id, scratch)");
+  }
+  return pieces_[at.stored];
+}
+
+const ConvexPolyhedron& Terrain::piece(PieceId id, std::optional<ConvexPolyhedron>& scratch) const {
+  if (fields_.empty()) return pieces_[id];
+  const Place at = place(id);
+  if (at.field < 0) return pieces_[at.stored];
+  const Field& f = fields_[at.field];
+  scratch = f.formed->piece(static_cast<std::size_t>(id - f.first));
+  return *scratch;
+}
+
+void Terrain::formPiece(PieceId id, ConvexPolyhedron& into) const {
+  const Field* f = formedField(id);
+  if (f == nullptr) {
+    throw InvalidInputError("wtc::Terrain::formPiece: piece " + std::to_string(id) +
+                            " is not a formed piece of this terrain (" + std::to_string(piece_count_) + " pieces)");
+  }
+  f->formed->formInto(static_cast<std::size_t>(id - f->first), into);
+}
+
+PieceId Terrain::storedId(std::size_t stored) const {
+  // The last field that starts at or before stored position `stored` (field
+  // f starts where f.first - f.formed_before stored pieces precede it).
+  const auto after = std::upper_bound(fields_.begin(), fields_.end(), stored, [](std::size_t s, const Field& f) {
+    return s < static_cast<std::size_t>(f.first - f.formed_before);
+  });
+  if (after == fields_.begin()) return static_cast<PieceId>(stored);
+  const Field& f = *(after - 1);
+  return static_cast<PieceId>(stored) + f.formed_before + f.count;
+}
+
+Terrain::CompactField Terrain::compactField(std::size_t k) const {
+  const Field& f = fields_.at(k);
+  return {f.first, f.count, f.formed->heightfield(), f.formed->mesh(), f.formed->thickness(), f.material};
+}
+
+PieceId Terrain::nearestPiece(const Eigen::Vector3d& point, PieceId first, PieceId count, double reach) const {
+  std::vector<PieceId> near;
+  overlapping({point.array() - reach, point.array() + reach}, near);
+  PieceId best = -1;
+  double best_distance = std::numeric_limits<double>::infinity();
+  std::optional<ConvexPolyhedron> scratch;
+  for (const PieceId id : near) {
+    if (id < first || id >= first + count) continue;
+    const double d = queryPoint(piece(id, scratch), point).signed_distance;
+    if (d < best_distance || (d == best_distance && id < best)) {
+      best = id;
+      best_distance = d;
+    }
+  }
+  return best;
+}
+
+Aabb Terrain::pieceBounds(PieceId id) const {
+  if (fields_.empty()) return pieces_[id].bounds();
+  const Place at = place(id);
+  if (at.field < 0) return pieces_[at.stored].bounds();
+  const Field& f = fields_[at.field];
+  return f.formed->pieceBounds(static_cast<std::size_t>(id - f.first));
+}
+
+bool Terrain::formedPieceBeyond(PieceId id, const Eigen::Vector3d& point, double reach) const {
+  const Field* f = formedField(id);
+  return f != nullptr && f->formed->beyond(static_cast<std::size_t>(id - f->first), point, reach);
+}
+
+MaterialId Terrain::fieldAwareMaterialId(PieceId id) const {
+  const Place at = place(id);
+  if (at.field < 0) return piece_material_[at.stored];
+  const Field& f = fields_[at.field];
+  return f.formed->materialId(static_cast<std::size_t>(id - f.first), f.material);
+}
+
+void Terrain::buildIndex() {
+  bool empty = true;
+  const auto cover = [&](const Aabb& box) {
+    if (empty) bounds_ = box;
+    bounds_.include(box);
+    empty = false;
+  };
+  for (const Field& f : fields_) cover(f.formed->bounds());
+  if (pieces_.empty()) return;  // compact parts only: each is its own index
+  // Leaf boxes in tree order, exact (double): a leaf test reads one
+  // contiguous run of memory instead of dereferencing each piece.
+  std::vector<Aabb> boxes(pieces_.size());
+  for (std::size_t i = 0; i < pieces_.size(); ++i) cover(boxes[i] = pieces_[i].bounds());
+  tree_ = std::make_shared<const detail::BoxTree>(boxes, order_);
+  leaf_boxes_.resize(order_.size());
+  for (std::size_t k = 0; k < order_.size(); ++k) leaf_boxes_[k] = boxes[order_[k]];
+  // From here on order_ holds ids: a stored piece's id counts the formed
+  // ids of the parts before it.
+  if (fields_.empty()) return;
+  for (PieceId& k : order_) k = storedId(static_cast<std::size_t>(k));
+}
+
+void Terrain::overlapping(const Aabb& box, std::vector<PieceId>& out) const {
+  // Each compact part is its own index; its bounds spare a part far away
+  // the walk (a box with a NaN overlaps no bounds).
+  for (const Field& f : fields_) {
+    if (f.formed->bounds().overlaps(box)) f.formed->overlapping(box, f.first, out);
+  }
+  if (!tree_) return;
+  tree_->visit(box, [&](std::int32_t k) {
+    if (leaf_boxes_[k].overlaps(box)) out.push_back(order_[k]);
+  });
+}
+
+std::size_t Terrain::pieceMemoryBytes() const {
+  std::size_t bytes = piece_material_.capacity() * sizeof(MaterialId) + fields_.capacity() * sizeof(Field);
+  for (const Field& f : fields_) bytes += f.formed->memoryBytes();
+  for (const auto& p : pieces_) bytes += p.memoryBytes();
+  return bytes;
+}
+
+std::size_t Terrain::indexMemoryBytes() const {
+  std::size_t bytes =
+      (tree_ ? tree_->memoryBytes() : 0) + order_.capacity() * sizeof(PieceId) + leaf_boxes_.capacity() * sizeof(Aabb);
+  for (const Field& f : fields_) bytes += f.formed->indexMemoryBytes();
+  return bytes;
+}
+
+}  // namespace wtc
