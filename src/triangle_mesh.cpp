@@ -132,7 +132,7 @@ ConvexPolyhedron makeExtrudedTriangle(const Eigen::Vector3d& a, const Eigen::Vec
 
 MeshBuildReport addTriangleMesh(TerrainBuilder& builder, const TriangleMesh& mesh, MaterialId material,
                                 const MeshExtrusionOptions& options) {
-  detail::requirePositive(options.thickness, kWhere, "thickness", "m");
+  detail::requireLength(options.thickness, kWhere, "thickness");
   checkInput(mesh);
   MeshBuildReport report;
   report.pieces.first = static_cast<PieceId>(builder.pieceCount());

@@ -11,8 +11,8 @@
 namespace wtc {
 
 void validate(const WheelGeometry& wheel, const char* where) {
-  detail::requirePositive(wheel.free_radius, where, "wheel free_radius", "m");
-  detail::requirePositive(wheel.tread_width, where, "wheel tread_width", "m");
+  detail::requireLength(wheel.free_radius, where, "wheel free_radius");
+  detail::requireLength(wheel.tread_width, where, "wheel tread_width");
 }
 
 WheelContactFinder::WheelContactFinder() {

@@ -29,3 +29,16 @@ inline constexpr double kDivergedAngularSpeedRadps = 1e4;
 inline constexpr double kDivergedDistanceM = 1e6;
 
 }  // namespace wtc
+
+namespace wtc {
+
+/// The largest length a description may give (m): a size, a radius, a
+/// thickness, a height, a piece's or a body's distance from the origin.
+/// A body beyond kDivergedDistanceM has diverged, so no run drives on or
+/// with anything larger; and values far beyond it (1e300) lose the rest
+/// of a shape to rounding (a 1 m box at 1e300 m has all its corners at
+/// one point), which would surface as a geometric error far from the
+/// value at fault. Checked where the value is read, with the value named.
+inline constexpr double kMaxLengthM = kDivergedDistanceM;
+
+}  // namespace wtc

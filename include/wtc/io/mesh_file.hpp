@@ -47,7 +47,10 @@ struct MeshFileContents {
 /// Reads the file. Throws InvalidInputError (see above).
 MeshFileContents readMeshFile(const std::filesystem::path& path, const MeshFileOptions& options = {});
 
-/// Reads the file and adds every part to `builder`; returns the totals.
+/// Reads the file and adds every part to `builder`; returns the totals
+/// (degenerate_skipped: the zero-area triangles skipped, for the caller to
+/// report). Throws, besides readMeshFile's errors, "<path>: all 12 of its
+/// 12 triangles are degenerate ..." when no triangle is left.
 MeshBuildReport addMeshFile(TerrainBuilder& builder, const std::filesystem::path& path, MaterialId material,
                             const MeshFileOptions& options = {});
 
