@@ -23,6 +23,9 @@
 // "ledge.yaml:12:13: pieces[0] (ledge): height: 'tall' is not a number";
 // a builder's complaint is reported at its piece, and errors in a
 // referenced CSV/PGM/mesh file carry that file's own position after it.
+// A key given twice in a mapping is an error; a mesh whose triangles all
+// have zero area is an error, one with some gets a warning
+// (TerrainFileReport::warnings).
 #include <filesystem>
 #include <string>
 #include <vector>
