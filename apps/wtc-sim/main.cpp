@@ -32,6 +32,12 @@ extern "C" void onSignal(int) { g_stop = true; }
 fs::path outputDirectory(const std::string& requested, bool redo_unfinished, const wtc::sim::RunSummary& names) {
   if (!requested.empty()) {
     const fs::path dir(requested);
+    if (fs::exists(dir) && !fs::is_directory(dir)) {
+      throw wtc::InvalidInputError(
+          "--out " + requested +
+          (fs::is_regular_file(dir) ? ": is a file, not a directory" : ": exists and is not a directory") +
+          " (give a new or empty directory)");
+    }
     if (fs::exists(dir) && !fs::is_empty(dir)) {
       if (!redo_unfinished) {
         throw wtc::InvalidInputError("--out " + requested +

@@ -4,6 +4,7 @@
 #include <sstream>
 #include <string>
 
+#include "wtc/base/constants.hpp"
 #include "wtc/base/error.hpp"
 
 namespace wtc {
@@ -16,12 +17,30 @@ namespace {
 
 }  // namespace
 
+void requireAtMostMaxLength(double value, const char* where, const char* name) {
+  if (std::abs(value) > kMaxLengthM) {
+    throw InvalidInputError(std::string(where) + ": " + name + " = " + formatNumber(value) +
+                            " m is beyond the largest length a description may give, " + formatNumber(kMaxLengthM) +
+                            " m (wtc::kMaxLengthM)");
+  }
+}
+
 void requirePositive(double value, const char* where, const char* name, const char* unit) {
   if (!(std::isfinite(value) && value > 0.0)) failBound(value, where, name, unit, "> 0");
 }
 
 void requireNonNegative(double value, const char* where, const char* name, const char* unit) {
   if (!(std::isfinite(value) && value >= 0.0)) failBound(value, where, name, unit, ">= 0");
+}
+
+void requireLength(double value, const char* where, const char* name) {
+  requirePositive(value, where, name, "m");
+  requireAtMostMaxLength(value, where, name);
+}
+
+void requireNonNegativeLength(double value, const char* where, const char* name) {
+  requireNonNegative(value, where, name, "m");
+  requireAtMostMaxLength(value, where, name);
 }
 
 void requireAtLeast(long long value, long long min, const char* where, const char* name) {
@@ -45,6 +64,10 @@ void requireRigid(const Eigen::Isometry3d& pose, const char* where, const char* 
     out << where << ": " << name << " must be a finite rigid transform (rotation + translation), got\n"
         << pose.matrix();
     throw InvalidInputError(out.str());
+  }
+  if (!(pose.translation().cwiseAbs().maxCoeff() <= kMaxLengthM)) {
+    throw InvalidInputError(std::string(where) + ": " + name + " places it at " + formatVector(pose.translation()) +
+                            " m, beyond " + formatNumber(kMaxLengthM) + " m of the origin (wtc::kMaxLengthM)");
   }
 }
 

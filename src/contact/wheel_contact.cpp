@@ -11,8 +11,8 @@
 namespace wtc {
 
 void validate(const WheelGeometry& wheel, const char* where) {
-  requirePositive(wheel.free_radius, where, "wheel free_radius", "m");
-  requirePositive(wheel.tread_width, where, "wheel tread_width", "m");
+  requireLength(wheel.free_radius, where, "wheel free_radius");
+  requireLength(wheel.tread_width, where, "wheel tread_width");
 }
 
 WheelContactFinder::WheelContactFinder() {

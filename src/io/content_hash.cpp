@@ -20,6 +20,6 @@ std::string hexDigits(std::uint64_t hash) {
   return hex;
 }
 
-std::string fileDigest(const std::filesystem::path& file) { return hexDigits(fnv1a(detail::readWholeFile(file))); }
+std::string fileDigest(const std::filesystem::path& file) { return hexDigits(fnv1a(detail::readDataFile(file))); }
 
 }  // namespace wtc::io

@@ -50,7 +50,7 @@ Heightfield assemble(const std::filesystem::path& path, const HeightfieldLayout&
 }  // namespace
 
 Heightfield readHeightfieldCsv(const std::filesystem::path& path, const HeightfieldLayout& layout) {
-  const std::string text = detail::readWholeFile(path);
+  const std::string text = detail::readDataFile(path);
   std::string_view rest = text;
   if (rest.starts_with("\xEF\xBB\xBF")) rest.remove_prefix(3);  // UTF-8 byte-order mark (spreadsheets)
   std::vector<double> values;
@@ -196,7 +196,7 @@ class PgmScanner {
 }  // namespace
 
 Heightfield readHeightfieldPgm(const std::filesystem::path& path, const HeightfieldLayout& layout) {
-  const std::string bytes = detail::readWholeFile(path);
+  const std::string bytes = detail::readDataFile(path);
   PgmScanner scan(path, bytes);
   const std::string_view magic = scan.magic();
   if (magic != "P2" && magic != "P5") {

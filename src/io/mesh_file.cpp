@@ -7,6 +7,9 @@
 #include <utility>
 
 // clang-format off
+#include <sys/stat.h>
+
+#include <assimp/DefaultIOSystem.h>
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -22,6 +25,33 @@ namespace wtc::io {
 namespace {
 
 using detail::where;
+
+// assimp's file access with WTC's rule for every file it opens, the mesh
+// and what it references (an OBJ's .mtl, a glTF's .bin): a regular file
+// within kMaxDataFileBytes. assimp's own test for existence opens the file,
+// which waits forever on a FIFO: stat() instead. A refusal is kept for the
+// message (assimp would only say "unable to open").
+class CheckedIOSystem : public Assimp::DefaultIOSystem {
+ public:
+  bool Exists(const char* file) const override {
+    struct stat st {};
+    return ::stat(file, &st) == 0;
+  }
+  Assimp::IOStream* Open(const char* file, const char* mode) override {
+    try {
+      detail::requireRegularFile(file, kMaxDataFileBytes, detail::kDataFileKind);
+    } catch (const InvalidInputError& e) {
+      if (refused_.empty()) refused_ = e.what();
+      return nullptr;
+    }
+    return DefaultIOSystem::Open(file, mode);
+  }
+  /// The first file refused, as an error message; empty if none.
+  const std::string& refused() const { return refused_; }
+
+ private:
+  std::string refused_;
+};
 
 Eigen::Matrix4d toEigen(const aiMatrix4x4& m) {
   Eigen::Matrix4d out;
@@ -83,17 +113,17 @@ std::int64_t MeshFileContents::triangleCount() const {
 
 MeshFileContents readMeshFile(const std::filesystem::path& path, const MeshFileOptions& options) {
   checkOptions(path, options);
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InvalidInputError(where(path) + "file not found");
-  if (std::filesystem::is_directory(path, ec)) throw InvalidInputError(where(path) + "is a directory, not a file");
-
+  detail::requireRegularFile(path, kMaxDataFileBytes, detail::kDataFileKind);
   detail::checkDeclaredCounts(path);  // before assimp allocates what the header claims
 
   // Read without post-processing first, to tell a point cloud (vertices,
   // no faces: assimp's validation would only say "contains no faces") from
   // a broken file; then validate, then triangulate.
   Assimp::Importer importer;
+  auto* files = new CheckedIOSystem;  // the importer owns it
+  importer.SetIOHandler(files);
   const aiScene* scene = importer.ReadFile(path.string(), 0);
+  if (!files->refused().empty()) throw InvalidInputError(where(path) + "refers to " + files->refused());
   if (scene == nullptr) {
     throw InvalidInputError(where(path) + "cannot read the mesh file: " + importer.GetErrorString());
   }
@@ -154,6 +184,14 @@ MeshBuildReport addMeshFile(TerrainBuilder& builder, const std::filesystem::path
   report.pieces.first = static_cast<PieceId>(builder.pieceCount());
   builder.reserve(static_cast<std::size_t>(contents.triangleCount()));  // once per file, not per part
   for (const auto& part : contents.parts) report.append(addTriangleMesh(builder, part, material, options.extrusion));
+  if (report.pieces.count == 0) {
+    // Every triangle skipped: said here, or the terrain would only find
+    // itself without pieces, with no word of this file.
+    throw InvalidInputError(where(path) + "all " + std::to_string(report.degenerate_skipped) + " of its " +
+                            std::to_string(report.triangles) +
+                            " triangles are degenerate (zero area: collinear or repeated vertices), so the mesh "
+                            "holds no ground");
+  }
   return report;
 }
 

@@ -324,7 +324,7 @@ void checkDeclaredCounts(const std::filesystem::path& path) {
   // declared counts already fit its size).
   std::string_view glued;
   if (size > head.size() && !offKeywordOf(path, Tokens(head).next(), glued).empty()) {
-    checkDeclaredCounts(path, readWholeFile(path), size);
+    checkDeclaredCounts(path, readDataFile(path), size);
     return;
   }
   checkDeclaredCounts(path, head, size);

@@ -161,9 +161,9 @@ std::vector<std::uint8_t> readHoles(const YamlReader& in, const YAML::Node& rows
       });
 }
 
-// Adds one piece; returns the degenerate triangles a mesh skipped.
-std::int64_t addPiece(TerrainBuilder& builder, const YamlReader& in, const YAML::Node& p, const std::string& type,
-                      MaterialId material, const MaterialNames& materials) {
+// Adds one piece; a mesh's skipped triangles go into `report`.
+void addPiece(TerrainBuilder& builder, const YamlReader& in, const YAML::Node& p, const std::string& type,
+              MaterialId material, const MaterialNames& materials, TerrainFileReport& report) {
   if (type == "box") {
     in.checkKeys(p, kCommonKeys, {"size"});
     addBox(builder, {in.vector<3>(in.require(p, "size"), "size"), in.pose(p)}, material);
@@ -246,10 +246,17 @@ std::int64_t addPiece(TerrainBuilder& builder, const YamlReader& in, const YAML:
     options.extrusion.compact = readCompactStorage(in, p);
     const YAML::Node file = in.require(p, "file");
     const std::filesystem::path path = in.path().parent_path() / in.string(file, "file");
+    MeshBuildReport mesh;
     try {
-      return addMeshFile(builder, path, material, options).degenerate_skipped;
+      mesh = addMeshFile(builder, path, material, options);
     } catch (const InvalidInputError& e) {
       in.fail(file, e.what());
+    }
+    report.degenerate_triangles_skipped += mesh.degenerate_skipped;
+    if (mesh.degenerate_skipped > 0) {
+      report.warnings.push_back(in.describe(p, path.string() + ": " + std::to_string(mesh.degenerate_skipped) + " of " +
+                                                   std::to_string(mesh.triangles) +
+                                                   " triangles are degenerate (zero area), skipped"));
     }
   } else if (type == "hull") {
     in.checkKeys(p, kCommonKeys, {"points"});
@@ -265,7 +272,6 @@ std::int64_t addPiece(TerrainBuilder& builder, const YamlReader& in, const YAML:
     in.fail(p["type"], "unknown piece type '" + type +
                            "' (expected box, slab, incline, ledge, stairs, heightfield, mesh or hull)");
   }
-  return 0;
 }
 
 }  // namespace
@@ -326,7 +332,7 @@ TerrainFileReport detail::addTerrainNode(TerrainBuilder& builder, const YamlRead
       piece.fail(p, "missing key 'material' (the file defines " + std::to_string(materials.size()) + " materials)");
     }
     try {
-      report.degenerate_triangles_skipped += addPiece(builder, piece, p, type, material, materials);
+      addPiece(builder, piece, p, type, material, materials, report);
     } catch (const YamlError&) {
       throw;
     } catch (const InvalidInputError& e) {

@@ -9,6 +9,7 @@
 #include <initializer_list>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "wtc/base/error.hpp"
 
@@ -22,8 +23,36 @@ class YamlError : public InvalidInputError {
 };
 
 /// The file's YAML document. Throws InvalidInputError for a missing or
-/// unreadable file and "<path>:<line>:<col>: YAML syntax error: ..." .
+/// unreadable file (file_support.hpp: regular files within
+/// kMaxDescriptionFileBytes), "<path>:<line>:<col>: YAML syntax error: ..."
+/// and "<path>:<line>:<col>: duplicate key 'mass' (first at line 30) ..."
+/// (checkNoDuplicateKeys): every reader of YAML files gets its document here.
 YAML::Node loadYamlFile(const std::filesystem::path& path);
+
+/// A key given twice in one mapping: yaml-cpp keeps both entries, and a
+/// lookup finds the first, so the second would be ignored without a word.
+struct DuplicateKey {
+  std::string key;
+  YAML::Mark first, second;
+};
+
+/// The first key that occurs twice in a mapping anywhere in `root` (in
+/// document order of the mappings), or nothing. Keys compare as their
+/// scalar text; mappings reached again through an alias are checked once.
+std::optional<DuplicateKey> findDuplicateKey(const YAML::Node& root);
+
+/// "duplicate key 'mass' (first at line 30): a key may appear once in a mapping".
+std::string duplicateKeyMessage(const DuplicateKey& duplicate);
+
+/// Nodes whose YAML marks do not say where they came from: an override's
+/// value (its marks are in the override's own text) or a value a body
+/// inherits from wheel_defaults (its marks are right, but the reader of
+/// that body should say so).
+struct NodeOrigin {
+  YAML::Node subtree;              ///< The nodes concerned: this one and all below it.
+  std::string label;               ///< "--set dt=-1", or "inherited by wheel 'w' from wheel_defaults".
+  bool replaces_position = false;  ///< true: the label stands instead of line:column (an override).
+};
 
 /// Runs `read` (a loader's reading of `path`) and turns any yaml-cpp
 /// exception that escapes it (a conversion of a node whose shape no check
@@ -35,9 +64,9 @@ auto withYamlErrors(const std::filesystem::path& path, Read&& read) {
     return read();
   } catch (const YAML::Exception& e) {
     throw InvalidInputError(path.string() + ":" +
-                            (e.mark.line >= 0 ? std::to_string(e.mark.line + 1) + ":" +
-                                                    std::to_string(e.mark.column + 1) + ":"
-                                              : std::string()) +
+                            (e.mark.line >= 0
+                                 ? std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) + ":"
+                                 : std::string()) +
                             " " + e.msg);
   }
 }
@@ -47,11 +76,31 @@ class YamlReader {
   /// `context` prefixes messages (e.g. "pieces[2] (ledge): ").
   YamlReader(const std::filesystem::path& path, std::string context = {}) : path_(path), context_(std::move(context)) {}
 
-  YamlReader with(std::string context) const { return YamlReader(path_, std::move(context)); }
+  YamlReader with(std::string context) const {
+    YamlReader copy = *this;
+    copy.context_ = std::move(context);
+    return copy;
+  }
+  /// This reader, naming the nodes of `origin` by its label.
+  YamlReader withOrigin(NodeOrigin origin) const {
+    YamlReader copy = *this;
+    copy.origins_.push_back(std::move(origin));
+    return copy;
+  }
+  /// This reader, placing errors at nodes with no position (mappings a
+  /// reader merged itself) at `node`.
+  YamlReader withFallback(const YAML::Node& node) const {
+    YamlReader copy = *this;
+    copy.fallback_ = node;
+    return copy;
+  }
   const std::filesystem::path& path() const { return path_; }
 
-  /// Throws YamlError "<path>:<line>:<col>: <context><message>" at `node`.
+  /// Throws YamlError "<path>:<line>:<col>: <context><message>" at `node`
+  /// (for a node of an override: "<path>: --set key=value: <context><message>").
   [[noreturn]] void fail(const YAML::Node& node, const std::string& message) const;
+  /// fail's message, for a warning.
+  std::string describe(const YAML::Node& node, const std::string& message) const;
 
   /// Throws if `map` is not a mapping or has a key outside `allowed`.
   void requireMap(const YAML::Node& map, const char* what) const;
@@ -65,6 +114,8 @@ class YamlReader {
   YAML::Node require(const YAML::Node& map, const char* key) const;
 
   double number(const YAML::Node& node, const std::string& what) const;
+  /// A size (m): a number > 0 and at most kMaxLengthM.
+  double length(const YAML::Node& node, const std::string& what) const;
   long long integer(const YAML::Node& node, const std::string& what) const;
   bool boolean(const YAML::Node& node, const std::string& what) const;
   std::string string(const YAML::Node& node, const std::string& what) const;
@@ -94,6 +145,8 @@ class YamlReader {
 
   std::filesystem::path path_;
   std::string context_;
+  std::vector<NodeOrigin> origins_;
+  YAML::Node fallback_;
 };
 
 }  // namespace wtc::io::detail

@@ -21,9 +21,9 @@ using io::detail::YamlReader;
 
 constexpr const char* kVehicleEffects[] = {"actuator_limits", "hitch_damping"};
 
-// Applies one override to the document; `parameters` names the numbers a
-// first part that is not a key may set.
-void applyOverride(YAML::Node& root, const Override& o, const std::string& where) {
+// Applies one override to the document (a parameter's name as its first
+// part sets that parameter); returns the value's node, now in the document.
+YAML::Node applyOverride(YAML::Node& root, const Override& o, const std::string& where) {
   std::vector<std::string> parts;
   for (std::size_t start = 0;;) {
     const std::size_t dot = o.path.find('.', start);
@@ -39,6 +39,9 @@ void applyOverride(YAML::Node& root, const Override& o, const std::string& where
     value = YAML::Load(o.value);
   } catch (const YAML::Exception& e) {
     throw InvalidInputError(where + ": value '" + o.value + "' is not YAML: " + e.msg);
+  }
+  if (const auto duplicate = io::detail::findDuplicateKey(value)) {
+    throw InvalidInputError(where + ": " + io::detail::duplicateKeyMessage(*duplicate));
   }
   if (!root[parts.front()] && root["parameters"] && root["parameters"].IsMap() && root["parameters"][parts.front()]) {
     parts.insert(parts.begin(), "parameters");
@@ -75,6 +78,7 @@ void applyOverride(YAML::Node& root, const Override& o, const std::string& where
   } else {
     node[last] = value;
   }
+  return value;
 }
 
 // Replaces every scalar "$name" ("-$name") outside `parameters` by the parameter's value.
@@ -254,6 +258,19 @@ void readEffects(const YamlReader& in, const YAML::Node& node, sim::Scene& scene
   }
 }
 
+// Reads the file that `node` (under `key`) names, relative to the scene;
+// its errors are placed at that node too: "scene.yaml:12:10: terrain:
+// ../terrains/x.yaml: file not found".
+template <class Read>
+auto referencedFile(const YamlReader& in, const YAML::Node& node, const std::string& key, Read&& read) {
+  const std::string name = in.string(node, key);
+  try {
+    return read(in.path().parent_path() / name);
+  } catch (const InvalidInputError& e) {
+    in.fail(node, key + ": " + e.what());
+  }
+}
+
 }  // namespace
 
 Override parseOverride(const std::string& text) {
@@ -268,9 +285,13 @@ namespace {
 
 sim::Scene readSceneFile(const std::filesystem::path& path, std::span<const Override> overrides) {
   YAML::Node root = io::detail::loadYamlFile(path);
-  const YamlReader in(path);
+  YamlReader in(path);
   in.requireMap(root, "scene file");
-  for (const Override& o : overrides) applyOverride(root, o, "--set " + o.path + "=" + o.value);
+  // An error in an override's value names the override, not a line.
+  for (const Override& o : overrides) {
+    const std::string name = "--set " + o.path + "=" + o.value;
+    in = in.withOrigin({.subtree = applyOverride(root, o, name), .label = name, .replaces_position = true});
+  }
   in.checkKeys(root, {"name", "description", "parameters", "engine", "mode", "dt", "duration", "solver_iterations",
                       "solver_residual", "terrain", "vehicle", "effects", "controller", "output", "success", "cases"});
 
@@ -311,24 +332,26 @@ sim::Scene readSceneFile(const std::filesystem::path& path, std::span<const Over
   scene.duration_seconds = in.number(in.require(root, "duration"), "duration");
   if (!(scene.duration_seconds > 0.0)) in.fail(root["duration"], "duration: must be > 0 s");
 
-  const std::filesystem::path dir = path.parent_path();
   const YAML::Node terrain = in.require(root, "terrain");
   TerrainBuilder builder;
+  io::TerrainFileReport terrain_report;
   if (terrain.IsScalar()) {
-    io::addTerrainFile(builder, dir / in.string(terrain, "terrain"));
+    terrain_report = referencedFile(in, terrain, "terrain",
+                                    [&](const std::filesystem::path& file) { return io::addTerrainFile(builder, file); });
   } else {
-    io::detail::addTerrainNode(builder, in.with("terrain: "), terrain);
+    terrain_report = io::detail::addTerrainNode(builder, in.with("terrain: "), terrain);
   }
   if (builder.pieceCount() == 0) in.fail(terrain, "terrain: no pieces");
   scene.terrain = std::make_shared<const Terrain>(std::move(builder).build());
+  scene.warnings = terrain_report.warnings;
 
   const YAML::Node v = in.require(root, "vehicle");
   if (v.IsScalar()) {
-    scene.vehicle = vehicle::loadVehicle(dir / in.string(v, "vehicle"));
+    scene.vehicle = referencedFile(in, v, "vehicle", vehicle::loadVehicle);
   } else {
     in.requireMap(v, "vehicle");
     in.checkKeys(v, {"file", "translation", "rotation"});
-    scene.vehicle = vehicle::loadVehicle(dir / in.string(in.require(v, "file"), "vehicle.file"));
+    scene.vehicle = referencedFile(in, in.require(v, "file"), "vehicle.file", vehicle::loadVehicle);
     scene.placement = in.with("vehicle: ").pose(v);
   }
 

@@ -67,6 +67,7 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
   summary.mode = std::string(modeName(scene.engine));
   summary.dt = scene.engine.step_seconds;
   summary.parameters = scene.parameters;
+  summary.warnings = scene.warnings;  // reading the scene's (a mesh's skipped triangles) first
 
   const std::unique_ptr<vehicle::Controller> controller = scene.make_controller();
   Run run(engine, controller.get(), scene.vehicle_effects);

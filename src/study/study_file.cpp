@@ -149,17 +149,18 @@ StudyPlan readStudy(const std::filesystem::path& file) {
   std::map<std::string, std::size_t> seen;
   for (const auto& entry : scenarios) {
     const std::string name = entry.first.Scalar();
-    const YamlReader at = in.with("scenarios." + name);
+    const YamlReader at = in.with("scenarios." + name + ": ");
     at.requireMap(entry.second, "scenario");
     at.checkKeys(entry.second, {"scene", "set"});
     const std::filesystem::path scene = std::filesystem::weakly_canonical(
         std::filesystem::absolute(file).parent_path() / at.string(at.require(entry.second, "scene"), "scene"));
-    if (!std::filesystem::is_regular_file(scene)) {
-      at.fail(entry.second["scene"], "scenarios." + name + ".scene: no such file " + scene.string());
+    std::string bytes;  // the scene's, for the runs' keys
+    try {
+      bytes = io::detail::readDescriptionFile(scene);
+    } catch (const InvalidInputError& e) {
+      at.fail(entry.second["scene"], std::string("scene: ") + e.what());
     }
-    const Setting set =
-        entry.second["set"] ? readFixed(at, entry.second["set"], ("scenarios." + name + ".set").c_str()) : Setting{};
-    const std::string bytes = io::detail::readWholeFile(scene);
+    const Setting set = entry.second["set"] ? readFixed(at, entry.second["set"], "set") : Setting{};
     plan.scenarios.push_back(name);
     auto add = [&](const Setting& s, const std::string& sweep, bool is_reference) {
       PlannedRun run = plannedRun(name, scene, bytes, set, s, sweep);

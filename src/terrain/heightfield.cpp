@@ -10,7 +10,7 @@
 
 #include "builder_support.hpp"
 #include "compact_heightfield.hpp"
-#include "wtc/base/checks.hpp"
+#include "wtc/base/constants.hpp"
 #include "wtc/base/error.hpp"
 
 namespace wtc {
@@ -67,12 +67,13 @@ double Heightfield::baseZ() const {
 void validate(const Heightfield& f) {
   requireAtLeast(f.rows, 2, kWhere, "rows");
   requireAtLeast(f.cols, 2, kWhere, "cols");
-  requirePositive(f.spacing_x, kWhere, "spacing_x", "m");
-  requirePositive(f.spacing_y, kWhere, "spacing_y", "m");
-  requirePositive(f.base_depth, kWhere, "base_depth", "m");
+  requireLength(f.spacing_x, kWhere, "spacing_x");
+  requireLength(f.spacing_y, kWhere, "spacing_y");
+  requireLength(f.base_depth, kWhere, "base_depth");
   if (!f.origin.allFinite()) {
     throw InvalidInputError(std::string(kWhere) + ": origin = " + formatVector(f.origin) + " is not finite");
   }
+  for (int k = 0; k < 3; ++k) requireAtMostMaxLength(f.origin[k], kWhere, "origin");
   const auto samples = static_cast<std::uint64_t>(f.rows) * static_cast<std::uint64_t>(f.cols);
   if (f.heights.size() != samples) {
     throw InvalidInputError(std::string(kWhere) + ": heights has " + std::to_string(f.heights.size()) +
@@ -104,6 +105,10 @@ void validate(const Heightfield& f) {
       if (!std::isfinite(f.height(r, c))) {
         throw InvalidInputError(std::string(kWhere) + ": height at (row " + std::to_string(r) + ", col " +
                                 std::to_string(c) + ") = " + formatNumber(f.height(r, c)) + " is not finite");
+      }
+      if (std::abs(f.height(r, c)) > kMaxLengthM) {
+        const std::string name = "height at (row " + std::to_string(r) + ", col " + std::to_string(c) + ")";
+        requireAtMostMaxLength(f.height(r, c), kWhere, name.c_str());
       }
     }
   }

@@ -65,9 +65,9 @@ ConvexPolyhedron makeBox(const Eigen::Vector3d& min_L, const Eigen::Vector3d& ma
 
 PieceRange addSlab(TerrainBuilder& builder, const SlabParams& p, MaterialId material) {
   constexpr const char* kWhere = "wtc::addSlab";
-  requirePositive(p.size_x, kWhere, "size_x", "m");
-  requirePositive(p.size_y, kWhere, "size_y", "m");
-  requirePositive(p.thickness, kWhere, "thickness", "m");
+  requireLength(p.size_x, kWhere, "size_x");
+  requireLength(p.size_y, kWhere, "size_y");
+  requireLength(p.thickness, kWhere, "thickness");
   requireAtLeast(p.tiles_x, 1, kWhere, "tiles_x");
   requireAtLeast(p.tiles_y, 1, kWhere, "tiles_y");
   requireRigid(p.pose_WL, kWhere, "pose_WL");
@@ -92,10 +92,10 @@ PieceRange addIncline(TerrainBuilder& builder, const InclineParams& p, MaterialI
   if (!(std::isfinite(p.angle) && p.angle > 0.0 && p.angle < 0.5 * std::numbers::pi)) {
     throw InvalidInputError(std::string(kWhere) + ": angle = " + formatNumber(p.angle) + " must be in (0, pi/2) (rad)");
   }
-  requirePositive(p.length, kWhere, "length", "m");
-  requirePositive(p.width, kWhere, "width", "m");
-  requirePositive(p.thickness, kWhere, "thickness", "m");
-  requireNonNegative(p.top_length, kWhere, "top_length", "m");
+  requireLength(p.length, kWhere, "length");
+  requireLength(p.width, kWhere, "width");
+  requireLength(p.thickness, kWhere, "thickness");
+  requireNonNegativeLength(p.top_length, kWhere, "top_length");
   requireRigid(p.pose_WL, kWhere, "pose_WL");
   const double rise = p.length * std::tan(p.angle);
   const double y = 0.5 * p.width;
@@ -155,15 +155,15 @@ PieceRange addSampledLedge(TerrainBuilder& builder, const LedgeParams& p, Materi
 
 PieceRange addLedge(TerrainBuilder& builder, const LedgeParams& p, MaterialId material) {
   constexpr const char* kWhere = "wtc::addLedge";
-  requireNonNegative(p.height, kWhere, "height", "m");
-  requirePositive(p.approach_length, kWhere, "approach_length", "m");
-  requirePositive(p.top_length, kWhere, "top_length", "m");
-  requirePositive(p.width, kWhere, "width", "m");
-  requirePositive(p.thickness, kWhere, "thickness", "m");
+  requireNonNegativeLength(p.height, kWhere, "height");
+  requireLength(p.approach_length, kWhere, "approach_length");
+  requireLength(p.top_length, kWhere, "top_length");
+  requireLength(p.width, kWhere, "width");
+  requireLength(p.thickness, kWhere, "thickness");
   requireAtLeast(p.approach_tiles, 1, kWhere, "approach_tiles");
   builder.requireRoomFor(static_cast<std::uint64_t>(p.approach_tiles) + 1, std::string(kWhere) + " (approach_tiles)");
   requireRigid(p.pose_WL, kWhere, "pose_WL");
-  requireNonNegative(p.heightfield_spacing, kWhere, "heightfield_spacing", "m");
+  requireNonNegativeLength(p.heightfield_spacing, kWhere, "heightfield_spacing");
   if (p.heightfield_spacing > 0.0) return addSampledLedge(builder, p, material);
   const double y = 0.5 * p.width;
   std::vector<ConvexPolyhedron> pieces;
@@ -180,11 +180,11 @@ PieceRange addStairs(TerrainBuilder& builder, const StairsParams& p, MaterialId 
   constexpr const char* kWhere = "wtc::addStairs";
   requireAtLeast(p.steps, 1, kWhere, "steps");
   builder.requireRoomFor(static_cast<std::uint64_t>(p.steps), std::string(kWhere) + " (steps)");
-  requirePositive(p.rise, kWhere, "rise", "m");
-  requirePositive(p.run, kWhere, "run", "m");
-  requirePositive(p.width, kWhere, "width", "m");
-  requirePositive(p.thickness, kWhere, "thickness", "m");
-  requireNonNegative(p.top_length, kWhere, "top_length", "m");
+  requireLength(p.rise, kWhere, "rise");
+  requireLength(p.run, kWhere, "run");
+  requireLength(p.width, kWhere, "width");
+  requireLength(p.thickness, kWhere, "thickness");
+  requireNonNegativeLength(p.top_length, kWhere, "top_length");
   requireRigid(p.pose_WL, kWhere, "pose_WL");
   const double y = 0.5 * p.width;
   std::vector<ConvexPolyhedron> pieces;
@@ -197,9 +197,9 @@ PieceRange addStairs(TerrainBuilder& builder, const StairsParams& p, MaterialId 
 
 PieceRange addBox(TerrainBuilder& builder, const BoxParams& p, MaterialId material) {
   constexpr const char* kWhere = "wtc::addBox";
-  requirePositive(p.size.x(), kWhere, "size.x", "m");
-  requirePositive(p.size.y(), kWhere, "size.y", "m");
-  requirePositive(p.size.z(), kWhere, "size.z", "m");
+  requireLength(p.size.x(), kWhere, "size.x");
+  requireLength(p.size.y(), kWhere, "size.y");
+  requireLength(p.size.z(), kWhere, "size.z");
   requireRigid(p.pose_WL, kWhere, "pose_WL");
   std::vector<ConvexPolyhedron> pieces;
   pieces.push_back(makeBox(-0.5 * p.size, 0.5 * p.size, p.pose_WL));

@@ -133,7 +133,7 @@ ConvexPolyhedron makeExtrudedTriangle(const Eigen::Vector3d& a, const Eigen::Vec
 
 MeshBuildReport addTriangleMesh(TerrainBuilder& builder, const TriangleMesh& mesh, MaterialId material,
                                 const MeshExtrusionOptions& options) {
-  requirePositive(options.thickness, kWhere, "thickness", "m");
+  requireLength(options.thickness, kWhere, "thickness");
   checkInput(mesh);
   MeshBuildReport report;
   report.pieces.first = static_cast<PieceId>(builder.pieceCount());

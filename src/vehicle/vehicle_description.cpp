@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "wtc/base/constants.hpp"
 #include "wtc/base/error.hpp"
 #include "wtc/base/tolerances.hpp"
 
@@ -14,6 +15,17 @@ namespace {
 
 void requirePositive(double value, const std::string& where, const std::string& what) {
   if (!std::isfinite(value) || value <= 0.0) fail(where, what, formatNumber(value) + " must be finite and > 0");
+}
+
+// A size (m): > 0 and at most kMaxLengthM (a value like 1e300 would
+// otherwise surface as an infinite inertia).
+void requireLength(double value, const std::string& where, const std::string& what) {
+  requirePositive(value, where, what);
+  if (value > kMaxLengthM) {
+    fail(where, what,
+         formatNumber(value) + " m is beyond the largest length a description may give, " + formatNumber(kMaxLengthM) +
+             " m (wtc::kMaxLengthM)");
+  }
 }
 
 void requireNonNegative(const Eigen::Vector3d& v, const std::string& where, const std::string& what) {
@@ -66,14 +78,14 @@ void validateJoint(Joint& joint, const std::string& where) {
 
 void validate(Body& body, int index, const std::string& where) {
   requirePositive(body.mass, where, "mass");
-  const Eigen::Vector3d& i = body.inertia;
-  if (!i.allFinite() || (i.array() <= 0.0).any()) fail(where, "inertia", formatVector(i) + " must be finite and > 0");
-  // Principal moments of a real body obey the triangle inequality.
-  const double slack = 1e-9 * i.sum();
-  if (i.x() + i.y() < i.z() - slack || i.y() + i.z() < i.x() - slack || i.z() + i.x() < i.y() - slack) {
-    fail(where, "inertia", formatVector(i) + " violates the triangle inequality (no rigid body has it)");
-  }
+  // The sizes before the inertia: the inertia of a shape or wheel with a
+  // size of 0 or 1e300 is 0 or inf, and the size is what the user typed.
   if (!body.pose.matrix().allFinite()) fail(where, "pose", "is not finite");
+  if (!(body.pose.translation().cwiseAbs().maxCoeff() <= kMaxLengthM)) {
+    fail(where, "translation",
+         formatVector(body.pose.translation()) + " m is beyond " + formatNumber(kMaxLengthM) +
+             " m of the origin (wtc::kMaxLengthM)");
+  }
   if (body.wheel) {
     validate(body.wheel->geometry, where.c_str());
     validate(body.wheel->tyre, where.c_str());
@@ -81,14 +93,22 @@ void validate(Body& body, int index, const std::string& where) {
   }
 
   const Shape& s = body.shape;
-  if (s.kind == Shape::Kind::kBox && (!s.box_size.allFinite() || (s.box_size.array() <= 0.0).any())) {
-    fail(where, "shape box", formatVector(s.box_size) + " must be finite and > 0");
+  if (s.kind == Shape::Kind::kBox) {
+    for (int k = 0; k < 3; ++k) requireLength(s.box_size[k], where, "shape box[" + std::to_string(k) + "]");
   }
   if (s.kind == Shape::Kind::kCylinder || s.kind == Shape::Kind::kSphere)
-    requirePositive(s.radius, where, "shape radius");
+    requireLength(s.radius, where, "shape radius");
   if (s.kind == Shape::Kind::kCylinder) {
-    requirePositive(s.length, where, "shape length");
+    requireLength(s.length, where, "shape length");
     if (s.cylinder_axis < 0 || s.cylinder_axis > 2) fail(where, "shape axis", std::to_string(s.cylinder_axis));
+  }
+
+  const Eigen::Vector3d& i = body.inertia;
+  if (!i.allFinite() || (i.array() <= 0.0).any()) fail(where, "inertia", formatVector(i) + " must be finite and > 0");
+  // Principal moments of a real body obey the triangle inequality.
+  const double slack = 1e-9 * i.sum();
+  if (i.x() + i.y() < i.z() - slack || i.y() + i.z() < i.x() - slack || i.z() + i.x() < i.y() - slack) {
+    fail(where, "inertia", formatVector(i) + " violates the triangle inequality (no rigid body has it)");
   }
   if (body.parent >= index) {
     fail(where, "parent", "index " + std::to_string(body.parent) + " must name a body listed before it");

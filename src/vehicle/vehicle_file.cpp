@@ -16,17 +16,22 @@ using io::detail::YamlReader;
 
 constexpr double kDegree = std::numbers::pi / 180.0;
 
-/// A mapping that overlays `over` on `base` (one level deep for nested maps).
+/// A mapping that overlays `over` on `base` (one level deep for nested
+/// maps). Its entries are the nodes of both, not copies: their marks, and
+/// so the places errors name, stay those of the file (a copy's are 1:1).
 YAML::Node overlay(const YAML::Node& base, const YAML::Node& over) {
-  YAML::Node out = YAML::Clone(base ? base : YAML::Node(YAML::NodeType::Map));
+  YAML::Node out(YAML::NodeType::Map);
+  // Keyed by the key nodes themselves (yaml-cpp finds a node key by
+  // identity, a string key by value: each key is added once).
+  if (base) {
+    for (const auto& kv : base) {
+      if (!over || !over[kv.first.as<std::string>()]) out[kv.first] = kv.second;
+    }
+  }
   if (!over) return out;
   for (const auto& kv : over) {
-    const std::string key = kv.first.as<std::string>();
-    if (kv.second.IsMap() && out[key] && out[key].IsMap()) {
-      out[key] = overlay(out[key], kv.second);
-    } else {
-      out[key] = kv.second;
-    }
+    const YAML::Node below = base ? base[kv.first.as<std::string>()] : YAML::Node();
+    out[kv.first] = kv.second.IsMap() && below && below.IsMap() ? overlay(below, kv.second) : kv.second;
   }
   return out;
 }
@@ -38,20 +43,21 @@ Shape readShape(const YamlReader& in, const YAML::Node& node) {
   Shape s;
   if (const auto box = YamlReader::get(node, "box")) {
     s.kind = Shape::Kind::kBox;
-    s.box_size = in.vector<3>(*box, "shape.box");
+    if (!box->IsSequence() || box->size() != 3) in.fail(*box, "shape.box: expected a list of 3 numbers");
+    for (int k = 0; k < 3; ++k) s.box_size[k] = in.length((*box)[k], "shape.box[" + std::to_string(k) + "]");
   } else if (const auto cyl = YamlReader::get(node, "cylinder")) {
     in.requireMap(*cyl, "shape.cylinder");
     in.checkKeys(*cyl, {"radius", "length", "axis"});
     s.kind = Shape::Kind::kCylinder;
-    s.radius = in.number(in.require(*cyl, "radius"), "shape.cylinder.radius");
-    s.length = in.number(in.require(*cyl, "length"), "shape.cylinder.length");
+    s.radius = in.length(in.require(*cyl, "radius"), "shape.cylinder.radius");
+    s.length = in.length(in.require(*cyl, "length"), "shape.cylinder.length");
     const std::string axis = YamlReader::get(*cyl, "axis") ? in.string((*cyl)["axis"], "axis") : "y";
     if (axis != "x" && axis != "y" && axis != "z")
       in.fail((*cyl)["axis"], "shape.cylinder.axis: '" + axis + "' is not x, y or z");
     s.cylinder_axis = axis[0] - 'x';
   } else {
     s.kind = Shape::Kind::kSphere;
-    s.radius = in.number(node["sphere"], "shape.sphere");
+    s.radius = in.length(node["sphere"], "shape.sphere");
   }
   return s;
 }
@@ -60,8 +66,10 @@ Wheel readWheel(const YamlReader& in, const YAML::Node& node) {
   in.requireMap(node, "wheel");
   in.checkKeys(node, {"radius", "width", "axle", "tyre"});
   Wheel w;
-  w.geometry.free_radius = in.number(in.require(node, "radius"), "wheel.radius");
-  w.geometry.tread_width = in.number(in.require(node, "width"), "wheel.width");
+  // Checked here, at the value: the disc's inertia made of a radius of 0
+  // or 1e300 would be the first thing to fail, naming the inertia.
+  w.geometry.free_radius = in.length(in.require(node, "radius"), "wheel.radius");
+  w.geometry.tread_width = in.length(in.require(node, "width"), "wheel.width");
   if (const auto axle = YamlReader::get(node, "axle")) w.axle = in.vector<3>(*axle, "wheel.axle");
   if (const auto tyre = YamlReader::get(node, "tyre")) {
     in.requireMap(*tyre, "wheel.tyre");
@@ -78,6 +86,16 @@ Wheel readWheel(const YamlReader& in, const YAML::Node& node) {
     t.standstill_speed = in.number(*tyre, "standstill_speed", t.standstill_speed);
     t.stability_fraction = in.number(*tyre, "stability_fraction", t.stability_fraction);
     t.spin_floor = in.number(*tyre, "spin_floor", t.spin_floor);
+    try {
+      validate(t, "wheel");
+    } catch (const InvalidInputError& e) {
+      // At the parameter the message names ("wheel: tyre radial_stiffness = -1 ...").
+      const std::string message = e.what();
+      for (const auto& entry : *tyre) {
+        if (message.find("tyre " + entry.first.Scalar() + " = ") != std::string::npos) in.fail(entry.second, message);
+      }
+      in.fail(*tyre, message);
+    }
   }
   return w;
 }
@@ -121,11 +139,27 @@ Joint readJoint(const YamlReader& in, const YAML::Node& node, const Eigen::Vecto
   return j;
 }
 
-Body readBody(const YamlReader& in, const YAML::Node& given, const YAML::Node& wheel_defaults,
-              const VehicleDescription& so_far) {
+Body readBody(const YamlReader& in, const YAML::Node& node, bool is_wheel, const VehicleDescription& so_far);
+
+// A body as listed: a wheel gets wheel_defaults under its own keys.
+Body readListedBody(const YamlReader& in, const YAML::Node& given, const YAML::Node& wheel_defaults,
+                    const VehicleDescription& so_far) {
   in.requireMap(given, "body");
   const bool is_wheel = YamlReader::get(given, "wheel").has_value();
   const YAML::Node node = is_wheel ? overlay(wheel_defaults, given) : given;
+  if (is_wheel) {
+    // A value from wheel_defaults is named at its line there, as inherited;
+    // a mapping merged of both has no line: the body's.
+    const YAML::Node name = given["name"];
+    const std::string wheel = name && name.IsScalar() ? "wheel '" + name.Scalar() + "'" : "this wheel";
+    return readBody(in.withOrigin({.subtree = wheel_defaults, .label = "inherited from wheel_defaults by " + wheel})
+                        .withFallback(given),
+                    node, true, so_far);
+  }
+  return readBody(in, node, false, so_far);
+}
+
+Body readBody(const YamlReader& in, const YAML::Node& node, bool is_wheel, const VehicleDescription& so_far) {
   in.checkKeys(node, {"name", "mass", "shape", "inertia", "translation", "rotation", "wheel", "parent", "joint"});
   Body b;
   b.name = in.string(in.require(node, "name"), "name");
@@ -176,7 +210,6 @@ Hitch readHitch(const YamlReader& in, const YAML::Node& node, const VehicleDescr
   return h;
 }
 
-
 VehicleDescription readVehicleFile(const std::filesystem::path& path) {
   const YAML::Node root = io::detail::loadYamlFile(path);
   const YamlReader in(path);
@@ -194,7 +227,7 @@ VehicleDescription readVehicleFile(const std::filesystem::path& path) {
     const YAML::Node name = bodies[i]["name"];
     const YamlReader here = in.with("bodies[" + std::to_string(i) + "]" +
                                     (name && name.IsScalar() ? " (" + name.as<std::string>() + ")" : "") + ": ");
-    Body body = readBody(here, bodies[i], defaults, v);
+    Body body = readListedBody(here, bodies[i], defaults, v);
     if (v.find(body.name) >= 0) here.fail(bodies[i]["name"], "name '" + body.name + "' is used twice");
     try {
       validate(body, static_cast<int>(v.bodies.size()), "body");

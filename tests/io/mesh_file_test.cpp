@@ -217,13 +217,15 @@ TEST_F(MeshFileTest, BrokenFilesWrittenHereGiveErrorsWithThePath) {
        "PLY header holds a byte that is not printable ASCII (3)"},
       {write("high_bytes.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float \xff\xff\nend_header\n0\n"),
        "PLY header holds a byte that is not printable ASCII (255)"},
-      {write("glued_end.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\x10" "5\n"),
+      {write("glued_end.ply",
+             "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\x10"
+             "5\n"),
        "PLY header: end_header must end its line"},
       {write("bad_number.stl", "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0\n"),
        "cannot read the mesh file: "},
       {write("unknown.xyz123", "1 2 3\n"), "cannot read the mesh file: "},
       {dir() / "missing.obj", "file not found"},
-      {dir(), "is a directory"},
+      {dir(), "not a regular file (a directory)"},
   };
   for (const auto& [path, expected] : cases) {
     TerrainBuilder builder;

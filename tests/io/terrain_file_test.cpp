@@ -306,5 +306,50 @@ TEST_F(TerrainFileTest, ErrorsInReferencedFilesNameBothFiles) {
               AllOf(HasSubstr(at(4, 24)), HasSubstr((dir() / "flat.obj").string() + ": point cloud: 3 vertices")));
 }
 
+// Sizes of 1e300 lost the rest of a piece to rounding and surfaced as
+// "all vertices coincide"; they are refused with the value and the range.
+TEST_F(TerrainFileTest, SizesBeyondThePhysicalRangeAreRefusedWithTheValue) {
+  const std::string head = std::string(kMaterials) + "pieces:\n";
+  const std::string beyond = " m is beyond the largest length a description may give, 1e+06 m (wtc::kMaxLengthM)";
+  EXPECT_THAT(loadError(head + "  - {type: box, size: [1e300, 1, 1]}\n"),
+              AllOf(HasSubstr(at(4, 5) + "pieces[0] (box): wtc::addBox: size.x = 1e+300" + beyond),
+                    ::testing::Not(HasSubstr("coincide"))));
+  EXPECT_THAT(loadError(head + "  - {type: slab, size: [60, 60], thickness: 1e300}\n"),
+              HasSubstr("pieces[0] (slab): wtc::addSlab: thickness = 1e+300" + beyond));
+  EXPECT_THAT(loadError(head + "  - {type: ledge, height: 1e300}\n"),
+              HasSubstr("pieces[0] (ledge): wtc::addLedge: height = 1e+300" + beyond));
+  EXPECT_THAT(loadError(head + "  - {type: box, size: [1, 1, 1], translation: [1e300, 0, 0]}\n"),
+              HasSubstr("pieces[0] (box): wtc::addBox: pose_WL places it at (1e+300, 0, 0) m, beyond 1e+06 m of the "
+                        "origin (wtc::kMaxLengthM)"));
+  EXPECT_THAT(loadError(head + "  - {type: heightfield, spacing: 1, heights: [[0, 0], [0, 1e300]]}\n"),
+              HasSubstr("pieces[0] (heightfield): wtc::Heightfield: height at (row 0, col 1) = 1e+300" + beyond));
+  EXPECT_THAT(loadError(head + "  - {type: heightfield, spacing: 1e300, heights: [[0, 0], [0, 0]]}\n"),
+              HasSubstr("wtc::Heightfield: spacing_x = 1e+300" + beyond));
+}
+
+// A mesh whose triangles all had zero area added nothing without a word
+// (alone, the terrain then had "no pieces"); one with some is warned of.
+TEST_F(TerrainFileTest, DegenerateMeshTrianglesAreWarnedOfAndAMeshOfNothingElseIsAnError) {
+  // Case: two zero-area triangles (a repeated vertex, three collinear ones).
+  const auto flat = write("flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nf 1 2 3\nf 1 4 4\n");
+  EXPECT_THAT(loadError(std::string(kMaterials) + "pieces:\n  - {type: mesh, file: flat.obj}\n"),
+              AllOf(HasSubstr(at(4, 24) + "pieces[0] (mesh): " + flat.string() +
+                              ": all 2 of its 2 triangles are degenerate (zero area: collinear or repeated vertices), "
+                              "so the mesh holds no ground"),
+                    ::testing::Not(HasSubstr("no pieces"))));
+  // Case: one of three skipped: loaded, and said in the report's warnings.
+  write("some.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nf 1 2 3\nf 1 3 4\nf 1 2 5\n");
+  const auto yaml = write("terrain.yaml", std::string(kMaterials) +
+                                              "pieces:\n  - {type: box, size: [1, 1, 1]}\n"
+                                              "  - {type: mesh, file: some.obj}\n");
+  TerrainBuilder builder;
+  const TerrainFileReport report = addTerrainFile(builder, yaml);
+  EXPECT_EQ(report.pieces.count, 3);
+  EXPECT_EQ(report.degenerate_triangles_skipped, 1);
+  ASSERT_EQ(report.warnings.size(), 1u);
+  EXPECT_EQ(report.warnings[0], at(5, 5) + "pieces[1] (mesh): " + (dir() / "some.obj").string() +
+                                    ": 1 of 3 triangles are degenerate (zero area), skipped");
+}
+
 }  // namespace
 }  // namespace wtc::io

@@ -159,5 +159,60 @@ TEST(SceneFileTest, BadScenesAreRefusedWithFileLineKeyAndProblem) {
               HasSubstr("expected 1 to 6 polynomial coefficients"));
 }
 
+// An override's value has no line in the scene: its errors were placed at
+// 1:1; they name the override.
+TEST(SceneFileTest, ErrorsInAnOverridesValueNameTheOverride) {
+  EXPECT_THAT(errorOf(kMinimal, {parseOverride("dt=-1")}),
+              testing::AllOf(HasSubstr("wtc_scene_file_test.yaml.tmp: --set dt=-1: dt: must be > 0 s"),
+                             testing::Not(HasSubstr(":1:1:"))));
+  EXPECT_THAT(
+      errorOf(kMinimal, {parseOverride("vehicle={file: ../vehicles/six_wheel_robot.yaml, translation: [0, x, 0]}")}),
+      HasSubstr(": --set vehicle={file: ../vehicles/six_wheel_robot.yaml, translation: [0, x, 0]}: vehicle: "
+                "translation[1]: 'x' is not a number"));
+  // A value the override did not touch keeps its line.
+  EXPECT_THAT(errorOf(kMinimal + "dt: -1\n", {parseOverride("duration=2")}),
+              HasSubstr("wtc_scene_file_test.yaml.tmp:6:5: dt: must be > 0 s"));
+}
+
+// A file the scene names that is missing or broken: the scene's line, column
+// and key, then the file's own message.
+TEST(SceneFileTest, AReferencedFileThatFailsIsNamedAtTheScenesLineAndKey) {
+  const std::string missing_terrain =
+      "name: t\nduration: 1\nterrain: nowhere.yaml\nvehicle: ../vehicles/six_wheel_robot.yaml\n"
+      "controller: {type: none}\n";
+  EXPECT_THAT(errorOf(missing_terrain), HasSubstr("wtc_scene_file_test.yaml.tmp:3:10: terrain: " +
+                                                  (kScenes / "nowhere.yaml").string() + ": file not found"));
+  const std::string missing_vehicle =
+      "name: t\nduration: 1\nterrain: ../terrains/flat.yaml\nvehicle: {file: ghost.yaml, translation: [0, 0, 0]}\n"
+      "controller: {type: none}\n";
+  EXPECT_THAT(errorOf(missing_vehicle), HasSubstr("wtc_scene_file_test.yaml.tmp:4:17: vehicle.file: " +
+                                                  (kScenes / "ghost.yaml").string() + ": file not found"));
+  EXPECT_THAT(errorOf(kMinimal, {parseOverride("vehicle=ghost.yaml")}),
+              HasSubstr("wtc_scene_file_test.yaml.tmp: --set vehicle=ghost.yaml: vehicle: " +
+                        (kScenes / "ghost.yaml").string() + ": file not found"));
+}
+
+// Degenerate triangles a mesh skipped reach the scene's warnings (and so
+// the run's summary); a mesh of nothing else is an error.
+TEST(SceneFileTest, SkippedDegenerateTrianglesAreSceneWarnings) {
+  const fs::path mesh = kScenes / "wtc_scene_file_test_mesh.obj.tmp";
+  // Two ground triangles and one whose vertices are collinear.
+  std::ofstream(mesh) << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nf 1 2 3\nf 1 3 4\nf 1 2 5\n";
+  const std::string scene =
+      "name: t\nduration: 1\nvehicle: ../vehicles/six_wheel_robot.yaml\ncontroller: {type: none}\n"
+      "terrain:\n  materials: {a: {}}\n  pieces:\n    - {type: mesh, file: " +
+      mesh.string() + ", translation: [0, 0, 0], thickness: 0.1}\n";
+  const fs::path path = kScenes / "wtc_scene_file_test.yaml.tmp";
+  std::ofstream(path) << scene;
+  const sim::Scene s = loadScene(path);
+  ASSERT_EQ(s.warnings.size(), 1u);
+  EXPECT_THAT(s.warnings[0], HasSubstr(path.string() + ":8:7: pieces[0] (mesh): " + mesh.string() +
+                                       ": 1 of 3 triangles are degenerate (zero area), skipped"));
+  std::ofstream(mesh) << "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n";
+  EXPECT_THAT(errorOf(scene), HasSubstr(mesh.string() + ": all 1 of its 1 triangles are degenerate"));
+  fs::remove(mesh);
+  fs::remove(path);
+}
+
 }  // namespace
 }  // namespace wtc::sim

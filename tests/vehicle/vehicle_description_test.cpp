@@ -100,5 +100,29 @@ TEST(VehicleDescriptionTest, BadValuesAreRefusedByBodyAndField) {
   EXPECT_THAT(errorOf(v), HasSubstr("stiffness"));
 }
 
+// A size of 0 or 1e300 makes an inertia of 0 or inf; the size is what was
+// typed, so the size is named (it used to be "inertia: (0.0044, 0, 0.0044)").
+TEST(VehicleDescriptionTest, SizesAreNamedBeforeTheInertiaTheyMake) {
+  for (const double radius : {0.0, 1e300}) {
+    VehicleDescription v = twoBodies();
+    Body& wheel = v.bodies[1];
+    wheel.wheel = Wheel{};
+    wheel.wheel->geometry.free_radius = radius;
+    wheel.shape = Shape{.kind = Shape::Kind::kCylinder, .radius = radius, .length = 0.12, .cylinder_axis = 1};
+    wheel.inertia = solidInertia(wheel.shape, wheel.mass);
+    EXPECT_THAT(errorOf(v),
+                testing::AllOf(HasSubstr("body 'child': wheel free_radius = "), testing::Not(HasSubstr("inertia"))))
+        << radius;
+  }
+  VehicleDescription v = twoBodies();
+  v.bodies[0].shape = Shape{.kind = Shape::Kind::kBox, .box_size = {1e300, 1, 1}};
+  v.bodies[0].inertia = solidInertia(v.bodies[0].shape, v.bodies[0].mass);
+  EXPECT_THAT(errorOf(v), HasSubstr("body 'root': shape box[0]: 1e+300 m is beyond the largest length a description "
+                                    "may give, 1e+06 m (wtc::kMaxLengthM)"));
+  v = twoBodies();
+  v.bodies[0].pose.translation() = Eigen::Vector3d(0, 2e6, 0);
+  EXPECT_THAT(errorOf(v), HasSubstr("body 'root': translation: (0, 2e+06, 0) m is beyond 1e+06 m of the origin"));
+}
+
 }  // namespace
 }  // namespace wtc::vehicle

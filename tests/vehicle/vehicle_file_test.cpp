@@ -94,7 +94,7 @@ TEST(VehicleFileTest, BadFilesAreRefusedWithFileLineBodyAndProblem) {
   // Case: a negative radius.
   EXPECT_THAT(errorOfFile(head + "  - {name: w, parent: base, mass: 1, wheel: {radius: -0.2, width: 0.1}, "
                                  "joint: {type: revolute}}\n"),
-              HasSubstr("bodies[1] (w): body: wheel free_radius = -0.2 must be finite and > 0"));
+              HasSubstr(":6:54: bodies[1] (w): wheel.radius: -0.2 must be > 0 (m)"));
   // Case: an unknown joint type, and a drive on a ball joint.
   EXPECT_THAT(errorOfFile(head + "  - {name: a, parent: base, mass: 1, shape: {sphere: 1}, joint: {type: hinge}}\n"),
               HasSubstr("'hinge' is not revolute, prismatic, ball or fixed"));
@@ -113,6 +113,54 @@ TEST(VehicleFileTest, BadFilesAreRefusedWithFileLineBodyAndProblem) {
   } catch (const InvalidInputError& e) {
     EXPECT_THAT(e.what(), HasSubstr("no_such_vehicle.yaml: file not found"));
   }
+}
+
+// A wheel's radius of 0 was reported as its disc's inertia; sizes are now
+// checked at the value, with the value.
+TEST(VehicleFileTest, SizesAreRefusedAtTheirValue) {
+  const std::string head = "name: v\nbodies:\n  - name: base\n    mass: 10\n    shape: {box: [1, 1, 1]}\n";
+  const std::string wheel =
+      "  - {name: w, parent: base, mass: 1, joint: {type: revolute}, wheel: {width: 0.1, radius: ";
+  EXPECT_THAT(
+      errorOfFile(head + wheel + "0}}\n"),
+      testing::AllOf(HasSubstr("wtc_vehicle_file_test.yaml:6:91: bodies[1] (w): wheel.radius: 0 must be > 0 (m)"),
+                     testing::Not(HasSubstr("inertia"))));
+  EXPECT_THAT(errorOfFile(head + wheel + "1e300}}\n"),
+              HasSubstr(":6:91: bodies[1] (w): wheel.radius: 1e+300 m is beyond the largest length a description may "
+                        "give, 1e+06 m (wtc::kMaxLengthM)"));
+  EXPECT_THAT(errorOfFile("name: v\nbodies:\n  - {name: base, mass: 10, shape: {box: [0.5, 1e300, 1]}}\n"),
+              HasSubstr(":3:47: bodies[0] (base): shape.box[1]: 1e+300 m is beyond the largest length"));
+  EXPECT_THAT(
+      errorOfFile("name: v\nbodies:\n  - {name: base, mass: 10, shape: {cylinder: {radius: 0.1, length: 0}}}\n"),
+      HasSubstr(":3:68: bodies[0] (base): shape.cylinder.length: 0 must be > 0 (m)"));
+}
+
+// Values a wheel inherits from wheel_defaults were read from a copy whose
+// positions were all 1:1; they are named at their line in wheel_defaults,
+// with the wheel that inherited them.
+TEST(VehicleFileTest, ErrorsInInheritedValuesNameTheirLineInWheelDefaultsAndTheWheel) {
+  const std::string defaults = "name: v\nwheel_defaults:\n  mass: 3.7\n  joint: {type: revolute}\n  wheel:\n";
+  const std::string bodies =
+      "bodies:\n  - {name: base, mass: 10, shape: {box: [1, 1, 1]}}\n  - {name: w1, parent: base, wheel: {}}\n";
+  // Case: a word for a radius, a radius of 0, a negative tyre stiffness.
+  EXPECT_THAT(errorOfFile(defaults + "    radius: abc\n    width: 0.1\n" + bodies),
+              HasSubstr("wtc_vehicle_file_test.yaml:6:13: bodies[1] (w1): wheel.radius: 'abc' is not a number "
+                        "(inherited from wheel_defaults by wheel 'w1')"));
+  EXPECT_THAT(errorOfFile(defaults + "    radius: 0\n    width: 0.1\n" + bodies),
+              HasSubstr(":6:13: bodies[1] (w1): wheel.radius: 0 must be > 0 (m) (inherited from wheel_defaults by "
+                        "wheel 'w1')"));
+  EXPECT_THAT(errorOfFile(defaults + "    radius: 0.2\n    width: 0.1\n    tyre: {radial_stiffness: -1}\n" + bodies),
+              HasSubstr(":8:30: bodies[1] (w1): wheel: tyre radial_stiffness = -1 must be finite and > 0 (N/m) "
+                        "(inherited from wheel_defaults by wheel 'w1')"));
+  // Case: the same mistake made by the wheel itself is at its own line, not inherited.
+  EXPECT_THAT(errorOfFile(defaults + "    radius: 0.2\n    width: 0.1\n" +
+                          "bodies:\n  - {name: base, mass: 10, shape: {box: [1, 1, 1]}}\n"
+                          "  - {name: w1, parent: base, wheel: {radius: 0}}\n"),
+              testing::AllOf(HasSubstr(":10:46: bodies[1] (w1): wheel.radius: 0 must be > 0 (m)"),
+                             testing::Not(HasSubstr("inherited"))));
+  // Case: a key misspelt in wheel_defaults, at its line there.
+  EXPECT_THAT(errorOfFile(defaults + "    radius: 0.2\n    width: 0.1\n  mas: 2\n" + bodies),
+              HasSubstr(":8:3: bodies[1] (w1): unknown key 'mas'"));
 }
 
 }  // namespace

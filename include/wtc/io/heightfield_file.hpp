@@ -20,7 +20,9 @@
 //
 // Errors: InvalidInputError whose message starts with "<path>:<line>:<column>:"
 // (1-based, column in characters) wherever a position is known, e.g.
-// "ground.csv:3:9: 'abc' is not a number (row 3, value 2)".
+// "ground.csv:3:9: 'abc' is not a number (row 3, value 2)"; a path that is
+// not a regular file, or a file over kMaxDataFileBytes
+// (wtc/io/file_limits.hpp), is refused by name before it is read.
 #include <Eigen/Core>
 #include <filesystem>
 

@@ -13,7 +13,9 @@
 // about x.
 //
 // Errors: InvalidInputError whose message starts with the path, for a
-// missing file, an OFF, PLY or binary STL header declaring more vertices,
+// missing file, a path that is not a regular file or a file over
+// kMaxDataFileBytes (wtc/io/file_limits.hpp; the same for every file assimp
+// opens for it, an OBJ's .mtl, a glTF's .bin), an OFF, PLY or binary STL header declaring more vertices,
 // faces or triangles than the file's size can hold (checked before assimp
 // allocates for them), a file assimp cannot read or validate (its error string is
 // included), an empty scene (no meshes, or meshes without vertices), a
@@ -47,7 +49,10 @@ struct MeshFileContents {
 /// Reads the file. Throws InvalidInputError (see above).
 MeshFileContents readMeshFile(const std::filesystem::path& path, const MeshFileOptions& options = {});
 
-/// Reads the file and adds every part to `builder`; returns the totals.
+/// Reads the file and adds every part to `builder`; returns the totals
+/// (degenerate_skipped: the zero-area triangles skipped, for the caller to
+/// report). Throws, besides readMeshFile's errors, "<path>: all 12 of its
+/// 12 triangles are degenerate ..." when no triangle is left.
 MeshBuildReport addMeshFile(TerrainBuilder& builder, const std::filesystem::path& path, MaterialId material,
                             const MeshFileOptions& options = {});
 

@@ -23,7 +23,12 @@
 // "ledge.yaml:12:13: pieces[0] (ledge): height: 'tall' is not a number";
 // a builder's complaint is reported at its piece, and errors in a
 // referenced CSV/PGM/mesh file carry that file's own position after it.
+// A key given twice in a mapping is an error; a mesh whose triangles all
+// have zero area is an error, one with some gets a warning
+// (TerrainFileReport::warnings).
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "wtc/terrain/terrain.hpp"
 #include "wtc/terrain/terrain_primitives.hpp"
@@ -35,6 +40,11 @@ struct TerrainFileReport {
   int materials = 0;                              ///< Materials registered.
   PieceRange pieces;                              ///< Pieces added (all of them, in file order).
   std::int64_t degenerate_triangles_skipped = 0;  ///< From mesh pieces.
+  /// What the user should hear of, one line each, placed like errors:
+  /// "t.yaml:5:5: pieces[0] (mesh): rock.obj: 3 of 12 triangles are
+  /// degenerate (zero area), skipped". wtc-sim adds them to the run's
+  /// warnings (summary.json, stderr).
+  std::vector<std::string> warnings;
 };
 
 /// Adds the file's materials and pieces to `builder`.

@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "wtc/sim/engine.hpp"
 #include "wtc/vehicle/controller.hpp"
@@ -47,6 +48,9 @@ struct Scene {
   OutputSettings output;
   SuccessCriteria success;
   std::map<std::string, double> parameters;  ///< The scene's named numbers, after overrides.
+  /// What reading the scene found that the user should hear of (a mesh's
+  /// degenerate triangles skipped); a run's summary starts with them.
+  std::vector<std::string> warnings;
 };
 
 }  // namespace wtc::sim

@@ -21,8 +21,13 @@
 // change the document before it is read: the path's parts are map keys or
 // list indices, the value is YAML (numbers, strings, lists); a first part
 // that is not a key of the document but a parameter's name sets that
-// parameter. Errors are InvalidInputError "<file>:<line>:<col>: <key>: <problem>"
-// (an override's errors name the override).
+// parameter. Errors are InvalidInputError "<file>:<line>:<col>: <key>: <problem>";
+// an error in an override's value names the override instead of a line
+// ("scene.yaml: --set dt=-1: dt: must be > 0 s"), and a terrain or vehicle
+// file that fails is named at the scene's line and key, then its own
+// message ("scene.yaml:4:10: vehicle: /dev/zero: not a regular file ...").
+// Files: regular files within wtc/io/file_limits.hpp's caps; no key twice
+// in a mapping (docs/bad-input.md).
 #include <filesystem>
 #include <span>
 #include <string>

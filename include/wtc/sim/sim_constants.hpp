@@ -1,6 +1,8 @@
 #pragma once
 // The constants of whole-vehicle runs (wtc::sim), with units, in one place;
 // the core's physical constants are in wtc/base/constants.hpp.
+#include "wtc/base/constants.hpp"
+
 namespace wtc::sim {
 
 /// Coulomb friction of a vehicle's non-wheel bodies (chassis, carriers)
@@ -12,9 +14,10 @@ inline constexpr double kBodyGroundFriction = 0.6;
 /// explosion), and a run stops there as it does at a non-finite state:
 /// no vehicle of WTC's comes near them, and ODE's hash space aborts the
 /// process on bounding boxes beyond about 1e9 m (an assertion in
-/// collision_space.cpp), which a run that went on would reach.
+/// collision_space.cpp), which a run that went on would reach. The
+/// distance is the largest a description may give (kMaxLengthM).
 inline constexpr double kDivergedSpeedMps = 1e3;
 inline constexpr double kDivergedAngularSpeedRadps = 1e4;
-inline constexpr double kDivergedDistanceM = 1e6;
+inline constexpr double kDivergedDistanceM = kMaxLengthM;
 
 }  // namespace wtc::sim

@@ -25,7 +25,10 @@
 // translation), axis, limits: [lower, upper] (rad or m) or limits_deg
 // (revolute), drive: {max_effort, max_speed, position_gain}}.
 // Errors: InvalidInputError "<file>:<line>:<column>: bodies[3] (front_slider): joint: ..."
-// at the offending node; unknown keys are errors.
+// at the offending node; unknown keys and keys given twice are errors. A
+// value a wheel inherits is named at its line in wheel_defaults, "(inherited
+// from wheel_defaults by wheel 'front_left_wheel')". Sizes (wheel radius and
+// width, shapes) must be > 0 and at most wtc::kMaxLengthM.
 #include <filesystem>
 
 #include "wtc/vehicle/vehicle_description.hpp"
