@@ -13,7 +13,6 @@
 #include "app_files.hpp"
 #include "wtc-sim/run_directory.hpp"
 #include "wtc/error.hpp"
-#include "wtc/io/content_hash.hpp"
 #include "wtc/io/run_summary_file.hpp"
 #include "wtc/io/scene_file.hpp"
 #include "wtc/sim/make_engine.hpp"

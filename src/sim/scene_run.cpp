@@ -83,8 +83,8 @@ class BoundsWatch {
         where_ = "below the terrain's lowest point";
       }
       if (first && worst_ > kTerrainBoundsMarginM) {
-        left_ =
-            "body " + vehicle_.bodies[i].name + "'s centre went " + where_ + " at t = " + mmOrDeg(state.time, 4) + " s";
+        left_ = "body " + vehicle_.bodies[i].name + "'s centre went " + std::string(where_) +
+                " at t = " + mmOrDeg(state.time, 4) + " s";
       }
     }
   }
@@ -97,7 +97,8 @@ class BoundsWatch {
   Aabb box_;
   const vehicle::VehicleDescription& vehicle_;
   double worst_ = 0.0;
-  std::string where_, left_;
+  const char* where_ = "";
+  std::string left_;
 };
 
 // A number for a failed criterion's line: 4 significant digits.
@@ -283,7 +284,7 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
   const double energy_limit = tolerance::kEnergyGrowthHeightM * v.totalMass() * kGravityMps2;
   if (energy.maxGrowth() > energy_limit) {
     fail("energy", energy_limit, energy.maxGrowth(), "J",
-         "the vehicle's energy grew beyond its start plus the drives' work, most at t = " +
+         "the vehicle's energy grew beyond its start plus the drives' work, the most at t = " +
              mmOrDeg(energy.maxGrowthTime(), 4) + " s");
   }
   if (bounds.worst() > kTerrainBoundsMarginM) fail("bounds", kTerrainBoundsMarginM, bounds.worst(), "m", bounds.left());
