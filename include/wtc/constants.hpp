@@ -41,4 +41,10 @@ namespace wtc {
 /// value at fault. Checked where the value is read, with the value named.
 inline constexpr double kMaxLengthM = kDivergedDistanceM;
 
+/// A body's centre may go this far (m) beyond the terrain's bounding box,
+/// horizontally, or below its lowest point, before the run counts as having
+/// left its terrain (not a success): a vehicle at the terrain's edge has
+/// centres beyond it by less than its own length.
+inline constexpr double kTerrainBoundsMarginM = 2.0;
+
 }  // namespace wtc
