@@ -11,8 +11,8 @@
 #include <iostream>
 
 #include "app_files.hpp"
+#include "wtc-sim/run_directory.hpp"
 #include "wtc/base/error.hpp"
-#include "io/content_hash.hpp"
 #include "wtc/sim/run_summary_file.hpp"
 #include "wtc/sim/scene_file.hpp"
 #include "wtc/sim/make_engine.hpp"
@@ -27,43 +27,31 @@ std::atomic<bool> g_stop{false};
 extern "C" void onSignal(int) { g_stop = true; }
 
 // A directory for this run that no earlier run used: `requested` if given
-// (it must not exist or be empty; with `redo_unfinished`, one an unfinished
-// run left is emptied), else runs/<scene>_<engine>_<mode>[_N].
-fs::path outputDirectory(const std::string& requested, bool redo_unfinished, const wtc::sim::RunSummary& names) {
+// (it must not exist or be empty; with --skip-done, kRedo: the files of
+// the unfinished run of the same settings it holds are removed, and
+// nothing else: run_directory.hpp), else runs/<scene>_<engine>_<mode>[_N].
+// Its marker is written before anything else.
+fs::path outputDirectory(const std::string& requested, wtc::apps::SkipDone skip, const std::string& key,
+                         const wtc::sim::RunSummary& names, const std::string& scene_file) {
+  fs::path dir;
   if (!requested.empty()) {
-    const fs::path dir(requested);
-    if (fs::exists(dir) && !fs::is_directory(dir)) {
-      throw wtc::InvalidInputError(
-          "--out " + requested +
-          (fs::is_regular_file(dir) ? ": is a file, not a directory" : ": exists and is not a directory") +
-          " (give a new or empty directory)");
-    }
-    if (fs::exists(dir) && !fs::is_empty(dir)) {
-      if (!redo_unfinished) {
-        throw wtc::InvalidInputError("--out " + requested +
-                                     ": the directory exists and is not empty (an earlier run's?)");
-      }
-      for (const fs::directory_entry& e : fs::directory_iterator(dir)) fs::remove_all(e.path());
+    dir = requested;
+    wtc::apps::requireDirectoryOrNothing(requested);
+    if (skip == wtc::apps::SkipDone::kRedo) {
+      wtc::apps::removeRunFiles(dir);
+    } else if (fs::exists(dir) && !fs::is_empty(dir)) {
+      throw wtc::InvalidInputError("--out " + requested +
+                                   ": the directory exists and is not empty (an earlier run's?)");
     }
     fs::create_directories(dir);
-    return dir;
+  } else {
+    const std::string base = "runs/" + names.scene + "_" + names.engine + "_" + names.mode;
+    dir = base;
+    for (int n = 2; fs::exists(dir); ++n) dir = base + "_" + std::to_string(n);
+    fs::create_directories(dir);
   }
-  const std::string base = "runs/" + names.scene + "_" + names.engine + "_" + names.mode;
-  fs::path dir = base;
-  for (int n = 2; fs::exists(dir); ++n) dir = base + "_" + std::to_string(n);
-  fs::create_directories(dir);
+  wtc::apps::writeMarker(dir, key, scene_file, names.scene, names.engine, names.mode);
   return dir;
-}
-
-// This build of wtc-sim (its executable's digest), recorded in each summary
-// so that results of different builds are not mixed unnoticed; empty if the
-// file cannot be read.
-std::string programIdentity() {
-  try {
-    return wtc::io::fileDigest("/proc/self/exe");
-  } catch (const wtc::InvalidInputError&) {
-    return {};
-  }
 }
 
 // The replay page beside the run's data, with three.js copied in so the
@@ -100,26 +88,32 @@ int main(int argc, char** argv) {
   app.add_flag("--quiet", quiet, "no progress bar, no summary on stdout");
   app.add_flag("--no-plots", no_plots, "skip the figures");
   app.add_flag("--skip-done", skip_done,
-               "with --out: do nothing if that directory holds a run that ended, redo an unfinished one "
-               "(job lists: a batch resumes where it stopped)");
-  CLI11_PARSE(app, argc, argv);
+               "with --out: do nothing if that directory holds a run of these settings that ended, redo an "
+               "unfinished one (job lists: a batch resumes where it stopped); a directory holding anything "
+               "but a run of its own (its .wtc-run marker) is refused, and nothing is removed");
+  wtc::apps::addVersionFlag(app, "wtc-sim");
+  if (const auto status = wtc::apps::parseCommandLine(app, argc, argv)) return *status;
   if (skip_done && out.empty()) {
     std::cerr << "wtc-sim: --skip-done needs --out (the directory that holds the run)\n";
     return 2;
   }
-  if (skip_done && wtc::sim::runEnded(out)) {
-    if (!quiet) std::printf("%s: finished earlier, skipped\n", out.c_str());
-    return 0;
-  }
 
+  std::vector<wtc::sim::Override> overrides;
+  wtc::apps::SkipDone skip = wtc::apps::SkipDone::kRun;
   wtc::sim::Scene scene;
+  std::string key;
   try {
-    std::vector<wtc::sim::Override> overrides;
     if (!engine.empty()) overrides.push_back({"engine", engine});
     if (!mode.empty()) overrides.push_back({"mode", mode});
     if (app.count("--dt")) overrides.push_back({"dt", wtc::formatNumber(dt)});
     if (app.count("--duration")) overrides.push_back({"duration", wtc::formatNumber(duration)});
     for (const std::string& s : sets) overrides.push_back(wtc::sim::parseOverride(s));
+    key = wtc::apps::settingsKey(scene_file, overrides);
+    if (skip_done) skip = wtc::apps::skipDone(out, key);
+    if (skip == wtc::apps::SkipDone::kSkip) {
+      if (!quiet) std::printf("%s: finished earlier, skipped\n", out.c_str());
+      return 0;
+    }
     scene = wtc::sim::loadScene(scene_file, overrides);
   } catch (const std::exception& e) {
     std::cerr << "wtc-sim: " << e.what() << '\n';
@@ -132,7 +126,7 @@ int main(int argc, char** argv) {
     names.scene = scene.name;
     names.engine = std::string(wtc::sim::engineName(scene.engine.kind));
     names.mode = std::string(wtc::sim::modeName(scene.engine));
-    const fs::path dir = outputDirectory(out, skip_done, names);
+    const fs::path dir = outputDirectory(out, skip, key, names, fs::absolute(scene_file).string());
 
     std::signal(SIGINT, onSignal);
     std::signal(SIGTERM, onSignal);
@@ -157,7 +151,7 @@ int main(int argc, char** argv) {
     wtc::sim::Replay replay(scene, scene.output.replay_fps);
     options.replay = &replay;
     wtc::sim::RunSummary summary = wtc::sim::runScene(scene, *engine_ptr, options);
-    summary.program = programIdentity();
+    summary.program = wtc::apps::programIdentity();
     if (bar) std::fprintf(stderr, "\n");
     wtc::sim::writeRunSummary(dir / "summary.json", summary);
     replay.write(dir / "replay_data.js", summary);
@@ -168,13 +162,28 @@ int main(int argc, char** argv) {
 
     std::string figures = "skipped (--no-plots)";
     if (!no_plots && scene.output.plots) {
-      figures = wtc::apps::runPlotScript(wtc::apps::ownFile("wtc-sim", "plot_run.py"), dir)
+      // The drives on sliding joints: their travel (m) and force (N) get axes of their own.
+      std::string prismatic;
+      for (const int b : scene.vehicle.actuated()) {
+        if (scene.vehicle.bodies[b].joint.type != wtc::vehicle::JointType::kPrismatic) continue;
+        prismatic += (prismatic.empty() ? "" : ",") + scene.vehicle.bodies[b].name;
+      }
+      figures = wtc::apps::runPlotScript(wtc::apps::ownFile("wtc-sim", "plot_run.py"), dir, {"--prismatic", prismatic})
                     ? "drawn"
                     : "not drawn (python3 with matplotlib is needed; see above)";
     }
     if (!quiet) {
+      char headline[64] = "success";
+      if (summary.interrupted) {
+        std::snprintf(headline, sizeof headline, "INTERRUPTED at t = %.3f s", summary.sim_time);
+      } else if (!summary.success) {
+        std::snprintf(headline, sizeof headline, "FAILED");
+      }
       std::printf("%s in %s (%s mode, dt %g s): %s\n", summary.scene.c_str(), summary.engine.c_str(),
-                  summary.mode.c_str(), summary.dt, summary.success ? "success" : "FAILED");
+                  summary.mode.c_str(), summary.dt, headline);
+      for (const wtc::sim::FailedCriterion& f : summary.failed_criteria) {
+        std::printf("  failed: %s\n", wtc::sim::describe(f).c_str());
+      }
       std::printf("  %.3f s simulated in %.3f s wall: %.1fx real time, %llu steps, %.1f %% of the wall time in WTC\n",
                   summary.sim_time, summary.wall_time, summary.real_time_factor,
                   static_cast<unsigned long long>(summary.steps), 100.0 * summary.wtcShare());

@@ -63,19 +63,21 @@ int main(int argc, char** argv) {
     sub->add_option("--out", out, "the study's directory (default study/<name>)");
     sub->add_flag("--no-plots", no_plots, "skip the figure");
   }
-  app.get_subcommand("run")
-      ->add_option("--workers", workers, "simulations at once (default: the cores)")
-      ->check(CLI::PositiveNumber);
+  app.get_subcommand("run")->add_option("--workers", workers, "simulations at once, at least 1 (default: the cores)");
   for (const char* name : {"run", "jobs"}) {
     app.get_subcommand(name)->add_option("--wtc-sim", wtc_sim,
                                          "the wtc-sim that makes the runs (default: the one beside)");
   }
-  CLI11_PARSE(app, argc, argv);
+  wtc::apps::addVersionFlag(app, "wtc-study");
+  if (const auto status = wtc::apps::parseCommandLine(app, argc, argv)) return *status;
+  if (app.got_subcommand("run") && workers < 1) {
+    std::cerr << "wtc-study: --workers " << workers << ": must be at least 1 (simulations at once)\n";
+    return 2;
+  }
 
   try {
     const wtc::study::StudyPlan plan = wtc::study::loadStudyPlan(study_file);
     const fs::path dir = out.empty() ? fs::path("study") / plan.name : fs::path(out);
-    fs::create_directories(dir);
     if (app.got_subcommand("run")) {
       std::printf("wtc-study: %s: %zu runs on %d workers into %s\n", plan.name.c_str(), plan.runs.size(), workers,
                   dir.c_str());
@@ -84,18 +86,24 @@ int main(int argc, char** argv) {
           std::printf("[%zu/%zu] %s %s: finished earlier\n", d.done, d.total, d.run.scenario.c_str(),
                       d.run.label.c_str());
         } else {
-          const char* outcome = d.summary->crashed ? "CRASHED" : d.summary->success ? "success" : "FAILED";
+          std::string outcome = d.summary->crashed ? "CRASHED" : d.summary->success ? "success" : "FAILED";
+          const auto& failed = d.summary->failed_criteria;  // "FAILED (min_distance, energy)"
+          for (std::size_t i = 0; i < failed.size(); ++i)
+            outcome.append(i == 0 ? " (" : ", ").append(failed[i].criterion);
+          if (!failed.empty()) outcome.append(")");
           std::printf("[%zu/%zu] %s %s: %s, %.1f s wall, %.1fx real time\n", d.done, d.total, d.run.scenario.c_str(),
-                      d.run.label.c_str(), outcome, d.summary->wall_time, d.summary->real_time_factor);
+                      d.run.label.c_str(), outcome.c_str(), d.summary->wall_time, d.summary->real_time_factor);
         }
         std::fflush(stdout);
       });
       return gather(plan, dir, !no_plots);
     }
     if (app.got_subcommand("jobs")) {
+      wtc::study::checkStudyRuns(plan);
+      const fs::path sim = wtcSim(wtc_sim);
+      fs::create_directories(dir);
       std::ofstream lines(dir / "jobs.txt");
-      for (const std::string& line : wtc::study::jobLines(plan, fs::absolute(dir), wtcSim(wtc_sim)))
-        lines << line << '\n';
+      for (const std::string& line : wtc::study::jobLines(plan, fs::absolute(dir), sim)) lines << line << '\n';
       if (!lines) throw wtc::InvalidInputError("cannot write " + (dir / "jobs.txt").string());
       std::printf("wtc-study: %zu jobs in %s\n", plan.runs.size(), (dir / "jobs.txt").c_str());
       return 0;

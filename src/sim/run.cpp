@@ -22,7 +22,11 @@ bool beyondBounds(const vehicle::BodyKinematics& k) {
 }  // namespace
 
 Run::Run(Engine& engine, vehicle::Controller* controller, const vehicle::VehicleEffects& effects)
-    : engine_(engine), controller_(controller), effects_(effects), actuated_(engine.vehicle().actuated()) {
+    : engine_(engine),
+      controller_(controller),
+      effects_(effects),
+      actuated_(engine.vehicle().actuated()),
+      energy_(engine.vehicle()) {
   const std::size_t n = engine.vehicle().bodies.size();
   state_.bodies.resize(n);
   state_.joint_position.resize(n);
@@ -55,6 +59,7 @@ void Run::step() {
   state_.time = static_cast<double>(steps_) * engine_.settings().step_seconds;
   for (const int b : actuated_) vehicle::record(drives_[b], targets_[b], engine_.motorEffort(b));
   sense();
+  energy_.step(engine_, state_, drives_);
 }
 
 void Run::sense() {

@@ -3,6 +3,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <optional>
 #include <set>
 
 #include "wtc/base/error.hpp"
@@ -33,6 +34,7 @@ const std::set<std::string>& fixedKeys() {
                                              "wtc_share",
                                              "steps",
                                              "success",
+                                             "failed_criteria",
                                              "nan",
                                              "diverged",
                                              "interrupted",
@@ -46,6 +48,33 @@ const std::set<std::string>& fixedKeys() {
                                              "wheels",
                                              "note"};
   return keys;
+}
+
+nlohmann::json failedJson(const std::vector<sim::FailedCriterion>& failed) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const sim::FailedCriterion& f : failed) {
+    list.push_back({{"criterion", f.criterion},
+                    {"limit", f.limit ? nlohmann::json(*f.limit) : nlohmann::json(nullptr)},
+                    {"measured", f.measured ? nlohmann::json(*f.measured) : nlohmann::json(nullptr)},
+                    {"unit", f.unit},
+                    {"detail", f.detail}});
+  }
+  return list;
+}
+
+std::vector<sim::FailedCriterion> readFailed(const nlohmann::json& list) {
+  std::vector<sim::FailedCriterion> failed;
+  const auto number = [](const nlohmann::json& j, const char* key) -> std::optional<double> {
+    return j.contains(key) && !j.at(key).is_null() ? std::optional<double>(j.at(key).get<double>()) : std::nullopt;
+  };
+  for (const nlohmann::json& f : list) {
+    failed.push_back({.criterion = f.at("criterion").get<std::string>(),
+                      .limit = number(f, "limit"),
+                      .measured = number(f, "measured"),
+                      .unit = f.value("unit", std::string()),
+                      .detail = f.value("detail", std::string())});
+  }
+  return failed;
 }
 
 }  // namespace
@@ -64,6 +93,7 @@ void writeRunSummary(const std::filesystem::path& file, const sim::RunSummary& s
                       {"wtc_share", s.wtcShare()},
                       {"steps", s.steps},
                       {"success", s.success},
+                      {"failed_criteria", failedJson(s.failed_criteria)},
                       {"nan", s.nan},
                       {"diverged", s.diverged},
                       {"interrupted", s.interrupted},
@@ -92,6 +122,13 @@ void writeRunStarted(const std::filesystem::path& file, const sim::Scene& scene)
                    {"status", "running"},
                    {"interrupted", true},
                    {"success", false},
+                   {"failed_criteria",
+                    failedJson({{.criterion = "interrupted",
+                                 .limit = scene.duration_seconds,
+                                 .measured = std::nullopt,
+                                 .unit = "s",
+                                 .detail = "the run has not ended: this summary is the one written at its start (a run "
+                                           "killed before its end leaves it)"}})},
                    {"note", "written when the run started; a run that ends replaces it"}});
 }
 
@@ -103,6 +140,8 @@ void writeRunCrashed(const std::filesystem::path& file, const std::string& reaso
   j["success"] = false;
   j["interrupted"] = false;
   j["warnings"] = std::vector<std::string>{reason};
+  j["failed_criteria"] = failedJson(
+      {{.criterion = "crashed", .limit = std::nullopt, .measured = std::nullopt, .unit = "", .detail = reason}});
   j["note"] = "the run's process died; written by the study's runner";
   for (const char* key : {"scene", "engine", "mode"}) {
     if (!j.contains(key)) j[key] = "?";
@@ -128,6 +167,8 @@ sim::RunSummary readRunSummary(const std::filesystem::path& file) {
     s.crashed = status == "crashed";
     s.interrupted = status != "completed" && !s.crashed;
     if (s.crashed) s.warnings = j.at("warnings").get<std::vector<std::string>>();
+    // Absent from summaries written before runs said why they failed.
+    if (j.contains("failed_criteria")) s.failed_criteria = readFailed(j.at("failed_criteria"));
     if (status != "completed") return s;
     s.sim_time = j.at("sim_time").get<double>();
     s.wall_time = j.at("wall_time").get<double>();

@@ -1,14 +1,16 @@
-// Scene files: the format is in include/wtc/io/scene_file.hpp and
+// Scene files: the format is in include/wtc/sim/scene_file.hpp and
 // scenes/README.md.
 #include "wtc/sim/scene_file.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "io/file_support.hpp"
 #include "io/terrain_node.hpp"
 #include "wtc/base/error.hpp"
 #include "wtc/vehicle/vehicle_file.hpp"
+#include "wtc/sim/step_count.hpp"
 #include "wtc/vehicle/climb_controller.hpp"
 #include "wtc/vehicle/path_controller.hpp"
 #include "wtc/vehicle/schedule_controller.hpp"
@@ -20,6 +22,47 @@ namespace {
 using io::detail::YamlReader;
 
 constexpr const char* kVehicleEffects[] = {"actuator_limits", "hitch_damping"};
+
+// A scene's name becomes part of a directory's name (wtc-sim's default
+// runs/<name>_<engine>_<mode>): letters, digits, '_', '-' and '.', not
+// first, so that it can neither leave the runs directory ('/', "..") nor
+// hide (a leading dot) nor carry a control character; at most this long,
+// so the directory's name stays under the file systems' 255 bytes.
+constexpr std::size_t kMaxNameLength = 128;  // (characters)
+
+// `text` with control characters and bytes above ASCII as \xNN, for a message.
+std::string printable(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte >= 0x20 && byte < 0x7f) {
+      out.push_back(c);
+    } else {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\x%02x", byte);
+      out.append(escaped);
+    }
+  }
+  return out;
+}
+
+// Why `name` cannot name a scene, or "" if it can.
+std::string nameProblem(const std::string& name) {
+  if (name.empty()) return "is empty";
+  if (name.size() > kMaxNameLength) {
+    return "is " + std::to_string(name.size()) + " characters long (at most " + std::to_string(kMaxNameLength) + ")";
+  }
+  if (name.front() == '.') return "starts with '.' (allowed: letters, digits, '_', '-' and '.' but not first)";
+  for (const char c : name) {
+    const bool allowed =
+        (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-' || c == '.';
+    if (!allowed) {
+      return "has the character '" + printable(std::string(1, c)) + "'" +
+             " (allowed: letters, digits, '_', '-' and '.' but not first; it names the output directory)";
+    }
+  }
+  return {};
+}
 
 // Applies one override to the document (a parameter's name as its first
 // part sets that parameter); returns the value's node, now in the document.
@@ -307,6 +350,9 @@ sim::Scene readSceneFile(const std::filesystem::path& path, std::span<const Over
   substitute(in, root, scene.parameters);
 
   scene.name = in.string(in.require(root, "name"), "name");
+  if (const std::string problem = nameProblem(scene.name); !problem.empty()) {
+    in.fail(root["name"], "name: '" + printable(scene.name) + "' " + problem);
+  }
   if (const auto d = YamlReader::get(root, "description")) scene.description = in.string(*d, "description");
   scene.engine.kind = sim::EngineKind::kBullet;
   if (const auto e = YamlReader::get(root, "engine")) {
@@ -331,6 +377,13 @@ sim::Scene readSceneFile(const std::filesystem::path& path, std::span<const Over
   if (!(scene.engine.solver_residual > 0.0)) in.fail(root["solver_residual"], "solver_residual: must be > 0 (m/s)^2");
   scene.duration_seconds = in.number(in.require(root, "duration"), "duration");
   if (!(scene.duration_seconds > 0.0)) in.fail(root["duration"], "duration: must be > 0 s");
+  try {
+    sim::stepCount(scene.duration_seconds, scene.engine.step_seconds);
+  } catch (const InvalidInputError& e) {
+    // Blame the step when it alone is wrong (longer than the run), else the duration.
+    in.fail(scene.engine.step_seconds > scene.duration_seconds && root["dt"] ? root["dt"] : root["duration"],
+            std::string(scene.engine.step_seconds > scene.duration_seconds ? "dt" : "duration") + ": " + e.what());
+  }
 
   const YAML::Node terrain = in.require(root, "terrain");
   TerrainBuilder builder;

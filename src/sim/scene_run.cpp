@@ -13,6 +13,8 @@
 #include "recorder.hpp"
 #include "wtc/sim/replay.hpp"
 #include "wtc/sim/run.hpp"
+#include "wtc/sim/step_count.hpp"
+#include "wtc/base/tolerances.hpp"
 
 namespace wtc::sim {
 namespace {
@@ -58,7 +60,66 @@ class UnstableSpringWatch final : public WheelListener {
   std::vector<std::string> names_, first_;
 };
 
+// How far the vehicle's bodies went beyond the terrain: each centre's
+// horizontal distance outside the terrain's box, and its depth below the
+// box's bottom (m). Past kTerrainBoundsMarginM the vehicle has left the
+// ground it was set on (driven off its edge, fallen through it): whatever
+// it does there is not the scene's.
+class BoundsWatch {
+ public:
+  BoundsWatch(const Terrain& terrain, const vehicle::VehicleDescription& v) : box_(terrain.bounds()), vehicle_(v) {}
+
+  void observe(const vehicle::VehicleState& state) {
+    for (std::size_t i = 0; i < state.bodies.size(); ++i) {
+      const Eigen::Vector3d p = state.bodies[i].pose.translation();
+      const Eigen::Vector2d outside = (box_.min - p).head<2>().cwiseMax((p - box_.max).head<2>()).cwiseMax(0.0);
+      const double beyond = outside.norm(), below = box_.min.z() - p.z();
+      const bool first = worst_ <= kTerrainBoundsMarginM;
+      if (beyond > worst_) {
+        worst_ = beyond;
+        where_ = "beyond the terrain's edge";
+      }
+      if (below > worst_) {
+        worst_ = below;
+        where_ = "below the terrain's lowest point";
+      }
+      if (first && worst_ > kTerrainBoundsMarginM) {
+        left_ = "body " + vehicle_.bodies[i].name + "'s centre went " + std::string(where_) +
+                " at t = " + mmOrDeg(state.time, 4) + " s";
+      }
+    }
+  }
+  /// The farthest a centre went beyond the box or below it (m).
+  double worst() const { return worst_; }
+  /// Which body first went past the margin, where and when.
+  const std::string& left() const { return left_; }
+
+ private:
+  Aabb box_;
+  const vehicle::VehicleDescription& vehicle_;
+  double worst_ = 0.0;
+  const char* where_ = "";
+  std::string left_;
+};
+
+// A number for a failed criterion's line: 4 significant digits.
+std::string shortNumber(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", v);
+  return text;
+}
+
 }  // namespace
+
+std::string describe(const FailedCriterion& f) {
+  // Built with append: GCC 12 warns falsely (-Wrestrict) on chains of std::string +.
+  const std::string unit = f.unit.empty() ? "" : " " + f.unit;
+  std::string text = f.criterion + ":";
+  if (f.measured) text.append(" ").append(shortNumber(*f.measured)).append(unit);
+  if (f.limit) text.append(" (limit ").append(shortNumber(*f.limit)).append(unit).append(")");
+  if (!f.detail.empty()) text.append(f.measured || f.limit ? "; " : " ").append(f.detail);
+  return text;
+}
 
 RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& options) {
   RunSummary summary;
@@ -76,10 +137,12 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
   std::optional<Recorder> recorder;
   if (options.out_dir) recorder.emplace(*options.out_dir, run);
   const vehicle::VehicleDescription& v = scene.vehicle;
-  const auto steps = static_cast<std::uint64_t>(std::llround(scene.duration_seconds / summary.dt));
+  const std::uint64_t steps = stepCount(scene.duration_seconds, summary.dt);  // throws for a step count not whole
   const auto every = std::max<std::uint64_t>(1, std::llround(1.0 / (scene.output.rate_hz * summary.dt)));
   const std::uint64_t progress_every = std::max<std::uint64_t>(1, steps / 100);
   const Eigen::Isometry3d start = run.state().bodies.front().pose;
+  BoundsWatch bounds(*scene.terrain, v);
+  bounds.observe(run.state());
   double max_tilt = 0.0, yaw_change = 0.0, last_yaw = yawRad(start);
 
   std::vector<double> effort_sum(v.bodies.size(), 0.0);
@@ -100,6 +163,7 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
     if (options.stop != nullptr && options.stop->load()) break;
     run.step();
     if (run.nonFinite() || run.diverged()) break;
+    bounds.observe(run.state());
     const Eigen::Isometry3d& pose = run.state().bodies.front().pose;
     for (std::size_t i = 0; i < v.bodies.size(); ++i) {
       if (v.bodies[i].parent < 0) max_tilt = std::max(max_tilt, tiltRad(run.state().bodies[i].pose));
@@ -199,10 +263,42 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
   double lowest_wheel = std::numeric_limits<double>::infinity();
   for (const int w : v.wheels()) lowest_wheel = std::min(lowest_wheel, run.state().bodies[w].pose.translation().z());
   if (!v.wheels().empty()) summary.fields["lowest_wheel_height_m"] = lowest_wheel;
-  summary.success = !summary.nan && !summary.diverged && !summary.interrupted && !controller_failed &&
-                    (!c.min_wheel_height || lowest_wheel >= *c.min_wheel_height) &&
-                    max_tilt * kDegPerRad <= c.max_tilt_deg && (!c.min_distance || distance >= *c.min_distance) &&
-                    (!c.max_distance || distance <= *c.max_distance);
+
+  // Why the run is not a success, if it is not: what ended it early, then
+  // what it did at any time (tilt, controller, energy, bounds), then, for a
+  // run that reached its end, the criteria judged there.
+  std::vector<FailedCriterion>& failed = summary.failed_criteria;
+  const auto fail = [&failed](std::string criterion, std::optional<double> limit, std::optional<double> measured,
+                              std::string unit, std::string detail) {
+    failed.push_back({std::move(criterion), limit, measured, std::move(unit), std::move(detail)});
+  };
+  const std::string at = "at t = " + mmOrDeg(run.time(), 4) + " s";
+  if (summary.nan) fail("nan", {}, {}, "", "a body state went non-finite " + at);
+  if (summary.diverged) {
+    fail("diverged", {}, {}, "",
+         "a body went beyond " + formatNumber(kDivergedSpeedMps) + " m/s, " + formatNumber(kDivergedAngularSpeedRadps) +
+             " rad/s or " + formatNumber(kDivergedDistanceM) + " m " + at);
+  }
+  if (summary.interrupted) fail("interrupted", scene.duration_seconds, summary.sim_time, "s", "stopped " + at);
+  if (max_tilt * kDegPerRad > c.max_tilt_deg) fail("max_tilt_deg", c.max_tilt_deg, max_tilt * kDegPerRad, "deg", "");
+  if (controller_failed) fail("controller", {}, {}, "", controller->failure());
+  const EnergyBalance& energy = run.energyBalance();
+  const double energy_limit = tolerance::kEnergyGrowthHeightM * v.totalMass() * kGravityMps2;
+  if (energy.maxGrowth() > energy_limit) {
+    fail("energy", energy_limit, energy.maxGrowth(), "J",
+         "the vehicle's energy grew beyond its start plus the drives' work, the most at t = " +
+             mmOrDeg(energy.maxGrowthTime(), 4) + " s");
+  }
+  if (bounds.worst() > kTerrainBoundsMarginM) fail("bounds", kTerrainBoundsMarginM, bounds.worst(), "m", bounds.left());
+  // Judged at the end, of a run that reached it.
+  if (!summary.nan && !summary.diverged && !summary.interrupted) {
+    if (c.min_distance && !(distance >= *c.min_distance)) fail("min_distance", *c.min_distance, distance, "m", "");
+    if (c.max_distance && !(distance <= *c.max_distance)) fail("max_distance", *c.max_distance, distance, "m", "");
+    if (c.min_wheel_height && !(lowest_wheel >= *c.min_wheel_height)) {
+      fail("min_wheel_height", *c.min_wheel_height, lowest_wheel, "m", "the lowest wheel centre at the end");
+    }
+  }
+  summary.success = failed.empty();
   return summary;
 }
 

@@ -23,10 +23,16 @@ constexpr const char* kBaseKeys[] = {"engine", "mode", "dt"};
 // A sweep's key that is not a setting: the scenarios it applies to (all if absent).
 constexpr const char* kOnlyKey = "only";
 
-// One value a sweep tries: the override's YAML text and its label.
+// One value a sweep tries: the override's YAML text, its label and where
+// the study file set it ("<file>:<line>:<col>: <key>").
 struct Choice {
-  std::string value, label;
+  std::string value, label, where;
 };
+
+std::string origin(const YamlReader& in, const YAML::Node& node, const std::string& key) {
+  const YAML::Mark mark = node.Mark();
+  return in.path().string() + ":" + std::to_string(mark.line + 1) + ":" + std::to_string(mark.column + 1) + ": " + key;
+}
 using Setting = std::map<std::string, Choice>;  // override path -> choice
 
 std::string flowYaml(const YAML::Node& node) {
@@ -43,7 +49,8 @@ Setting readFixed(const YamlReader& in, const YAML::Node& node, const char* what
   Setting s;
   for (const auto& entry : node) {
     const std::string path = entry.first.Scalar();
-    s[path] = {flowYaml(entry.second), flowYaml(entry.second)};
+    s[path] = {flowYaml(entry.second), flowYaml(entry.second),
+               origin(in, entry.second, std::string(what) + "." + path)};
   }
   return s;
 }
@@ -58,9 +65,14 @@ std::vector<Setting> expandSweep(const YamlReader& in, const YAML::Node& node, c
     if (path == kOnlyKey) continue;
     std::vector<Choice> choices;
     if (entry.second.IsSequence()) {
-      for (const auto& v : entry.second) choices.push_back({flowYaml(v), flowYaml(v)});
+      for (const auto& v : entry.second) {
+        choices.push_back({flowYaml(v), flowYaml(v), origin(in, v, "sweeps." + name + "." + path)});
+      }
     } else if (entry.second.IsMap()) {
-      for (const auto& v : entry.second) choices.push_back({flowYaml(v.second), v.first.Scalar()});
+      for (const auto& v : entry.second) {
+        choices.push_back({flowYaml(v.second), v.first.Scalar(),
+                           origin(in, v.second, "sweeps." + name + "." + path + "." + v.first.Scalar())});
+      }
     } else {
       in.fail(entry.second, "sweeps." + name + "." + path + ": expected a list of values or a map of label: value");
     }
@@ -96,6 +108,7 @@ PlannedRun plannedRun(const std::string& scenario, const std::filesystem::path& 
   std::uint64_t h = io::fnv1a(scene_bytes);
   for (const auto& [path, choice] : all) {  // std::map: sorted, so the key ignores the file's order
     run.overrides.push_back({.path = path, .value = choice.value});
+    run.origins.push_back(choice.where);
     h = io::fnv1a(path + "=" + choice.value + "\n", h);
     const bool base = path == kBaseKeys[0] || path == kBaseKeys[1] || path == kBaseKeys[2];
     if (!base && !scenario_set.contains(path)) run.label += " " + path + "=" + choice.label;
@@ -146,6 +159,7 @@ StudyPlan readStudy(const std::filesystem::path& file) {
 
   const YAML::Node scenarios = in.require(root, "scenarios");
   in.requireMap(scenarios, "scenarios");
+  if (scenarios.size() == 0) in.fail(scenarios, "scenarios: none (a study needs at least one: name: {scene: file})");
   std::map<std::string, std::size_t> seen;
   for (const auto& entry : scenarios) {
     const std::string name = entry.first.Scalar();

@@ -125,7 +125,7 @@ std::string number(double v, const char* format = "%.6g") {
 }
 
 std::string csvText(std::string text) {
-  if (text.find_first_of(",\"") == std::string::npos) return text;
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
   std::string quoted = "\"";
   for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
   return quoted + "\"";
@@ -145,6 +145,28 @@ std::string join(const std::vector<std::string>& cells, const char* separator) {
 double contactBreaksPerSecond(const sim::RunSummary& s) {
   const auto found = s.fields.find("contact_breaks_per_s");
   return found == s.fields.end() ? 0.0 : found->second;
+}
+
+// Why a run failed, one text: each failed criterion (sim::describe), "; "
+// between them; "" for a success.
+std::string failedText(const sim::RunSummary& s) {
+  std::string text;
+  for (const sim::FailedCriterion& f : s.failed_criteria)
+    text.append(text.empty() ? "" : "; ").append(sim::describe(f));
+  return text;
+}
+
+// `text` for a Markdown table's cell: '|' escaped, no line breaks.
+std::string cellText(const std::string& text) {
+  std::string cell;
+  for (const char c : text) {
+    if (c == '|') {
+      cell.append("\\|");
+    } else {
+      cell.push_back(c == '\n' || c == '\r' ? ' ' : c);
+    }
+  }
+  return cell;
 }
 
 }  // namespace
@@ -207,7 +229,7 @@ void writeResultsCsv(const fs::path& file, const std::vector<RunResult>& results
       "scenario,key,sweep,label,engine,mode,dt_s,reference,success,crashed,nan,diverged,wall_time_s,real_time_factor,"
       "steps,"
       "rms_position_error_m,final_position_error_m,peak_pitch_deg,peak_pitch_error_deg,peak_wheel_force_N,"
-      "rms_wheel_force_error_N,contact_breaks_per_s,path_error_m,warnings,on_front\n";
+      "rms_wheel_force_error_N,contact_breaks_per_s,path_error_m,warnings,on_front,failed_criteria\n";
   for (const RunResult& r : results) {
     const sim::RunSummary& s = r.summary;
     text += join({csvText(r.run->scenario),
@@ -234,7 +256,8 @@ void writeResultsCsv(const fs::path& file, const std::vector<RunResult>& results
                   number(contactBreaksPerSecond(s)),
                   r.path_error ? number(*r.path_error) : std::string(),
                   std::to_string(s.warnings.size()),
-                  r.on_front ? "1" : "0"},
+                  r.on_front ? "1" : "0",
+                  csvText(failedText(s))},
                  ",");
     text += "\n";
   }
@@ -278,6 +301,10 @@ void writeResultsMarkdown(const fs::path& file, const StudyPlan& plan, const std
                                        "contact breaks (1/s)"};
     if (paths) header.push_back("path error RMS (mm)");
     header.insert(header.end(), {"warnings", "front"});
+    // Why a run failed, where one did (the criteria its summary names).
+    const bool failures =
+        std::any_of(rows.begin(), rows.end(), [](const RunResult* r) { return !r->summary.failed_criteria.empty(); });
+    if (failures) header.push_back("failed criteria");
     text.append("\n### ").append(scenario).append(" (reference: ");
     text.append(reference ? reference->run->label : std::string("?")).append(")\n\n");
     text.append("| ").append(join(header, " | ")).append(" |\n|");
@@ -303,6 +330,7 @@ void writeResultsMarkdown(const fs::path& file, const StudyPlan& plan, const std
       if (paths) cells.push_back(r->path_error ? number(*r->path_error * 1e3, "%.2f") : std::string("–"));
       cells.push_back(std::to_string(s.warnings.size()));
       cells.push_back(r->on_front ? "●" : "");
+      if (failures) cells.push_back(cellText(failedText(s)));
       text.append("| ").append(join(cells, " | ")).append(" |\n");
     }
   }

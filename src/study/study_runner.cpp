@@ -16,6 +16,7 @@
 
 #include "wtc/base/error.hpp"
 #include "wtc/sim/run_summary_file.hpp"
+#include "wtc/study/study_file.hpp"
 
 extern char** environ;
 
@@ -105,6 +106,7 @@ std::vector<std::string> wtcSimArguments(const PlannedRun& run, const fs::path& 
 void runPlan(const StudyPlan& plan, const fs::path& out, int workers, const fs::path& wtc_sim,
              const std::function<void(const RunDone&)>& done) {
   if (workers < 1) throw InvalidInputError("wtc::study::runPlan: workers must be >= 1, not " + std::to_string(workers));
+  study::checkStudyRuns(plan);  // every run loads before any is made
   fs::create_directories(out / "logs");
   std::mutex lock;
   std::size_t finished = 0;

@@ -214,5 +214,41 @@ TEST(SceneFileTest, SkippedDegenerateTrianglesAreSceneWarnings) {
   fs::remove(path);
 }
 
+// Issue 35: a scene's name becomes part of the output directory's name
+// (runs/<name>_<engine>_<mode>); one that could reach outside it is
+// refused where it stands, in the file or in --set.
+TEST(SceneFileTest, NamesThatCouldLeaveTheOutputDirectoryAreRefused) {
+  const std::string rest =
+      "duration: 1\nterrain: ../terrains/flat.yaml\nvehicle: ../vehicles/six_wheel_robot.yaml\n"
+      "controller: {type: none}\n";
+  // Case: a path separator, a parent directory, a hidden name, a control character, in the file.
+  EXPECT_THAT(errorOf("name: a/b\n" + rest), HasSubstr(":1:7: name: 'a/b' has the character '/'"));
+  EXPECT_THAT(errorOf("name: ../../escape\n" + rest), HasSubstr(":1:7: name: '../../escape' starts with '.'"));
+  EXPECT_THAT(errorOf("name: .hidden\n" + rest), HasSubstr("name: '.hidden' starts with '.'"));
+  EXPECT_THAT(errorOf("name: \"a\\tb\"\n" + rest), HasSubstr("name: 'a\\x09b' has the character '\\x09'"));
+  EXPECT_THAT(errorOf("name: \"\"\n" + rest), HasSubstr("name: '' is empty"));
+  EXPECT_THAT(errorOf("name: " + std::string(129, 'a') + "\n" + rest), HasSubstr("is 129 characters long"));
+  // Case: the same through an override, named as the name.
+  EXPECT_THAT(errorOf("name: t\n" + rest, {parseOverride("name=../../escape")}),
+              HasSubstr("name: '../../escape' starts with '.'"));
+  // Case: what the format allows loads.
+  EXPECT_EQ(errorOf("name: robot-2.v3_final\n" + rest), "no error");
+}
+
+// Issue 35: a run simulates its whole duration in whole steps; a step
+// longer than the duration (0 steps, reported as a success) or a duration
+// between two whole numbers of steps (once rounded: dt 10 ran 30 s of 25)
+// is refused, with both numbers and the nearest whole durations.
+TEST(SceneFileTest, AStepThatDoesNotDivideTheDurationIsRefused) {
+  EXPECT_THAT(errorOf(kMinimal + "dt: 10\n"),
+              HasSubstr(":6:5: dt: duration 1 s, dt 10 s: the step is longer than the duration"));
+  EXPECT_THAT(errorOf(kMinimal, {{"duration", "0.25"}, {"dt", "0.1"}}),
+              HasSubstr("duration: duration 0.25 s, dt 0.1 s: the duration is 2.5 steps, not a whole number of them; "
+                        "the nearest durations that are: 0.2 s and 0.3 s"));
+  EXPECT_THAT(errorOf(kMinimal, {{"duration", "1e300"}, {"dt", "1e-300"}}), HasSubstr("more than 2^53"));
+  // Case: a whole number of steps to roundoff loads (0.3 / 0.1 is 2.9999999999999996 in doubles).
+  EXPECT_EQ(errorOf(kMinimal, {{"duration", "0.3"}, {"dt", "0.1"}}), "no error");
+}
+
 }  // namespace
 }  // namespace wtc::sim

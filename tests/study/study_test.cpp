@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <set>
 
 #include "wtc/base/error.hpp"
@@ -136,6 +137,35 @@ TEST(StudyPlanTest, BadStudyFilesAreNamedWithTheirPlace) {
   EXPECT_THAT(error("name: b\nbase: {engine: bullet}\nreference: {}\n" + scene + "sweeps: {}\n"),
               HasSubstr("base: must give mode"));
   EXPECT_THAT(error(head + scene + "sweeps: {s: {dt: [0.0004"), HasSubstr("bad.yaml:"));
+  // Case: no scenario, no run (issue 35: it ran "0 runs" and exited 0).
+  EXPECT_THAT(error(head + "scenarios: {}\nsweeps: {}\n"),
+              testing::AllOf(HasSubstr("bad.yaml:4:12:"), HasSubstr("scenarios: none")));
+  fs::remove_all(dir);
+}
+
+// Issue 35: a sweep's value is checked with every run before any starts,
+// named by its place in the study file, not by the scene's.
+TEST(StudyPlanTest, ABadSweepValueIsRefusedBeforeAnyRunNamingItsPlace) {
+  const fs::path dir = freshDirectory("badsweep");
+  const fs::path file =
+      writeFile(dir, "s.yaml", towedStudy("b", "{dt: 0.0002}", "{step: {engine: [bullet, ode], dt: [0.0004, -1]}}"));
+  const StudyPlan plan = wtc::study::loadStudyPlan(file);
+  const auto message = [&](const std::function<void()>& f) {
+    try {
+      f();
+    } catch (const wtc::InvalidInputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::string checked = message([&] { wtc::study::checkStudyRuns(plan); });
+  EXPECT_THAT(checked, testing::AllOf(HasSubstr("2 of 5 runs would be refused"), HasSubstr("s.yaml:5:53:"),
+                                      HasSubstr("sweeps.step.dt: value -1 is refused by scenario towed"),
+                                      HasSubstr("dt: must be > 0 s")));
+  EXPECT_THAT(checked, testing::Not(HasSubstr("towed_incline.yaml:1:1")));
+  // runPlan checks first: nothing is started, no run's directory made.
+  EXPECT_EQ(message([&] { wtc::study::runPlan(plan, dir / "out", 2, WTC_SIM_EXE); }), checked);
+  EXPECT_FALSE(fs::exists(dir / "out" / "runs"));
   fs::remove_all(dir);
 }
 
@@ -153,12 +183,22 @@ TEST(StudyRunTest, ResultsDoNotDependOnTheNumberOfWorkers) {
   EXPECT_TRUE(a[0].on_front);
   EXPECT_GT(a[2].rms_position_error, 0.0);  // bullet at 1 ms
   EXPECT_TRUE(a[0].path_error.has_value());
-  // The robot runs are 0.4 s long, short of their scene's distance: failed, so never on the front.
+  // The robot runs are 0.4 s long, short of their scene's distance: failed, so never on the front, and
+  // the tables say why (issue 35).
   for (const RunResult& r : a) {
     if (r.run->scenario == "robot") {
       EXPECT_FALSE(r.on_front) << r.run->label;
+      ASSERT_EQ(r.summary.failed_criteria.size(), 1u) << r.run->label;
+      EXPECT_EQ(r.summary.failed_criteria[0].criterion, "min_distance") << r.run->label;
     }
   }
+  wtc::study::writeResultsMarkdown(one / "results.md", plan, a);
+  wtc::study::writeResultsCsv(one / "results.csv", a);
+  std::ifstream md(one / "results.md"), csv(one / "results.csv");
+  const std::string tables((std::istreambuf_iterator<char>(md)), std::istreambuf_iterator<char>());
+  const std::string rows((std::istreambuf_iterator<char>(csv)), std::istreambuf_iterator<char>());
+  EXPECT_THAT(tables, testing::AllOf(HasSubstr("| failed criteria |"), HasSubstr("| min_distance: 0.")));
+  EXPECT_THAT(rows, testing::AllOf(HasSubstr(",failed_criteria\n"), HasSubstr(",min_distance: 0.")));
   fs::remove_all(one);
   fs::remove_all(two);
 }

@@ -108,3 +108,25 @@ inline constexpr double kCapHysteresisRelative = 0.02;
 inline constexpr double kRestLoadRelative = 1e-9;
 
 }  // namespace wtc::tolerance
+
+namespace wtc::tolerance {
+
+/// A scene's duration is a whole number of its steps when duration / dt is
+/// within this fraction of an integer (dimensionless): far above the
+/// roundoff of dividing two decimal numbers (18 / 0.00005 is 360000 to a
+/// few ulps), far below any step a user means (1e-9 of a 25 s run is 25 ns).
+inline constexpr double kWholeStepsRelative = 1e-9;
+
+}  // namespace wtc::tolerance
+
+namespace wtc::tolerance {
+
+/// A run's vehicle may gain at most the energy of lifting it this high
+/// (m) beyond its energy after the first step plus its drives' work
+/// (sim::EnergyBalance; the limit is m g times this, J): more was made
+/// from nothing, and the run is not a success. Every shipped scene, in
+/// Bullet and ODE, in force and constraint mode, gains none at all (the
+/// measured margins: docs/vehicles-and-scenes.md, "Energy and bounds").
+inline constexpr double kEnergyGrowthHeightM = 0.01;
+
+}  // namespace wtc::tolerance

@@ -9,6 +9,7 @@
 #include <span>
 #include <vector>
 
+#include "wtc/sim/energy_balance.hpp"
 #include "wtc/sim/engine.hpp"
 #include "wtc/vehicle/controller.hpp"
 #include "wtc/vehicle/joint_error.hpp"
@@ -46,6 +47,9 @@ class Run {
   /// kDivergedAngularSpeedRadps or kDivergedDistanceM (wtc/sim/sim_constants.hpp):
   /// the run should stop, as at a non-finite state.
   bool diverged() const { return diverged_; }
+  /// The vehicle's energy against the drives' work since the start
+  /// (EnergyBalance: what grew without a source).
+  const EnergyBalance& energyBalance() const { return energy_; }
 
   const Engine& engine() const { return engine_; }
 
@@ -65,6 +69,7 @@ class Run {
   double max_deflection_ = 0.0;
   bool non_finite_ = false;
   bool diverged_ = false;
+  EnergyBalance energy_;
   std::uint64_t steps_ = 0;
 };
 

@@ -37,6 +37,25 @@ struct DriveSummary {
   double mean_effort = 0.0;           ///< Mean |effort| over the steps with the drive on (N m or N).
 };
 
+/// Why a run is not a success: a criterion of its scene it missed, or what
+/// happened to it. Each run that did not succeed has at least one.
+struct FailedCriterion {
+  /// The scene's success key (min_distance, max_distance, max_tilt_deg,
+  /// min_wheel_height) or what the run did: nan, diverged, interrupted
+  /// (stopped, or killed, before its duration), crashed (its process died),
+  /// controller (the controller failed), energy (the vehicle's energy grew
+  /// without a source: EnergyBalance), bounds (a body's centre left the
+  /// terrain's box).
+  std::string criterion;
+  std::optional<double> limit;     ///< In `unit`; none where there is no number (nan, controller).
+  std::optional<double> measured;  ///< What the run had, in `unit`.
+  std::string unit;                ///< "m", "deg", "s" or "J"; empty without numbers.
+  std::string detail;              ///< In words: when, which body, the controller's reason.
+};
+
+/// One line: "min_distance: 1.2 m (limit 3 m)", then the detail.
+std::string describe(const FailedCriterion& failed);
+
 struct RunSummary {
   std::string scene, engine, mode;
   /// Which build of the program made the run (wtc-sim: FNV-1a of its own
@@ -54,6 +73,8 @@ struct RunSummary {
   double wtcShare() const { return wall_time > 0.0 ? wtc_time / wall_time : 0.0; }
   std::uint64_t steps = 0;
   bool success = false;
+  /// Why it did not succeed (empty for a success).
+  std::vector<FailedCriterion> failed_criteria;
   bool nan = false;          ///< A body state went non-finite (the run stopped there).
   bool diverged = false;     ///< A body went beyond Run::diverged's bounds (the run stopped there).
   bool interrupted = false;  ///< Stopped on request (RunOptions::stop) before its duration.

@@ -20,4 +20,10 @@ inline constexpr double kDivergedSpeedMps = 1e3;
 inline constexpr double kDivergedAngularSpeedRadps = 1e4;
 inline constexpr double kDivergedDistanceM = kMaxLengthM;
 
+/// A body's centre may go this far (m) beyond the terrain's bounding box,
+/// horizontally, or below its lowest point, before the run counts as having
+/// left its terrain (not a success): a vehicle at the terrain's edge has
+/// centres beyond it by less than its own length.
+inline constexpr double kTerrainBoundsMarginM = 2.0;
+
 }  // namespace wtc::sim

@@ -14,4 +14,12 @@ namespace wtc::study {
 /// that is neither a list nor a map of labelled values.
 study::StudyPlan loadStudyPlan(const std::filesystem::path& file);
 
+/// Loads the scene of every run of `plan` with its overrides (terrain and
+/// vehicle built, nothing simulated), so that a study refuses a bad setting
+/// before it starts any run. Throws InvalidInputError naming, for each
+/// setting refused, the study file's place of the value that is to blame
+/// (the sweep's key and value, found by loading the run without it) and the
+/// scene's message; or, when no one value is to blame, the run's settings.
+void checkStudyRuns(const StudyPlan& plan);
+
 }  // namespace wtc::study

@@ -18,10 +18,13 @@ struct PlannedRun {
   std::string scenario;                 ///< The study's name for the scene.
   std::filesystem::path scene_file;     ///< Absolute.
   std::vector<sim::Override> overrides;  ///< engine, mode and dt always; then the scenario's and the sweep's.
-  std::string sweep;                    ///< The first sweep that asked for it ("reference" for the reference).
-  std::string label;                    ///< "bullet force 0.4 ms", then any other setting ("effects=coulomb").
-  std::string key;                      ///< <scenario>-<16 hex digits of FNV-1a over the scene file and the overrides>.
-  bool reference = false;               ///< The run every other run of the scenario is compared with.
+  /// Where each override was set, parallel to `overrides`: "<study
+  /// file>:<line>:<col>: <key>" (sweeps.step.dt, base.engine, ...).
+  std::vector<std::string> origins;
+  std::string sweep;       ///< The first sweep that asked for it ("reference" for the reference).
+  std::string label;       ///< "bullet force 0.4 ms", then any other setting ("effects=coulomb").
+  std::string key;         ///< <scenario>-<16 hex digits of FNV-1a over the scene file and the overrides>.
+  bool reference = false;  ///< The run every other run of the scenario is compared with.
 };
 
 struct StudyPlan {

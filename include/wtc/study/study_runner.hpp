@@ -38,9 +38,11 @@ struct RunDone {
 /// only: its results do not depend on the number of workers or on what
 /// runs beside it. `done` is called, one call at a time, as each run ends.
 /// A run killed by a signal (an engine's assertion) is recorded as crashed
-/// (a failed run; its summary says how). A run wtc-sim refuses (exit 2: a
-/// scene that does not load) is an InvalidInputError naming the run and
-/// wtc-sim's message, after the runs under way end.
+/// (a failed run; its summary says how). Every run's scene is loaded first
+/// (study::checkStudyRuns): a setting it refuses is an InvalidInputError
+/// before any run starts. A run wtc-sim refuses nonetheless (exit 2: its
+/// output directory) is an InvalidInputError naming the run and wtc-sim's
+/// message, after the runs under way end.
 void runPlan(const StudyPlan& plan, const std::filesystem::path& out, int workers, const std::filesystem::path& wtc_sim,
              const std::function<void(const RunDone&)>& done = {});
 
