@@ -24,8 +24,9 @@ int main(int argc, char** argv) {
   wheel.setAngularFactor(btVector3(0, 1, 0));  // a lone wheel stays upright
   world.addRigidBody(&wheel);
 
-  // WTC: the terrain, the plugin, and the wheel registered with its tyre.
-  const wtc::Terrain ground = wtc::io::loadTerrain(argc > 1 ? argv[1] : WTC_SOURCE_DIR "/terrains/ledge.yaml");
+  // WTC: the terrain (a file given, or the ledge in WTC's data: WTC_DATA_DIR, README "Using the library"),
+  // the plugin, and the wheel registered with its tyre.
+  const wtc::Terrain ground = wtc::io::loadTerrain(argc > 1 ? argv[1] : WTC_DATA_DIR "/terrains/ledge.yaml");
   {
     wtc::bullet::Plugin wtc_plugin(world, ground, wtc::ContactMode::kForce);
     wtc::bullet::RigidWheel spec;

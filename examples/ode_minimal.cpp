@@ -33,7 +33,8 @@ int main(int argc, char** argv) {
   const dGeomID tyre = dCreateCylinder(sim.space, 0.19, 0.12);
   dGeomSetBody(tyre, wheel);
 
-  const wtc::Terrain ground = wtc::io::loadTerrain(argc > 1 ? argv[1] : WTC_SOURCE_DIR "/terrains/ledge.yaml");  // WTC
+  // WTC: a terrain file given, or the ledge in WTC's data (WTC_DATA_DIR: README, "Using the library").
+  const wtc::Terrain ground = wtc::io::loadTerrain(argc > 1 ? argv[1] : WTC_DATA_DIR "/terrains/ledge.yaml");
   {
     wtc::ode::Plugin plugin(sim.world, sim.space, ground, wtc::ContactMode::kConstraint);  // WTC
     // WTC: the defaults describe this wheel (axle the body's z, r_f = 0.19 m, 3.7 kg, c = 1e5 N/m).

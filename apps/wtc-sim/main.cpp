@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include "app_files.hpp"
 #include "wtc-sim/run_directory.hpp"
@@ -76,7 +77,7 @@ int main(int argc, char** argv) {
   std::string scene_file, engine, mode, out;
   double dt = 0.0, duration = 0.0;
   std::vector<std::string> sets;
-  bool quiet = false, no_plots = false, skip_done = false;
+  bool quiet = false, no_plots = false, no_replay = false, skip_done = false;
   app.add_option("scene", scene_file, "scene file (YAML)")->required();
   app.add_option("--engine", engine, "bullet, ode or ode_quick (overrides the scene's)");
   app.add_option("--mode", mode,
@@ -87,6 +88,7 @@ int main(int argc, char** argv) {
   app.add_option("--set", sets, "key.path=value: override any value of the scene (repeatable)");
   app.add_flag("--quiet", quiet, "no progress bar, no summary on stdout");
   app.add_flag("--no-plots", no_plots, "skip the figures");
+  app.add_flag("--no-replay", no_replay, "skip the replay page (as a scene's output: {replay: false})");
   app.add_flag("--skip-done", skip_done,
                "with --out: do nothing if that directory holds a run of these settings that ended, redo an "
                "unfinished one (job lists: a batch resumes where it stopped); a directory holding anything "
@@ -148,15 +150,23 @@ int main(int argc, char** argv) {
     options.warn = [bar](const std::string& warning) {
       std::fprintf(stderr, "%swtc-sim: warning: %s\n", bar ? "\n" : "", warning.c_str());
     };
-    wtc::sim::Replay replay(scene, scene.output.replay_fps);
-    options.replay = &replay;
+    std::optional<wtc::sim::Replay> replay;
+    std::string replay_said = "replay.html";
+    if (no_replay || !scene.output.replay) {
+      replay_said = no_replay ? "no replay (--no-replay)" : "no replay (output.replay: false)";
+    } else {
+      replay.emplace(scene, scene.output.replay_fps);
+      options.replay = &*replay;
+    }
     wtc::sim::RunSummary summary = wtc::sim::runScene(scene, *engine_ptr, options);
     summary.program = wtc::apps::programIdentity();
     if (bar) std::fprintf(stderr, "\n");
     wtc::sim::writeRunSummary(dir / "summary.json", summary);
-    replay.write(dir / "replay_data.js", summary);
-    if (const std::string problem = writeReplayPage(dir); !problem.empty()) {
-      std::cerr << "wtc-sim: warning: replay page not written: " << problem << '\n';
+    if (replay) {
+      replay->write(dir / "replay_data.js", summary);
+      if (const std::string problem = writeReplayPage(dir); !problem.empty()) {
+        std::cerr << "wtc-sim: warning: replay page not written: " << problem << '\n';
+      }
     }
     for (const std::string& w : summary.warnings) std::cerr << "wtc-sim: warning: " << w << '\n';
 
@@ -188,7 +198,8 @@ int main(int argc, char** argv) {
                   summary.sim_time, summary.wall_time, summary.real_time_factor,
                   static_cast<unsigned long long>(summary.steps), 100.0 * summary.wtcShare());
       for (const auto& [key, value] : summary.fields) std::printf("  %s: %.4g\n", key.c_str(), value);
-      std::printf("  outputs: %s (series, summary.json, replay.html; figures %s)\n", dir.c_str(), figures.c_str());
+      std::printf("  outputs: %s (series, summary.json, %s; figures %s)\n", dir.c_str(), replay_said.c_str(),
+                  figures.c_str());
     }
     return summary.success ? 0 : 1;
   } catch (const std::exception& e) {

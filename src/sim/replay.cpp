@@ -2,17 +2,16 @@
 
 #include <cmath>
 #include <fstream>
-#include <optional>
+#include <limits>
 
 #include "wtc/base/error.hpp"
+#include "wtc/sim/replay_terrain.hpp"
 
 namespace wtc::sim {
 namespace {
 
 constexpr double kMmPerM = 1000.0;
 constexpr double kQuaternionScale = 1e4;
-// Faces whose outward normal's z is below this look down: left out.
-constexpr double kDownFacingNz = -0.7;
 
 long long mm(double metres) { return std::llround(metres * kMmPerM); }
 
@@ -37,30 +36,12 @@ void writeArray(std::ostream& out, const Numbers& numbers) {
   out << ']';
 }
 
-void writeTerrain(std::ostream& out, const Terrain& terrain) {
-  std::vector<long long> positions;
-  std::vector<long long> indices;
-  std::optional<ConvexPolyhedron> scratch;  // a compact field's piece, formed here
-  for (PieceId id = 0; id < static_cast<PieceId>(terrain.pieceCount()); ++id) {
-    const ConvexPolyhedron& piece = terrain.piece(id, scratch);
-    const auto base = static_cast<long long>(positions.size() / 3);
-    for (int v = 0; v < piece.vertexCount(); ++v) {
-      const Eigen::Vector3d p = piece.vertex(v);
-      positions.insert(positions.end(), {mm(p.x()), mm(p.y()), mm(p.z())});
-    }
-    for (int f = 0; f < piece.faceCount(); ++f) {
-      if (piece.faceNormal(f).z() < kDownFacingNz) continue;
-      const auto face = piece.faceVertices(f);
-      for (std::size_t k = 1; k + 1 < face.size(); ++k) {  // a fan: faces are convex
-        indices.insert(indices.end(), {base + face[0], base + face[k], base + face[k + 1]});
-      }
-    }
-  }
+void writeTerrain(std::ostream& out, const ReplayTerrain& terrain) {
   out << "\"terrain\":{\"positions\":";
-  writeArray(out, positions);
+  writeArray(out, terrain.positions);
   out << ",\"indices\":";
-  writeArray(out, indices);
-  out << '}';
+  writeArray(out, terrain.indices);
+  out << ",\"note\":" << quoted(terrain.note()) << '}';
 }
 
 void writeBodies(std::ostream& out, const vehicle::VehicleDescription& v) {
@@ -128,6 +109,17 @@ void Replay::observe(const Run& run) {
   }
 }
 
+Aabb Replay::pathBounds() const {
+  Aabb box{Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()),
+           Eigen::Vector3d::Constant(-std::numeric_limits<double>::infinity())};
+  for (std::size_t k = 0; k + 7 <= poses_.size(); k += 7) {
+    box.include(Eigen::Vector3d(static_cast<double>(poses_[k]), static_cast<double>(poses_[k + 1]),
+                                static_cast<double>(poses_[k + 2])) /
+                kMmPerM);
+  }
+  return box;
+}
+
 void Replay::write(const std::filesystem::path& path, const RunSummary& summary) const {
   std::ofstream out(path);
   if (!out) throw InvalidInputError("wtc::sim::Replay: cannot write " + path.string());
@@ -136,7 +128,7 @@ void Replay::write(const std::filesystem::path& path, const RunSummary& summary)
       << ",\"mode\":" << quoted(summary.mode) << ",\"dt\":" << summary.dt
       << ",\"real_time_factor\":" << summary.real_time_factor << ",\"success\":" << (summary.success ? "true" : "false")
       << ",\"fps\":" << 1.0 / period_ << ',';
-  writeTerrain(out, *scene_.terrain);
+  writeTerrain(out, replayTerrain(*scene_.terrain, pathBounds()));
   out << ',';
   writeBodies(out, scene_.vehicle);
   out << ",\"times\":";

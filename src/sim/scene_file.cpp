@@ -413,10 +413,11 @@ sim::Scene readSceneFile(const std::filesystem::path& path, std::span<const Over
 
   if (const auto o = YamlReader::get(root, "output")) {
     in.requireMap(*o, "output");
-    in.checkKeys(*o, {"rate_hz", "plots", "replay_fps"});
+    in.checkKeys(*o, {"rate_hz", "plots", "replay", "replay_fps"});
     scene.output.rate_hz = in.number(*o, "rate_hz", scene.output.rate_hz);
     if (!(scene.output.rate_hz > 0.0)) in.fail((*o)["rate_hz"], "output.rate_hz: must be > 0");
     scene.output.plots = in.boolean(*o, "plots", scene.output.plots);
+    scene.output.replay = in.boolean(*o, "replay", scene.output.replay);
     scene.output.replay_fps = in.number(*o, "replay_fps", scene.output.replay_fps);
     if (!(scene.output.replay_fps > 0.0)) in.fail((*o)["replay_fps"], "output.replay_fps: must be > 0");
   }

@@ -232,6 +232,13 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
     }
     ++wheel_index;
   }
+  // What the engine's solver said instead of printing it (ODE's LCP giving up
+  // in a step: docs/ode-plugin.md).
+  for (const SolverMessage& m : engine.solverMessages()) {
+    summary.warnings.push_back(m.engine + ": '" + m.text + "' in " + std::to_string(m.steps) +
+                               (m.steps == 1 ? " step" : " steps") + " (first at t = " + mmOrDeg(m.first_time_s, 4) +
+                               " s" + (m.count != m.steps ? "; " + std::to_string(m.count) + " times" : "") + ")");
+  }
   if (summary.max_joint_gap > kJointGapWarnM || summary.max_joint_angle > kJointAngleWarnRad) {
     summary.warnings.push_back("joints came apart by up to " + mmOrDeg(summary.max_joint_gap * 1e3, 3) + " mm and " +
                                mmOrDeg(summary.max_joint_angle * kDegPerRad, 3) + " deg (bound: 1 mm, 0.1 deg)");

@@ -4,6 +4,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -270,6 +271,48 @@ TEST(StudyRunTest, AnInterruptedRunIsMadeAgainAndOnlyIt) {
   EXPECT_EQ(made, std::vector<std::string>{plan.runs[4].key});
   expectSameResults(first, wtc::study::gatherResults(plan, out));
   fs::remove_all(out);
+}
+
+// ODE's "LCP internal error, s <= 0", which went only to stderr, is a
+// warning of the run in the study's tables (issue 35, row 11): the robot
+// dropped with its wheels turning from the start (tests/sim/
+// solver_messages_test.cpp), ODE's only warning there.
+TEST(StudyRunTest, OdesLcpGivingUpIsAWarningInTheTables) {
+  const fs::path dir = freshDirectory("lcp");
+  const fs::path file =
+      writeFile(dir, "s.yaml",
+                "name: lcp\nbase: {engine: ode, mode: constraint, dt: 0.0004}\nreference: {dt: 0.0004}\nsweeps: {}\n"
+                "scenarios: {fall: {scene: " WTC_SOURCE_DIR
+                "/scenes/robot_straight.yaml, set: {duration: 0.002, "
+                "vehicle.translation: [-3, 0, 2], controller.schedules.0.points: [[0, 0.5]]}}}\n");
+  const StudyPlan plan = wtc::study::loadStudyPlan(file);
+  ASSERT_EQ(plan.runs.size(), 1u);
+  wtc::study::runPlan(plan, dir / "out", 1, WTC_SIM_EXE);
+  const std::vector<RunResult> results = wtc::study::gatherResults(plan, dir / "out");
+  EXPECT_EQ(results[0].summary.warnings,
+            std::vector<std::string>{"ODE: 'LCP internal error, s <= 0' in 1 step (first at t = 0.0004 s)"});
+  wtc::study::writeResultsCsv(dir / "results.csv", results);
+  std::ifstream csv(dir / "results.csv");
+  std::string header, row;
+  std::getline(csv, header);
+  std::getline(csv, row);
+  const auto cells = [](const std::string& line) {
+    std::vector<std::string> out(1);
+    for (const char c : line) {
+      if (c == ',') {
+        out.emplace_back();
+      } else {
+        out.back().push_back(c);
+      }
+    }
+    return out;
+  };
+  const std::vector<std::string> names = cells(header), values = cells(row);
+  const auto warnings = std::find(names.begin(), names.end(), "warnings");
+  ASSERT_NE(warnings, names.end());
+  ASSERT_EQ(values.size(), names.size());
+  EXPECT_EQ(values[warnings - names.begin()], "1");
+  fs::remove_all(dir);
 }
 
 TEST(StudyRunTest, ARunThatCannotLoadIsNamed) {

@@ -130,3 +130,15 @@ namespace wtc::tolerance {
 inline constexpr double kEnergyGrowthHeightM = 0.01;
 
 }  // namespace wtc::tolerance
+
+namespace wtc::tolerance {
+
+/// The replay's height grid (wtc::sim::replayTerrain) finds a piece under
+/// a grid point when the point is inside each of the piece's side planes
+/// within this (relative to the piece's size): two pieces that share a wall
+/// (a heightfield's cells) then both hold a point on it, rather than
+/// neither by roundoff. As kHullMergeRelative: far above roundoff, far
+/// below any feature.
+inline constexpr double kReplayGridSlackRelative = 1e-9;
+
+}  // namespace wtc::tolerance

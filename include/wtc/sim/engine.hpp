@@ -17,6 +17,7 @@
 // a revolute joint's angle is the child's rotation about the axis relative
 // to its parent, a prismatic joint's position the child's displacement
 // along it.
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -80,6 +81,18 @@ std::vector<double> engineWheelFrictions(const Terrain& terrain);
 /// Throws InvalidInputError naming the field and `where`.
 void validate(const EngineSettings& settings, const std::string& where);
 
+/// A message an engine's solver gave as it went on stepping, counted
+/// instead of printed: ODE's "LCP internal error, s <= 0" says that its
+/// direct solver stopped pivoting and left the rows it had not solved
+/// without force in that step (wtc/ode/message_log.hpp).
+struct SolverMessage {
+  std::string engine;         ///< Whose: "ODE".
+  std::string text;           ///< The message without its numbers: "LCP internal error, s <= 0".
+  std::uint64_t steps = 0;    ///< Steps in which it came, once or more.
+  std::uint64_t count = 0;    ///< Times it came.
+  double first_time_s = 0.0;  ///< The end of the first such step (s of simulated time since the engine was built).
+};
+
 class Engine {
  public:
   virtual ~Engine() = default;
@@ -111,6 +124,9 @@ class Engine {
   /// Wall time (s) WTC's plugin took in the steps so far (its
   /// contactSeconds): WTC's part of the steps' cost.
   virtual double contactSeconds() const = 0;
+  /// What the engine's solver said in the steps so far, by message (none
+  /// for an engine whose solver says nothing).
+  virtual std::vector<SolverMessage> solverMessages() const { return {}; }
 
   const EngineSettings& settings() const { return settings_; }
   const vehicle::VehicleDescription& vehicle() const { return vehicle_; }

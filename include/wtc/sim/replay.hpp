@@ -6,12 +6,15 @@
 // it with a <script> tag (browsers refuse fetch() on file:// URLs).
 //
 // Numbers are quantised to keep a long run small: positions in mm,
-// quaternions in 1e-4, forces in N, times in ms (integers). The terrain
-// leaves out faces that look straight down (nobody sees them).
+// quaternions in 1e-4, forces in N, times in ms (integers). The terrain is
+// what replayTerrain (wtc/sim/replay_terrain.hpp) draws around the bodies'
+// path over the run, within a budget of triangles, with a note that says
+// when it is not the whole terrain.
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "wtc/geometry/aabb.hpp"
 #include "wtc/sim/run.hpp"
 #include "wtc/sim/scene.hpp"
 #include "wtc/sim/scene_run.hpp"
@@ -29,6 +32,9 @@ class Replay {
   /// cannot write.
   void write(const std::filesystem::path& path, const RunSummary& summary) const;
   std::size_t frames() const { return times_ms_.size(); }
+  /// The box of every body's position in the frames so far (m; empty, min
+  /// above max, before the first).
+  Aabb pathBounds() const;
 
  private:
   const Scene& scene_;

@@ -19,6 +19,7 @@ namespace wtc::sim {
 struct OutputSettings {
   double rate_hz = 100.0;  ///< Rows per simulated second in the CSV series (> 0; at most one per step).
   bool plots = true;       ///< Draw the figures after the run (when matplotlib is installed).
+  bool replay = true;      ///< Write the replay page (replay.html, replay_data.js) beside the series.
   double replay_fps = 30;  ///< Frames per simulated second on the replay page (> 0).
 };
 

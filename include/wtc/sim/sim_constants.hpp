@@ -26,4 +26,16 @@ inline constexpr double kDivergedDistanceM = kMaxLengthM;
 /// centres beyond it by less than its own length.
 inline constexpr double kTerrainBoundsMarginM = 2.0;
 
+/// The most triangles the replay page of a run draws of its terrain
+/// (wtc::sim::replayTerrain; docs/vehicles-and-scenes.md gives the bytes
+/// this makes): a terrain within it is drawn whole, a larger one only
+/// around the vehicle's path, and coarser where that is still too much.
+/// A page stays a few MB whatever the terrain (issue 35: a large compact
+/// heightfield drawn whole made a page no browser finished drawing).
+inline constexpr long long kReplayTerrainMaxTriangles = 100'000;
+/// How far beyond every body's positions over the run a terrain too large
+/// to draw whole is drawn (m, horizontally): more than the page's camera,
+/// 6 m from the vehicle, shows around it.
+inline constexpr double kReplayTerrainMarginM = 10.0;
+
 }  // namespace wtc::sim

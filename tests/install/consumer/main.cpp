@@ -1,16 +1,22 @@
 // Builds a box with the installed WTC and queries one point, reads a
-// terrain file through wtc::io, and plugs WTC into a Bullet world through
-// wtc::bullet and wtc::ode: returns 0 only when every answer is right, so
-// the install test fails on a broken package.
+// terrain file through wtc::io, plugs WTC into a Bullet world through
+// wtc::bullet and wtc::ode, and runs an installed scene (found through
+// WTC_DATA_DIR, its terrain and vehicle by relative paths) in both engines
+// through wtc::sim_engines: returns 0 only when every answer is right, so
+// the install test fails on a broken package. Built as README.md's project
+// (tests/install/run_consumer.cmake).
 #include <btBulletDynamicsCommon.h>
 #include <cmath>
 #include <cstdio>
 #include <exception>
 #include <wtc/bullet/plugin.hpp>
 #include <wtc/geometry/convex_polyhedron.hpp>
+#include <wtc/sim/scene_file.hpp>
 #include <wtc/io/terrain_file.hpp>
 #include <wtc/ode/plugin.hpp>
 #include <wtc/geometry/point_query.hpp>
+#include <wtc/sim/make_engine.hpp>
+#include <wtc/sim/scene_run.hpp>
 #include <wtc/terrain/terrain_primitives.hpp>
 
 int main() {
@@ -85,5 +91,18 @@ int main() {
   dCloseODE();
   const bool ode_ok = std::abs(deflection - expected) < 0.02 * expected;
   std::printf("wtc::ode: settled deflection %.4g m: %s\n", deflection, ode_ok ? "ok" : "WRONG");
-  return bullet_ok && ode_ok ? 0 : 1;
+
+  // wtc::sim_engines: the installed robot_straight scene, 0.2 s (500 steps of 0.4 ms) in each engine.
+  bool scenes_ok = true;
+  for (const char* engine : {"bullet", "ode"}) {
+    const wtc::sim::Override overrides[] = {{"engine", engine}, {"duration", "0.2"}};
+    const wtc::sim::Scene scene = wtc::sim::loadScene(WTC_DATA_DIR "/scenes/robot_straight.yaml", overrides);
+    const auto sim = wtc::sim::makeEngine(scene.engine, *scene.terrain, scene.vehicle, scene.placement);
+    const wtc::sim::RunSummary run = wtc::sim::runScene(scene, *sim);
+    const bool ok = run.steps == 500 && !run.nan && !run.diverged;
+    std::printf("wtc::sim_engines: %s in %s, %llu steps: %s\n", run.scene.c_str(), engine,
+                static_cast<unsigned long long>(run.steps), ok ? "ok" : "WRONG");
+    scenes_ok = scenes_ok && ok;
+  }
+  return bullet_ok && ode_ok && scenes_ok ? 0 : 1;
 }

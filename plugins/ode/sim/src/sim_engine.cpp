@@ -11,6 +11,7 @@
 #include "wtc/base/constants.hpp"
 #include "wtc/sim/sim_constants.hpp"
 #include "wtc/base/error.hpp"
+#include "wtc/ode/message_log.hpp"
 #include "wtc/ode/plugin.hpp"
 #include "sim/native_wheel_contacts.hpp"
 #include "wtc/vehicle/drive.hpp"
@@ -162,6 +163,9 @@ class SimEngine final : public sim::Engine {
 
   void step() override {
     const double h = settings().step_seconds;
+    // ODE's messages of this step (its LCP giving up) are counted, not printed.
+    const std::uint64_t messages_before = messages_.total();
+    const MessageLog::Capture capture(messages_);
     plugin_->beginStep(h);
     recorded_ = 0;
     dSpaceCollide(space_, this, &SimEngine::nearCallback);
@@ -178,6 +182,8 @@ class SimEngine final : public sim::Engine {
     }
     dJointGroupEmpty(contacts_);
     if (!engine_wheels_.empty()) readEngineWheels();
+    ++steps_;
+    if (messages_.total() != messages_before) noteMessageStep();
   }
 
   vehicle::BodyKinematics body(int body) const override {
@@ -238,6 +244,18 @@ class SimEngine final : public sim::Engine {
   // The engine's own wheels run no tyre model: nothing to tell.
   void setWheelListener(WheelListener* listener) override { plugin_->setListener(listener); }
   double contactSeconds() const override { return plugin_->contactSeconds(); }
+  std::vector<sim::SolverMessage> solverMessages() const override {
+    std::vector<sim::SolverMessage> said;
+    for (std::size_t k = 0; k < messages_.counts().size(); ++k) {
+      const MessageCount& m = messages_.counts()[k];
+      said.push_back({.engine = "ODE",
+                      .text = m.text,
+                      .steps = message_steps_[k].steps,
+                      .count = m.count,
+                      .first_time_s = static_cast<double>(message_steps_[k].first) * settings().step_seconds});
+    }
+    return said;
+  }
 
  private:
   struct Ref {
@@ -252,6 +270,19 @@ class SimEngine final : public sim::Engine {
     vehicle::MotorTarget target;  // the wheel drive's, this step
     double effort = 0.0;          // the wheel drive's torque, this step (N m)
   };
+
+  // In how many steps each message of messages_ came, and the first (1 the
+  // engine's first step); called after a step in which some came.
+  void noteMessageStep() {
+    message_steps_.resize(messages_.counts().size());
+    for (std::size_t k = 0; k < message_steps_.size(); ++k) {
+      MessageSteps& m = message_steps_[k];
+      if (messages_.counts()[k].count == m.seen) continue;
+      m.seen = messages_.counts()[k].count;
+      ++m.steps;
+      if (m.first == 0) m.first = steps_;
+    }
+  }
 
   // A wheel's drive in force mode (vehicle::wheelDriveTorque): WTC has put
   // the tyre's forces on the wheel by now (beginStep), so the torque that
@@ -476,6 +507,14 @@ class SimEngine final : public sim::Engine {
   std::vector<double> engine_wheel_mu_;            // per material id
   std::deque<RecordedContact> recorded_contacts_;  // grows to the most contacts a step had; never shrinks
   std::size_t recorded_ = 0;                       // used this step
+  MessageLog messages_;                            // ODE's messages in this engine's steps
+  struct MessageSteps {
+    std::uint64_t seen = 0;   // messages_.counts()[k].count after the last step that had it
+    std::uint64_t steps = 0;  // steps that had it
+    std::uint64_t first = 0;  // the first of them (1: the engine's first step)
+  };
+  std::vector<MessageSteps> message_steps_;  // parallel to messages_.counts()
+  std::uint64_t steps_ = 0;                  // steps so far
 };
 
 }  // namespace
