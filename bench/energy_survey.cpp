@@ -23,7 +23,7 @@
 #include "wtc/base/constants.hpp"
 #include "wtc/sim/sim_constants.hpp"
 #include "wtc/sim/scene_file.hpp"
-#include "wtc/sim/make_engine.hpp"
+#include "wtc/sim/engine_table.hpp"
 #include "wtc/sim/run.hpp"
 #include "wtc/sim/step_count.hpp"
 #include "wtc/base/tolerances.hpp"

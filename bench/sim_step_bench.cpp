@@ -20,7 +20,7 @@
 #include <memory>
 
 #include "wtc/sim/scene_file.hpp"
-#include "wtc/sim/make_engine.hpp"
+#include "wtc/sim/engine_table.hpp"
 #include "wtc/sim/run.hpp"
 
 namespace {

@@ -25,7 +25,7 @@
 
 #include "wtc/base/constants.hpp"
 #include "wtc/sim/scene_file.hpp"
-#include "wtc/sim/make_engine.hpp"
+#include "wtc/sim/engine_table.hpp"
 #include "wtc/sim/run.hpp"
 
 namespace {
@@ -78,7 +78,7 @@ Result soak(const fs::path& file, const std::string& engine, double minutes) {
   const auto controller = scene.make_controller();
   wtc::sim::Run run(*e, controller.get(), scene.vehicle_effects);
   Result r;
-  r.scene = scene.name + " (" + std::string(wtc::sim::engineName(scene.engine.kind)) + ")";
+  r.scene = scene.name + " (" + scene.engine.engine + ")";
   const double h = scene.engine.step_seconds;
   const std::vector<int> drives = scene.vehicle.actuated();
   std::vector<double> rate_before(scene.vehicle.bodies.size());

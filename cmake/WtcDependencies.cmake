@@ -1,16 +1,12 @@
 # Every dependency comes from a Debian 12 package and is found through CMake.
-# The core needs only Eigen and Qhull; the engines, FCL and the test tools are
-# needed by the plugins, the tests and the benchmarks.
+# The core needs only Eigen and Qhull; FCL and the test tools are needed by
+# the tests and the benchmarks.
 find_package(Eigen3 3.3 REQUIRED NO_MODULE)
 find_package(Qhull REQUIRED CONFIG)
 
 find_package(PkgConfig REQUIRED)
-# The engine adapters (wtc::bullet, wtc::ode).
-# Bullet ships float and double builds; WTC is double throughout. The .pc
-# file adds -DBT_USE_DOUBLE_PRECISION; never link the float build as well.
-pkg_check_modules(BULLET REQUIRED IMPORTED_TARGET bullet-float64)
-# ODE has no CMake config; Debian builds it with dDOUBLE.
-pkg_check_modules(ODE REQUIRED IMPORTED_TARGET ode)
+# Each engine finds what it needs in its own folder (plugins/<engine>/
+# dependencies.cmake, through wtc_add_engine).
 if(WTC_BUILD_TESTS OR WTC_BUILD_BENCHMARKS)
   # libccd's .pc reports 2.0 for the 2.1 package: no version request.
   pkg_check_modules(CCD REQUIRED IMPORTED_TARGET ccd)

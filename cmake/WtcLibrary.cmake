@@ -5,8 +5,9 @@
 # under <dir>/wtc (default: the project's include/), the C++ standard its
 # headers need carried to every consumer, the project's warnings, and the
 # project's private headers (src/<stage>/*.hpp, never installed) for its
-# own sources only. wtc_install_library(<target>) in cmake/WtcInstall.cmake
-# installs it. The layers and their order: cmake/layers.txt.
+# own sources only. Every library declared so is installed and exported
+# (cmake/WtcInstall.cmake reads the global properties WTC_LIBRARIES and
+# WTC_PUBLIC_INCLUDE_DIRS). The layers and their order: cmake/layers.txt.
 add_library(wtc_private_headers INTERFACE)
 target_include_directories(wtc_private_headers INTERFACE ${PROJECT_SOURCE_DIR}/src)
 
@@ -26,6 +27,8 @@ function(wtc_add_library target)
     $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
   target_compile_features(${target} PUBLIC cxx_std_20)
   target_link_libraries(${target} PRIVATE $<BUILD_INTERFACE:wtc_private_headers>)
+  set_property(GLOBAL APPEND PROPERTY WTC_LIBRARIES ${target})
+  set_property(GLOBAL APPEND PROPERTY WTC_PUBLIC_INCLUDE_DIRS ${arg_INCLUDE})
   # An engine's own headers (Bullet's, ODE's) are not -Wpedantic clean.
   if(arg_ENGINE_HEADERS)
     target_compile_options(${target} PRIVATE -Wall -Wextra)

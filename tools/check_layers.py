@@ -10,13 +10,19 @@ import re
 import sys
 
 INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"')
-PUBLIC_ROOTS = ['include', 'plugins/bullet/include', 'plugins/ode/include', 'plugins/bullet/sim/include',
-                'plugins/ode/sim/include', 'plugins/engines/include']
 PRIVATE_ROOTS = ['src']
+ENGINE = '{engine}'
 
 
-def read_layers(path):
-    units, only = [], {}
+def public_roots(root):
+    """include/, and each plugins/<folder>/include/ (the engines' adapters, the engine table)."""
+    plugins = os.path.join(root, 'plugins')
+    folders = sorted(os.listdir(plugins)) if os.path.isdir(plugins) else []
+    return ['include'] + [f'plugins/{f}/include' for f in folders if os.path.isdir(os.path.join(plugins, f, 'include'))]
+
+
+def read_layers(root, path):
+    units, only, templates = [], {}, []
     for n, line in enumerate(open(path), 1):
         line = line.split('#', 1)[0].split()
         if not line:
@@ -25,7 +31,19 @@ def read_layers(path):
             only[line[1]] = set(line[2].split(','))
             continue
         level, name, targets, folders = int(line[0]), line[1], line[2].split(','), line[3:]
-        units.append({'level': level, 'name': name, 'targets': targets, 'folders': folders})
+        unit = {'level': level, 'name': name, 'targets': targets, 'folders': folders}
+        (templates if name == ENGINE else units).append(unit)
+    # {engine}: one unit per folder of its folders' parent that no other unit names.
+    named = {f for u in units for f in u['folders']}
+    for t in templates:
+        parent = os.path.dirname(t['folders'][0])
+        for entry in sorted(os.listdir(os.path.join(root, parent))):
+            folder = f'{parent}/{entry}'
+            if folder in named or not os.path.isdir(os.path.join(root, folder)):
+                continue
+            units.append({'level': t['level'], 'name': entry,
+                          'targets': [x.replace(ENGINE, entry) for x in t['targets']],
+                          'folders': [x.replace(ENGINE, entry) for x in t['folders']]})
     return units, only
 
 
@@ -44,8 +62,12 @@ def sees(a, b):
     return a is b or b['level'] < a['level']
 
 
-def resolve(root, including, name):
-    for base in [os.path.dirname(including)] + PUBLIC_ROOTS + PRIVATE_ROOTS:
+def resolve(root, including, name, units, roots):
+    """The file an include names: beside the including file, under a public or private root, or under the
+    including file's own unit's folders (an engine's folder is its libraries' private root)."""
+    here = unit_of(including, units)
+    own = [f for f in here['folders'] if f.startswith('plugins/')] if here is not None else []
+    for base in [os.path.dirname(including)] + roots + PRIVATE_ROOTS + own:
         candidate = os.path.normpath(os.path.join(base, name))
         if os.path.isfile(os.path.join(root, candidate)):
             return candidate
@@ -54,6 +76,7 @@ def resolve(root, including, name):
 
 def check_includes(root, units):
     problems = []
+    roots = public_roots(root)
     for u in units:
         for folder in u['folders']:
             for dirpath, _, files in os.walk(os.path.join(root, folder)):
@@ -66,7 +89,7 @@ def check_includes(root, units):
                         m = INCLUDE.match(line)
                         if not m:
                             continue
-                        target = resolve(root, path, m.group(1))
+                        target = resolve(root, path, m.group(1), units, roots)
                         if target is None:
                             continue
                         there = unit_of(target, units)
@@ -115,7 +138,7 @@ def check_links(links_file, units, only):
 
 def main():
     root, links = sys.argv[1], sys.argv[2]
-    units, only = read_layers(os.path.join(root, 'cmake/layers.txt'))
+    units, only = read_layers(root, os.path.join(root, 'cmake/layers.txt'))
     problems = check_includes(root, units) + check_links(links, units, only)
     for p in problems:
         print(p)

@@ -16,7 +16,7 @@
 #include "wtc/base/error.hpp"
 #include "wtc/sim/run_summary_file.hpp"
 #include "wtc/sim/scene_file.hpp"
-#include "wtc/sim/make_engine.hpp"
+#include "wtc/sim/engine_table.hpp"
 #include "wtc/sim/replay.hpp"
 #include "wtc/sim/scene_run.hpp"
 
@@ -126,7 +126,7 @@ int main(int argc, char** argv) {
     const auto engine_ptr = wtc::sim::makeEngine(scene.engine, *scene.terrain, scene.vehicle, scene.placement);
     wtc::sim::RunSummary names;
     names.scene = scene.name;
-    names.engine = std::string(wtc::sim::engineName(scene.engine.kind));
+    names.engine = scene.engine.engine;
     names.mode = std::string(wtc::sim::modeName(scene.engine));
     const fs::path dir = outputDirectory(out, skip, key, names, fs::absolute(scene_file).string());
 

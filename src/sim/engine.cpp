@@ -8,57 +8,41 @@
 
 namespace wtc::sim {
 
-std::string_view engineName(EngineKind kind) {
-  switch (kind) {
-    case EngineKind::kBullet:
-      return "bullet";
-    case EngineKind::kOde:
-      return "ode";
-    case EngineKind::kOdeQuick:
-      return "ode_quick";
+std::string_view modeName(const EngineSettings& settings) {
+  if (!settings.native_wheels) return contactModeName(settings.mode);
+  switch (*settings.native_wheels) {
+    case NativeWheelShape::kCylinder:
+      return "engine_cylinder";
+    case NativeWheelShape::kSphere:
+      return "engine_sphere";
   }
   return "?";
 }
 
-EngineKind parseEngine(std::string_view name, const std::string& where) {
-  for (const EngineKind kind : {EngineKind::kBullet, EngineKind::kOde, EngineKind::kOdeQuick}) {
-    if (name == engineName(kind)) return kind;
-  }
-  throw InvalidInputError(where + ": unknown engine '" + std::string(name) + "' (expected bullet, ode or ode_quick)");
-}
-
-std::string_view modeName(const EngineSettings& settings) {
-  switch (settings.engine_wheels) {
-    case EngineWheels::kCylinder:
-      return "engine_cylinder";
-    case EngineWheels::kSphere:
-      return "engine_sphere";
-    case EngineWheels::kNone:
-      break;
-  }
-  return contactModeName(settings.mode);
-}
-
 void parseMode(std::string_view name, EngineSettings& settings, const std::string& where) {
-  static constexpr std::pair<std::string_view, std::pair<ContactMode, EngineWheels>> kModes[] = {
-      {"force", {ContactMode::kForce, EngineWheels::kNone}},
-      {"constraint", {ContactMode::kConstraint, EngineWheels::kNone}},
-      {"engine_cylinder", {ContactMode::kForce, EngineWheels::kCylinder}},
-      {"engine_sphere", {ContactMode::kForce, EngineWheels::kSphere}}};
+  static constexpr std::pair<std::string_view, std::pair<ContactMode, std::optional<NativeWheelShape>>> kModes[] = {
+      {"force", {ContactMode::kForce, std::nullopt}},
+      {"constraint", {ContactMode::kConstraint, std::nullopt}},
+      {"engine_cylinder", {ContactMode::kForce, NativeWheelShape::kCylinder}},
+      {"engine_sphere", {ContactMode::kForce, NativeWheelShape::kSphere}}};
   for (const auto& [mode_name, mode] : kModes) {
     if (name != mode_name) continue;
     settings.mode = mode.first;
-    settings.engine_wheels = mode.second;
+    settings.native_wheels = mode.second;
     return;
   }
   throw InvalidInputError(where + ": '" + std::string(name) +
                           "' (expected force, constraint, engine_cylinder or engine_sphere)");
 }
 
-std::vector<double> engineWheelFrictions(const Terrain& terrain) {
+std::vector<double> nativeWheelFrictions(const Terrain& terrain) {
   std::vector<double> mu;
   for (const Material& m : terrain.materials()) mu.push_back(tractionPeak(m));
   return mu;
+}
+
+bool treadIsSphere(const EngineSettings& settings, const WheelGeometry& geometry) {
+  return settings.native_wheels == NativeWheelShape::kSphere || geometry.tread_width >= 2.0 * geometry.free_radius;
 }
 
 void validate(const EngineSettings& settings, const std::string& where) {

@@ -3,18 +3,17 @@
 #include <algorithm>
 
 #include "base/scratch_capacity.hpp"
-#include "wtc/sim/engine.hpp"
 
 namespace wtc::sim {
 
-EngineWheelContacts::EngineWheelContacts() { contacts_.reserve(kReservedContacts); }
+NativeWheelContacts::NativeWheelContacts() { contacts_.reserve(kReservedContacts); }
 
-void EngineWheelContacts::clear() {
+void NativeWheelContacts::clear() {
   contacts_.clear();
   forces_ = WheelForces{};
 }
 
-void EngineWheelContacts::add(const Eigen::Vector3d& ground_point, const Eigen::Vector3d& normal, double depth,
+void NativeWheelContacts::add(const Eigen::Vector3d& ground_point, const Eigen::Vector3d& normal, double depth,
                               const Eigen::Vector3d& force) {
   ContactForce& c = contacts_.emplace_back();
   c.contact.ground_point = ground_point;
@@ -27,7 +26,7 @@ void EngineWheelContacts::add(const Eigen::Vector3d& ground_point, const Eigen::
   c.mu = c.normal_force > 0.0 ? c.tangential_force.norm() / c.normal_force : 0.0;
 }
 
-void EngineWheelContacts::finish(const Eigen::Vector3d& centre, const Eigen::Vector3d& axle) {
+void NativeWheelContacts::finish(const Eigen::Vector3d& centre, const Eigen::Vector3d& axle) {
   for (const ContactForce& c : contacts_) {
     forces_.force += c.force;
     forces_.torque += (c.contact.ground_point - centre).cross(c.force);
@@ -37,14 +36,14 @@ void EngineWheelContacts::finish(const Eigen::Vector3d& centre, const Eigen::Vec
   forces_.contacts = contacts_;
 }
 
-EngineWheelSet::EngineWheelSet(const vehicle::VehicleDescription& vehicle)
+NativeWheelSet::NativeWheelSet(const vehicle::VehicleDescription& vehicle)
     : wheels_(vehicle.wheels().size()), bodies_(vehicle.wheels()) {}
 
-void EngineWheelSet::clear() {
-  for (EngineWheelContacts& w : wheels_) w.clear();
+void NativeWheelSet::clear() {
+  for (NativeWheelContacts& w : wheels_) w.clear();
 }
 
-void EngineWheelSet::finish(const Engine& engine) {
+void NativeWheelSet::finish(const Engine& engine) {
   for (std::size_t k = 0; k < wheels_.size(); ++k) {
     const vehicle::BodyKinematics b = engine.body(bodies_[k]);
     wheels_[k].finish(b.pose.translation(), b.pose.linear() * engine.vehicle().bodies[bodies_[k]].wheel->axle);

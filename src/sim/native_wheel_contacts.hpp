@@ -1,25 +1,29 @@
 #pragma once
-// What an engine's own wheel contact (EngineWheels: the baseline a study
-// compares WTC with) did to one wheel in a step, in WTC's terms, so that
-// the baseline's wheels reach the sensors, recorders and summaries as WTC's
-// do. An engine implementation keeps an EngineWheelSet: after each step it
-// clears it, adds each contact the engine's solver acted on, and finishes
-// it at the wheels' centres.
+// The engine's own wheel contact (EngineSettings::native_wheels: the
+// baseline a study compares WTC with) in WTC's terms, so that the
+// baseline's wheels reach the sensors, recorders and summaries as WTC's
+// do: NativeWheels is the common part of each engine's native-wheels
+// strategy. After each step the engine's strategy clears its wheels, adds
+// each contact the engine's solver acted on, and finishes them at the
+// wheels' centres.
 #include <cstddef>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "sim/wheel_contacts.hpp"
+#include "wtc/sim/engine.hpp"
 #include "wtc/tyre/tyre_model.hpp"
-#include "wtc/vehicle/vehicle_description.hpp"
 #include "wtc/tyre/wheel_forces.hpp"
+#include "wtc/vehicle/vehicle_description.hpp"
 
 namespace wtc::sim {
 
-class EngineWheelContacts {
+/// What the engine's solver did to one wheel in a step.
+class NativeWheelContacts {
  public:
   /// Reserves room for kReservedContacts contacts (no allocation once warm).
-  EngineWheelContacts();
+  NativeWheelContacts();
 
   void clear();
   /// One contact: the point on the ground (world, m), the ground's normal
@@ -42,28 +46,56 @@ class EngineWheelContacts {
   WheelState state_;
 };
 
-class Engine;
-
-/// One EngineWheelContacts per wheel body of a vehicle, in body order.
-class EngineWheelSet {
+/// One NativeWheelContacts per wheel body of a vehicle, in body order.
+class NativeWheelSet {
  public:
-  EngineWheelSet() = default;
-  explicit EngineWheelSet(const vehicle::VehicleDescription& vehicle);
+  explicit NativeWheelSet(const vehicle::VehicleDescription& vehicle);
 
-  bool empty() const { return wheels_.empty(); }
   std::size_t size() const { return wheels_.size(); }
   /// The body of wheel k.
   int body(std::size_t k) const { return bodies_[k]; }
-  EngineWheelContacts& operator[](std::size_t k) { return wheels_[k]; }
-  const EngineWheelContacts& operator[](std::size_t k) const { return wheels_[k]; }
+  NativeWheelContacts& operator[](std::size_t k) { return wheels_[k]; }
+  const NativeWheelContacts& operator[](std::size_t k) const { return wheels_[k]; }
 
   void clear();
   /// Finishes every wheel at its centre and axle as `engine` has them now.
   void finish(const Engine& engine);
 
  private:
-  std::vector<EngineWheelContacts> wheels_;
+  std::vector<NativeWheelContacts> wheels_;
   std::vector<int> bodies_;
+};
+
+/// The common part of an engine's native-wheels strategy: the wheels'
+/// contacts as the engine's reader left them, no tyre model (so nothing
+/// to tell a listener), and as WTC's time the plugin's, which still holds
+/// the terrain. `Plugin` has contactSeconds(); `Base` is WheelContacts or
+/// an engine's own strategy interface derived from it.
+template <class Plugin, class Base = WheelContacts>
+class NativeWheels : public Base {
+ public:
+  const WheelForces& forces(std::size_t k) const final { return wheels_[k].forces(); }
+  const WheelState& state(std::size_t k) const final { return wheels_[k].state(); }
+  /// The engine's own wheels run no tyre model: nothing to tell.
+  void setListener(WheelListener*) final {}
+  double contactSeconds() const final { return plugin_.contactSeconds(); }
+
+  NativeWheelShape shape() const { return shape_; }
+
+ protected:
+  NativeWheels(const Engine& engine, Plugin& plugin, NativeWheelShape shape)
+      : engine_(engine), plugin_(plugin), shape_(shape), wheels_(engine.vehicle()) {}
+
+  const Engine& engine() const { return engine_; }
+  Plugin& plugin() const { return plugin_; }
+  NativeWheelSet& wheels() { return wheels_; }
+  const NativeWheelSet& wheels() const { return wheels_; }
+
+ private:
+  const Engine& engine_;
+  Plugin& plugin_;
+  NativeWheelShape shape_;
+  NativeWheelSet wheels_;
 };
 
 }  // namespace wtc::sim

@@ -14,7 +14,7 @@ namespace {
 
 constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 
-std::string engineText(const sim::Scene& scene) { return std::string(sim::engineName(scene.engine.kind)); }
+std::string engineText(const sim::Scene& scene) { return scene.engine.engine; }
 
 void writeJson(const std::filesystem::path& path, const nlohmann::json& j) {
   io::writeFileAtomically(path, j.dump(2) + '\n');

@@ -124,7 +124,7 @@ std::string describe(const FailedCriterion& f) {
 RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& options) {
   RunSummary summary;
   summary.scene = scene.name;
-  summary.engine = std::string(engineName(scene.engine.kind));
+  summary.engine = scene.engine.engine;
   summary.mode = std::string(modeName(scene.engine));
   summary.dt = scene.engine.step_seconds;
   summary.parameters = scene.parameters;

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "wtc/base/error.hpp"
+#include "wtc/sim/engine_table.hpp"
 #include "wtc/sim/scene_file.hpp"
 #include "wtc/study/study_file.hpp"
 
@@ -13,7 +14,8 @@ namespace {
 // The scene's message for `run` with `overrides`, or "" if it loads.
 std::string loadProblem(const PlannedRun& run, const std::vector<sim::Override>& overrides) {
   try {
-    sim::loadScene(run.scene_file, overrides);
+    // The scene reader keeps the engine's name; the engine table judges it.
+    sim::requireEngine(sim::loadScene(run.scene_file, overrides).engine);
     return {};
   } catch (const std::exception& e) {
     return e.what();

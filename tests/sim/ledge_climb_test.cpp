@@ -11,7 +11,7 @@
 #include "wtc/base/error.hpp"
 #include "wtc/sim/scene_file.hpp"
 #include "wtc/vehicle/vehicle_file.hpp"
-#include "wtc/sim/make_engine.hpp"
+#include "wtc/sim/engine_table.hpp"
 #include "wtc/sim/scene_run.hpp"
 #include "wtc/vehicle/climb_controller.hpp"
 

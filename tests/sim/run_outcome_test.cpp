@@ -12,7 +12,7 @@
 #include "wtc/base/constants.hpp"
 #include "wtc/sim/run_summary_file.hpp"
 #include "wtc/sim/scene_file.hpp"
-#include "wtc/sim/make_engine.hpp"
+#include "wtc/sim/engine_table.hpp"
 #include "wtc/sim/run.hpp"
 #include "wtc/sim/scene_run.hpp"
 #include "wtc/sim/sim_constants.hpp"
@@ -105,18 +105,18 @@ TEST(RunOutcomeTest, FailedCriteriaAreWrittenAndReadBack) {
 // some out, and nothing grows beyond the drives' work.
 TEST(EnergyBalanceTest, TheDrivesWorkIsTheOnlySource) {
   const Scene s = scene("robot_straight");
-  for (const EngineKind kind : {EngineKind::kBullet, EngineKind::kOde}) {
+  for (const char* name : {"bullet", "ode"}) {
     EngineSettings settings = s.engine;
-    settings.kind = kind;
+    settings.engine = name;
     const auto engine = makeEngine(settings, *s.terrain, s.vehicle, s.placement);
     const auto controller = s.make_controller();
     sim::Run r(*engine, controller.get(), s.vehicle_effects);
     while (r.time() < 2.0) r.step();
     const EnergyBalance& e = r.energyBalance();
-    EXPECT_GT(e.driveWork(), 10.0) << engineName(kind);
-    EXPECT_GT(e.growth() + e.driveWork(), 10.0) << engineName(kind) << ": the vehicle gained energy (J)";
-    EXPECT_LT(e.growth(), 0.0) << engineName(kind) << ": and lost some of the drives' work";
-    EXPECT_EQ(e.maxGrowth(), 0.0) << engineName(kind) << ": never above its start plus the drives' work";
+    EXPECT_GT(e.driveWork(), 10.0) << name;
+    EXPECT_GT(e.growth() + e.driveWork(), 10.0) << name << ": the vehicle gained energy (J)";
+    EXPECT_LT(e.growth(), 0.0) << name << ": and lost some of the drives' work";
+    EXPECT_EQ(e.maxGrowth(), 0.0) << name << ": never above its start plus the drives' work";
   }
 }
 

@@ -10,6 +10,7 @@
 #include <fstream>
 
 #include "wtc/base/error.hpp"
+#include "wtc/sim/engine_table.hpp"
 #include "wtc/tyre/traction_law.hpp"
 
 namespace wtc::sim {
@@ -29,12 +30,13 @@ std::vector<fs::path> shippedScenes() {
 }
 
 // The error of loading `text` as a scene beside the shipped ones (so that
-// its relative paths resolve), with `overrides`.
+// its relative paths resolve), with `overrides`, and of asking the engine
+// table for its engine (as wtc-sim and wtc-study do before anything runs).
 std::string errorOf(const std::string& text, std::vector<Override> overrides = {}) {
   const fs::path path = kScenes / "wtc_scene_file_test.yaml.tmp";
   std::ofstream(path) << text;
   try {
-    loadScene(path, overrides);
+    requireEngine(loadScene(path, overrides).engine);
   } catch (const InvalidInputError& e) {
     fs::remove(path);
     return e.what();
@@ -70,9 +72,9 @@ TEST(SceneFileTest, OverridesReachValuesListsAndParameters) {
       parseOverride("wheel_rate=2.5"),   parseOverride("vehicle.translation=[1, 2, 0.5]"),
       parseOverride("output.rate_hz=50")};
   const sim::Scene s = loadScene(file, overrides);
-  EXPECT_EQ(s.engine.kind, sim::EngineKind::kOdeQuick);
+  EXPECT_EQ(s.engine.engine, "ode_quick");
   EXPECT_EQ(s.engine.mode, ContactMode::kConstraint);
-  EXPECT_EQ(s.engine.engine_wheels, sim::EngineWheels::kNone);
+  EXPECT_FALSE(s.engine.native_wheels);
   EXPECT_EQ(s.engine.step_seconds, 0.001);
   EXPECT_EQ(s.engine.solver_residual, 1e-8);
   EXPECT_EQ(s.parameters.at("wheel_rate"), 2.5);
@@ -105,10 +107,10 @@ TEST(SceneFileTest, TheEnginesOwnWheelContactIsAMode) {
   const std::vector<Override> to_cylinder = {parseOverride("mode=engine_cylinder")};
   const std::vector<Override> to_sphere = {parseOverride("mode=engine_sphere")};
   const sim::Scene cylinder = loadScene(file, to_cylinder);
-  EXPECT_EQ(cylinder.engine.engine_wheels, sim::EngineWheels::kCylinder);
+  EXPECT_EQ(cylinder.engine.native_wheels, sim::NativeWheelShape::kCylinder);
   EXPECT_EQ(sim::modeName(cylinder.engine), "engine_cylinder");
   const sim::Scene sphere = loadScene(file, to_sphere);
-  EXPECT_EQ(sphere.engine.engine_wheels, sim::EngineWheels::kSphere);
+  EXPECT_EQ(sphere.engine.native_wheels, sim::NativeWheelShape::kSphere);
   EXPECT_EQ(sim::modeName(sphere.engine), "engine_sphere");
   EXPECT_EQ(sim::modeName(loadScene(file).engine), "force");
 }
@@ -118,7 +120,8 @@ TEST(SceneFileTest, BadScenesAreRefusedWithFileLineKeyAndProblem) {
   EXPECT_THAT(errorOf(kMinimal + "durration: 2\n"),
               HasSubstr("wtc_scene_file_test.yaml.tmp:6:1: unknown key 'durration'"));
   // Case: an unknown engine, a wrong type, a non-finite or impossible number.
-  EXPECT_THAT(errorOf(kMinimal + "engine: physx\n"), HasSubstr(":6:9: engine: unknown engine 'physx'"));
+  EXPECT_THAT(errorOf(kMinimal + "engine: physx\n"),
+              HasSubstr(":6:9: engine: unknown engine 'physx' (expected bullet, ode or ode_quick)"));
   EXPECT_THAT(errorOf(kMinimal + "dt: fast\n"), HasSubstr(":6:5: dt: 'fast' is not a number"));
   EXPECT_THAT(errorOf(kMinimal + "mode: rigid\n"),
               HasSubstr(":6:7: mode: 'rigid' (expected force, constraint, engine_cylinder or engine_sphere)"));

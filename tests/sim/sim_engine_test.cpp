@@ -9,7 +9,7 @@
 
 #include "sim_test_support.hpp"
 #include "wtc/base/constants.hpp"
-#include "wtc/sim/make_engine.hpp"
+#include "wtc/sim/engine_table.hpp"
 #include "wtc/sim/run.hpp"
 #include "wtc/terrain/terrain_primitives.hpp"
 #include "wtc/vehicle/schedule_controller.hpp"
@@ -28,7 +28,7 @@ constexpr double kSlideSeconds = 1.0;
 constexpr double kSlideTolerance = 0.01;  // of g (measured: 2e-5 g in every engine)
 
 class SimEngineTest : public ::testing::TestWithParam<sim::EngineSettings> {};
-class EngineWheelsTest : public ::testing::TestWithParam<sim::EngineSettings> {};
+class NativeWheelsTest : public ::testing::TestWithParam<sim::EngineSettings> {};
 
 // The wheels hold zero rate, the sections their reference positions.
 std::vector<vehicle::DriveSchedule> holdStill(const vehicle::VehicleDescription& v) {
@@ -150,13 +150,12 @@ TEST(SimEngineStaticsTest, FoldDrivesHoldTheStandingRobotWithTheSameTorqueInBull
   constexpr double kTorqueTolerance = 0.005;  // of the torque
   const Terrain ground = flatGround();
   const vehicle::VehicleDescription robot = shippedVehicle("six_wheel_robot.yaml");
-  const sim::EngineSettings ode{.kind = sim::EngineKind::kOde};
-  const sim::EngineSettings bullet{
-      .kind = sim::EngineKind::kBullet, .solver_iterations = 2000, .solver_residual = 1e-12};
+  const sim::EngineSettings ode{.engine = "ode"};
+  const sim::EngineSettings bullet{.engine = "bullet", .solver_iterations = 2000, .solver_residual = 1e-12};
   // Bullet as the scenes run it (its default residual): its drives start
   // each step's solve from the last step's effort, so they converge there
   // too (started from zero, they reported about half the torque).
-  const sim::EngineSettings bullet_default{.kind = sim::EngineKind::kBullet};
+  const sim::EngineSettings bullet_default{.engine = "bullet"};
   std::vector<double> torques;  // ODE front, rear; Bullet front, rear; the same at the default residual
   for (const sim::EngineSettings& settings : {ode, bullet, bullet_default}) {
     const auto engine = sim::makeEngine(settings, ground, robot, Eigen::Isometry3d::Identity());
@@ -186,7 +185,7 @@ TEST(SimEngineStaticsTest, FoldDrivesHoldTheStandingRobotWithTheSameTorqueInBull
 TEST(SimEngineStaticsTest, ATargetSetTwiceBeforeAStepActsOnce) {
   const Terrain ground = flatGround();
   const vehicle::VehicleDescription robot = shippedVehicle("six_wheel_robot.yaml");
-  const sim::EngineSettings bullet{.kind = sim::EngineKind::kBullet};
+  const sim::EngineSettings bullet{.engine = "bullet"};
   const auto once = sim::makeEngine(bullet, ground, robot, Eigen::Isometry3d::Identity());
   const auto twice = sim::makeEngine(bullet, ground, robot, Eigen::Isometry3d::Identity());
   vehicle::ScheduleController hold_once(robot, holdStill(robot), "test");
@@ -208,7 +207,7 @@ TEST(SimEngineStaticsTest, ATargetSetTwiceBeforeAStepActsOnce) {
 // stands on a 15 deg slope of asphalt (peak mu 0.8 > tan 15 deg) and slides
 // down one of ice (mu 0.1) at the block's a = g (sin theta - mu cos theta),
 // on a ground whose first piece is asphalt.
-TEST_P(EngineWheelsTest, WheelsHeldOnASlopeStickOrSlideAsCoulombSays) {
+TEST_P(NativeWheelsTest, WheelsHeldOnASlopeStickOrSlideAsCoulombSays) {
   constexpr double kSlopeRad = 15.0 * std::numbers::pi / 180.0;
   const Material ice{.name = "ice", .mu_max = 0.1};
   const vehicle::VehicleDescription robot = shippedVehicle("six_wheel_robot.yaml");
@@ -235,14 +234,14 @@ TEST_P(EngineWheelsTest, WheelsHeldOnASlopeStickOrSlideAsCoulombSays) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(EngineWheels, EngineWheelsTest, ::testing::ValuesIn(everyEngineWheelBaseline()),
+INSTANTIATE_TEST_SUITE_P(NativeWheels, NativeWheelsTest, ::testing::ValuesIn(everyNativeWheelBaseline()),
                          [](const auto& info) { return label(info.param); });
 
 INSTANTIATE_TEST_SUITE_P(EveryEngine, SimEngineTest, ::testing::ValuesIn(everyEngine()),
                          [](const auto& info) { return label(info.param); });
 // The engines' own wheel contact, the study's baseline: its wheels report
 // what the engine's solver did, so the same statics hold.
-INSTANTIATE_TEST_SUITE_P(EngineWheels, SimEngineTest, ::testing::ValuesIn(everyEngineWheelBaseline()),
+INSTANTIATE_TEST_SUITE_P(NativeWheels, SimEngineTest, ::testing::ValuesIn(everyNativeWheelBaseline()),
                          [](const auto& info) { return label(info.param); });
 
 }  // namespace

@@ -1,7 +1,8 @@
 #include "sim_test_support.hpp"
 
-#include "wtc/vehicle/vehicle_file.hpp"
+#include "wtc/sim/engine_table.hpp"
 #include "wtc/terrain/terrain_primitives.hpp"
+#include "wtc/vehicle/vehicle_file.hpp"
 
 namespace wtc::testing {
 
@@ -18,26 +19,24 @@ Terrain flatGround() {
 
 std::vector<sim::EngineSettings> everyEngine() {
   std::vector<sim::EngineSettings> all;
-  for (const sim::EngineKind kind : {sim::EngineKind::kBullet, sim::EngineKind::kOde, sim::EngineKind::kOdeQuick}) {
+  for (const std::string_view engine : sim::engineNames()) {
     for (const ContactMode mode : {ContactMode::kForce, ContactMode::kConstraint}) {
-      all.push_back({.kind = kind, .mode = mode});
+      all.push_back({.engine = std::string(engine), .mode = mode});
     }
   }
   return all;
 }
 
-std::vector<sim::EngineSettings> everyEngineWheelBaseline() {
+std::vector<sim::EngineSettings> everyNativeWheelBaseline() {
   std::vector<sim::EngineSettings> all;
-  for (const sim::EngineKind kind : {sim::EngineKind::kBullet, sim::EngineKind::kOde, sim::EngineKind::kOdeQuick}) {
-    for (const sim::EngineWheels wheels : {sim::EngineWheels::kCylinder, sim::EngineWheels::kSphere}) {
-      all.push_back({.kind = kind, .engine_wheels = wheels});
+  for (const std::string_view engine : sim::engineNames()) {
+    for (const sim::NativeWheelShape shape : {sim::NativeWheelShape::kCylinder, sim::NativeWheelShape::kSphere}) {
+      all.push_back({.engine = std::string(engine), .native_wheels = shape});
     }
   }
   return all;
 }
 
-std::string label(const sim::EngineSettings& s) {
-  return std::string(sim::engineName(s.kind)) + "_" + std::string(sim::modeName(s));
-}
+std::string label(const sim::EngineSettings& s) { return s.engine + "_" + std::string(sim::modeName(s)); }
 
 }  // namespace wtc::testing

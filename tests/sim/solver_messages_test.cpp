@@ -7,7 +7,7 @@
 #include <filesystem>
 
 #include "wtc/sim/scene_file.hpp"
-#include "wtc/sim/make_engine.hpp"
+#include "wtc/sim/engine_table.hpp"
 #include "wtc/sim/scene_run.hpp"
 
 namespace wtc::testing {

@@ -11,7 +11,7 @@
 
 #include "allocation_counter.hpp"
 #include "wtc/sim/scene_file.hpp"
-#include "wtc/sim/make_engine.hpp"
+#include "wtc/sim/engine_table.hpp"
 #include "wtc/sim/run.hpp"
 
 namespace wtc::testing {

@@ -12,7 +12,7 @@
 #include "wtc/base/error.hpp"
 #include "wtc/sim/scene_file.hpp"
 #include "wtc/study/study_file.hpp"
-#include "wtc/sim/make_engine.hpp"
+#include "wtc/sim/engine_table.hpp"
 #include "wtc/sim/scene_run.hpp"
 
 namespace wtc::sim {

@@ -8,7 +8,7 @@
 #include <filesystem>
 
 #include "wtc/sim/scene_file.hpp"
-#include "wtc/sim/make_engine.hpp"
+#include "wtc/sim/engine_table.hpp"
 #include "wtc/sim/run.hpp"
 #include "wtc/sim/scene_run.hpp"
 

@@ -9,7 +9,7 @@
 
 #include "sim_test_support.hpp"
 #include "wtc/sim/scene_file.hpp"
-#include "wtc/sim/make_engine.hpp"
+#include "wtc/sim/engine_table.hpp"
 #include "wtc/sim/run.hpp"
 #include "wtc/sim/scene_run.hpp"
 #include "wtc/terrain/terrain_primitives.hpp"
@@ -94,8 +94,8 @@ TEST(VehicleScenesTest, DrivingUpAnInclineReachesTheSpeedTheSlipLawPredicts) {
   const double expected = r_f * kRate / (1.0 + lo);
   const Eigen::Isometry3d placement =
       Eigen::Translation3d(3.0, 0.0, 3.0 * std::tan(kSlope)) * Eigen::AngleAxisd(-kSlope, Eigen::Vector3d::UnitY());
-  for (const sim::EngineKind kind : {sim::EngineKind::kBullet, sim::EngineKind::kOde, sim::EngineKind::kOdeQuick}) {
-    const auto engine = sim::makeEngine({.kind = kind}, ground, robot, placement);
+  for (const std::string_view name : sim::engineNames()) {
+    const auto engine = sim::makeEngine({.engine = std::string(name)}, ground, robot, placement);
     std::vector<vehicle::DriveSchedule> schedules(2);
     schedules[0] = {.drives = {}, .mode = vehicle::DriveMode::kVelocity, .points = {{0.0, 0.0}, {1.0, kRate}}};
     schedules[1] = {.drives = {}, .mode = vehicle::DriveMode::kPosition, .points = {{0.0, 0.0}}};
@@ -110,7 +110,7 @@ TEST(VehicleScenesTest, DrivingUpAnInclineReachesTheSpeedTheSlipLawPredicts) {
     const double t0 = run.time();
     while (run.time() < 4.0) run.step();
     const double speed = (run.state().bodies.front().pose.translation() - from).dot(along) / (run.time() - t0);
-    EXPECT_NEAR(speed, expected, kSpeedTolerance * expected) << sim::engineName(kind) << ", slip " << lo;
+    EXPECT_NEAR(speed, expected, kSpeedTolerance * expected) << name << ", slip " << lo;
     EXPECT_LT(expected, r_f * kRate * (1.0 - 5.0 * kSpeedTolerance));  // the slip is visible at this tolerance
   }
 }

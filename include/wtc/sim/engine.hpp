@@ -3,11 +3,13 @@
 //
 // An Engine holds one world: the terrain, one vehicle built from its
 // engine-free description (wtc::vehicle::VehicleDescription), its WTC wheels
-// through the engine's plugin, and a motor on every driven joint. Each
-// engine implements it once, beside its plugin (wtc::bullet_sim,
-// wtc::ode_sim); makeEngine (wtc::sim_engines) picks one. The run loop, the
-// controllers, the tests and the benchmarks drive every engine through this
-// interface, so a scene is written once.
+// through the engine's plugin (or the engine's own wheels), and a motor on
+// every driven joint. Each engine implements it once, beside its plugin
+// (wtc::bullet_sim, wtc::ode_sim), and registers itself in the engine table
+// (wtc/sim/engine_table.hpp, wtc::sim_engines); makeEngine builds the one
+// EngineSettings::engine names. The run loop, the controllers, the tests
+// and the benchmarks drive every engine through this interface, so a scene
+// is written once.
 //
 // Indices are the description's body indices throughout. A step:
 //   setMotorTarget / addForce for the next step   (the caller: controller, hitch)
@@ -19,42 +21,40 @@
 // along it.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include <Eigen/Geometry>
 
-#include "wtc/tyre/effects.hpp"
-#include "wtc/tyre/contact_mode.hpp"
+#include "wtc/adapter/wheel_listener.hpp"
 #include "wtc/terrain/terrain.hpp"
+#include "wtc/tyre/contact_mode.hpp"
+#include "wtc/tyre/effects.hpp"
 #include "wtc/tyre/tyre_model.hpp"
 #include "wtc/vehicle/drive.hpp"
 #include "wtc/vehicle/hitch_law.hpp"
 #include "wtc/vehicle/vehicle_description.hpp"
-#include "wtc/adapter/wheel_listener.hpp"
 
 namespace wtc::sim {
-
-/// kOde steps with dWorldStep (direct), kOdeQuick with dWorldQuickStep (iterative).
-enum class EngineKind { kBullet, kOde, kOdeQuick };
-
-/// "bullet", "ode", "ode_quick".
-std::string_view engineName(EngineKind kind);
-/// The kind named `name`; InvalidInputError naming `where` and the known names otherwise.
-EngineKind parseEngine(std::string_view name, const std::string& where);
 
 /// The engine's own wheel contact, a baseline to compare WTC with: the
 /// wheel body collides with the terrain pieces as a cylinder (or a sphere
 /// of radius r_f) through the engine's own collision, with its default
 /// rigid contact and Coulomb friction at the peak of the ground's mu(s); no
-/// tyre model, no rolling resistance. kNone: WTC's wheels.
-enum class EngineWheels { kNone, kCylinder, kSphere };
+/// tyre model, no rolling resistance. Each engine chooses its native-wheels
+/// strategy with it once, when it is built.
+enum class NativeWheelShape { kCylinder, kSphere };
 
 struct EngineSettings {
-  EngineKind kind = EngineKind::kBullet;
-  ContactMode mode = ContactMode::kForce;  ///< WTC's contact mode (unused with engine_wheels).
-  EngineWheels engine_wheels = EngineWheels::kNone;
+  /// The engine, by its name in the engine table (wtc/sim/engine_table.hpp,
+  /// wtc::sim_engines): "bullet", "ode" (dWorldStep, direct), "ode_quick"
+  /// (dWorldQuickStep, iterative).
+  std::string engine = "bullet";
+  ContactMode mode = ContactMode::kForce;  ///< WTC's contact mode (unused with native_wheels).
+  /// The engine's own wheel contact instead of WTC's wheels; none: WTC's.
+  std::optional<NativeWheelShape> native_wheels = std::nullopt;
   double step_seconds = 4e-4;  ///< h (s), > 0: the source's mean step.
   int solver_iterations = 50;  ///< Iterative solvers' iterations per step (Bullet, ODE quickstep), > 0.
   /// Bullet's solver stops iterating once the squared velocity errors of
@@ -64,19 +64,31 @@ struct EngineSettings {
   /// study.md). ODE's quickstep always runs its iterations.
   double solver_residual = 1e-6;
   EffectSet tyre_effects = EffectSet::full();
+  /// Where `engine` came from, for the message that refuses a name the
+  /// table does not have: a scene file's "<file>:<line>:<col>: engine"
+  /// (the scene reader, a layer below the table, keeps the place and the
+  /// table judges the name when the engine is made).
+  std::string engine_where = "engine";
 };
 
 /// How the wheels meet the ground, as scenes, summaries and reports name it:
 /// "force", "constraint" (WTC's modes), "engine_cylinder", "engine_sphere".
 std::string_view modeName(const EngineSettings& settings);
-/// Sets mode and engine_wheels from such a name; InvalidInputError naming
+/// Sets mode and native_wheels from such a name; InvalidInputError naming
 /// `where` and the known names otherwise.
 void parseMode(std::string_view name, EngineSettings& settings, const std::string& where);
 
-/// The Coulomb coefficients of an engine-wheel baseline, per material id
+/// The Coulomb coefficients of the native-wheel baseline, per material id
 /// of `terrain`: the peak of each material's mu(s) (the static coefficient
 /// of a tread that may stick).
-std::vector<double> engineWheelFrictions(const Terrain& terrain);
+std::vector<double> nativeWheelFrictions(const Terrain& terrain);
+
+/// Whether a wheel body's collision shape in the engine is a sphere of
+/// radius r_f rather than a cylinder of radius r_f and width w: for
+/// NativeWheelShape::kSphere, and for any wheel as wide as its sphere
+/// (w >= 2 r_f), whose cylinder would reach past the sphere. (WTC's wheels
+/// keep the shape for every pair but wheel-terrain.)
+bool treadIsSphere(const EngineSettings& settings, const WheelGeometry& geometry);
 
 /// Throws InvalidInputError naming the field and `where`.
 void validate(const EngineSettings& settings, const std::string& where);

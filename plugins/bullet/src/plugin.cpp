@@ -11,10 +11,11 @@
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 
-#include "plugin_impl.hpp"
+#include "adapter/cap_cylinder.hpp"
+#include "base/scratch_capacity.hpp"
+#include "plugin_state.hpp"
 #include "wheel_terrain_algorithm.hpp"
 #include "wtc/base/error.hpp"
-#include "base/scratch_capacity.hpp"
 
 namespace wtc::bullet {
 namespace {
@@ -29,11 +30,11 @@ constexpr double kCapShapeMarginRatio = 0.005;
 }
 
 void preTickCallback(btDynamicsWorld* world, btScalar step_seconds) {
-  static_cast<Plugin::Impl*>(world->getWorldUserInfo())->preTick(step_seconds);
+  static_cast<detail::PluginState*>(world->getWorldUserInfo())->preTick(step_seconds);
 }
 
 void postTickCallback(btDynamicsWorld* world, btScalar step_seconds) {
-  static_cast<Plugin::Impl*>(world->getWorldUserInfo())->postTick(step_seconds);
+  static_cast<detail::PluginState*>(world->getWorldUserInfo())->postTick(step_seconds);
 }
 
 // Where the wheel is and how it moves, in the world frame.
@@ -89,7 +90,7 @@ void applyWrench(Wheel& w, const Kinematics& k, const btVector3& force, const bt
 
 }  // namespace
 
-Plugin::Impl::Impl(btDiscreteDynamicsWorld& w, const Terrain& t, ContactMode m)
+detail::PluginState::PluginState(btDiscreteDynamicsWorld& w, const Terrain& t, ContactMode m)
     : world(w), dispatcher(dynamic_cast<btCollisionDispatcher*>(w.getDispatcher())), terrain(t), mode(m) {
   if (dispatcher == nullptr) fail("wtc::bullet::Plugin", "the world's dispatcher is not a btCollisionDispatcher");
   world.addCollisionObject(&terrain.object(), btBroadphaseProxy::StaticFilter,
@@ -130,7 +131,7 @@ Plugin::Impl::Impl(btDiscreteDynamicsWorld& w, const Terrain& t, ContactMode m)
   world.setInternalTickCallback(&postTickCallback, this, false);
 }
 
-Plugin::Impl::~Impl() {
+detail::PluginState::~PluginState() {
   world.setInternalTickCallback(nullptr, nullptr, true);
   world.setInternalTickCallback(nullptr, nullptr, false);
   // Free every algorithm that points at this plugin before unregistering.
@@ -155,12 +156,12 @@ Plugin::Impl::~Impl() {
   }
 }
 
-int Plugin::Impl::wheelOf(const btCollisionObject* object) const {
+int detail::PluginState::wheelOf(const btCollisionObject* object) const {
   const auto found = wheel_of.find(object);
   return found == wheel_of.end() ? -1 : found->second;
 }
 
-WheelId Plugin::Impl::add(std::unique_ptr<Wheel> w, const char* where) {
+WheelId detail::PluginState::add(std::unique_ptr<Wheel> w, const char* where) {
   if (wheel_of.count(w->collider) != 0) fail(where, "this body is already a registered wheel");
   btCollisionShape* original = w->collider->getCollisionShape();
   if (original == nullptr) fail(where, "the wheel body has no collision shape");
@@ -180,9 +181,8 @@ WheelId Plugin::Impl::add(std::unique_ptr<Wheel> w, const char* where) {
   // The caps' cylinder (btCylinderShape's axis is y) at centre_local along
   // axle_local; a small margin, so that its rims stay sharp.
   const WheelGeometry& g = w->mounted.description().geometry;
-  const double half_width = 0.5 * std::min(g.tread_width, 2.0 * g.free_radius);
-  const double cap_radius = std::sqrt(std::max(g.free_radius * g.free_radius - half_width * half_width, 0.0));
-  w->cap_cylinder = std::make_unique<btCylinderShape>(btVector3(cap_radius, half_width, cap_radius));
+  const CapCylinder caps = capCylinder(g);
+  w->cap_cylinder = std::make_unique<btCylinderShape>(btVector3(caps.radius, caps.half_height, caps.radius));
   w->cap_cylinder->setMargin(kCapShapeMarginRatio * g.free_radius);
   w->cap_shape = std::make_unique<btCompoundShape>(true, 1);
   w->cap_shape->addChildShape(
@@ -198,7 +198,7 @@ WheelId Plugin::Impl::add(std::unique_ptr<Wheel> w, const char* where) {
   return id;
 }
 
-const LinkVelocities& Plugin::Impl::linkVelocities(const btMultiBody& multibody) {
+const LinkVelocities& detail::PluginState::linkVelocities(const btMultiBody& multibody) {
   auto it = std::find_if(link_velocities.begin(), link_velocities.end(),
                          [&](const LinkVelocities& v) { return v.multibody == &multibody; });
   LinkVelocities& v = it != link_velocities.end() ? *it : link_velocities.emplace_back();
@@ -211,10 +211,9 @@ const LinkVelocities& Plugin::Impl::linkVelocities(const btMultiBody& multibody)
   return v;
 }
 
-void Plugin::Impl::preTick(double h) {
+void detail::PluginState::preTick(double h) {
   if (pre_tick) pre_tick(h);
   const StepClock::Section timed(clock);
-  for (LinkVelocities& v : link_velocities) v.valid = false;
   const Terrain& ground = terrain.terrain();
   const Eigen::Vector3d gravity = toEigen(world.getGravity());
   for (std::size_t id = 0; id < wheels.size(); ++id) {
@@ -234,14 +233,16 @@ void Plugin::Impl::preTick(double h) {
     // Constraint mode: the contacts reach Bullet through the collision
     // algorithm (wheel_terrain_algorithm.cpp); the wrench is then the
     // rolling moment alone.
-    applyWrench(w, k, toBullet(r.force), toBullet(r.torque), h);
+    applyWrench(w, k, toBt(r.force), toBt(r.torque), h);
     if (w.friction != nullptr) w.friction->set(r.contacts, w.mounted.forces().contacts, h);
     w.mounted.tell(listener, static_cast<WheelId>(id), h);
   }
 }
 
-void Plugin::Impl::postTick(double h) {
+void detail::PluginState::postTick(double h) {
   const StepClock::Section timed(clock);
+  // The step moved every body: the next reader computes the velocities anew.
+  for (LinkVelocities& v : link_velocities) v.valid = false;
   if (mode == ContactMode::kConstraint) {
     for (const auto& w : wheels) readSolvedForces(*w, h);
   }
@@ -264,7 +265,7 @@ void Plugin::Impl::postTick(double h) {
 // [+ d2 m_appliedImpulseLateral2]) / h, with n the manifold's normal on B
 // (toward A) and d1, d2 its friction directions (both solvers write the
 // impulses and directions they used back to the point).
-void Plugin::Impl::readSolvedForces(Wheel& w, double h) {
+void detail::PluginState::readSolvedForces(Wheel& w, double h) {
   if (w.mounted.last().skipped) return;
   const std::size_t n = w.mounted.last().contacts.size();
   w.solved_forces.assign(n, Eigen::Vector3d::Zero());
@@ -284,7 +285,7 @@ void Plugin::Impl::readSolvedForces(Wheel& w, double h) {
 }
 
 Plugin::Plugin(btDiscreteDynamicsWorld& world, const Terrain& terrain, ContactMode mode)
-    : impl_(std::make_unique<Impl>(world, terrain, mode)) {}
+    : state_(std::make_unique<detail::PluginState>(world, terrain, mode)) {}
 
 Plugin::~Plugin() = default;
 
@@ -299,12 +300,12 @@ WheelId Plugin::addWheel(const RigidWheel& spec) {
   const WheelDescription description =
       mountedDescription(spec.description, spec.inertia_source, mass,
                          toEigen(spec.body->getLocalInertia()).asDiagonal(), toEigen(spec.axle_local), kWhere);
-  auto w = std::make_unique<Wheel>(description, spec.effects, impl_->mode);
+  auto w = std::make_unique<Wheel>(description, spec.effects, state_->mode);
   w->body = spec.body;
   w->collider = spec.body;
   w->axle_local = spec.axle_local;
   w->centre_local = spec.centre_local;
-  return impl_->add(std::move(w), kWhere);
+  return state_->add(std::move(w), kWhere);
 }
 
 WheelId Plugin::addWheel(const MultiBodyWheel& spec) {
@@ -320,42 +321,42 @@ WheelId Plugin::addWheel(const MultiBodyWheel& spec) {
   const WheelDescription description = mountedDescription(
       spec.description, spec.inertia_source, spec.multibody->getLinkMass(spec.link),
       toEigen(spec.multibody->getLinkInertia(spec.link)).asDiagonal(), toEigen(spec.axle_local), kWhere);
-  auto w = std::make_unique<Wheel>(description, spec.effects, impl_->mode);
+  auto w = std::make_unique<Wheel>(description, spec.effects, state_->mode);
   w->multibody = spec.multibody;
   w->link = spec.link;
   w->collider = collider;
   w->axle_local = spec.axle_local;
   w->centre_local = spec.centre_local;
-  auto* multibody_world = dynamic_cast<btMultiBodyDynamicsWorld*>(&impl_->world);
-  if (impl_->mode == ContactMode::kConstraint) {
+  auto* multibody_world = dynamic_cast<btMultiBodyDynamicsWorld*>(&state_->world);
+  if (state_->mode == ContactMode::kConstraint) {
     if (multibody_world == nullptr) fail(kWhere, "a multibody link's world must be a btMultiBodyDynamicsWorld");
     w->friction =
         std::make_unique<WheelFrictionConstraint>(spec.multibody, spec.link, static_cast<int>(kReservedContacts));
   }
-  const WheelId id = impl_->add(std::move(w), kWhere);
-  if (WheelFrictionConstraint* friction = impl_->wheels.back()->friction.get()) {
+  const WheelId id = state_->add(std::move(w), kWhere);
+  if (WheelFrictionConstraint* friction = state_->wheels.back()->friction.get()) {
     multibody_world->addMultiBodyConstraint(friction);
   }
   return id;
 }
 
 const WheelForces& Plugin::forces(WheelId wheel) const {
-  return impl_->wheels.at(static_cast<std::size_t>(wheel))->mounted.forces();
+  return state_->wheels.at(static_cast<std::size_t>(wheel))->mounted.forces();
 }
 
 const WheelForces& Plugin::applied(WheelId wheel) const {
-  return impl_->wheels.at(static_cast<std::size_t>(wheel))->mounted.applied();
+  return state_->wheels.at(static_cast<std::size_t>(wheel))->mounted.applied();
 }
 
 const WheelState& Plugin::state(WheelId wheel) const {
-  return impl_->wheels.at(static_cast<std::size_t>(wheel))->mounted.state();
+  return state_->wheels.at(static_cast<std::size_t>(wheel))->mounted.state();
 }
-int Plugin::wheelCount() const { return static_cast<int>(impl_->wheels.size()); }
-double Plugin::contactSeconds() const { return impl_->clock.seconds(); }
-ContactMode Plugin::mode() const { return impl_->mode; }
-btCollisionObject& Plugin::terrainObject() { return impl_->terrain.object(); }
-const TerrainObject& Plugin::terrainShapes() const { return impl_->terrain; }
-void Plugin::setListener(WheelListener* listener) { impl_->listener = listener; }
-void Plugin::setPreTickCallback(std::function<void(double)> callback) { impl_->pre_tick = std::move(callback); }
+int Plugin::wheelCount() const { return static_cast<int>(state_->wheels.size()); }
+double Plugin::contactSeconds() const { return state_->clock.seconds(); }
+ContactMode Plugin::mode() const { return state_->mode; }
+btCollisionObject& Plugin::terrainObject() { return state_->terrain.object(); }
+const TerrainObject& Plugin::terrainShapes() const { return state_->terrain; }
+void Plugin::setListener(WheelListener* listener) { state_->listener = listener; }
+void Plugin::setPreTickCallback(std::function<void(double)> callback) { state_->pre_tick = std::move(callback); }
 
 }  // namespace wtc::bullet

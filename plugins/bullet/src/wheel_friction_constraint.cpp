@@ -5,7 +5,7 @@
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 
-#include "plugin_impl.hpp"
+#include "conversions.hpp"
 
 namespace wtc::bullet {
 
@@ -31,8 +31,8 @@ void WheelFrictionConstraint::set(std::span<const SolverContact> contacts, std::
   const std::size_t n = std::min({contacts.size(), model.size(), static_cast<std::size_t>(getNumRows())});
   for (std::size_t i = 0; i < n; ++i) {
     const SolverContact& c = contacts[i];
-    active_.push_back({toBullet(c.tread_point), toBullet(c.friction_direction),
-                       std::max(c.friction * model[i].normal_force * h, 0.0)});
+    active_.push_back(
+        {toBt(c.tread_point), toBt(c.friction_direction), std::max(c.friction * model[i].normal_force * h, 0.0)});
     internalSetAppliedImpulse(static_cast<int>(i), 0.0);
   }
 }

@@ -4,18 +4,19 @@
 #include <cmath>
 #include <new>
 
-#include "plugin_impl.hpp"
+#include "plugin_state.hpp"
 
 namespace wtc::bullet {
 
 btCollisionAlgorithm* WheelTerrainAlgorithm::CreateFunc::CreateCollisionAlgorithm(
     btCollisionAlgorithmConstructionInfo& info, const btCollisionObjectWrapper*, const btCollisionObjectWrapper*) {
   void* memory = info.m_dispatcher1->allocateCollisionAlgorithm(sizeof(WheelTerrainAlgorithm));
-  return new (memory) WheelTerrainAlgorithm(info, impl_);
+  return new (memory) WheelTerrainAlgorithm(info, state_);
 }
 
-WheelTerrainAlgorithm::WheelTerrainAlgorithm(const btCollisionAlgorithmConstructionInfo& info, Plugin::Impl& impl)
-    : btCollisionAlgorithm(info), impl_(impl) {}
+WheelTerrainAlgorithm::WheelTerrainAlgorithm(const btCollisionAlgorithmConstructionInfo& info,
+                                             detail::PluginState& state)
+    : btCollisionAlgorithm(info), state_(state) {}
 
 WheelTerrainAlgorithm::~WheelTerrainAlgorithm() {
   for (btCollisionAlgorithm* child : {child_, cap_child_}) {
@@ -29,9 +30,9 @@ WheelTerrainAlgorithm::~WheelTerrainAlgorithm() {
 void WheelTerrainAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
                                              const btCollisionObjectWrapper* body1,
                                              const btDispatcherInfo& dispatch_info, btManifoldResult* result) {
-  const btCollisionObject* terrain = &impl_.terrain.object();
-  const int wheel0 = impl_.wheelOf(body0->getCollisionObject());
-  const int wheel1 = impl_.wheelOf(body1->getCollisionObject());
+  const btCollisionObject* terrain = &state_.terrain.object();
+  const int wheel0 = state_.wheelOf(body0->getCollisionObject());
+  const int wheel1 = state_.wheelOf(body1->getCollisionObject());
   if (wheel0 >= 0 && body1->getCollisionObject() == terrain) {
     writeWtcContacts(wheel0, true, body0, body1, dispatch_info, result);
   } else if (wheel1 >= 0 && body0->getCollisionObject() == terrain) {
@@ -50,17 +51,17 @@ void WheelTerrainAlgorithm::writeWtcContacts(int wheel, bool wheel_is_body0, con
   result->setPersistentManifold(manifold_);
   // The contacts are WTC's, found afresh each step: nothing carries over.
   manifold_->clearManifold();
-  Wheel& w = *impl_.wheels[wheel];
+  Wheel& w = *state_.wheels[wheel];
   if (!w.mounted.state().capContacts().empty()) writeCapContacts(w, body0, body1, dispatch_info, result);
-  if (impl_.mode == ContactMode::kForce) return;
+  if (state_.mode == ContactMode::kForce) return;
   w.manifold = manifold_;
   w.wheel_is_body0 = manifold_->getBody0() == (wheel_is_body0 ? body0 : body1)->getCollisionObject();
   w.manifold_point.clear();
   for (const SolverContact& c : w.mounted.last().contacts) {
     // Bullet's normal on B points from B to A; the point is on B; a
     // negative distance is a penetration.
-    const btVector3 normal_on_b = toBullet(wheel_is_body0 ? c.normal : Eigen::Vector3d(-c.normal));
-    const btVector3 point_on_b = toBullet(wheel_is_body0 ? c.ground_point : c.tread_point);
+    const btVector3 normal_on_b = toBt(wheel_is_body0 ? c.normal : Eigen::Vector3d(-c.normal));
+    const btVector3 point_on_b = toBt(wheel_is_body0 ? c.ground_point : c.tread_point);
     result->addContactPoint(normal_on_b, point_on_b, -c.depth);
     // The point just added (or the one it replaced): nearest to point_on_b.
     int index = -1;
@@ -85,7 +86,7 @@ void WheelTerrainAlgorithm::writeWtcContacts(int wheel, bool wheel_is_body0, con
     p.m_combinedRollingFriction = 0;
     p.m_combinedSpinningFriction = 0;
     const btVector3 normal = p.m_normalWorldOnB;
-    btVector3 direction = toBullet(c.friction_direction);
+    btVector3 direction = toBt(c.friction_direction);
     direction -= normal * normal.dot(direction);  // the manifold's normal may be flipped: stay tangent
     if (direction.length2() > 0) {
       // The one friction direction Bullet solves (the plugin turns the
@@ -110,7 +111,7 @@ void WheelTerrainAlgorithm::writeWtcContacts(int wheel, bool wheel_is_body0, con
 // row as the true depth's without the split. (The multibody solver has no
 // split; the same row holds there.)
 void WheelTerrainAlgorithm::setSpring(btManifoldPoint& p, const SolverContact& c, double step_seconds) const {
-  const btContactSolverInfo& info = impl_.world.getSolverInfo();
+  const btContactSolverInfo& info = state_.world.getSolverInfo();
   const double slop = info.m_linearSlop, threshold = info.m_splitImpulsePenetrationThreshold;
   const bool split = info.m_splitImpulse && threshold < 0.0 && -c.depth + slop <= threshold;
   p.m_contactPointFlags &=
@@ -144,7 +145,7 @@ void WheelTerrainAlgorithm::writeCapContacts(const Wheel& w, const btCollisionOb
                                              const btDispatcherInfo& dispatch_info, btManifoldResult* result) {
   collideOriginals(cap_child_, manifold_, body0, body1, dispatch_info, result, w.collider, w.cap_shape.get());
   const Eigen::Vector3d axle = toEigen(w.collider->getWorldTransform().getBasis() * w.axle_local).normalized();
-  const double friction = impl_.terrain.terrain().materials()[w.mounted.state().capContacts().front().material].mu_max;
+  const double friction = state_.terrain.terrain().materials()[w.mounted.state().capContacts().front().material].mu_max;
   for (int k = manifold_->getNumContacts() - 1; k >= 0; --k) {
     btManifoldPoint& p = manifold_->getContactPoint(k);
     if (onCap(w.mounted.description().geometry, toEigen(p.m_normalWorldOnB), axle)) {

@@ -18,16 +18,16 @@ class WheelTerrainAlgorithm : public btCollisionAlgorithm {
  public:
   class CreateFunc : public btCollisionAlgorithmCreateFunc {
    public:
-    explicit CreateFunc(Plugin::Impl& impl) : impl_(impl) {}
+    explicit CreateFunc(detail::PluginState& state) : state_(state) {}
     btCollisionAlgorithm* CreateCollisionAlgorithm(btCollisionAlgorithmConstructionInfo& info,
                                                    const btCollisionObjectWrapper* body0,
                                                    const btCollisionObjectWrapper* body1) override;
 
    private:
-    Plugin::Impl& impl_;
+    detail::PluginState& state_;
   };
 
-  WheelTerrainAlgorithm(const btCollisionAlgorithmConstructionInfo& info, Plugin::Impl& impl);
+  WheelTerrainAlgorithm(const btCollisionAlgorithmConstructionInfo& info, detail::PluginState& state);
   ~WheelTerrainAlgorithm() override;
 
   void processCollision(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
@@ -53,7 +53,7 @@ class WheelTerrainAlgorithm : public btCollisionAlgorithm {
                         const btDispatcherInfo& dispatch_info, btManifoldResult* result,
                         const btCollisionObject* replaced = nullptr, const btCollisionShape* replacement = nullptr);
 
-  Plugin::Impl& impl_;
+  detail::PluginState& state_;
   btPersistentManifold* manifold_ = nullptr;
   btCollisionAlgorithm* child_ = nullptr;      // other pairs: Bullet's algorithm for the originals
   btCollisionAlgorithm* cap_child_ = nullptr;  // wheel-terrain caps: the same, into manifold_

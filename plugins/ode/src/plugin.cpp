@@ -4,14 +4,18 @@
 #include "wtc/ode/plugin.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 
-#include "contact_joint.hpp"
-#include "plugin_impl.hpp"
-#include "wtc/base/error.hpp"
+#include "adapter/cap_cylinder.hpp"
 #include "base/scratch_capacity.hpp"
+#include "contact_joint.hpp"
+#include "conversions.hpp"
+#include "plugin_state.hpp"
+#include "wtc/base/error.hpp"
 #include "wtc/base/tolerances.hpp"
 
 namespace wtc::ode {
@@ -26,7 +30,14 @@ constexpr double kBoxSlackRelative = 1e-9;
   throw InvalidInputError(std::string(where) + ": " + what);
 }
 
-Eigen::Vector3d toEigen(const dReal* v) { return {v[0], v[1], v[2]}; }
+// A contact joint's feedback before ODE has solved it: its f1[0] holds
+// this NaN, whose payload no arithmetic gives, until the world step
+// overwrites it (applied() tells a solved step from one still to come so).
+constexpr std::uint64_t kUnsolvedFeedbackBits = 0x7ff8'0000'5754'4300;
+
+bool unsolved(const dJointFeedback& feedback) {
+  return std::bit_cast<std::uint64_t>(feedback.f1[0]) == kUnsolvedFeedbackBits;
+}
 
 // Half the tread's extent along a world axis whose cosine with the axle is
 // `c`: the largest p . e over {|p| <= r, |p . a| <= w/2}. Either the
@@ -60,10 +71,10 @@ void requireGeomHoldsTread(const RigidWheel& spec, const Eigen::Vector3d& centre
 
 }  // namespace
 
-Plugin::Impl::Impl(dWorldID w, dSpaceID space, const Terrain& t, ContactMode m, TerrainShape shape)
+detail::PluginState::PluginState(dWorldID w, dSpaceID space, const Terrain& t, ContactMode m, TerrainShape shape)
     : world(w), terrain(t, space, shape), mode(m) {}
 
-const Wheel& Plugin::Impl::wheel(WheelId id) const {
+const Wheel& detail::PluginState::wheel(WheelId id) const {
   if (id < 0 || static_cast<std::size_t>(id) >= wheels.size()) {
     throw std::out_of_range("wtc::ode::Plugin: wheel id " + std::to_string(id) + " is not registered (" +
                             std::to_string(wheels.size()) + " wheels)");
@@ -71,7 +82,7 @@ const Wheel& Plugin::Impl::wheel(WheelId id) const {
   return *wheels[id];
 }
 
-WheelId Plugin::Impl::add(const RigidWheel& spec) {
+WheelId detail::PluginState::add(const RigidWheel& spec) {
   static constexpr const char* kWhere = "wtc::ode::Plugin::addWheel";
   if (spec.body == nullptr) fail(kWhere, "body is null");
   if (spec.geom == nullptr) fail(kWhere, "geom is null (the near callback knows a wheel by its geom)");
@@ -101,10 +112,8 @@ WheelId Plugin::Impl::add(const RigidWheel& spec) {
   w->solved_forces.reserve(kReservedContacts);
   // The caps' cylinder (ODE's along its z axis) at centre_local along
   // axle_local: radius sqrt(r_f^2 - (w/2)^2), width w (collideCaps).
-  const WheelGeometry& g = spec.description.geometry;
-  const double half_width = 0.5 * std::min(g.tread_width, 2.0 * g.free_radius);
-  w->cap_geom = dCreateCylinder(
-      nullptr, std::sqrt(std::max(g.free_radius * g.free_radius - half_width * half_width, 0.0)), 2.0 * half_width);
+  const CapCylinder caps = capCylinder(spec.description.geometry);
+  w->cap_geom = dCreateCylinder(nullptr, caps.radius, 2.0 * caps.half_height);
   dGeomSetBody(w->cap_geom, spec.body);
   dGeomSetOffsetPosition(w->cap_geom, spec.centre_local.x(), spec.centre_local.y(), spec.centre_local.z());
   dMatrix3 rotation;
@@ -118,7 +127,7 @@ WheelId Plugin::Impl::add(const RigidWheel& spec) {
   return id;
 }
 
-void Plugin::Impl::beginStep(double h) {
+void detail::PluginState::beginStep(double h) {
   if (!(h > 0.0) || !std::isfinite(h)) {
     fail("wtc::ode::Plugin::beginStep", "step_seconds = " + formatNumber(h) + " is not positive and finite");
   }
@@ -141,6 +150,7 @@ void Plugin::Impl::beginStep(double h) {
     motion.angular_velocity = toEigen(dBodyGetAngularVel(w.body));
     const MountedWheelStep& r = w.mounted.step(ground, {toEigen(centre), toEigen(axle)}, motion, h);
     w.handled = false;
+    w.applied_ready = false;
     w.contacts.clear();
     if (r.skipped) {
       // Its body's state is not finite: no force and no contact joint this
@@ -160,7 +170,7 @@ void Plugin::Impl::beginStep(double h) {
   }
 }
 
-bool Plugin::Impl::handlePair(dGeomID a, dGeomID b, dJointGroupID group) {
+bool detail::PluginState::handlePair(dGeomID a, dGeomID b, dJointGroupID group) {
   auto found = wheel_of.find(a);
   dGeomID ground = b;
   if (found == wheel_of.end() || !terrain.contains(b)) {
@@ -176,10 +186,12 @@ bool Plugin::Impl::handlePair(dGeomID a, dGeomID b, dJointGroupID group) {
   // the terrain space, or against one of its pieces), and never twice.
   if (mode == ContactMode::kConstraint && !w.handled && !w.contacts.empty()) {
     const double layer = dWorldGetContactSurfaceLayer(world), cap = dWorldGetContactMaxCorrectingVel(world);
+    w.applied_ready = false;
     for (SolvedContact& s : w.contacts) {
       const dContact contact = toOdeContact(s.contact, step_seconds, layer, w.geom, ground);
       const dJointID joint = dJointCreateContact(world, group, &contact);
       dJointAttach(joint, w.body, nullptr);
+      s.feedback.f1[0] = std::bit_cast<dReal>(kUnsolvedFeedbackBits);
       dJointSetFeedback(joint, &s.feedback);
       if (correctingVelocity(s.contact, step_seconds) > cap) ++w.diagnostics.capped_contacts;
     }
@@ -193,7 +205,7 @@ namespace {
 
 // What collideCaps hands to ODE's callback for the pieces of a space.
 struct CapPass {
-  Plugin::Impl* impl;
+  detail::PluginState* state;
   Wheel* wheel;
   dJointGroupID group;
 };
@@ -209,12 +221,12 @@ struct CapPass {
 // 9 mm past the tread at the tread's limit (18.4 deg), and threw the wheel
 // off a side slope as the cap took over (issue 11). Rare: only when the
 // finder saw a cap contact.
-void Plugin::Impl::collideCaps(Wheel& w, dGeomID ground, dJointGroupID group) {
+void detail::PluginState::collideCaps(Wheel& w, dGeomID ground, dJointGroupID group) {
   if (dGeomIsSpace(ground)) {
     CapPass pass{this, &w, group};
     dSpaceCollide2(w.cap_geom, ground, &pass, [](void* data, dGeomID a, dGeomID b) {
       CapPass& p = *static_cast<CapPass*>(data);
-      p.impl->collideCaps(*p.wheel, a == p.wheel->cap_geom ? b : a, p.group);
+      p.state->collideCaps(*p.wheel, a == p.wheel->cap_geom ? b : a, p.group);
     });
     return;
   }
@@ -235,38 +247,46 @@ void Plugin::Impl::collideCaps(Wheel& w, dGeomID ground, dJointGroupID group) {
 
 // The joints' feedback f1 is their force on the wheel body (the joint's
 // first body) over the last world step; a wheel whose pair ODE never handled
-// had no joints and felt none. Read on demand: ODE has no hook after its
-// step, and the feedback changes only inside it.
-const WheelForces& Plugin::Impl::applied(WheelId id) {
+// had no joints and felt none. ODE has no hook after its step (the user
+// calls dWorldStep), and the feedback changes only inside it: the wrench is
+// assembled at the first call that finds every joint solved, and kept until
+// beginStep or handlePair makes new joints. A call before the world step
+// counts an unsolved joint as no force, and keeps nothing.
+const WheelForces& detail::PluginState::applied(WheelId id) {
   wheel(id);  // throws for an id that is not registered
   Wheel& w = *wheels[static_cast<std::size_t>(id)];
-  if (mode == ContactMode::kConstraint && !w.mounted.last().skipped) {
+  if (mode == ContactMode::kConstraint && !w.mounted.last().skipped && !w.applied_ready) {
+    bool solved = true;
     w.solved_forces.clear();
-    for (const SolvedContact& c : w.contacts) w.solved_forces.push_back(c.force());
+    for (const SolvedContact& c : w.contacts) {
+      solved = solved && !unsolved(c.feedback);
+      w.solved_forces.push_back(unsolved(c.feedback) ? Eigen::Vector3d::Zero() : c.force());
+    }
     w.mounted.setSolvedForces(w.solved_forces);
+    w.applied_ready = solved;
   }
   return w.mounted.applied();
 }
 
 Plugin::Plugin(dWorldID world, dSpaceID space, const Terrain& terrain, ContactMode mode, TerrainShape shape)
-    : impl_(std::make_unique<Impl>(world, space, terrain, mode, shape)) {}
+    : state_(std::make_unique<detail::PluginState>(world, space, terrain, mode, shape)) {}
 
 Plugin::~Plugin() = default;
 
-WheelId Plugin::addWheel(const RigidWheel& wheel) { return impl_->add(wheel); }
-void Plugin::beginStep(double step_seconds) { impl_->beginStep(step_seconds); }
-bool Plugin::handlePair(dGeomID a, dGeomID b, dJointGroupID contacts) { return impl_->handlePair(a, b, contacts); }
+WheelId Plugin::addWheel(const RigidWheel& wheel) { return state_->add(wheel); }
+void Plugin::beginStep(double step_seconds) { state_->beginStep(step_seconds); }
+bool Plugin::handlePair(dGeomID a, dGeomID b, dJointGroupID contacts) { return state_->handlePair(a, b, contacts); }
 
-const WheelForces& Plugin::forces(WheelId wheel) const { return impl_->wheel(wheel).mounted.forces(); }
-const WheelForces& Plugin::applied(WheelId wheel) const { return impl_->applied(wheel); }
+const WheelForces& Plugin::forces(WheelId wheel) const { return state_->wheel(wheel).mounted.forces(); }
+const WheelForces& Plugin::applied(WheelId wheel) const { return state_->applied(wheel); }
 
-const WheelState& Plugin::state(WheelId wheel) const { return impl_->wheel(wheel).mounted.state(); }
-std::span<const SolvedContact> Plugin::solvedContacts(WheelId wheel) const { return impl_->wheel(wheel).contacts; }
-const WheelDiagnostics& Plugin::diagnostics(WheelId wheel) const { return impl_->wheel(wheel).diagnostics; }
-int Plugin::wheelCount() const { return static_cast<int>(impl_->wheels.size()); }
-double Plugin::contactSeconds() const { return impl_->clock.seconds(); }
-ContactMode Plugin::mode() const { return impl_->mode; }
-const TerrainGeoms& Plugin::terrainGeoms() const { return impl_->terrain; }
-void Plugin::setListener(WheelListener* listener) { impl_->listener = listener; }
+const WheelState& Plugin::state(WheelId wheel) const { return state_->wheel(wheel).mounted.state(); }
+std::span<const SolvedContact> Plugin::solvedContacts(WheelId wheel) const { return state_->wheel(wheel).contacts; }
+const WheelDiagnostics& Plugin::diagnostics(WheelId wheel) const { return state_->wheel(wheel).diagnostics; }
+int Plugin::wheelCount() const { return static_cast<int>(state_->wheels.size()); }
+double Plugin::contactSeconds() const { return state_->clock.seconds(); }
+ContactMode Plugin::mode() const { return state_->mode; }
+const TerrainGeoms& Plugin::terrainGeoms() const { return state_->terrain; }
+void Plugin::setListener(WheelListener* listener) { state_->listener = listener; }
 
 }  // namespace wtc::ode

@@ -1,8 +1,9 @@
-#include "wtc/bullet/sim_engine.hpp"
+// The Bullet sim engine (sim_engine.hpp): vehicle trees as multibodies,
+// their drives and limits, and the wheel strategy chosen once, here.
+#include "sim_engine.hpp"
 
 #include <algorithm>
 #include <limits>
-#include <mutex>
 #include <vector>
 
 #include <BulletCollision/CollisionShapes/btCompoundShape.h>
@@ -12,14 +13,18 @@
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 #include <btBulletDynamicsCommon.h>
 
+#include "native_wheels.hpp"
+#include "sim/engine_base.hpp"
+#include "src/conversions.hpp"
+#include "src/plugin_state.hpp"
 #include "warm_started_joint_limit.hpp"
 #include "warm_started_motor.hpp"
+#include "wtc/base/constants.hpp"
+#include "wtc/base/error.hpp"
 #include "wtc/bullet/plugin.hpp"
 #include "wtc/bullet/terrain_object.hpp"
-#include "wtc/base/constants.hpp"
 #include "wtc/sim/sim_constants.hpp"
-#include "wtc/base/error.hpp"
-#include "sim/native_wheel_contacts.hpp"
+#include "wtc_wheels.hpp"
 
 namespace wtc::bullet {
 namespace {
@@ -27,21 +32,6 @@ namespace {
 using vehicle::Body;
 using vehicle::JointType;
 using vehicle::Shape;
-
-btVector3 toBt(const Eigen::Ref<const Eigen::Vector3d>& v) { return {v.x(), v.y(), v.z()}; }
-Eigen::Vector3d toEigen(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
-btQuaternion toBtRotation(const Eigen::Matrix3d& r) {
-  const Eigen::Quaterniond q(r);
-  return {q.x(), q.y(), q.z(), q.w()};
-}
-Eigen::Matrix3d toEigen(const btMatrix3x3& m) {
-  Eigen::Matrix3d r;
-  for (int i = 0; i < 3; ++i) r.row(i) = toEigen(m.getRow(i)).transpose();
-  return r;
-}
-btTransform toBtTransform(const Eigen::Isometry3d& t) {
-  return btTransform(toBtRotation(Eigen::Matrix3d(t.linear())), toBt(t.translation()));
-}
 
 // A cylinder along body axis `axis` (0 x, 1 y, 2 z) of radius r and length l.
 std::unique_ptr<btCollisionShape> cylinder(int axis, double r, double l) {
@@ -56,14 +46,14 @@ std::unique_ptr<btCollisionShape> cylinder(int axis, double r, double l) {
 }
 
 // The body's collision shape, or null; `owned` keeps every shape made. A
-// wheel's is its tread (a sphere when w >= 2 r_f or when `sphere_wheels`);
-// with WTC's wheels, WTC's algorithm replaces it against the terrain.
-btCollisionShape* makeShape(const Body& body, bool sphere_wheels,
+// wheel's is its tread (a cylinder, or a sphere: sim::treadIsSphere); with
+// WTC's wheels, WTC's algorithm replaces it against the terrain.
+btCollisionShape* makeShape(const Body& body, const sim::EngineSettings& settings,
                             std::vector<std::unique_ptr<btCollisionShape>>& owned) {
   const auto keep = [&](std::unique_ptr<btCollisionShape> shape) { return owned.emplace_back(std::move(shape)).get(); };
   if (body.wheel) {
     const WheelGeometry& g = body.wheel->geometry;
-    if (sphere_wheels || g.tread_width >= 2.0 * g.free_radius) {
+    if (sim::treadIsSphere(settings, g)) {
       return keep(std::make_unique<btSphereShape>(g.free_radius));
     }
     int axis = 0;
@@ -89,62 +79,30 @@ btCollisionShape* makeShape(const Body& body, bool sphere_wheels,
   return nullptr;
 }
 
-// What an engine wheel's contact needs to know of the ground (the wheel
-// collider's user pointer): the Coulomb coefficient of each material.
-struct EngineWheelGround {
-  const TerrainObject* terrain = nullptr;
-  std::vector<double> mu;  // per material id
-};
-
-// Bullet lets a collision object flagged CF_CUSTOM_MATERIAL_CALLBACK set
-// the friction of each new contact point through one process-wide
-// callback; only the engine wheels' colliders carry the flag. The ground's
-// wrapper is the child the wheel met: a hull, or a compact field's triangle
-// (TerrainObject::pieceOf).
-bool engineWheelContactAdded(btManifoldPoint& point, const btCollisionObjectWrapper* a, int, int,
-                             const btCollisionObjectWrapper* b, int, int) {
-  const bool a_is_wheel =
-      (a->getCollisionObject()->getCollisionFlags() & btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK) != 0;
-  const btCollisionObjectWrapper* wheel = a_is_wheel ? a : b;
-  const btCollisionObjectWrapper* ground = a_is_wheel ? b : a;
-  const auto* g = static_cast<const EngineWheelGround*>(wheel->getCollisionObject()->getUserPointer());
-  if (g == nullptr || ground->getCollisionObject() != &g->terrain->object()) return false;
-  const Terrain& pieces = g->terrain->terrain();
-  const PieceId piece = g->terrain->pieceOf(*ground);
-  if (piece < 0 || piece >= static_cast<PieceId>(pieces.pieceCount())) return false;
-  point.m_combinedFriction = g->mu[pieces.materialId(piece)];
-  return true;
-}
-
-class SimEngine final : public sim::Engine {
+class SimEngine final : public sim::EngineBase {
  public:
   SimEngine(const sim::EngineSettings& settings, const Terrain& terrain, const vehicle::VehicleDescription& v,
             const Eigen::Isometry3d& placement)
-      : sim::Engine(settings, v), refs_(v.bodies.size()) {
+      : sim::EngineBase("wtc::bullet sim engine", settings, v), refs_(v.bodies.size()) {
     world_.setGravity(btVector3(0, 0, -kGravityMps2));
     world_.getSolverInfo().m_numIterations = settings.solver_iterations;
     world_.getSolverInfo().m_leastSquaresResidualThreshold = settings.solver_residual;
     buildTrees(placement);
     plugin_ = std::make_unique<Plugin>(world_, terrain, settings.mode);
     plugin_->terrainObject().setFriction(1.0);  // combined friction = product: the bodies' own decides
-    if (settings.engine_wheels != sim::EngineWheels::kNone) {
-      addEngineWheels(terrain);
-      return;
+    // The wheels' strategy, chosen once: Bullet's own, or WTC's.
+    std::vector<WheelLink> links;
+    for (const int body : v.wheels()) links.push_back({refs_[body].multibody, refs_[body].link, refs_[body].collider});
+    if (settings.native_wheels) {
+      wheels_ = std::make_unique<NativeWheels>(*this, *plugin_, world_, terrain, links, *settings.native_wheels);
+    } else {
+      wheels_ = std::make_unique<WtcWheels>(*plugin_, v, links, settings.tyre_effects);
     }
-    for (std::size_t i = 0; i < v.bodies.size(); ++i) {
-      const Body& body = v.bodies[i];
-      if (!body.wheel) continue;
-      MultiBodyWheel wheel;
-      wheel.multibody = refs_[i].multibody;
-      wheel.link = refs_[i].link;
-      wheel.axle_local = toBt(body.wheel->axle);
-      wheel.description = sim::wheelDescription(body);
-      wheel.effects = settings.tyre_effects;
-      refs_[i].wheel = plugin_->addWheel(wheel);
-    }
+    useWheels(*wheels_);
   }
 
   ~SimEngine() override {
+    wheels_.reset();
     plugin_.reset();
     for (auto& c : constraints_) world_.removeMultiBodyConstraint(c.get());
     for (auto& c : colliders_) world_.removeCollisionObject(c.get());
@@ -177,8 +135,8 @@ class SimEngine final : public sim::Engine {
       if (r.motor != nullptr) r.motor->stepped();
     }
     for (WarmStartedJointLimit* limit : limits_) limit->stepped();
-    for (LinkStates& s : link_states_) s.valid = false;
-    if (!engine_wheels_.empty()) readEngineWheels();
+    for (LinkFrames& f : link_frames_) f.valid = false;
+    wheels_->stepped();
   }
 
   vehicle::BodyKinematics body(int body) const override {
@@ -192,12 +150,13 @@ class SimEngine final : public sim::Engine {
       k.angular_velocity = toEigen(mb.getBaseOmega());
       return k;
     }
-    const LinkStates& links = linkStates(r.tree);
-    const btMatrix3x3& to_world = links.to_world[r.link + 1];
-    k.pose.translation() = toEigen(links.origin[r.link + 1]);
+    const LinkFrames& frames = linkFrames(r.tree);
+    const LinkVelocities& velocities = detail::PluginState::of(*plugin_).linkVelocities(mb);
+    const btMatrix3x3& to_world = frames.to_world[r.link + 1];
+    k.pose.translation() = toEigen(frames.origin[r.link + 1]);
     k.pose.linear() = toEigen(to_world);
-    k.linear_velocity = toEigen(to_world * links.linear[r.link + 1]);
-    k.angular_velocity = toEigen(to_world * links.angular[r.link + 1]);
+    k.linear_velocity = toEigen(to_world * velocities.linear[r.link + 1]);
+    k.angular_velocity = toEigen(to_world * velocities.angular[r.link + 1]);
     return k;
   }
 
@@ -213,29 +172,20 @@ class SimEngine final : public sim::Engine {
     WarmStartedMotor* motor = refs_.at(body).motor;
     return motor == nullptr ? 0.0 : motor->effort();
   }
-  const WheelForces& wheelForces(int body) const override {
-    return engine_wheels_.empty() ? plugin_->applied(wheelId(body)) : engine_wheels_[wheelId(body)].forces();
-  }
-  const WheelState& wheelState(int body) const override {
-    return engine_wheels_.empty() ? plugin_->state(wheelId(body)) : engine_wheels_[wheelId(body)].state();
-  }
-  // The engine's own wheels run no tyre model: nothing to tell.
-  void setWheelListener(WheelListener* listener) override { plugin_->setListener(listener); }
-  double contactSeconds() const override { return plugin_->contactSeconds(); }
 
  private:
-  // A tree's link frames (world rotation and origin) and velocities (in
-  // link frames), index 0 the base and i + 1 link i, computed once per step
-  // for all its links: btMultiBody's localPosToWorld and localDirToWorld
-  // walk to the base for every call.
-  struct LinkStates {
+  // A tree's link frames (world rotation and origin), index 0 the base and
+  // i + 1 link i, computed once per step for all its links: btMultiBody's
+  // localPosToWorld and localDirToWorld walk to the base for every call.
+  // Their velocities are the plugin's (LinkVelocities, one cache for both).
+  struct LinkFrames {
     btAlignedObjectArray<btMatrix3x3> to_world;
-    btAlignedObjectArray<btVector3> origin, angular, linear;
+    btAlignedObjectArray<btVector3> origin;
     btAlignedObjectArray<btQuaternion> world_to_local;
     bool valid = false;
   };
-  const LinkStates& linkStates(int tree) const {
-    LinkStates& s = link_states_[tree];
+  const LinkFrames& linkFrames(int tree) const {
+    LinkFrames& s = link_frames_[tree];
     if (s.valid) return s;
     const btMultiBody& mb = *trees_[tree];
     const int n = mb.getNumLinks() + 1;
@@ -243,8 +193,6 @@ class SimEngine final : public sim::Engine {
     world_to_local.resize(n);
     s.to_world.resize(n);
     s.origin.resize(n);
-    s.angular.resize(n);
-    s.linear.resize(n);
     // btMultiBody::updateCollisionObjectWorldTransforms' recursion.
     world_to_local[0] = mb.getWorldToBaseRot();
     s.origin[0] = mb.getBasePos();
@@ -254,7 +202,6 @@ class SimEngine final : public sim::Engine {
       s.origin[k + 1] = s.origin[parent] + quatRotate(world_to_local[k + 1].inverse(), mb.getRVector(k));
     }
     for (int k = 0; k < n; ++k) s.to_world[k].setRotation(world_to_local[k].inverse());
-    mb.compTreeLinkVelocities(&s.angular[0], &s.linear[0]);
     s.valid = true;
     return s;
   }
@@ -265,75 +212,11 @@ class SimEngine final : public sim::Engine {
     int link = -1;  // -1: the tree's base
     WarmStartedMotor* motor = nullptr;
     btMultiBodyLinkCollider* collider = nullptr;
-    WheelId wheel = -1;  // the plugin's, or with engine wheels the index in engine_wheels_
   };
-
-  // The engine's own wheel contact (sim::EngineWheels): the wheels keep
-  // their collision shapes against the terrain's hulls, with Bullet's
-  // contact and Coulomb friction of the piece's mu (engineWheelContactAdded).
-  void addEngineWheels(const Terrain& terrain) {
-    static std::once_flag installed;
-    std::call_once(installed, [] { gContactAddedCallback = engineWheelContactAdded; });
-    ground_ = {.terrain = &plugin_->terrainShapes(), .mu = sim::engineWheelFrictions(terrain)};
-    engine_wheels_ = sim::EngineWheelSet(vehicle());
-    for (std::size_t k = 0; k < engine_wheels_.size(); ++k) {
-      Ref& r = refs_[engine_wheels_.body(k)];
-      r.collider->setCollisionFlags(r.collider->getCollisionFlags() | btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK);
-      r.collider->setUserPointer(&ground_);
-      r.wheel = static_cast<WheelId>(k);
-    }
-  }
-
-  // What Bullet's solver did at each wheel-terrain point of this step: the
-  // impulses it wrote back to the point (normal, and each friction
-  // direction it used) over h, on the wheel.
-  void readEngineWheels() {
-    engine_wheels_.clear();
-    const double h = settings().step_seconds;
-    const bool second = (world_.getSolverInfo().m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS) != 0;
-    const btCollisionObject* ground = &plugin_->terrainObject();
-    btDispatcher& dispatcher = *world_.getDispatcher();
-    for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
-      const btPersistentManifold& manifold = *dispatcher.getManifoldByIndexInternal(m);
-      const bool wheel_is_a = manifold.getBody1() == ground;
-      if (!wheel_is_a && manifold.getBody0() != ground) continue;
-      const btCollisionObject* other = wheel_is_a ? manifold.getBody0() : manifold.getBody1();
-      const auto* collider = btMultiBodyLinkCollider::upcast(other);
-      if (collider == nullptr || collider->m_link < 0) continue;
-      const int wheel = engineWheelOf(collider);
-      if (wheel < 0) continue;
-      for (int k = 0; k < manifold.getNumContacts(); ++k) {
-        const btManifoldPoint& p = manifold.getContactPoint(k);
-        if (p.getDistance() > 0.0 && p.m_appliedImpulse == 0.0) continue;  // kept, not touching
-        btVector3 impulse_on_a =
-            p.m_normalWorldOnB * p.m_appliedImpulse + p.m_lateralFrictionDir1 * p.m_appliedImpulseLateral1;
-        if (second) impulse_on_a += p.m_lateralFrictionDir2 * p.m_appliedImpulseLateral2;
-        const btVector3 normal = wheel_is_a ? p.m_normalWorldOnB : -p.m_normalWorldOnB;  // out of the ground
-        const btVector3 point = wheel_is_a ? p.getPositionWorldOnB() : p.getPositionWorldOnA();
-        engine_wheels_[wheel].add(toEigen(point), toEigen(normal), -p.getDistance(),
-                                  toEigen(wheel_is_a ? impulse_on_a : -impulse_on_a) / h);
-      }
-    }
-    engine_wheels_.finish(*this);
-  }
-
-  // The engine wheel whose collider is `collider`, or -1.
-  int engineWheelOf(const btMultiBodyLinkCollider* collider) const {
-    for (std::size_t k = 0; k < engine_wheels_.size(); ++k) {
-      if (refs_[engine_wheels_.body(k)].collider == collider) return static_cast<int>(k);
-    }
-    return -1;
-  }
 
   bool hasCoordinate(int body) const {
     const Body& b = vehicle().bodies.at(body);
     return b.parent >= 0 && (b.joint.type == JointType::kRevolute || b.joint.type == JointType::kPrismatic);
-  }
-
-  WheelId wheelId(int body) const {
-    const WheelId id = refs_.at(body).wheel;
-    if (id < 0) throw InvalidInputError("wtc::bullet sim engine: body " + std::to_string(body) + " is not a wheel");
-    return id;
   }
 
   // One btMultiBody per root: its descendants are links, in body order.
@@ -366,7 +249,7 @@ class SimEngine final : public sim::Engine {
       refs_[i].tree = static_cast<int>(trees_.size());
       trees_.push_back(std::move(mb));
     }
-    link_states_.resize(trees_.size());
+    link_frames_.resize(trees_.size());
     for (auto& mb : trees_) {
       mb->finalizeMultiDof();
       mb->setHasSelfCollision(false);
@@ -425,8 +308,7 @@ class SimEngine final : public sim::Engine {
   }
 
   void addCollider(int i, const Eigen::Isometry3d& placement) {
-    btCollisionShape* shape =
-        makeShape(vehicle().bodies[i], settings().engine_wheels == sim::EngineWheels::kSphere, shapes_);
+    btCollisionShape* shape = makeShape(vehicle().bodies[i], settings(), shapes_);
     if (shape == nullptr) return;
     Ref& r = refs_[i];
     auto collider = std::make_unique<btMultiBodyLinkCollider>(r.multibody, r.link);
@@ -457,9 +339,8 @@ class SimEngine final : public sim::Engine {
   std::vector<WarmStartedJointLimit*> limits_;  // in constraints_
   std::vector<Ref> refs_;
   std::unique_ptr<Plugin> plugin_;
-  sim::EngineWheelSet engine_wheels_;            // with sim::EngineWheels only
-  EngineWheelGround ground_;                     // the engine wheels' colliders point here
-  mutable std::vector<LinkStates> link_states_;  // per tree
+  std::unique_ptr<sim::WheelContacts> wheels_;   // WtcWheels or NativeWheels
+  mutable std::vector<LinkFrames> link_frames_;  // per tree
 };
 
 }  // namespace

@@ -1,20 +1,24 @@
-#include "wtc/ode/sim_engine.hpp"
+// The ODE sim engine (sim_engine.hpp): bodies, joints and drives, the near
+// callback, and the wheel strategy chosen once, here.
+#include "sim_engine.hpp"
 
 #include <array>
-#include <deque>
 #include <mutex>
 #include <vector>
 
 #include <ode/ode.h>
 #include <ode/threading_impl.h>
 
+#include "native_wheels.hpp"
+#include "sim/engine_base.hpp"
+#include "src/conversions.hpp"
 #include "wtc/base/constants.hpp"
-#include "wtc/sim/sim_constants.hpp"
 #include "wtc/base/error.hpp"
 #include "wtc/ode/message_log.hpp"
 #include "wtc/ode/plugin.hpp"
-#include "sim/native_wheel_contacts.hpp"
+#include "wtc/sim/sim_constants.hpp"
 #include "wtc/vehicle/drive.hpp"
+#include "wtc_wheels.hpp"
 
 namespace wtc::ode {
 namespace {
@@ -22,8 +26,6 @@ namespace {
 using vehicle::Body;
 using vehicle::JointType;
 using vehicle::Shape;
-
-constexpr int kMaxBodyContacts = 8;  // per body-ground pair, for ODE's own colliders
 
 // Debian's ODE is built without its thread-local storage (dGetConfiguration
 // lacks ODE_EXT_ou), so two of its states are process-wide: the init counter
@@ -37,23 +39,6 @@ std::mutex& odeGlobalsLock() {
   return lock;
 }
 
-Eigen::Vector3d toEigen(const dReal* v) { return {v[0], v[1], v[2]}; }
-
-// ODE's dMatrix3 is row-major with a stride of 4.
-void toOde(const Eigen::Matrix3d& r, dMatrix3 m) {
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) m[4 * i + j] = r(i, j);
-    m[4 * i + 3] = 0.0;
-  }
-}
-Eigen::Matrix3d rotationFromOde(const dReal* m) {
-  Eigen::Matrix3d r;
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) r(i, j) = m[4 * i + j];
-  }
-  return r;
-}
-
 // Turns ODE's z-aligned cylinder of `geom` onto body axis `axis` (unit).
 void alignCylinder(dGeomID geom, const Eigen::Vector3d& axis) {
   dMatrix3 m;
@@ -62,14 +47,14 @@ void alignCylinder(dGeomID geom, const Eigen::Vector3d& axis) {
 }
 
 // The body's collision geom in `space`, attached to `b`, or null. A wheel's
-// is its tread (a sphere when w >= 2 r_f or when `sphere_wheels`); with
-// WTC's wheels, WTC replaces it against the terrain.
-dGeomID makeGeom(const Body& body, bool sphere_wheels, dSpaceID space, dBodyID b) {
+// is its tread (a cylinder, or a sphere: sim::treadIsSphere); with WTC's
+// wheels, WTC replaces it against the terrain.
+dGeomID makeGeom(const Body& body, const sim::EngineSettings& settings, dSpaceID space, dBodyID b) {
   dGeomID geom = nullptr;
   if (body.wheel) {
     const WheelGeometry& g = body.wheel->geometry;
-    geom = sphere_wheels || g.tread_width >= 2.0 * g.free_radius ? dCreateSphere(space, g.free_radius)
-                                                                 : dCreateCylinder(space, g.free_radius, g.tread_width);
+    geom = sim::treadIsSphere(settings, g) ? dCreateSphere(space, g.free_radius)
+                                           : dCreateCylinder(space, g.free_radius, g.tread_width);
     dGeomSetBody(geom, b);
     if (dGeomGetClass(geom) == dCylinderClass) alignCylinder(geom, body.wheel->axle);
     return geom;
@@ -93,11 +78,14 @@ dGeomID makeGeom(const Body& body, bool sphere_wheels, dSpaceID space, dBodyID b
   return geom;
 }
 
-class SimEngine final : public sim::Engine {
+class SimEngine final : public sim::EngineBase {
  public:
-  SimEngine(const sim::EngineSettings& settings, const Terrain& terrain, const vehicle::VehicleDescription& v,
-            const Eigen::Isometry3d& placement)
-      : sim::Engine(settings, v), terrain_(terrain), refs_(v.bodies.size()) {
+  SimEngine(Stepper stepper, const sim::EngineSettings& settings, const Terrain& terrain,
+            const vehicle::VehicleDescription& v, const Eigen::Isometry3d& placement)
+      : sim::EngineBase("wtc::ode sim engine", settings, v),
+        terrain_(terrain),
+        stepper_(stepper),
+        refs_(v.bodies.size()) {
     {
       const std::lock_guard<std::mutex> lock(odeGlobalsLock());
       dInitODE2(0);  // counted: matched by dCloseODE in the destructor
@@ -117,24 +105,20 @@ class SimEngine final : public sim::Engine {
     contacts_ = dJointGroupCreate(0);
     plugin_ = std::make_unique<Plugin>(world_, space_, terrain, settings.mode);
     for (std::size_t i = 0; i < v.bodies.size(); ++i) buildBody(static_cast<int>(i), placement);
-    if (settings.engine_wheels != sim::EngineWheels::kNone) {
-      addEngineWheels();
-      return;
+    // The wheels' strategy, chosen once: ODE's own, or WTC's.
+    std::vector<WheelBody> wheels;
+    for (const int body : v.wheels()) wheels.push_back({refs_[body].body, refs_[body].geom});
+    if (settings.native_wheels) {
+      wheels_ =
+          std::make_unique<NativeWheels>(*this, *plugin_, world_, contacts_, terrain, wheels, *settings.native_wheels);
+    } else {
+      wheels_ = std::make_unique<WtcWheels>(*plugin_, v, wheels, settings.tyre_effects, contacts_);
     }
-    for (std::size_t i = 0; i < v.bodies.size(); ++i) {
-      const Body& body = v.bodies[i];
-      if (!body.wheel) continue;
-      RigidWheel wheel;
-      wheel.body = refs_[i].body;
-      wheel.geom = refs_[i].geom;
-      wheel.axle_local = body.wheel->axle;
-      wheel.description = sim::wheelDescription(body);
-      wheel.effects = settings.tyre_effects;
-      refs_[i].wheel = plugin_->addWheel(wheel);
-    }
+    useWheels(*wheels_);
   }
 
   ~SimEngine() override {
+    wheels_.reset();
     plugin_.reset();  // its terrain space lives in space_
     dJointGroupDestroy(contacts_);
     dSpaceDestroy(space_);  // destroys the bodies' geoms (cleanup mode on)
@@ -167,12 +151,11 @@ class SimEngine final : public sim::Engine {
     const std::uint64_t messages_before = messages_.total();
     const MessageLog::Capture capture(messages_);
     plugin_->beginStep(h);
-    recorded_ = 0;
     dSpaceCollide(space_, this, &SimEngine::nearCallback);
     for (Ref& r : refs_) {
       if (r.wheel_drive) driveWheel(r, h);
     }
-    if (settings().kind == sim::EngineKind::kOdeQuick) {
+    if (stepper_ == Stepper::kQuick) {
       const std::lock_guard<std::mutex> lock(odeGlobalsLock());
       dRandSetSeed(quickstep_seed_);
       dWorldQuickStep(world_, h);
@@ -181,7 +164,7 @@ class SimEngine final : public sim::Engine {
       dWorldStep(world_, h);
     }
     dJointGroupEmpty(contacts_);
-    if (!engine_wheels_.empty()) readEngineWheels();
+    wheels_->stepped();
     ++steps_;
     if (messages_.total() != messages_before) noteMessageStep();
   }
@@ -235,15 +218,6 @@ class SimEngine final : public sim::Engine {
     dJointGetLMotorAxis(r.motor, 0, a);
     return toEigen(r.feedback.f1).dot(toEigen(a));
   }
-  const WheelForces& wheelForces(int body) const override {
-    return engine_wheels_.empty() ? plugin_->applied(wheelId(body)) : engine_wheels_[wheelId(body)].forces();
-  }
-  const WheelState& wheelState(int body) const override {
-    return engine_wheels_.empty() ? plugin_->state(wheelId(body)) : engine_wheels_[wheelId(body)].state();
-  }
-  // The engine's own wheels run no tyre model: nothing to tell.
-  void setWheelListener(WheelListener* listener) override { plugin_->setListener(listener); }
-  double contactSeconds() const override { return plugin_->contactSeconds(); }
   std::vector<sim::SolverMessage> solverMessages() const override {
     std::vector<sim::SolverMessage> said;
     for (std::size_t k = 0; k < messages_.counts().size(); ++k) {
@@ -264,7 +238,6 @@ class SimEngine final : public sim::Engine {
     dJointID joint = nullptr;  // to the parent
     dJointID motor = nullptr;  // the drive, if any
     dJointFeedback feedback{};
-    WheelId wheel = -1;           // the plugin's, or with engine wheels the index in engine_wheels_
     bool wheel_drive = false;     // solved here (driveWheel), not a motor row in ODE's solver
     double spin_inertia = 0.0;    // the wheel's moment about its axle (kg m^2)
     vehicle::MotorTarget target;  // the wheel drive's, this step
@@ -300,69 +273,6 @@ class SimEngine final : public sim::Engine {
     dBodyAddTorque(dJointGetBody(r.joint, 1), -t.x(), -t.y(), -t.z());
   }
 
-  // One contact of an engine wheel this step: ODE writes the force on the
-  // wheel (body 1) into `feedback`.
-  struct RecordedContact {
-    int wheel = -1;
-    dContactGeom geom{};
-    dJointFeedback feedback{};
-  };
-
-  // The engine's own wheel contact (sim::EngineWheels): the wheel geoms
-  // meet the terrain's geoms through ODE's colliders, with its contact
-  // joint and Coulomb friction (dContactApprox1) of the piece's mu.
-  void addEngineWheels() {
-    engine_wheel_mu_ = sim::engineWheelFrictions(terrain_);
-    engine_wheels_ = sim::EngineWheelSet(vehicle());
-    for (std::size_t k = 0; k < engine_wheels_.size(); ++k)
-      refs_[engine_wheels_.body(k)].wheel = static_cast<WheelId>(k);
-  }
-
-  // The engine wheel whose geom is `geom`, or -1.
-  int engineWheelOf(dGeomID geom) const {
-    for (std::size_t k = 0; k < engine_wheels_.size(); ++k) {
-      if (refs_[engine_wheels_.body(k)].geom == geom) return static_cast<int>(k);
-    }
-    return -1;
-  }
-
-  // An engine wheel against a terrain piece: ODE's contacts, each with its
-  // feedback, the wheel as body 1 (the normal then points out of the
-  // ground, toward the wheel).
-  void collideEngineWheel(int wheel, dGeomID wheel_geom, dGeomID ground) {
-    std::array<dContact, kMaxBodyContacts> contact{};
-    const int n = dCollide(wheel_geom, ground, kMaxBodyContacts, &contact[0].geom, sizeof(dContact));
-    for (int k = 0; k < n; ++k) {
-      const dReal* at = contact[k].geom.pos;
-      const PieceId piece = plugin_->terrainGeoms().piece(ground, Eigen::Vector3d(at[0], at[1], at[2]));
-      contact[k].surface.mode = dContactApprox1;
-      contact[k].surface.mu = piece >= 0 ? engine_wheel_mu_[terrain_.materialId(piece)] : sim::kBodyGroundFriction;
-      // Stable addresses: ODE keeps a pointer to the feedback until the step.
-      if (recorded_ == recorded_contacts_.size()) recorded_contacts_.emplace_back();
-      RecordedContact& r = recorded_contacts_[recorded_++];
-      r.wheel = wheel;
-      r.geom = contact[k].geom;
-      const dJointID joint = dJointCreateContact(world_, contacts_, &contact[k]);
-      dJointAttach(joint, dGeomGetBody(wheel_geom), nullptr);
-      dJointSetFeedback(joint, &r.feedback);
-    }
-  }
-
-  void readEngineWheels() {
-    engine_wheels_.clear();
-    for (std::size_t k = 0; k < recorded_; ++k) {
-      const RecordedContact& r = recorded_contacts_[k];
-      engine_wheels_[r.wheel].add(toEigen(r.geom.pos), toEigen(r.geom.normal), r.geom.depth, toEigen(r.feedback.f1));
-    }
-    engine_wheels_.finish(*this);
-  }
-
-  WheelId wheelId(int body) const {
-    const WheelId id = refs_.at(body).wheel;
-    if (id < 0) throw InvalidInputError("wtc::ode sim engine: body " + std::to_string(body) + " is not a wheel");
-    return id;
-  }
-
   void buildBody(int i, const Eigen::Isometry3d& placement) {
     const Body& b = vehicle().bodies[i];
     Ref& r = refs_[i];
@@ -375,7 +285,7 @@ class SimEngine final : public sim::Engine {
     dMatrix3 rotation;
     toOde(pose.linear(), rotation);
     dBodySetRotation(r.body, rotation);
-    r.geom = makeGeom(b, settings().engine_wheels == sim::EngineWheels::kSphere, space_, r.body);
+    r.geom = makeGeom(b, settings(), space_, r.body);
     if (b.parent >= 0) buildJoint(i, placement);
   }
 
@@ -385,8 +295,7 @@ class SimEngine final : public sim::Engine {
   bool solvesWheelDrive(const Body& b) const {
     constexpr double kParallel = 1e-9;  // |axle x axis| of a wheel on its own axle
     return b.wheel && b.joint.type == JointType::kRevolute && settings().mode == ContactMode::kForce &&
-           settings().engine_wheels == sim::EngineWheels::kNone &&
-           (b.pose.linear() * b.wheel->axle).cross(b.joint.axis).norm() < kParallel;
+           !settings().native_wheels && (b.pose.linear() * b.wheel->axle).cross(b.joint.axis).norm() < kParallel;
   }
 
   // The joint to the parent, at the start pose (where its coordinate is 0).
@@ -453,7 +362,7 @@ class SimEngine final : public sim::Engine {
 
   static void nearCallback(void* data, dGeomID a, dGeomID b) {
     SimEngine& e = *static_cast<SimEngine*>(data);
-    if (e.plugin_->handlePair(a, b, e.contacts_)) return;  // wheel-terrain: WTC's
+    if (e.wheels_->collide(a, b)) return;  // the wheels' pairs: WTC's, or ODE's own wheels
     // A body against the whole terrain: WTC's index says in a few hundred
     // nanoseconds whether any piece is near it, where ODE's quadtree walk
     // costs microseconds per body even when none is.
@@ -468,15 +377,8 @@ class SimEngine final : public sim::Engine {
     const dBodyID body_a = dGeomGetBody(a), body_b = dGeomGetBody(b);
     // Terrain against terrain, or two bodies of the vehicle: nothing.
     if ((body_a == nullptr) == (body_b == nullptr)) return;
-    if (!e.engine_wheels_.empty()) {
-      const dGeomID wheel_geom = body_a != nullptr ? a : b;
-      if (const int wheel = e.engineWheelOf(wheel_geom); wheel >= 0) {
-        e.collideEngineWheel(wheel, wheel_geom, body_a != nullptr ? b : a);
-        return;
-      }
-    }
-    std::array<dContact, kMaxBodyContacts> contact{};
-    const int n = dCollide(a, b, kMaxBodyContacts, &contact[0].geom, sizeof(dContact));
+    std::array<dContact, kMaxContactsPerPair> contact{};
+    const int n = dCollide(a, b, kMaxContactsPerPair, &contact[0].geom, sizeof(dContact));
     for (int k = 0; k < n; ++k) {
       contact[k].surface.mode = dContactApprox1;
       contact[k].surface.mu = sim::kBodyGroundFriction;
@@ -495,6 +397,7 @@ class SimEngine final : public sim::Engine {
   }
 
   const Terrain& terrain_;
+  Stepper stepper_;
   std::vector<PieceId> near_pieces_;  // scratch
   dWorldID world_ = nullptr;
   dThreadingImplementationID threading_ = nullptr;  // this world's own (see the constructor)
@@ -503,11 +406,8 @@ class SimEngine final : public sim::Engine {
   dJointGroupID contacts_ = nullptr;
   std::unique_ptr<Plugin> plugin_;
   std::vector<Ref> refs_;
-  sim::EngineWheelSet engine_wheels_;              // with sim::EngineWheels only
-  std::vector<double> engine_wheel_mu_;            // per material id
-  std::deque<RecordedContact> recorded_contacts_;  // grows to the most contacts a step had; never shrinks
-  std::size_t recorded_ = 0;                       // used this step
-  MessageLog messages_;                            // ODE's messages in this engine's steps
+  std::unique_ptr<OdeWheels> wheels_;  // WtcWheels or NativeWheels
+  MessageLog messages_;                // ODE's messages in this engine's steps
   struct MessageSteps {
     std::uint64_t seen = 0;   // messages_.counts()[k].count after the last step that had it
     std::uint64_t steps = 0;  // steps that had it
@@ -519,14 +419,11 @@ class SimEngine final : public sim::Engine {
 
 }  // namespace
 
-std::unique_ptr<sim::Engine> makeSimEngine(const sim::EngineSettings& settings, const Terrain& terrain,
+std::unique_ptr<sim::Engine> makeSimEngine(Stepper stepper, const sim::EngineSettings& settings, const Terrain& terrain,
                                            const vehicle::VehicleDescription& vehicle,
                                            const Eigen::Isometry3d& placement) {
   sim::validate(settings, "wtc::ode::makeSimEngine");
-  if (settings.kind == sim::EngineKind::kBullet) {
-    throw InvalidInputError("wtc::ode::makeSimEngine: engine kind bullet (expected ode or ode_quick)");
-  }
-  return std::make_unique<SimEngine>(settings, terrain, vehicle, placement);
+  return std::make_unique<SimEngine>(stepper, settings, terrain, vehicle, placement);
 }
 
 }  // namespace wtc::ode

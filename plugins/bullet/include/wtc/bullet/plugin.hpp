@@ -32,45 +32,39 @@
 
 #include <btBulletDynamicsCommon.h>
 
-#include "wtc/bullet/terrain_object.hpp"
-#include "wtc/tyre/effects.hpp"
-#include "wtc/tyre/contact_mode.hpp"
-#include "wtc/terrain/terrain.hpp"
-#include "wtc/tyre/tyre_model.hpp"
 #include "wtc/adapter/wheel_listener.hpp"
+#include "wtc/adapter/wheel_spec.hpp"
+#include "wtc/bullet/terrain_object.hpp"
+#include "wtc/terrain/terrain.hpp"
+#include "wtc/tyre/contact_mode.hpp"
+#include "wtc/tyre/tyre_model.hpp"
 
 class btMultiBody;
 
 namespace wtc::bullet {
+namespace detail {
+struct PluginState;
+}  // namespace detail
 
 using WheelId = wtc::WheelId;
 using WheelListener = wtc::WheelListener;
 
+/// Where a wheel sits on its Bullet body (wtc/adapter/wheel_spec.hpp: what
+/// the wheel is and where its inertia comes from).
+struct WheelMounting : WheelSpec {
+  btVector3 axle_local{0, 1, 0};    ///< Axle direction in the body (or link) frame.
+  btVector3 centre_local{0, 0, 0};  ///< Wheel centre O in the body (or link) frame (m).
+};
+
 /// A wheel that is its own btRigidBody (on a hinge to its carrier, typically).
-struct RigidWheel {
-  btRigidBody* body = nullptr;      ///< The wheel (not owned).
-  btVector3 axle_local{0, 1, 0};    ///< Axle direction in the body frame.
-  btVector3 centre_local{0, 0, 0};  ///< Wheel centre O in the body frame (m).
-  WheelDescription description;     ///< Geometry, tyre, inertia.
-  EffectSet effects = EffectSet::full();
-  /// kBody (the default): description.inertia's mass and moment about the
-  /// axle are read from the body (its spin_held is the caller's: whether a
-  /// drive or brake holds the spin); kDescription: all as given.
-  InertiaSource inertia_source = InertiaSource::kBody;
+struct RigidWheel : WheelMounting {
+  btRigidBody* body = nullptr;  ///< The wheel (not owned).
 };
 
 /// A wheel that is link `link` of a btMultiBody.
-struct MultiBodyWheel {
+struct MultiBodyWheel : WheelMounting {
   btMultiBody* multibody = nullptr;  ///< Not owned; the link must have a collider.
   int link = -1;
-  btVector3 axle_local{0, 1, 0};    ///< In the link frame.
-  btVector3 centre_local{0, 0, 0};  ///< In the link frame (m).
-  WheelDescription description;
-  EffectSet effects = EffectSet::full();
-  /// kBody (the default): description.inertia's mass and moment about the
-  /// axle are read from the body (its spin_held is the caller's: whether a
-  /// drive or brake holds the spin); kDescription: all as given.
-  InertiaSource inertia_source = InertiaSource::kBody;
 };
 
 class Plugin {
@@ -113,10 +107,12 @@ class Plugin {
   /// Called at the start of every internal step, before the wheels.
   void setPreTickCallback(std::function<void(double step_seconds)> callback);
 
-  struct Impl;
-
  private:
-  std::unique_ptr<Impl> impl_;
+  // The plugin's state, shared with its collision algorithm and its sim
+  // engine (plugins/bullet/src/plugin_state.hpp), which reach it through
+  // PluginState::of.
+  friend struct detail::PluginState;
+  std::unique_ptr<detail::PluginState> state_;
 };
 
 }  // namespace wtc::bullet

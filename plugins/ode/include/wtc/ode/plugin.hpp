@@ -50,36 +50,36 @@
 #include <ode/ode.h>
 #include <Eigen/Core>
 
-#include "wtc/tyre/effects.hpp"
 #include "wtc/adapter/solver_contact.hpp"
+#include "wtc/adapter/wheel_listener.hpp"
+#include "wtc/adapter/wheel_spec.hpp"
 #include "wtc/ode/terrain_geoms.hpp"
 #include "wtc/terrain/terrain.hpp"
 #include "wtc/tyre/tyre_model.hpp"
-#include "wtc/adapter/wheel_listener.hpp"
 
 namespace wtc::ode {
+namespace detail {
+struct PluginState;
+}  // namespace detail
 
 using WheelId = wtc::WheelId;
 using WheelListener = wtc::WheelListener;
 
 /// A wheel: an ODE body and its collision geom (on a hinge to its carrier,
 /// typically). ODE bodies have their origin at the centre of mass.
-struct RigidWheel {
+/// wtc/adapter/wheel_spec.hpp: what the wheel is and where its inertia
+/// comes from.
+struct RigidWheel : WheelSpec {
   dBodyID body = nullptr;                                 ///< The wheel (not owned).
   dGeomID geom = nullptr;                                 ///< Its geom, attached to `body` (not owned).
   Eigen::Vector3d axle_local{Eigen::Vector3d::UnitZ()};   ///< Axle in the body frame: z, ODE's cylinder axis.
   Eigen::Vector3d centre_local{Eigen::Vector3d::Zero()};  ///< Wheel centre O in the body frame (m).
-  WheelDescription description;                           ///< Geometry, tyre, inertia.
-  EffectSet effects = EffectSet::full();
-  /// kBody (the default): description.inertia's mass and moment about the
-  /// axle are read from the body (its spin_held is the caller's: whether a
-  /// drive or brake holds the spin); kDescription: all as given.
-  InertiaSource inertia_source = InertiaSource::kBody;
 };
 
 /// One WTC contact as ODE solved it (constraint mode). `feedback` is the
 /// contact joint's dJointFeedback: ODE fills it during the world step, so
-/// the forces are those of the last completed step.
+/// the forces are those of the last completed step (until that step, from
+/// the joint's creation in handlePair, its f1 is NaN: not yet solved).
 struct SolvedContact {
   SolverContact contact;      ///< What the plugin gave ODE.
   dJointFeedback feedback{};  ///< f1, t1: the joint's force and torque on the wheel body.
@@ -139,8 +139,11 @@ class Plugin {
   /// What acted on the wheel in the last world step (call it after the
   /// step): forces() in force mode; in constraint mode the forces ODE's
   /// solver applied at each contact (the joints' feedback), their wrench
-  /// and the rolling moment (wtc::MountedWheel::applied). Report these, not
-  /// forces(), as the contact forces of a constraint-mode run.
+  /// and the rolling moment (wtc::MountedWheel::applied), assembled at the
+  /// first call once ODE has solved every joint of the step and kept until
+  /// the next beginStep (before the world step a contact counts as no
+  /// force). Report these, not forces(), as the contact forces of a
+  /// constraint-mode run.
   const WheelForces& applied(WheelId wheel) const;
   /// The wheel's contacts as ODE solved them in the last world step
   /// (constraint mode; empty in force mode).
@@ -160,10 +163,9 @@ class Plugin {
   /// ODE integrates the step); null: none.
   void setListener(WheelListener* listener);
 
-  struct Impl;
-
  private:
-  std::unique_ptr<Impl> impl_;
+  // The plugin's state (plugins/ode/src/plugin_state.hpp).
+  std::unique_ptr<detail::PluginState> state_;
 };
 
 }  // namespace wtc::ode

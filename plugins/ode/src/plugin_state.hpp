@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "adapter/mounted_wheel.hpp"
-#include "wtc/ode/plugin.hpp"
 #include "adapter/step_clock.hpp"
+#include "wtc/ode/plugin.hpp"
 
 namespace wtc::ode {
 
@@ -31,11 +31,14 @@ struct Wheel {
   std::vector<SolvedContact> contacts;
   std::vector<Eigen::Vector3d> solved_forces;  // scratch for MountedWheel::setSolvedForces
   bool handled = false;                        // handlePair has seen this wheel against the terrain this step
+  bool applied_ready = false;                  // constraint mode: mounted.applied() holds this step's solve
   WheelDiagnostics diagnostics;
 };
 
-struct Plugin::Impl {
-  Impl(dWorldID world, dSpaceID space, const Terrain& terrain, ContactMode mode, TerrainShape shape);
+namespace detail {
+
+struct PluginState {
+  PluginState(dWorldID world, dSpaceID space, const Terrain& terrain, ContactMode mode, TerrainShape shape);
   WheelId add(const RigidWheel& spec);
   void beginStep(double step_seconds);
   bool handlePair(dGeomID a, dGeomID b, dJointGroupID contacts);
@@ -53,4 +56,5 @@ struct Plugin::Impl {
   StepClock clock;  // beginStep and the wheel-terrain pairs of handlePair
 };
 
+}  // namespace detail
 }  // namespace wtc::ode

@@ -1,23 +1,21 @@
 #pragma once
-// The state behind wtc::bullet::Plugin, shared with the collision algorithm
-// (internal to wtc::bullet).
+// The state behind wtc::bullet::Plugin, shared with its collision algorithm
+// and its sim engine (internal to wtc::bullet and wtc::bullet_sim).
 #include <memory>
 #include <unordered_map>
 #include <vector>
 
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 
-#include "wheel_friction_constraint.hpp"
-#include "wtc/bullet/plugin.hpp"
-#include "wtc/bullet/terrain_object.hpp"
-#include "wheel_shape.hpp"
 #include "adapter/mounted_wheel.hpp"
 #include "adapter/step_clock.hpp"
+#include "conversions.hpp"
+#include "wheel_friction_constraint.hpp"
+#include "wheel_shape.hpp"
+#include "wtc/bullet/plugin.hpp"
+#include "wtc/bullet/terrain_object.hpp"
 
 namespace wtc::bullet {
-
-inline btVector3 toBullet(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
-inline Eigen::Vector3d toEigen(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
 
 struct Wheel {
   Wheel(const WheelDescription& description, EffectSet effects, ContactMode mode)
@@ -47,21 +45,32 @@ struct Wheel {
 };
 
 // A multibody's link velocities (link frames, index 0 the base, i + 1 link
-// i), computed once per substep for all its wheels.
+// i), computed once per internal step for all its links and shared by the
+// plugin's wheels (their tyre models, in the pre-tick) and the sim engine
+// (its bodies' velocities after the step): Bullet's state does not change
+// between the end of one internal step and the start of the next.
 struct LinkVelocities {
   const btMultiBody* multibody = nullptr;
   btAlignedObjectArray<btVector3> angular, linear;
-  bool valid = false;  // computed this substep
+  bool valid = false;  // computed since the last internal step ended
 };
 
-struct Plugin::Impl {
-  Impl(btDiscreteDynamicsWorld& world, const Terrain& terrain, ContactMode mode);
-  ~Impl();
+namespace detail {
+
+struct PluginState {
+  PluginState(btDiscreteDynamicsWorld& world, const Terrain& terrain, ContactMode mode);
+  ~PluginState();
+  /// The state of `plugin` (for its collision algorithm and its sim engine).
+  static PluginState& of(const Plugin& plugin) { return *plugin.state_; }
+
   WheelId add(std::unique_ptr<Wheel> wheel, const char* where);
   void preTick(double step_seconds);
   void postTick(double step_seconds);
   void readSolvedForces(Wheel& wheel, double step_seconds);
   int wheelOf(const btCollisionObject* object) const;
+  /// `multibody`'s link velocities now, computed at most once per internal
+  /// step (the post-tick marks them stale).
+  const LinkVelocities& linkVelocities(const btMultiBody& multibody);
 
   btDiscreteDynamicsWorld& world;
   btCollisionDispatcher* dispatcher;
@@ -72,9 +81,9 @@ struct Plugin::Impl {
   std::unique_ptr<btCollisionAlgorithmCreateFunc> create;
   WheelListener* listener = nullptr;
   std::function<void(double)> pre_tick;
-  const LinkVelocities& linkVelocities(const btMultiBody& multibody);
-  std::vector<LinkVelocities> link_velocities;  // per multibody with wheels
+  std::vector<LinkVelocities> link_velocities;  // per multibody asked for
   StepClock clock;                              // preTick and postTick, the caller's callback not included
 };
 
+}  // namespace detail
 }  // namespace wtc::bullet

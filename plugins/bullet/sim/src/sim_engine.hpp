@@ -1,11 +1,13 @@
 #pragma once
-// wtc::bullet_sim: the wtc::sim::Engine of Bullet. Each vehicle tree is a
+// wtc::bullet_sim: the wtc::sim::Engine of Bullet (internal; reached through
+// the engine table as "bullet": register.cpp). Each vehicle tree is a
 // btMultiBody (reduced coordinates: joints hold exactly, as the robot's
 // must), in a btMultiBodyDynamicsWorld; wheels are WTC wheels through
-// wtc::bullet; drives are btMultiBodyJointMotor (an implicit velocity motor
-// capped at the drive's effort), travel limits btMultiBodyJointLimitConstraint.
-// Bodies of one tree do not collide with each other; every other body
-// collides with the ground through its shape (friction kBodyGroundFriction).
+// wtc::bullet (wtc_wheels.hpp) or Bullet's own (native_wheels.hpp); drives
+// are btMultiBodyJointMotor (an implicit velocity motor capped at the
+// drive's effort), travel limits btMultiBodyJointLimitConstraint. Bodies of
+// one tree do not collide with each other; every other body collides with
+// the ground through its shape (friction kBodyGroundFriction).
 #include <memory>
 
 #include "wtc/sim/engine.hpp"
