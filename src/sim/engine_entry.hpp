@@ -8,7 +8,9 @@
 // (plugins/bullet/sim/src/register.cpp), and the table's generated source
 // names every such function, so that the linker keeps each engine's
 // registration (an entry nothing referred to would be dropped from a static
-// library). One engine may register several names (ODE: ode, ode_quick).
+// library). One engine may register several names: its own, and variants
+// as <engine>_<variant> (ODE: ode, ode_quick); EngineTableTest holds the
+// table to that.
 #include <memory>
 #include <span>
 #include <string_view>

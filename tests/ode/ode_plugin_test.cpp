@@ -170,6 +170,33 @@ TEST(OdePluginTest, OnlyConstraintModeCreatesContactJoints) {
   }
 }
 
+// Case: in constraint mode applied() is assembled from the contact joints'
+// feedback once ODE has solved the step, and kept: asked between the near
+// callback and the world step it counts the joints as no force and keeps
+// nothing, so the same step's answer after the world step is ODE's; asked
+// again, it is the same.
+TEST(OdePluginTest, AppliedForcesAreTheSolvedStepsWhenEverAsked) {
+  const Terrain ground = testing::flatGround();
+  OdeWorld w(ground, ContactMode::kConstraint);
+  const double weight = 21.0 * kGravityMps2;
+  const WheelBody wheel = w.addWheelBody(21.0, {0, 0, kRadius - weight / kStiffness});
+  const ode::WheelId id = testing::addWheel(w, wheel);
+  for (int k = 0; k < 1000; ++k) w.step(kStepSeconds);
+  w.plugin->beginStep(kStepSeconds);
+  w.collide();
+  ASSERT_EQ(w.plugin->solvedContacts(id).size(), 1u);
+  EXPECT_EQ(w.plugin->applied(id).contacts.size(), 1u);
+  EXPECT_EQ(w.plugin->applied(id).force, Eigen::Vector3d::Zero()) << "before the world step: not solved yet";
+  dWorldStep(w.world, kStepSeconds);
+  dJointGroupEmpty(w.contacts);
+  const Eigen::Vector3d solved = w.plugin->solvedContacts(id)[0].force();
+  const WheelForces& after = w.plugin->applied(id);
+  EXPECT_EQ(after.force, solved);
+  EXPECT_NEAR(after.force.z(), weight, 1e-6 * weight);
+  EXPECT_EQ(w.plugin->applied(id).force, solved) << "asked again";
+  EXPECT_EQ(&w.plugin->applied(id), &after);
+}
+
 // Case: force mode relies on ODE clearing the accumulated forces at the end
 // of each world step (both steppers), so that beginStep's forces act on
 // exactly one step: after a step the wheel carries none.

