@@ -5,7 +5,6 @@ set -euo pipefail
 packages=(
   g++ cmake make pkg-config
   libeigen3-dev libqhull-dev                     # core: linear algebra, hulls
-  libbullet-dev libbullet-extras-dev libode-dev  # engines (double precision)
   libfcl-dev libccd-dev                          # independent distance checks
   libassimp-dev assimp-testmodels                # mesh import and its test files
   zlib1g-dev                                     # assimp's CMake config links libz.so; libassimp-dev lacks the dependency
@@ -16,6 +15,12 @@ packages=(
   clang-14 libclang-rt-14-dev                   # libFuzzer, ASan, UBSan for fuzz/ (ctest -L fuzz)
   libtbb-dev parallel                           # the accuracy study: runs on all cores (TBB), or as a job list (GNU parallel)
 )
+# Each engine's own, listed in its folder (plugins/<engine>/debian-packages: names, '#' comments).
+for list in "$(dirname "$0")"/../plugins/*/debian-packages; do
+  [[ -f $list ]] || continue
+  read -r -a own <<<"$(sed 's/#.*//' "$list" | tr '\n' ' ')"
+  packages+=("${own[@]}")
+done
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

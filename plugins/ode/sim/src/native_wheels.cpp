@@ -44,8 +44,7 @@ void NativeWheels::collideWheel(int wheel, dGeomID wheel_geom, dGeomID ground) {
   std::array<dContact, kMaxContactsPerPair> contact{};
   const int n = dCollide(wheel_geom, ground, kMaxContactsPerPair, &contact[0].geom, sizeof(dContact));
   for (int k = 0; k < n; ++k) {
-    const dReal* at = contact[k].geom.pos;
-    const PieceId piece = plugin().terrainGeoms().piece(ground, Eigen::Vector3d(at[0], at[1], at[2]));
+    const PieceId piece = plugin().terrainGeoms().piece(ground, toEigen(contact[k].geom.pos));
     contact[k].surface.mode = dContactApprox1;
     contact[k].surface.mu = piece >= 0 ? mu_[terrain_.materialId(piece)] : sim::kBodyGroundFriction;
     // Stable addresses: ODE keeps a pointer to the feedback until the step.
