@@ -4,6 +4,14 @@
 #include "wtc/terrain/terrain_primitives.hpp"
 #include "wtc/vehicle/vehicle_file.hpp"
 
+namespace wtc::sim {
+
+void PrintTo(const EngineSettings& settings, std::ostream* out) {
+  *out << settings.engine << ' ' << modeName(settings);
+}
+
+}  // namespace wtc::sim
+
 namespace wtc::testing {
 
 vehicle::VehicleDescription shippedVehicle(const std::string& file) {

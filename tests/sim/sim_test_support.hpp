@@ -1,11 +1,19 @@
 #pragma once
 // What the sim tests share: the shipped vehicles, a flat ground, and the
 // engine settings every test runs in.
+#include <ostream>
 #include <string>
 #include <vector>
 
 #include "wtc/sim/engine.hpp"
 #include "wtc/terrain/terrain.hpp"
+
+namespace wtc::sim {
+
+/// "bullet force": how GoogleTest prints a test's engine settings.
+void PrintTo(const EngineSettings& settings, std::ostream* out);
+
+}  // namespace wtc::sim
 
 namespace wtc::testing {
 

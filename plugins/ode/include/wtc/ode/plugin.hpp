@@ -79,7 +79,7 @@ struct RigidWheel : WheelSpec {
 /// One WTC contact as ODE solved it (constraint mode). `feedback` is the
 /// contact joint's dJointFeedback: ODE fills it during the world step, so
 /// the forces are those of the last completed step (until that step, from
-/// the joint's creation in handlePair, its f1 is NaN: not yet solved).
+/// the joint's creation in handlePair, its f1[0] is NaN: not yet solved).
 struct SolvedContact {
   SolverContact contact;      ///< What the plugin gave ODE.
   dJointFeedback feedback{};  ///< f1, t1: the joint's force and torque on the wheel body.
