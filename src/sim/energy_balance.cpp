@@ -20,8 +20,7 @@ double EnergyBalance::energyOf(const vehicle::VehicleState& state,
   }
   for (const int w : wheels_) {
     const double c = vehicle_.bodies[w].wheel->tyre.radial_stiffness;
-    for (const ContactForce& f : wheel_forces[w]->contacts)
-      e += 0.5 * c * f.contact.deflection * f.contact.deflection;
+    for (const ContactForce& f : wheel_forces[w]->contacts) e += 0.5 * c * f.contact.deflection * f.contact.deflection;
   }
   if (vehicle_.hitch) {
     const vehicle::Hitch& h = *vehicle_.hitch;

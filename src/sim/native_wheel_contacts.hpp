@@ -11,8 +11,8 @@
 #include <Eigen/Core>
 
 #include "wtc/tyre/tyre_model.hpp"
-#include "wtc/vehicle/vehicle_description.hpp"
 #include "wtc/tyre/wheel_forces.hpp"
+#include "wtc/vehicle/vehicle_description.hpp"
 
 namespace wtc::sim {
 

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "base/scratch_capacity.hpp"
 #include "wtc/base/constants.hpp"
 #include "wtc/sim/sim_constants.hpp"
-#include "base/scratch_capacity.hpp"
 
 namespace wtc::sim {
 namespace {

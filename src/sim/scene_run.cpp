@@ -7,14 +7,13 @@
 #include <limits>
 #include <numbers>
 
-#include "wtc/base/constants.hpp"
-#include "wtc/sim/sim_constants.hpp"
-#include "wtc/base/error.hpp"
 #include "recorder.hpp"
-#include "wtc/sim/replay.hpp"
-#include "wtc/sim/run.hpp"
-#include "wtc/sim/step_count.hpp"
+#include "wtc/base/constants.hpp"
+#include "wtc/base/error.hpp"
 #include "wtc/base/tolerances.hpp"
+#include "wtc/sim/run.hpp"
+#include "wtc/sim/sim_constants.hpp"
+#include "wtc/sim/step_count.hpp"
 
 namespace wtc::sim {
 namespace {
@@ -161,7 +160,7 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
   const auto t0 = std::chrono::steady_clock::now();
   const double wtc0 = engine.contactSeconds();
   if (recorder) recorder->record(run);
-  if (options.replay != nullptr) options.replay->observe(run);
+  if (options.observer != nullptr) options.observer->observe(run);
   while (run.steps() < steps) {
     if (options.stop != nullptr && options.stop->load()) break;
     run.step();
@@ -190,7 +189,7 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
       hitch_sum_x += run.hitch()->force_local.x();
     }
     if (recorder && run.steps() % every == 0) recorder->record(run);
-    if (options.replay != nullptr) options.replay->observe(run);
+    if (options.observer != nullptr) options.observer->observe(run);
     if (options.progress && run.steps() % progress_every == 0) {
       options.progress(static_cast<double>(run.steps()) / static_cast<double>(steps));
     }

@@ -25,14 +25,14 @@
 
 #include <Eigen/Geometry>
 
-#include "wtc/tyre/effects.hpp"
-#include "wtc/tyre/contact_mode.hpp"
+#include "wtc/adapter/wheel_listener.hpp"
 #include "wtc/terrain/terrain.hpp"
+#include "wtc/tyre/contact_mode.hpp"
+#include "wtc/tyre/effects.hpp"
 #include "wtc/tyre/tyre_model.hpp"
 #include "wtc/vehicle/drive.hpp"
 #include "wtc/vehicle/hitch_law.hpp"
 #include "wtc/vehicle/vehicle_description.hpp"
-#include "wtc/adapter/wheel_listener.hpp"
 
 namespace wtc::sim {
 
