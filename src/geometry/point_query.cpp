@@ -1,7 +1,7 @@
 // The modified GJK point query. Reads top to bottom:
 //   validate -> bounding-box bound -> face-plane bound (exact inside)
 //   -> nearest face's region (exact) -> crossed edge's region (exact) -> GJK.
-// See include/wtc/point_query.hpp for the conventions and docs/point-query.md
+// See include/wtc/geometry/point_query.hpp for the conventions and docs/point-query.md
 // for the design and its measurements.
 #include "wtc/geometry/point_query.hpp"
 #include "polyhedron_layout.hpp"

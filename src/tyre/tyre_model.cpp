@@ -1,5 +1,5 @@
 // Assembly of the tyre model and the wheel step (design note in
-// include/wtc/tyre_model.hpp).
+// include/wtc/tyre/tyre_model.hpp).
 #include "wtc/tyre/tyre_model.hpp"
 
 #include <algorithm>

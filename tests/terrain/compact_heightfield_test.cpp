@@ -1,4 +1,4 @@
-// The compact heightfield (src/compact_heightfield.hpp, internal to
+// The compact heightfield (src/terrain/compact_heightfield.hpp, internal to
 // wtc::core) against the prisms addHeightfield stores: the same pieces bit
 // for bit, the same bounds, the same answer to "which pieces overlap this
 // box".
