@@ -1,4 +1,4 @@
-// wtc_bench_compact: the compact heightfield (src/compact_heightfield.hpp)
+// wtc_bench_compact: the compact heightfield (src/terrain/compact_heightfield.hpp)
 // against the stored prisms of addHeightfield, at 10^4 ... 10^8 cells.
 //
 //   build/bench/wtc_bench_compact --benchmark_repetitions=3 --benchmark_report_aggregates_only=true

@@ -14,10 +14,10 @@
 #include "app_files.hpp"
 #include "wtc-sim/run_directory.hpp"
 #include "wtc/base/error.hpp"
-#include "wtc/sim/run_summary_file.hpp"
-#include "wtc/sim/scene_file.hpp"
 #include "wtc/sim/engine_table.hpp"
 #include "wtc/sim/replay.hpp"
+#include "wtc/sim/run_summary_file.hpp"
+#include "wtc/sim/scene_file.hpp"
 #include "wtc/sim/scene_run.hpp"
 
 namespace {
@@ -156,7 +156,7 @@ int main(int argc, char** argv) {
       replay_said = no_replay ? "no replay (--no-replay)" : "no replay (output.replay: false)";
     } else {
       replay.emplace(scene, scene.output.replay_fps);
-      options.replay = &*replay;
+      options.observer = &*replay;
     }
     wtc::sim::RunSummary summary = wtc::sim::runScene(scene, *engine_ptr, options);
     summary.program = wtc::apps::programIdentity();

@@ -1,5 +1,5 @@
 // The per-wheel step both engine adapters run (design note in
-// include/wtc/mounted_wheel.hpp).
+// src/adapter/mounted_wheel.hpp).
 #include "mounted_wheel.hpp"
 
 #include <string>

@@ -1,5 +1,7 @@
 #include "wtc/geometry/convex_polyhedron.hpp"
 
+#include "polyhedron_layout.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -162,14 +164,15 @@ ConvexPolyhedron ConvexPolyhedron::box(const Eigen::Vector3d& min, const Eigen::
   return assemble(v, faces, false, nullptr);
 }
 
-ConvexPolyhedron detail::sameTopologyAs(const ConvexPolyhedron& like, const std::vector<Eigen::Vector3d>& vertices,
-                                        const std::vector<std::vector<int>>& faces) {
+ConvexPolyhedron detail::PolyhedronLayout::sameTopologyAs(const ConvexPolyhedron& like,
+                                                          const std::vector<Eigen::Vector3d>& vertices,
+                                                          const std::vector<std::vector<int>>& faces) {
   return ConvexPolyhedron::assemble(vertices, faces, like.flat_, nullptr, &like.topology_);
 }
 
-void detail::sameTopologyInto(ConvexPolyhedron& into, const ConvexPolyhedron& like,
-                              const std::vector<Eigen::Vector3d>& vertices,
-                              const std::vector<std::vector<int>>& faces) {
+void detail::PolyhedronLayout::sameTopologyInto(ConvexPolyhedron& into, const ConvexPolyhedron& like,
+                                                const std::vector<Eigen::Vector3d>& vertices,
+                                                const std::vector<std::vector<int>>& faces) {
   ConvexPolyhedron::assembleInto(into, vertices, faces, like.flat_, nullptr, &like.topology_);
 }
 

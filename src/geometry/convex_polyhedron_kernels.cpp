@@ -36,9 +36,7 @@ std::span<const std::int32_t> ConvexPolyhedron::vertexNeighbors(int i) const {
   return {list + start[i], list + start[i + 1]};
 }
 
-int ConvexPolyhedron::support(const Eigen::Vector3d& dir, int hint) const {
-  return supportLocal(dir, hint);
-}
+int ConvexPolyhedron::support(const Eigen::Vector3d& dir, int hint) const { return supportLocal(dir, hint); }
 
 int ConvexPolyhedron::supportLocal(const Eigen::Vector3d& dir, int hint) const {
   if (has_adjacency_) return hillClimb(dir, hint < 0 ? 0 : hint);
@@ -102,8 +100,7 @@ double ConvexPolyhedron::planeBoundLocal(const Eigen::Vector3d& q, int* face) co
 }
 
 std::size_t ConvexPolyhedron::memoryBytes() const {
-  return sizeof(*this) + numbers_.capacity() * sizeof(double) +
-         topology_.capacity() * sizeof(std::int32_t);
+  return sizeof(*this) + numbers_.capacity() * sizeof(double) + topology_.capacity() * sizeof(std::int32_t);
 }
 
 }  // namespace wtc

@@ -1,8 +1,11 @@
 #include "feature_regions.hpp"
 
+#include "polyhedron_layout.hpp"
+
 namespace wtc::detail {
 
 using Eigen::Vector3d;
+using Layout = PolyhedronLayout;
 
 // Which edges of face `face` the projection of q onto its plane lies beyond.
 // Face vertices run counter-clockwise about the outward normal n, so the
@@ -13,7 +16,7 @@ using Eigen::Vector3d;
 // shared vertex: the feature to test next and, failing that, to seed GJK.
 FaceRegion classify(const ConvexPolyhedron& poly, const Vector3d& q, int face) {
   const auto vertices = poly.faceVertices(face);
-  const double* side = poly.faceEdgePlanes(face);
+  const double* side = Layout::faceEdgePlanes(poly, face);
   const auto size = static_cast<int>(vertices.size());
   int crossed[2] = {-1, -1};
   int count = 0;
@@ -29,16 +32,16 @@ FaceRegion classify(const ConvexPolyhedron& poly, const Vector3d& q, int face) {
   if (count == 2 && crossed[1] == crossed[0] + 1) {
     region.count = 1;
     region.seed[0] = vertices[crossed[0]];
-    region.into_vertex = poly.faceEdgeStart(face) + crossed[0];
+    region.into_vertex = Layout::faceEdgeStart(poly, face) + crossed[0];
   } else if (count == 2 && crossed[0] == 0 && crossed[1] == size - 1) {
     region.count = 1;
     region.seed[0] = vertices[size - 1];
-    region.into_vertex = poly.faceEdgeStart(face) + size - 1;
+    region.into_vertex = Layout::faceEdgeStart(poly, face) + size - 1;
   } else {
     region.count = 2;
     region.seed[0] = vertices[(crossed[0] + size - 1) % size];
     region.seed[1] = vertices[crossed[0]];
-    if (count == 1) region.only_edge = poly.faceEdgeStart(face) + crossed[0];
+    if (count == 1) region.only_edge = Layout::faceEdgeStart(poly, face) + crossed[0];
   }
   return region;
 }
@@ -51,7 +54,7 @@ FaceRegion classify(const ConvexPolyhedron& poly, const Vector3d& q, int face) {
 // twin face-edge gives g's. Returns false when q is not in the region.
 bool edgeRegion(const ConvexPolyhedron& poly, const Vector3d& q, const FaceRegion& region, Vector3d* closest) {
   if (region.only_edge < 0) return false;
-  const double* twin = poly.faceEdgePlane(poly.faceEdgeTwin(region.only_edge));
+  const double* twin = Layout::faceEdgePlane(poly, Layout::faceEdgeTwin(poly, region.only_edge));
   if (twin[0] * q.x() + twin[1] * q.y() + twin[2] * q.z() > twin[3]) return false;
   const Vector3d a = poly.vertexLocal(region.seed[0]);
   const Vector3d ab = poly.vertexLocal(region.seed[1]) - a;
@@ -73,9 +76,9 @@ bool vertexRegion(const ConvexPolyhedron& poly, const Vector3d& q, const FaceReg
   const Vector3d d = q - a;
   std::int32_t into = region.into_vertex;
   for (int guard = 0; guard < poly.vertexCount(); ++guard) {  // a vertex has < V edges
-    const std::int32_t out = poly.faceEdgeNext(into);
-    if (d.dot(poly.vertexLocal(poly.faceEdgeEnd(out)) - a) > 0.0) return false;
-    into = poly.faceEdgeTwin(out);
+    const std::int32_t out = Layout::faceEdgeNext(poly, into);
+    if (d.dot(poly.vertexLocal(Layout::faceEdgeEnd(poly, out)) - a) > 0.0) return false;
+    into = Layout::faceEdgeTwin(poly, out);
     if (into == region.into_vertex) {
       *closest = a;
       return true;

@@ -17,9 +17,9 @@ extern "C" {
 #include <libqhull_r/qhull_ra.h>
 }
 
-#include "wtc/geometry/convex_polyhedron.hpp"
 #include "wtc/base/error.hpp"
 #include "wtc/base/tolerances.hpp"
+#include "wtc/geometry/convex_polyhedron.hpp"
 
 namespace wtc {
 namespace {
@@ -66,8 +66,8 @@ class QhullRun {
     const int npoints = static_cast<int>(coords.size()) / dim;
     if (qh_new_qhull(&qh_, dim, npoints, coords.data(), False, command, nullptr, err_) != 0) {
       std::fflush(err_);
-      throw InvalidInputError(std::string(kWhere) + "Qhull failed: " +
-                              std::string(err_text_ != nullptr ? err_text_ : "", err_size_));
+      throw InvalidInputError(std::string(kWhere) +
+                              "Qhull failed: " + std::string(err_text_ != nullptr ? err_text_ : "", err_size_));
     }
   }
   qhT* get() { return &qh_; }
@@ -155,8 +155,7 @@ ConvexPolyhedron ConvexPolyhedron::fromPoints(const std::vector<Eigen::Vector3d>
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (!isFinite(points[i])) {
       throw InvalidInputError(std::string(kWhere) + "point " + std::to_string(i) + " of " +
-                              std::to_string(points.size()) + " = " + formatVector(points[i]) +
-                              " is not finite");
+                              std::to_string(points.size()) + " = " + formatVector(points[i]) + " is not finite");
     }
   }
   const Aabb box = Aabb::of(points);
@@ -169,8 +168,8 @@ ConvexPolyhedron ConvexPolyhedron::fromPoints(const std::vector<Eigen::Vector3d>
 
   // Classify with three extreme points: a, b far apart, c far from line ab.
   auto degenerate = [&](const std::string& shape) {
-    return InvalidInputError(std::string(kWhere) + "the " + std::to_string(points.size()) + " points are " +
-                             shape + " (bounding box " + formatVector(box.min) + " to " + formatVector(box.max) +
+    return InvalidInputError(std::string(kWhere) + "the " + std::to_string(points.size()) + " points are " + shape +
+                             " (bounding box " + formatVector(box.min) + " to " + formatVector(box.max) +
                              "); a piece needs at least 3 non-collinear points");
   };
   if (local.size() < 3) throw degenerate(local.size() == 1 ? "all coincident" : "collinear");

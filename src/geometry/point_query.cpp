@@ -1,9 +1,10 @@
 // The modified GJK point query. Reads top to bottom:
 //   validate -> bounding-box bound -> face-plane bound (exact inside)
 //   -> nearest face's region (exact) -> crossed edge's region (exact) -> GJK.
-// See include/wtc/point_query.hpp for the conventions and docs/point-query.md
+// See include/wtc/geometry/point_query.hpp for the conventions and docs/point-query.md
 // for the design and its measurements.
 #include "wtc/geometry/point_query.hpp"
+#include "polyhedron_layout.hpp"
 
 #include <cmath>
 #include <string>
@@ -13,10 +14,12 @@
 #include "wtc/base/error.hpp"
 
 namespace wtc {
+
+using Layout = detail::PolyhedronLayout;
 namespace {
 
-using Eigen::Vector3d;
 using detail::FaceRegion;
+using Eigen::Vector3d;
 
 // Beyond this the squared norms GJK forms would overflow double (m).
 constexpr double kMaxCoordinateM = 1e150;
@@ -31,8 +34,8 @@ void validate(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOption
                                          : " is not finite"));
   }
   if (!(o.relative_tolerance > 0.0 && o.relative_tolerance < 1.0)) {
-    throw InvalidInputError("wtc::queryPoint: options.relative_tolerance = " +
-                            formatNumber(o.relative_tolerance) + " is not in (0, 1)");
+    throw InvalidInputError("wtc::queryPoint: options.relative_tolerance = " + formatNumber(o.relative_tolerance) +
+                            " is not in (0, 1)");
   }
   if (o.max_iterations < 1) {
     throw InvalidInputError("wtc::queryPoint: options.max_iterations = " + std::to_string(o.max_iterations) +
@@ -43,8 +46,7 @@ void validate(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOption
 
 // Result on or inside face `face` of the plane bound: exact, since inside a
 // convex polyhedron the nearest surface point lies on the nearest face plane.
-PointQuery fromPlane(const ConvexPolyhedron& poly, const Vector3d& p, double bound, int face,
-                     QueryStatus status) {
+PointQuery fromPlane(const ConvexPolyhedron& poly, const Vector3d& p, double bound, int face, QueryStatus status) {
   PointQuery r;
   r.signed_distance = bound;
   r.normal = poly.faceNormal(face);
@@ -145,7 +147,7 @@ PointQuery gjk(const ConvexPolyhedron& poly, const Vector3d& p, const Vector3d& 
   auto onNearestFace = [&] {
     if (s.count != 3 || dist - plane > plane_slack) return false;
     const Vector3d n = poly.faceNormal(face);
-    const double d = poly.pd()[face];
+    const double d = Layout::pd(poly)[face];
     for (int m = 0; m < 3; ++m) {
       if (n.dot(poly.vertexLocal(s.vertex[m])) < d - plane_slack) return false;
     }
@@ -166,7 +168,7 @@ PointQuery gjk(const ConvexPolyhedron& poly, const Vector3d& p, const Vector3d& 
       break;
     }
     if (iterations == options.max_iterations) break;
-    const int next = poly.supportLocal(-v, s.vertex[0]);
+    const int next = Layout::supportLocal(poly, -v, s.vertex[0]);
     ++iterations;
     const Vector3d w = poly.vertexLocal(next) - q;
     lower = std::max(lower, v.dot(w) / dist);  // v . x >= v . w for all x in poly - p
@@ -200,8 +202,7 @@ PointQuery gjk(const ConvexPolyhedron& poly, const Vector3d& p, const Vector3d& 
   return toward(p, v, dist, status == QueryStatus::kBeyond ? lower : dist, status, iterations);
 }
 
-PointQuery query(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOptions& options,
-                 QueryCache* cache) {
+PointQuery query(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOptions& options, QueryCache* cache) {
   validate(poly, p, options);
   const double max_distance = options.max_distance;
 
@@ -214,7 +215,7 @@ PointQuery query(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOpt
   // 2. Face planes: exact inside, a lower bound outside.
   const Vector3d q = p - poly.origin();
   int face = 0;
-  const double plane = poly.planeBoundLocal(q, &face);
+  const double plane = Layout::planeBoundLocal(poly, q, &face);
   if (plane <= 0.0 && !poly.isFlat()) {
     if (cache != nullptr) cache->count = 0;
     return fromPlane(poly, p, plane, face, QueryStatus::kInside);
@@ -266,8 +267,7 @@ PointQuery queryPoint(const ConvexPolyhedron& poly, const Vector3d& p, const Que
   return query(poly, p, options, nullptr);
 }
 
-PointQuery queryPoint(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOptions& options,
-                      QueryCache& cache) {
+PointQuery queryPoint(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOptions& options, QueryCache& cache) {
   return query(poly, p, options, &cache);
 }
 

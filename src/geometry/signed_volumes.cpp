@@ -30,9 +30,7 @@ Candidate segment(const Vector3d* p, int i, int j) {
   return {p[i] + (along / tt) * t, {i, j, 0}, 2};
 }
 
-Candidate better(const Candidate& a, const Candidate& b) {
-  return b.v.squaredNorm() < a.v.squaredNorm() ? b : a;
-}
+Candidate better(const Candidate& a, const Candidate& b) { return b.v.squaredNorm() < a.v.squaredNorm() ? b : a; }
 
 // A signed measure below this fraction of the sum of its parts' magnitudes
 // has no reliable sign (dimensionless): a flat tetrahedron (four coplanar
@@ -73,8 +71,8 @@ Candidate tetrahedron(const Vector3d* p, bool* enclosed) {
   const Vector3d o = Vector3d::Zero();
   // w[m]: volume with the origin in place of vertex m; their sum is the
   // tetrahedron's volume (Montanari's cofactor expansion of det M).
-  const double w[4] = {volume(o, p[1], p[2], p[3]), volume(p[0], o, p[2], p[3]),
-                       volume(p[0], p[1], o, p[3]), volume(p[0], p[1], p[2], o)};
+  const double w[4] = {volume(o, p[1], p[2], p[3]), volume(p[0], o, p[2], p[3]), volume(p[0], p[1], o, p[3]),
+                       volume(p[0], p[1], p[2], o)};
   double total = w[0] + w[1] + w[2] + w[3];
   if (std::abs(total) <= kDegenerateRelative * (std::abs(w[0]) + std::abs(w[1]) + std::abs(w[2]) + std::abs(w[3]))) {
     total = 0.0;  // flat: no sign matches, all four faces are searched

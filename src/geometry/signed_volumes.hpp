@@ -19,8 +19,8 @@
 namespace wtc::detail {
 
 struct Simplex {
-  Eigen::Vector3d point[4];   // Vertices of the Minkowski difference, poly - p.
-  std::int32_t vertex[4];     // Their indices in the polyhedron.
+  Eigen::Vector3d point[4];  // Vertices of the Minkowski difference, poly - p.
+  std::int32_t vertex[4];    // Their indices in the polyhedron.
   int count = 0;
 };
 

@@ -11,11 +11,11 @@
 
 #include "file_support.hpp"
 #include "wtc/base/error.hpp"
-#include "wtc/terrain/heightfield.hpp"
 #include "wtc/io/heightfield_file.hpp"
 #include "wtc/io/mesh_file.hpp"
-#include "wtc/tyre/traction_law.hpp"
+#include "wtc/terrain/heightfield.hpp"
 #include "wtc/terrain/triangle_mesh.hpp"
+#include "wtc/tyre/traction_law.hpp"
 #include "yaml_reader.hpp"
 
 namespace wtc::io {
@@ -161,117 +161,157 @@ std::vector<std::uint8_t> readHoles(const YamlReader& in, const YAML::Node& rows
       });
 }
 
-// Adds one piece; a mesh's skipped triangles go into `report`.
+// The piece types a terrain file may name, each read by its own function
+// (its keys checked there) and listed once in kPieceTypes below: a new
+// piece type is a builder in the core (src/terrain) and one reader here.
+void readBox(TerrainBuilder& builder, const YamlReader& in, const YAML::Node& p, MaterialId material,
+             const MaterialNames& /*materials*/, TerrainFileReport& /*report*/) {
+  in.checkKeys(p, kCommonKeys, {"size"});
+  addBox(builder, {in.vector<3>(in.require(p, "size"), "size"), in.pose(p)}, material);
+}
+
+void readSlab(TerrainBuilder& builder, const YamlReader& in, const YAML::Node& p, MaterialId material,
+              const MaterialNames& /*materials*/, TerrainFileReport& /*report*/) {
+  in.checkKeys(p, kCommonKeys, {"size", "thickness", "tiles"});
+  SlabParams s;
+  const Eigen::Vector2d size = in.vector<2>(in.require(p, "size"), "size");
+  s.size_x = size.x();
+  s.size_y = size.y();
+  s.thickness = in.number(p, "thickness", s.thickness);
+  if (const auto tiles = YamlReader::get(p, "tiles")) {
+    const Eigen::Vector2d t = in.vector<2>(*tiles, "tiles");
+    if (t != t.array().round().matrix() || !(t.array() >= 1.0).all() || !(t.array() <= 1e6).all()) {
+      in.fail(*tiles, "tiles: expected two whole numbers in [1, 1e6]");
+    }
+    s.tiles_x = static_cast<int>(t.x());
+    s.tiles_y = static_cast<int>(t.y());
+  }
+  s.pose_WL = in.pose(p);
+  addSlab(builder, s, material);
+}
+
+void readIncline(TerrainBuilder& builder, const YamlReader& in, const YAML::Node& p, MaterialId material,
+                 const MaterialNames& /*materials*/, TerrainFileReport& /*report*/) {
+  in.checkKeys(p, kCommonKeys, {"degrees", "radians", "length", "width", "thickness", "top_length"});
+  InclineParams s;
+  const auto degrees = YamlReader::get(p, "degrees");
+  const auto radians = YamlReader::get(p, "radians");
+  if (degrees.has_value() == radians.has_value()) in.fail(p, "give exactly one of 'degrees' and 'radians' (the slope)");
+  s.angle = degrees ? in.number(*degrees, "degrees") * std::numbers::pi / 180.0 : in.number(*radians, "radians");
+  s.length = in.number(p, "length", s.length);
+  s.width = in.number(p, "width", s.width);
+  s.thickness = in.number(p, "thickness", s.thickness);
+  s.top_length = in.number(p, "top_length", s.top_length);
+  s.pose_WL = in.pose(p);
+  addIncline(builder, s, material);
+}
+
+void readLedge(TerrainBuilder& builder, const YamlReader& in, const YAML::Node& p, MaterialId material,
+               const MaterialNames& /*materials*/, TerrainFileReport& /*report*/) {
+  in.checkKeys(
+      p, kCommonKeys,
+      {"height", "approach_length", "top_length", "width", "thickness", "approach_tiles", "heightfield_spacing"});
+  LedgeParams s;
+  s.height = in.number(in.require(p, "height"), "height");
+  s.approach_length = in.number(p, "approach_length", s.approach_length);
+  s.top_length = in.number(p, "top_length", s.top_length);
+  s.width = in.number(p, "width", s.width);
+  s.thickness = in.number(p, "thickness", s.thickness);
+  s.approach_tiles = toInt(in, p, "approach_tiles", s.approach_tiles);
+  s.heightfield_spacing = in.number(p, "heightfield_spacing", s.heightfield_spacing);
+  s.pose_WL = in.pose(p);
+  addLedge(builder, s, material);
+}
+
+void readStairs(TerrainBuilder& builder, const YamlReader& in, const YAML::Node& p, MaterialId material,
+                const MaterialNames& /*materials*/, TerrainFileReport& /*report*/) {
+  in.checkKeys(p, kCommonKeys, {"steps", "rise", "run", "width", "thickness", "top_length"});
+  StairsParams s;
+  in.require(p, "steps");
+  s.steps = toInt(in, p, "steps", s.steps);
+  s.rise = in.number(in.require(p, "rise"), "rise");
+  s.run = in.number(in.require(p, "run"), "run");
+  s.width = in.number(p, "width", s.width);
+  s.thickness = in.number(p, "thickness", s.thickness);
+  s.top_length = in.number(p, "top_length", s.top_length);
+  s.pose_WL = in.pose(p);
+  addStairs(builder, s, material);
+}
+
+void readHeightfieldPiece(TerrainBuilder& builder, const YamlReader& in, const YAML::Node& p, MaterialId material,
+                          const MaterialNames& materials, TerrainFileReport& /*report*/) {
+  const bool compact = readCompactStorage(in, p);
+  Heightfield field = readHeightfield(in, p);
+  if (const auto cells = YamlReader::get(p, "cell_materials")) {
+    field.cell_materials = readCellMaterials(in, *cells, field, materials);
+  }
+  if (const auto holes = YamlReader::get(p, "holes")) field.cell_holes = readHoles(in, *holes, field);
+  if (compact) {
+    addCompactHeightfield(builder, std::move(field), material);
+  } else {
+    addHeightfield(builder, field, material);
+  }
+}
+
+void readMesh(TerrainBuilder& builder, const YamlReader& in, const YAML::Node& p, MaterialId material,
+              const MaterialNames& /*materials*/, TerrainFileReport& report) {
+  in.checkKeys(p, kCommonKeys, {"file", "scale", "thickness", "keep_convex_parts", "storage"});
+  MeshFileOptions options;
+  options.scale = in.number(p, "scale", options.scale);
+  options.pose_WM = in.pose(p);
+  options.extrusion.thickness = in.number(p, "thickness", options.extrusion.thickness);
+  options.extrusion.keep_convex_parts = in.boolean(p, "keep_convex_parts", false);
+  options.extrusion.compact = readCompactStorage(in, p);
+  const YAML::Node file = in.require(p, "file");
+  const std::filesystem::path path = in.path().parent_path() / in.string(file, "file");
+  MeshBuildReport mesh;
+  try {
+    mesh = addMeshFile(builder, path, material, options);
+  } catch (const InvalidInputError& e) {
+    in.fail(file, e.what());
+  }
+  report.degenerate_triangles_skipped += mesh.degenerate_skipped;
+  if (mesh.degenerate_skipped > 0) {
+    report.warnings.push_back(in.describe(p, path.string() + ": " + std::to_string(mesh.degenerate_skipped) + " of " +
+                                                 std::to_string(mesh.triangles) +
+                                                 " triangles are degenerate (zero area), skipped"));
+  }
+}
+
+void readHull(TerrainBuilder& builder, const YamlReader& in, const YAML::Node& p, MaterialId material,
+              const MaterialNames& /*materials*/, TerrainFileReport& /*report*/) {
+  in.checkKeys(p, kCommonKeys, {"points"});
+  const YAML::Node points = in.require(p, "points");
+  if (!points.IsSequence()) in.fail(points, "points: expected a list of [x, y, z]");
+  const Eigen::Isometry3d pose = in.pose(p);
+  std::vector<Eigen::Vector3d> world;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    world.push_back(pose * in.vector<3>(points[i], "points[" + std::to_string(i) + "]"));
+  }
+  builder.addPiece(ConvexPolyhedron::fromPoints(world), material);
+}
+
+using PieceReader = void (*)(TerrainBuilder&, const YamlReader&, const YAML::Node&, MaterialId, const MaterialNames&,
+                             TerrainFileReport&);
+struct PieceType {
+  const char* name;
+  PieceReader read;
+};
+constexpr PieceType kPieceTypes[] = {
+    {"box", &readBox},     {"slab", &readSlab},     {"incline", &readIncline},
+    {"ledge", &readLedge}, {"stairs", &readStairs}, {"heightfield", &readHeightfieldPiece},
+    {"mesh", &readMesh},   {"hull", &readHull},
+};
+
+// Adds one piece of the type its `type` names; a mesh's skipped triangles go into `report`.
 void addPiece(TerrainBuilder& builder, const YamlReader& in, const YAML::Node& p, const std::string& type,
               MaterialId material, const MaterialNames& materials, TerrainFileReport& report) {
-  if (type == "box") {
-    in.checkKeys(p, kCommonKeys, {"size"});
-    addBox(builder, {in.vector<3>(in.require(p, "size"), "size"), in.pose(p)}, material);
-  } else if (type == "slab") {
-    in.checkKeys(p, kCommonKeys, {"size", "thickness", "tiles"});
-    SlabParams s;
-    const Eigen::Vector2d size = in.vector<2>(in.require(p, "size"), "size");
-    s.size_x = size.x();
-    s.size_y = size.y();
-    s.thickness = in.number(p, "thickness", s.thickness);
-    if (const auto tiles = YamlReader::get(p, "tiles")) {
-      const Eigen::Vector2d t = in.vector<2>(*tiles, "tiles");
-      if (t != t.array().round().matrix() || !(t.array() >= 1.0).all() || !(t.array() <= 1e6).all()) {
-        in.fail(*tiles, "tiles: expected two whole numbers in [1, 1e6]");
-      }
-      s.tiles_x = static_cast<int>(t.x());
-      s.tiles_y = static_cast<int>(t.y());
-    }
-    s.pose_WL = in.pose(p);
-    addSlab(builder, s, material);
-  } else if (type == "incline") {
-    in.checkKeys(p, kCommonKeys, {"degrees", "radians", "length", "width", "thickness", "top_length"});
-    InclineParams s;
-    const auto degrees = YamlReader::get(p, "degrees");
-    const auto radians = YamlReader::get(p, "radians");
-    if (degrees.has_value() == radians.has_value())
-      in.fail(p, "give exactly one of 'degrees' and 'radians' (the slope)");
-    s.angle = degrees ? in.number(*degrees, "degrees") * std::numbers::pi / 180.0 : in.number(*radians, "radians");
-    s.length = in.number(p, "length", s.length);
-    s.width = in.number(p, "width", s.width);
-    s.thickness = in.number(p, "thickness", s.thickness);
-    s.top_length = in.number(p, "top_length", s.top_length);
-    s.pose_WL = in.pose(p);
-    addIncline(builder, s, material);
-  } else if (type == "ledge") {
-    in.checkKeys(
-        p, kCommonKeys,
-        {"height", "approach_length", "top_length", "width", "thickness", "approach_tiles", "heightfield_spacing"});
-    LedgeParams s;
-    s.height = in.number(in.require(p, "height"), "height");
-    s.approach_length = in.number(p, "approach_length", s.approach_length);
-    s.top_length = in.number(p, "top_length", s.top_length);
-    s.width = in.number(p, "width", s.width);
-    s.thickness = in.number(p, "thickness", s.thickness);
-    s.approach_tiles = toInt(in, p, "approach_tiles", s.approach_tiles);
-    s.heightfield_spacing = in.number(p, "heightfield_spacing", s.heightfield_spacing);
-    s.pose_WL = in.pose(p);
-    addLedge(builder, s, material);
-  } else if (type == "stairs") {
-    in.checkKeys(p, kCommonKeys, {"steps", "rise", "run", "width", "thickness", "top_length"});
-    StairsParams s;
-    in.require(p, "steps");
-    s.steps = toInt(in, p, "steps", s.steps);
-    s.rise = in.number(in.require(p, "rise"), "rise");
-    s.run = in.number(in.require(p, "run"), "run");
-    s.width = in.number(p, "width", s.width);
-    s.thickness = in.number(p, "thickness", s.thickness);
-    s.top_length = in.number(p, "top_length", s.top_length);
-    s.pose_WL = in.pose(p);
-    addStairs(builder, s, material);
-  } else if (type == "heightfield") {
-    const bool compact = readCompactStorage(in, p);
-    Heightfield field = readHeightfield(in, p);
-    if (const auto cells = YamlReader::get(p, "cell_materials")) {
-      field.cell_materials = readCellMaterials(in, *cells, field, materials);
-    }
-    if (const auto holes = YamlReader::get(p, "holes")) field.cell_holes = readHoles(in, *holes, field);
-    if (compact) {
-      addCompactHeightfield(builder, std::move(field), material);
-    } else {
-      addHeightfield(builder, field, material);
-    }
-  } else if (type == "mesh") {
-    in.checkKeys(p, kCommonKeys, {"file", "scale", "thickness", "keep_convex_parts", "storage"});
-    MeshFileOptions options;
-    options.scale = in.number(p, "scale", options.scale);
-    options.pose_WM = in.pose(p);
-    options.extrusion.thickness = in.number(p, "thickness", options.extrusion.thickness);
-    options.extrusion.keep_convex_parts = in.boolean(p, "keep_convex_parts", false);
-    options.extrusion.compact = readCompactStorage(in, p);
-    const YAML::Node file = in.require(p, "file");
-    const std::filesystem::path path = in.path().parent_path() / in.string(file, "file");
-    MeshBuildReport mesh;
-    try {
-      mesh = addMeshFile(builder, path, material, options);
-    } catch (const InvalidInputError& e) {
-      in.fail(file, e.what());
-    }
-    report.degenerate_triangles_skipped += mesh.degenerate_skipped;
-    if (mesh.degenerate_skipped > 0) {
-      report.warnings.push_back(in.describe(p, path.string() + ": " + std::to_string(mesh.degenerate_skipped) + " of " +
-                                                   std::to_string(mesh.triangles) +
-                                                   " triangles are degenerate (zero area), skipped"));
-    }
-  } else if (type == "hull") {
-    in.checkKeys(p, kCommonKeys, {"points"});
-    const YAML::Node points = in.require(p, "points");
-    if (!points.IsSequence()) in.fail(points, "points: expected a list of [x, y, z]");
-    const Eigen::Isometry3d pose = in.pose(p);
-    std::vector<Eigen::Vector3d> world;
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      world.push_back(pose * in.vector<3>(points[i], "points[" + std::to_string(i) + "]"));
-    }
-    builder.addPiece(ConvexPolyhedron::fromPoints(world), material);
-  } else {
-    in.fail(p["type"], "unknown piece type '" + type +
-                           "' (expected box, slab, incline, ledge, stairs, heightfield, mesh or hull)");
+  std::string known;
+  for (std::size_t k = 0; k < std::size(kPieceTypes); ++k) {
+    if (type == kPieceTypes[k].name) return kPieceTypes[k].read(builder, in, p, material, materials, report);
+    known += (k == 0 ? "" : k + 1 == std::size(kPieceTypes) ? " or " : ", ") + std::string(kPieceTypes[k].name);
   }
+  in.fail(p["type"], "unknown piece type '" + type + "' (expected " + known + ")");
 }
 
 }  // namespace

@@ -5,10 +5,11 @@
 
 namespace wtc::sim {
 
-EnergyBalance::EnergyBalance(const vehicle::VehicleDescription& vehicle)
-    : vehicle_(vehicle), wheels_(vehicle.wheels()) {}
+EnergyBalance::EnergyBalance(const vehicle::VehicleDescription& vehicle, double step_seconds)
+    : vehicle_(vehicle), wheels_(vehicle.wheels()), h_(step_seconds) {}
 
-double EnergyBalance::energyOf(const Engine& engine, const vehicle::VehicleState& state) const {
+double EnergyBalance::energyOf(const vehicle::VehicleState& state,
+                               std::span<const WheelForces* const> wheel_forces) const {
   double e = 0.0;
   for (std::size_t i = 0; i < vehicle_.bodies.size(); ++i) {
     const vehicle::Body& body = vehicle_.bodies[i];
@@ -19,8 +20,7 @@ double EnergyBalance::energyOf(const Engine& engine, const vehicle::VehicleState
   }
   for (const int w : wheels_) {
     const double c = vehicle_.bodies[w].wheel->tyre.radial_stiffness;
-    for (const ContactForce& f : engine.wheelForces(w).contacts)
-      e += 0.5 * c * f.contact.deflection * f.contact.deflection;
+    for (const ContactForce& f : wheel_forces[w]->contacts) e += 0.5 * c * f.contact.deflection * f.contact.deflection;
   }
   if (vehicle_.hitch) {
     const vehicle::Hitch& h = *vehicle_.hitch;
@@ -31,15 +31,15 @@ double EnergyBalance::energyOf(const Engine& engine, const vehicle::VehicleState
   return e;
 }
 
-void EnergyBalance::step(const Engine& engine, const vehicle::VehicleState& state,
+void EnergyBalance::step(const vehicle::VehicleState& state, std::span<const WheelForces* const> wheel_forces,
                          std::span<const vehicle::DriveReport> drives) {
-  energy_ = energyOf(engine, state);
+  energy_ = energyOf(state, wheel_forces);
   if (!started_) {
     initial_ = energy_;
     started_ = true;
     return;
   }
-  const double h = engine.settings().step_seconds;
+  const double h = h_;
   for (std::size_t i = 0; i < drives.size(); ++i) drive_work_ += drives[i].last_effort * state.joint_rate[i] * h;
   if (growth() > max_growth_) {
     max_growth_ = growth();

@@ -80,7 +80,7 @@ void Recorder::record(const Run& run) {
   endRow(drives_);
   wheels_ << s.time;
   for (const int i : wheel_bodies_) {
-    const WheelForces& f = run.engine().wheelForces(i);
+    const WheelForces& f = run.wheelForces(i);
     double slip = 0.0;
     for (const ContactForce& c : f.contacts) slip = std::max(slip, c.slip_ratio);
     wheels_ << ',' << f.contacts.size() << ',' << f.force.x() << ',' << f.force.y() << ',' << f.force.z() << ','

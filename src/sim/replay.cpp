@@ -101,7 +101,7 @@ void Replay::observe(const Run& run) {
   }
   std::vector<long long>& c = contacts_.emplace_back();
   for (const int w : scene_.vehicle.wheels()) {
-    for (const ContactForce& f : run.engine().wheelForces(w).contacts) {
+    for (const ContactForce& f : run.wheelForces(w).contacts) {
       const Eigen::Vector3d& p = f.contact.point;
       c.insert(c.end(), {mm(p.x()), mm(p.y()), mm(p.z()), std::llround(f.force.x()), std::llround(f.force.y()),
                          std::llround(f.force.z())});

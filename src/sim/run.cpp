@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "base/scratch_capacity.hpp"
 #include "wtc/base/constants.hpp"
 #include "wtc/sim/sim_constants.hpp"
-#include "base/scratch_capacity.hpp"
 
 namespace wtc::sim {
 namespace {
@@ -26,12 +26,13 @@ Run::Run(Engine& engine, vehicle::Controller* controller, const vehicle::Vehicle
       controller_(controller),
       effects_(effects),
       actuated_(engine.vehicle().actuated()),
-      energy_(engine.vehicle()) {
+      energy_(engine.vehicle(), engine.settings().step_seconds) {
   const std::size_t n = engine.vehicle().bodies.size();
   state_.bodies.resize(n);
   state_.joint_position.resize(n);
   state_.joint_rate.resize(n);
   state_.wheels.resize(n);
+  wheel_forces_.resize(n, nullptr);
   for (const int w : engine.vehicle().wheels()) state_.wheels[w].points.reserve(kReservedContacts);
   commands_.resize(n);
   targets_.resize(n);
@@ -59,7 +60,7 @@ void Run::step() {
   state_.time = static_cast<double>(steps_) * engine_.settings().step_seconds;
   for (const int b : actuated_) vehicle::record(drives_[b], targets_[b], engine_.motorEffort(b));
   sense();
-  energy_.step(engine_, state_, drives_);
+  energy_.step(state_, wheel_forces_, drives_);
 }
 
 void Run::sense() {
@@ -72,7 +73,10 @@ void Run::sense() {
     state_.joint_position[i] = engine_.jointPosition(b);
     state_.joint_rate[i] = engine_.jointRate(b);
     if (!v.bodies[i].wheel) continue;
-    const WheelForces& f = engine_.wheelForces(b);
+    // Read once a step: the controller, the recorder, the replay and the
+    // summary all take the wheel's forces from here (Run::wheelForces).
+    wheel_forces_[i] = &engine_.wheelForces(b);
+    const WheelForces& f = *wheel_forces_[i];
     vehicle::WheelSensor& s = state_.wheels[i];
     s.contacts = static_cast<int>(f.contacts.size());
     s.force = f.force;

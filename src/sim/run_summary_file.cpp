@@ -6,8 +6,8 @@
 #include <optional>
 #include <set>
 
-#include "wtc/base/error.hpp"
 #include "io/atomic_file.hpp"
+#include "wtc/base/error.hpp"
 
 namespace wtc::sim {
 namespace {

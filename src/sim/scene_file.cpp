@@ -8,13 +8,11 @@
 
 #include "io/file_support.hpp"
 #include "io/terrain_node.hpp"
-#include "wtc/base/error.hpp"
-#include "wtc/vehicle/vehicle_file.hpp"
-#include "wtc/sim/step_count.hpp"
-#include "wtc/vehicle/climb_controller.hpp"
-#include "wtc/vehicle/path_controller.hpp"
-#include "wtc/vehicle/schedule_controller.hpp"
 #include "io/yaml_reader.hpp"
+#include "vehicle/controllers/controller_types.hpp"
+#include "wtc/base/error.hpp"
+#include "wtc/sim/step_count.hpp"
+#include "wtc/vehicle/vehicle_file.hpp"
 
 namespace wtc::sim {
 namespace {
@@ -146,107 +144,16 @@ void substitute(const YamlReader& in, YAML::Node node, const std::map<std::strin
   }
 }
 
-std::vector<vehicle::DriveSchedule> readSchedules(const YamlReader& in, const YAML::Node& node) {
-  if (!node.IsSequence()) in.fail(node, "schedules: expected a list");
-  std::vector<vehicle::DriveSchedule> schedules;
-  for (std::size_t i = 0; i < node.size(); ++i) {
-    const YamlReader s = in.with("controller.schedules[" + std::to_string(i) + "]: ");
-    const YAML::Node n = node[i];
-    s.requireMap(n, "a schedule");
-    s.checkKeys(n, {"drives", "mode", "points"});
-    vehicle::DriveSchedule schedule;
-    const YAML::Node drives = s.require(n, "drives");
-    if (!drives.IsSequence()) s.fail(drives, "drives: expected a list of body names");
-    for (const auto& d : drives) schedule.drives.push_back(s.string(d, "drives"));
-    const std::string mode = s.string(s.require(n, "mode"), "mode");
-    if (mode == "velocity") {
-      schedule.mode = vehicle::DriveMode::kVelocity;
-    } else if (mode == "position") {
-      schedule.mode = vehicle::DriveMode::kPosition;
-    } else if (mode == "off") {
-      schedule.mode = vehicle::DriveMode::kOff;
-    } else {
-      s.fail(n["mode"], "mode: '" + mode + "' (expected velocity, position or off)");
-    }
-    const YAML::Node points = s.require(n, "points");
-    if (!points.IsSequence() || points.size() == 0) s.fail(points, "points: expected a list of [time, value]");
-    for (std::size_t k = 0; k < points.size(); ++k) {
-      const Eigen::Vector2d p = s.vector<2>(points[k], "points[" + std::to_string(k) + "]");
-      schedule.points.push_back({.time = p.x(), .value = p.y()});
-    }
-    schedules.push_back(std::move(schedule));
-  }
-  return schedules;
-}
-
+// The controller type's own reader (src/vehicle/controllers) reads the rest.
 void readController(const YamlReader& in, const YAML::Node& node, sim::Scene& scene) {
   in.requireMap(node, "controller");
-  scene.controller_type = in.string(in.require(node, "type"), "controller.type");
-  if (scene.controller_type == "none") {
-    in.checkKeys(node, {"type"});
-    scene.make_controller = [] { return std::unique_ptr<vehicle::Controller>(); };
-  } else if (scene.controller_type == "schedule") {
-    in.checkKeys(node, {"type", "schedules"});
-    auto schedules = readSchedules(in, in.require(node, "schedules"));
-    try {
-      vehicle::ScheduleController check(scene.vehicle, schedules, "controller");
-    } catch (const InvalidInputError& e) {
-      in.fail(node, e.what());
-    }
-    scene.make_controller = [schedules, v = scene.vehicle] {
-      return std::unique_ptr<vehicle::Controller>(
-          std::make_unique<vehicle::ScheduleController>(v, schedules, "controller"));
-    };
-  } else if (scene.controller_type == "path") {
-    in.checkKeys(node, {"type", "body", "left_drive", "right_drive", "lead", "x", "y", "gains", "max_tracking_error",
-                        "end_time"});
-    vehicle::PathControllerParams p;
-    p.body = in.string(in.require(node, "body"), "controller.body");
-    p.left_drive = in.string(in.require(node, "left_drive"), "controller.left_drive");
-    p.right_drive = in.string(in.require(node, "right_drive"), "controller.right_drive");
-    p.lead = in.number(node, "lead", p.lead);
-    for (const auto& [key, coefficients] : {std::pair{"x", &p.x_coefficients}, std::pair{"y", &p.y_coefficients}}) {
-      const YAML::Node list = in.require(node, key);
-      if (!list.IsSequence() || list.size() == 0 || list.size() > 6) {
-        in.fail(list, std::string("controller.") + key + ": expected 1 to 6 polynomial coefficients (degree <= 5)");
-      }
-      for (std::size_t i = 0; i < list.size(); ++i) {
-        (*coefficients)[i] = in.number(list[i], std::string("controller.") + key + "[" + std::to_string(i) + "]");
-      }
-    }
-    if (const auto gains = YamlReader::get(node, "gains")) {
-      const Eigen::Vector2d k = in.vector<2>(*gains, "controller.gains");
-      p.gain_x = k.x();
-      p.gain_y = k.y();
-    }
-    p.max_tracking_error = in.number(node, "max_tracking_error", p.max_tracking_error);
-    if (YamlReader::get(node, "end_time")) p.end_time = in.number(node, "end_time", p.end_time);
-    try {
-      vehicle::PathController check(scene.vehicle, p, "controller");
-    } catch (const InvalidInputError& e) {
-      in.fail(node, e.what());
-    }
-    scene.make_controller = [p, v = scene.vehicle] {
-      return std::unique_ptr<vehicle::Controller>(std::make_unique<vehicle::PathController>(v, p, "controller"));
-    };
-  } else if (scene.controller_type == "climb") {
-    in.checkKeys(node, {"type", "approach_speed", "crawl_speed", "drive_on_time", "phase_timeout"});
-    vehicle::ClimbControllerParams p;
-    p.approach_speed = in.number(node, "approach_speed", p.approach_speed);
-    p.crawl_speed = in.number(node, "crawl_speed", p.crawl_speed);
-    p.drive_on_time = in.number(node, "drive_on_time", p.drive_on_time);
-    p.phase_timeout = in.number(node, "phase_timeout", p.phase_timeout);
-    try {
-      vehicle::ClimbController check(scene.vehicle, p, "controller");
-    } catch (const InvalidInputError& e) {
-      in.fail(node, e.what());
-    }
-    scene.make_controller = [p, v = scene.vehicle] {
-      return std::unique_ptr<vehicle::Controller>(std::make_unique<vehicle::ClimbController>(v, p, "controller"));
-    };
-  } else {
-    in.fail(node["type"], "controller.type: '" + scene.controller_type + "' (expected none, schedule, path or climb)");
+  const YAML::Node type = in.require(node, "type");
+  scene.controller_type = in.string(type, "controller.type");
+  const vehicle::ControllerType* found = vehicle::findControllerType(scene.controller_type);
+  if (found == nullptr) {
+    in.fail(type, "controller.type: '" + scene.controller_type + "' (expected " + vehicle::controllerTypeNames() + ")");
   }
+  scene.make_controller = found->read(in, node, scene.vehicle);
 }
 
 // `cases: {name: {value: {derived: number, ...}, ...}}`: the value of the
@@ -388,8 +295,8 @@ sim::Scene readSceneFile(const std::filesystem::path& path, std::span<const Over
   TerrainBuilder builder;
   io::TerrainFileReport terrain_report;
   if (terrain.IsScalar()) {
-    terrain_report = referencedFile(in, terrain, "terrain",
-                                    [&](const std::filesystem::path& file) { return io::addTerrainFile(builder, file); });
+    terrain_report = referencedFile(
+        in, terrain, "terrain", [&](const std::filesystem::path& file) { return io::addTerrainFile(builder, file); });
   } else {
     terrain_report = io::detail::addTerrainNode(builder, in.with("terrain: "), terrain);
   }

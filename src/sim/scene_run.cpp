@@ -7,14 +7,13 @@
 #include <limits>
 #include <numbers>
 
-#include "wtc/base/constants.hpp"
-#include "wtc/sim/sim_constants.hpp"
-#include "wtc/base/error.hpp"
 #include "recorder.hpp"
-#include "wtc/sim/replay.hpp"
-#include "wtc/sim/run.hpp"
-#include "wtc/sim/step_count.hpp"
+#include "wtc/base/constants.hpp"
+#include "wtc/base/error.hpp"
 #include "wtc/base/tolerances.hpp"
+#include "wtc/sim/run.hpp"
+#include "wtc/sim/sim_constants.hpp"
+#include "wtc/sim/step_count.hpp"
 
 namespace wtc::sim {
 namespace {
@@ -37,26 +36,30 @@ std::string mmOrDeg(double v, int digits) {
   return text;
 }
 
-// The first unstable tyre-spring step of each wheel, said as it happens
-// (RunOptions::warn) and kept for the summary. The engines register the
-// wheels in body order: WheelId k is the k-th of VehicleDescription::wheels().
-class UnstableSpringWatch final : public WheelListener {
+// The first unstable tyre-spring step of each wheel, read from its state
+// after each step (WheelState::firstUnstableStep, the one channel the
+// summary's count comes from too), said as it happens (RunOptions::warn)
+// and kept for the summary.
+class UnstableSpringWatch {
  public:
   UnstableSpringWatch(const vehicle::VehicleDescription& v, const std::function<void(const std::string&)>& warn)
-      : warn_(warn) {
-    for (const int w : v.wheels()) names_.push_back(v.bodies[w].name);
+      : warn_(warn), wheels_(v.wheels()) {
+    for (const int w : wheels_) names_.push_back(v.bodies[w].name);
     first_.resize(names_.size());
   }
-  void onFirstUnstableStep(WheelId wheel, const SpringStability& s) override {
-    first_[static_cast<std::size_t>(wheel)] = describe(s);
-    if (warn_)
-      warn_("wheel " + names_[static_cast<std::size_t>(wheel)] + ": " + first_[wheel] + ", first at this step");
+  void look(const Engine& engine, const Run& run) {
+    for (std::size_t k = 0; k < wheels_.size(); ++k) {
+      if (!engine.wheelState(wheels_[k]).firstUnstableStep()) continue;
+      first_[k] = describe(run.wheelForces(wheels_[k]).normal_stability);
+      if (warn_) warn_("wheel " + names_[k] + ": " + first_[k] + ", first at this step");
+    }
   }
   /// describe() of the wheel's first unstable step ("" if none).
   const std::string& first(std::size_t k) const { return first_[k]; }
 
  private:
   std::function<void(const std::string&)> warn_;
+  std::vector<int> wheels_;
   std::vector<std::string> names_, first_;
 };
 
@@ -133,7 +136,6 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
   const std::unique_ptr<vehicle::Controller> controller = scene.make_controller();
   Run run(engine, controller.get(), scene.vehicle_effects);
   UnstableSpringWatch spring_watch(scene.vehicle, options.warn);
-  engine.setWheelListener(&spring_watch);
   std::optional<Recorder> recorder;
   if (options.out_dir) recorder.emplace(*options.out_dir, run);
   const vehicle::VehicleDescription& v = scene.vehicle;
@@ -158,10 +160,11 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
   const auto t0 = std::chrono::steady_clock::now();
   const double wtc0 = engine.contactSeconds();
   if (recorder) recorder->record(run);
-  if (options.replay != nullptr) options.replay->observe(run);
+  if (options.observer != nullptr) options.observer->observe(run);
   while (run.steps() < steps) {
     if (options.stop != nullptr && options.stop->load()) break;
     run.step();
+    spring_watch.look(engine, run);
     if (run.nonFinite() || run.diverged()) break;
     bounds.observe(run.state());
     const Eigen::Isometry3d& pose = run.state().bodies.front().pose;
@@ -178,7 +181,7 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
       contact_breaks += touching[w] && !touches ? 1 : 0;
       touching[w] = touches ? 1 : 0;
       if (run.state().bodies[w].linear_velocity.norm() < kSlipSpeedFloorMps) continue;
-      for (const ContactForce& c : engine.wheelForces(w).contacts) peak_slip[w] = std::max(peak_slip[w], c.slip_ratio);
+      for (const ContactForce& c : run.wheelForces(w).contacts) peak_slip[w] = std::max(peak_slip[w], c.slip_ratio);
     }
     if (run.hitch()) {
       // P on the towed body in the tug's horizontal axes: x > 0 when pulling.
@@ -186,14 +189,13 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
       hitch_sum_x += run.hitch()->force_local.x();
     }
     if (recorder && run.steps() % every == 0) recorder->record(run);
-    if (options.replay != nullptr) options.replay->observe(run);
+    if (options.observer != nullptr) options.observer->observe(run);
     if (options.progress && run.steps() % progress_every == 0) {
       options.progress(static_cast<double>(run.steps()) / static_cast<double>(steps));
     }
   }
   summary.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   summary.wtc_time = engine.contactSeconds() - wtc0;
-  engine.setWheelListener(nullptr);
 
   summary.steps = run.steps();
   summary.sim_time = run.time();

@@ -1,5 +1,7 @@
 #include "builder_support.hpp"
 
+#include "geometry/polyhedron_layout.hpp"
+
 #include <cmath>
 #include <sstream>
 #include <vector>
@@ -51,13 +53,13 @@ const ConvexPolyhedron& referencePrism() {
 ConvexPolyhedron makeCheckedPrism(const std::array<Eigen::Vector3d, 3>& top,
                                   const std::array<Eigen::Vector3d, 3>& bottom) {
   const ConvexPolyhedron& like = referencePrism();
-  return sameTopologyAs(like, prismVertices(top, bottom), kPrismFaces);
+  return PolyhedronLayout::sameTopologyAs(like, prismVertices(top, bottom), kPrismFaces);
 }
 
 void makeCheckedPrism(const std::array<Eigen::Vector3d, 3>& top, const std::array<Eigen::Vector3d, 3>& bottom,
                       ConvexPolyhedron& into) {
   const ConvexPolyhedron& like = referencePrism();
-  sameTopologyInto(into, like, prismVertices(top, bottom), kPrismFaces);
+  PolyhedronLayout::sameTopologyInto(into, like, prismVertices(top, bottom), kPrismFaces);
 }
 
 }  // namespace wtc::detail

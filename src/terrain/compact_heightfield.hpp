@@ -1,6 +1,6 @@
 #pragma once
 // A heightfield kept as its heights (internal to wtc::core): the prisms of
-// addHeightfield (wtc/heightfield.hpp) are formed when asked for, not
+// addHeightfield (wtc/terrain/heightfield.hpp) are formed when asked for, not
 // stored.
 //
 // A stored prism is a ConvexPolyhedron of about 1.2 kB plus its index

@@ -1,6 +1,6 @@
 #pragma once
 // A triangle mesh kept as its vertices and triangles (internal to
-// wtc::core): the prisms of addTriangleMesh (wtc/triangle_mesh.hpp) are
+// wtc::core): the prisms of addTriangleMesh (wtc/terrain/triangle_mesh.hpp) are
 // formed when asked for, not stored.
 //
 // A stored prism is a ConvexPolyhedron of about 1.2 kB plus its index

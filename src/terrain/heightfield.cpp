@@ -1,5 +1,5 @@
 // Heightfield cells as triangular prisms down to a flat base (design note in
-// include/wtc/heightfield.hpp).
+// include/wtc/terrain/heightfield.hpp).
 #include "wtc/terrain/heightfield.hpp"
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 // Triangle meshes as extruded prisms (design note in
-// include/wtc/triangle_mesh.hpp). Per part: check the input, weld vertices
+// include/wtc/terrain/triangle_mesh.hpp). Per part: check the input, weld vertices
 // by exact position to see whether the part is closed, fix an inside-out
 // closed part, keep a closed convex part whole if asked, and otherwise
 // extrude every non-degenerate triangle.

@@ -16,7 +16,7 @@ namespace wtc::detail {
 namespace {
 
 using Eigen::Vector3d;
-using Inputs = TyreModel::KernelInputs;
+using Inputs = KernelInputs;
 
 // ln(1 / kTractionSaturation): s_sat >= s1 times this for every s2 >= 0.
 const double kSaturationLog = -std::log(tolerance::kTractionSaturation);
@@ -221,19 +221,23 @@ void contactForces(const Inputs& in, std::span<const WheelContact> contacts, std
 }
 
 template <bool kDamping, Traction kTraction>
-constexpr std::array<TyreModel::Kernel, 2> byRolling = {&contactForces<kDamping, kTraction, false>,
-                                                        &contactForces<kDamping, kTraction, true>};
+constexpr std::array<Kernel, 2> byRolling = {&contactForces<kDamping, kTraction, false>,
+                                             &contactForces<kDamping, kTraction, true>};
 template <bool kDamping>
-constexpr std::array<std::array<TyreModel::Kernel, 2>, 3> byTraction = {byRolling<kDamping, Traction::kNone>,
-                                                                        byRolling<kDamping, Traction::kSlipLaw>,
-                                                                        byRolling<kDamping, Traction::kCoulomb>};
-constexpr std::array<std::array<std::array<TyreModel::Kernel, 2>, 3>, 2> kKernels = {byTraction<false>,
-                                                                                     byTraction<true>};
+constexpr std::array<std::array<Kernel, 2>, 3> byTraction = {byRolling<kDamping, Traction::kNone>,
+                                                             byRolling<kDamping, Traction::kSlipLaw>,
+                                                             byRolling<kDamping, Traction::kCoulomb>};
+constexpr std::array<std::array<std::array<Kernel, 2>, 3>, 2> kKernels = {byTraction<false>, byTraction<true>};
 
 }  // namespace
 
-TyreModel::Kernel selectKernel(bool damping, Traction traction, bool rolling_resistance) {
-  return kKernels[damping ? 1 : 0][static_cast<std::size_t>(traction)][rolling_resistance ? 1 : 0];
+int selectKernel(bool damping, Traction traction, bool rolling_resistance) {
+  return ((damping ? 1 : 0) * 3 + static_cast<int>(traction)) * 2 + (rolling_resistance ? 1 : 0);
+}
+
+Kernel kernel(int index) {
+  return kKernels[static_cast<std::size_t>(index / 6)][static_cast<std::size_t>(index / 2 % 3)]
+                 [static_cast<std::size_t>(index % 2)];
 }
 
 }  // namespace wtc::detail

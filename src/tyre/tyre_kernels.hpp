@@ -9,10 +9,10 @@
 #include "wtc/terrain/material.hpp"
 #include "wtc/tyre/tyre_model.hpp"
 
-namespace wtc {
+namespace wtc::detail {
 
 /// Everything a kernel reads, prepared once per wheel step.
-struct TyreModel::KernelInputs {
+struct KernelInputs {
   std::span<const Material> materials;
   const WheelMotion* motion = nullptr;
   Eigen::Vector3d axle{Eigen::Vector3d::UnitY()};  ///< a, unit.
@@ -27,21 +27,24 @@ struct TyreModel::KernelInputs {
   /// The tread's spring along its two axes, the rolling direction and the
   /// axle's (index kRolling, kLateral): each capped for the mass its
   /// contact moves that way (tyre_model.hpp).
-  std::array<double, 2> tread_stiffness{};    ///< k_t (N/m).
+  std::array<double, 2> tread_stiffness{};     ///< k_t (N/m).
   std::array<double, 2> tread_damping_time{};  ///< tau (s), faded with V_t.
-  double spin_ramp_gain = 0.0;                     ///< h / (kappa I) (s / (kg m^2)): ramp width per N m.
-  double spin_floor = 0.0;                         ///< Smallest ramp width (rad/s).
+  double spin_ramp_gain = 0.0;                 ///< h / (kappa I) (s / (kg m^2)): ramp width per N m.
+  double spin_floor = 0.0;                     ///< Smallest ramp width (rad/s).
 };
 
-namespace detail {
+/// A force kernel: the forces of `contacts` into `out`, the tread's next state into `tread_out`.
+using Kernel = void (*)(const KernelInputs&, std::span<const WheelContact> contacts,
+                        std::span<const TreadState> tread_in, std::vector<TreadState>& tread_out, ContactForce* out);
 
 /// The tread axes: along the ground under the rolling wheel, and along the axle.
 inline constexpr int kRolling = 0, kLateral = 1;
 
 enum class Traction { kNone, kSlipLaw, kCoulomb };
 
-/// The kernel compiled for this combination of force effects.
-TyreModel::Kernel selectKernel(bool damping, Traction traction, bool rolling_resistance);
+/// The index of the kernel compiled for this combination of force effects.
+int selectKernel(bool damping, Traction traction, bool rolling_resistance);
+/// The kernel of an index selectKernel gave.
+Kernel kernel(int index);
 
-}  // namespace detail
-}  // namespace wtc
+}  // namespace wtc::detail

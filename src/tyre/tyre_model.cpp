@@ -1,5 +1,5 @@
 // Assembly of the tyre model and the wheel step (design note in
-// include/wtc/tyre_model.hpp).
+// include/wtc/tyre/tyre_model.hpp).
 #include "wtc/tyre/tyre_model.hpp"
 
 #include <algorithm>
@@ -8,9 +8,9 @@
 #include <limits>
 #include <string>
 
+#include "base/scratch_capacity.hpp"
 #include "tyre_kernels.hpp"
 #include "wtc/base/error.hpp"
-#include "base/scratch_capacity.hpp"
 #include "wtc/base/tolerances.hpp"
 
 namespace wtc {
@@ -88,7 +88,7 @@ const WheelForces& TyreModel::forces(std::span<const Material> materials, const 
   const WheelInertia& inertia = wheel.inertia;
   const double h = step_seconds;
 
-  KernelInputs in;
+  detail::KernelInputs in;
   in.materials = materials;
   in.motion = &motion;
   in.axle = unitAxle(pose.axle, kWhere);
@@ -133,7 +133,7 @@ const WheelForces& TyreModel::forces(std::span<const Material> materials, const 
 
   state.forces_.resize(contacts.size());
   state.next_tread_.clear();
-  kernel_(in, contacts, state.tread_, state.next_tread_, state.forces_.data());
+  detail::kernel(kernel_)(in, contacts, state.tread_, state.next_tread_, state.forces_.data());
   std::swap(state.tread_, state.next_tread_);
 
   // Totals about O and the axial/bearing split (wheel_forces.hpp).

@@ -1,4 +1,4 @@
-// Vehicle description files (format in include/wtc/io/vehicle_file.hpp and
+// Vehicle description files (format in include/wtc/vehicle/vehicle_file.hpp and
 // vehicles/README.md).
 #include "wtc/vehicle/vehicle_file.hpp"
 

@@ -1,6 +1,6 @@
 // wtc::queryPoint's inputs and options: non-finite points and invalid
 // options are rejected with a message that names them; the iteration cap,
-// max_distance and the warm-start cache do what include/wtc/point_query.hpp
+// max_distance and the warm-start cache do what include/wtc/geometry/point_query.hpp
 // promises.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 #pragma once
 // What a converged point query must satisfy, checked against the brute-force
-// oracle and the conventions of include/wtc/point_query.hpp:
+// oracle and the conventions of include/wtc/geometry/point_query.hpp:
 //   - every number finite, direction and normal unit;
 //   - signed distance within `tolerance_m` of the oracle's; never negative
 //     on a flat piece; status kOutside / kInside when the oracle's distance

@@ -13,7 +13,7 @@
 #include "wtc/vehicle/vehicle_file.hpp"
 #include "wtc/sim/engine_table.hpp"
 #include "wtc/sim/scene_run.hpp"
-#include "wtc/vehicle/climb_controller.hpp"
+#include "wtc/vehicle/controllers/climb_controller.hpp"
 
 namespace wtc::testing {
 namespace {

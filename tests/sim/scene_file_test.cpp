@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "vehicle/controllers/controller_types.hpp"
 #include "wtc/base/error.hpp"
 #include "wtc/sim/engine_table.hpp"
 #include "wtc/tyre/traction_law.hpp"
@@ -251,6 +252,42 @@ TEST(SceneFileTest, AStepThatDoesNotDivideTheDurationIsRefused) {
   EXPECT_THAT(errorOf(kMinimal, {{"duration", "1e300"}, {"dt", "1e-300"}}), HasSubstr("more than 2^53"));
   // Case: a whole number of steps to roundoff loads (0.3 / 0.1 is 2.9999999999999996 in doubles).
   EXPECT_EQ(errorOf(kMinimal, {{"duration", "0.3"}, {"dt", "0.1"}}), "no error");
+}
+
+}  // namespace
+}  // namespace wtc::sim
+
+namespace wtc::sim {
+namespace {
+
+// A controller that holds every drive off, as a layer above would register
+// one (the Python bindings' `type: python`).
+class Idle final : public vehicle::Controller {
+ public:
+  void update(const vehicle::VehicleState&, std::span<vehicle::DriveCommand>) override {}
+};
+
+// The scene reader finds a controller type in one table: an unknown type
+// is refused naming the known ones, and a type added at run time is read
+// by its own reader (its keys checked there, its refusals placed in the
+// scene) without a change to the reader.
+TEST(SceneFileTest, ControllerTypesComeFromOneTableThatALayerAboveMayExtend) {
+  const std::string rest = "name: t\nduration: 1\nterrain: ../terrains/flat.yaml\n"
+                           "vehicle: ../vehicles/six_wheel_robot.yaml\n";
+  EXPECT_THAT(errorOf(rest + "controller: {type: idle}\n"),
+              HasSubstr(":5:20: controller.type: 'idle' (expected none, schedule, path or climb)"));
+  vehicle::addControllerType(
+      {.name = "idle", .read = [](const io::detail::YamlReader& in, const YAML::Node& node,
+                                  const vehicle::VehicleDescription&) -> vehicle::ControllerFactory {
+         in.checkKeys(node, {"type", "gain"});
+         if (in.number(node, "gain", 1.0) <= 0.0) in.fail(node["gain"], "controller.gain: must be > 0");
+         return [] { return std::unique_ptr<vehicle::Controller>(std::make_unique<Idle>()); };
+       }});
+  EXPECT_EQ(errorOf(rest + "controller: {type: idle}\n"), "no error");
+  EXPECT_THAT(errorOf(rest + "controller: {type: idle, gain: -1}\n"), HasSubstr(":5:32: controller.gain: must be > 0"));
+  EXPECT_THAT(errorOf(rest + "controller: {type: idle, speed: 1}\n"), HasSubstr("unknown key 'speed'"));
+  EXPECT_THAT(vehicle::controllerTypeNames(), HasSubstr("climb or idle"));
+  EXPECT_THROW(vehicle::addControllerType({.name = "path", .read = vehicle::readPathController}), InvalidInputError);
 }
 
 }  // namespace

@@ -12,7 +12,7 @@
 #include "wtc/sim/engine_table.hpp"
 #include "wtc/sim/run.hpp"
 #include "wtc/terrain/terrain_primitives.hpp"
-#include "wtc/vehicle/schedule_controller.hpp"
+#include "wtc/vehicle/controllers/schedule_controller.hpp"
 
 namespace wtc::testing {
 namespace {

@@ -14,7 +14,7 @@
 #include "wtc/sim/scene_run.hpp"
 #include "wtc/terrain/terrain_primitives.hpp"
 #include "wtc/tyre/traction_law.hpp"
-#include "wtc/vehicle/schedule_controller.hpp"
+#include "wtc/vehicle/controllers/schedule_controller.hpp"
 
 namespace wtc::testing {
 namespace {

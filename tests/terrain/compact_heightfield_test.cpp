@@ -1,4 +1,4 @@
-// The compact heightfield (src/compact_heightfield.hpp, internal to
+// The compact heightfield (src/terrain/compact_heightfield.hpp, internal to
 // wtc::core) against the prisms addHeightfield stores: the same pieces bit
 // for bit, the same bounds, the same answer to "which pieces overlap this
 // box".
@@ -12,12 +12,15 @@
 #include <random>
 #include <vector>
 
+#include "geometry/polyhedron_layout.hpp"
 #include "random_heightfield.hpp"
 #include "wtc/base/error.hpp"
 #include "wtc/terrain/terrain.hpp"
 
 namespace wtc {
 namespace {
+
+using Layout = detail::PolyhedronLayout;
 
 double uniform(std::mt19937& gen, double lo, double hi) { return lo + (hi - lo) * (gen() / 4294967296.0); }
 
@@ -35,7 +38,7 @@ void expectSameBits(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
   for (int i = 0; i < a.vertexCount(); ++i) EXPECT_EQ(a.vertexLocal(i), b.vertexLocal(i)) << "vertex " << i;
   for (int f = 0; f < a.faceCount(); ++f) {
     EXPECT_EQ(a.faceNormal(f), b.faceNormal(f)) << "face " << f;
-    EXPECT_EQ(a.pd()[f], b.pd()[f]) << "face " << f;
+    EXPECT_EQ(a.faceOffsetLocal(f), b.faceOffsetLocal(f)) << "face " << f;
   }
   EXPECT_EQ(a.bounds().min, b.bounds().min);
   EXPECT_EQ(a.bounds().max, b.bounds().max);
@@ -47,9 +50,11 @@ void expectSameBits(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
   for (int f = 0; f < a.faceCount(); ++f) {
     const auto fa = a.faceVertices(f), fb = b.faceVertices(f);
     ASSERT_TRUE(std::equal(fa.begin(), fa.end(), fb.begin(), fb.end())) << "face " << f;
-    for (std::int32_t e = a.faceEdgeStart(f); e < a.faceEdgeStart(f) + static_cast<std::int32_t>(fa.size()); ++e) {
-      EXPECT_EQ(a.faceEdgeTwin(e), b.faceEdgeTwin(e)) << "face-edge " << e;
-      for (int i = 0; i < 4; ++i) EXPECT_EQ(a.faceEdgePlane(e)[i], b.faceEdgePlane(e)[i]) << "face-edge " << e;
+    for (std::int32_t e = Layout::faceEdgeStart(a, f);
+         e < Layout::faceEdgeStart(a, f) + static_cast<std::int32_t>(fa.size()); ++e) {
+      EXPECT_EQ(Layout::faceEdgeTwin(a, e), Layout::faceEdgeTwin(b, e)) << "face-edge " << e;
+      for (int i = 0; i < 4; ++i)
+        EXPECT_EQ(Layout::faceEdgePlane(a, e)[i], Layout::faceEdgePlane(b, e)[i]) << "face-edge " << e;
     }
   }
 }

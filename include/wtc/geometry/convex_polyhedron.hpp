@@ -35,18 +35,7 @@ namespace wtc {
 
 class ConvexPolyhedron;
 namespace detail {
-// A piece with the same face list as `like` (and as many vertices), built
-// from `vertices` with like's topology copied instead of matched anew: the
-// same piece, bit for bit, as fromMesh(vertices, faces) would build (for
-// pieces formed by the million: compact heightfields and meshes). The
-// caller vouches that the faces are planar (fromMesh checks it; zero
-// areas and a missing volume are still refused). Internal to the core.
-ConvexPolyhedron sameTopologyAs(const ConvexPolyhedron& like, const std::vector<Eigen::Vector3d>& vertices,
-                                const std::vector<std::vector<int>>& faces);
-// The same piece made into `into`, reusing its buffers (no allocation when
-// `into` had as many vertices, faces and face edges).
-void sameTopologyInto(ConvexPolyhedron& into, const ConvexPolyhedron& like,
-                      const std::vector<Eigen::Vector3d>& vertices, const std::vector<std::vector<int>>& faces);
+struct PolyhedronLayout;  // the query kernels' view of the stored layout (src/geometry/polyhedron_layout.hpp)
 }  // namespace detail
 
 class ConvexPolyhedron {
@@ -106,9 +95,17 @@ class ConvexPolyhedron {
   /// figures of the terrain).
   std::size_t memoryBytes() const;
 
-  // The local frame, for the query kernel: coordinates relative to origin().
+  // The local frame: coordinates relative to origin() (an engine adapter
+  // builds its own shape of the piece in it, to the same roundoff).
   const Eigen::Vector3d& origin() const { return origin_; }
   const Eigen::Vector3d& centroidLocal() const { return centroid_local_; }
+  Eigen::Vector3d vertexLocal(int i) const { return {vx()[i], vy()[i], vz()[i]}; }
+  /// d_f of face f's plane n_f . x = d_f in the local frame (m).
+  double faceOffsetLocal(int f) const { return pd()[f]; }
+
+ private:
+  // The stored layout, for the query kernels (src/geometry/polyhedron_layout.hpp).
+  friend struct detail::PolyhedronLayout;
   const double* vx() const { return numbers_.data(); }
   const double* vy() const { return vx() + vertex_count_; }
   const double* vz() const { return vy() + vertex_count_; }
@@ -134,11 +131,9 @@ class ConvexPolyhedron {
   std::int32_t faceEdgeEnd(std::int32_t face_edge) const { return topology_[face_count_ + 1 + face_edge]; }
   /// Side plane of a face-edge by index (4 doubles: s, s . a).
   const double* faceEdgePlane(std::int32_t face_edge) const { return pd() + face_count_ + 4 * face_edge; }
-  Eigen::Vector3d vertexLocal(int i) const { return {vx()[i], vy()[i], vz()[i]}; }
   int supportLocal(const Eigen::Vector3d& dir, int hint) const;
   double planeBoundLocal(const Eigen::Vector3d& q, int* face) const;
 
- private:
   ConvexPolyhedron() = default;
   // Builds the stored layout from a validated, outward-oriented face list.
   // `hull_normals` (from Qhull) replace the face normals computed from the
@@ -154,12 +149,6 @@ class ConvexPolyhedron {
   static void assembleInto(ConvexPolyhedron& poly, const std::vector<Eigen::Vector3d>& vertices,
                            const std::vector<std::vector<int>>& faces, bool flat,
                            const std::vector<Eigen::Vector3d>* hull_normals, const std::vector<std::int32_t>* topology);
-  friend ConvexPolyhedron detail::sameTopologyAs(const ConvexPolyhedron& like,
-                                                 const std::vector<Eigen::Vector3d>& vertices,
-                                                 const std::vector<std::vector<int>>& faces);
-  friend void detail::sameTopologyInto(ConvexPolyhedron& into, const ConvexPolyhedron& like,
-                                       const std::vector<Eigen::Vector3d>& vertices,
-                                       const std::vector<std::vector<int>>& faces);
   int hillClimb(const Eigen::Vector3d& dir, int start) const;
   std::span<const std::int32_t> vertexNeighbors(int i) const;
 

@@ -20,8 +20,8 @@
 
 #include <Eigen/Core>
 
-#include "wtc/geometry/convex_polyhedron.hpp"
 #include "wtc/base/tolerances.hpp"
+#include "wtc/geometry/convex_polyhedron.hpp"
 
 namespace wtc {
 
@@ -58,7 +58,7 @@ struct QueryOptions {
 /// used when it starts nearer than the nearest-face seed; indices out of
 /// range (a cache from another piece) are ignored.
 struct QueryCache {
-  std::int32_t count = 0;          ///< Vertices in the last simplex (0..3).
+  std::int32_t count = 0;  ///< Vertices in the last simplex (0..3).
   std::int32_t vertex[3] = {0, 0, 0};
 };
 
@@ -84,12 +84,11 @@ struct PointQuery {
 /// Signed distance, closest point and direction from p to `poly`.
 /// Throws InvalidInputError if p is not finite or the options are invalid
 /// (tolerance outside (0, 1), max_iterations < 1, NaN max_distance).
-PointQuery queryPoint(const ConvexPolyhedron& poly, const Eigen::Vector3d& p,
-                      const QueryOptions& options = {});
+PointQuery queryPoint(const ConvexPolyhedron& poly, const Eigen::Vector3d& p, const QueryOptions& options = {});
 
 /// The same query, warm-started from `cache` and leaving the final simplex
 /// in it for the next call.
-PointQuery queryPoint(const ConvexPolyhedron& poly, const Eigen::Vector3d& p,
-                      const QueryOptions& options, QueryCache& cache);
+PointQuery queryPoint(const ConvexPolyhedron& poly, const Eigen::Vector3d& p, const QueryOptions& options,
+                      QueryCache& cache);
 
 }  // namespace wtc

@@ -1,7 +1,7 @@
 #pragma once
 // Triangle meshes from files, through assimp (OBJ, STL, PLY, glTF 2, FBX,
 // Collada, 3DS, OFF and the rest of its formats), turned into ground by
-// wtc::addTriangleMesh (extrusion rule in <wtc/triangle_mesh.hpp>).
+// wtc::addTriangleMesh (extrusion rule in <wtc/terrain/triangle_mesh.hpp>).
 //
 // What is read: every mesh instance of the scene graph (a mesh referenced by
 // two nodes is two parts), in the file's frame M with the node transforms

@@ -47,12 +47,15 @@ namespace wtc::sim {
 
 class EnergyBalance {
  public:
-  explicit EnergyBalance(const vehicle::VehicleDescription& vehicle);
+  /// For `vehicle` stepped by `step_seconds` (s).
+  EnergyBalance(const vehicle::VehicleDescription& vehicle, double step_seconds);
 
-  /// After each step of `engine` (the first sets E_1): the drives' work
-  /// of the step (their last efforts by body, N m or N) and E of `state`,
-  /// the state after it. Allocates nothing.
-  void step(const Engine& engine, const vehicle::VehicleState& state, std::span<const vehicle::DriveReport> drives);
+  /// After each step (the first sets E_1): the drives' work of the step
+  /// (their last efforts by body, N m or N) and E of `state`, the state
+  /// after it, with each wheel's contacts in `wheel_forces` (by body; null
+  /// for a body that is not a wheel). Allocates nothing.
+  void step(const vehicle::VehicleState& state, std::span<const WheelForces* const> wheel_forces,
+            std::span<const vehicle::DriveReport> drives);
 
   /// E after the last step (J; 0 before the first).
   double energy() const { return energy_; }
@@ -66,10 +69,11 @@ class EnergyBalance {
   double maxGrowthTime() const { return max_growth_time_; }
 
  private:
-  double energyOf(const Engine& engine, const vehicle::VehicleState& state) const;
+  double energyOf(const vehicle::VehicleState& state, std::span<const WheelForces* const> wheel_forces) const;
 
   const vehicle::VehicleDescription& vehicle_;
   std::vector<int> wheels_;
+  double h_;  // (s)
   bool started_ = false;
   double initial_ = 0.0, energy_ = 0.0, drive_work_ = 0.0;
   double max_growth_ = 0.0, max_growth_time_ = 0.0;

@@ -16,18 +16,19 @@
 
 #include "wtc/geometry/aabb.hpp"
 #include "wtc/sim/run.hpp"
+#include "wtc/sim/run_observer.hpp"
+#include "wtc/sim/run_summary.hpp"
 #include "wtc/sim/scene.hpp"
-#include "wtc/sim/scene_run.hpp"
 
 namespace wtc::sim {
 
-class Replay {
+class Replay final : public RunObserver {
  public:
   /// Frames every 1 / fps of simulated time (fps > 0).
   Replay(const Scene& scene, double fps);
   /// Call after every step (and once before the first): keeps a frame when
   /// its time has come.
-  void observe(const Run& run);
+  void observe(const Run& run) override;
   /// Writes the data file. Throws InvalidInputError naming a path it
   /// cannot write.
   void write(const std::filesystem::path& path, const RunSummary& summary) const;

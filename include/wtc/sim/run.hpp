@@ -34,6 +34,9 @@ class Run {
   std::span<const vehicle::DriveCommand> commands() const { return commands_; }
   std::span<const vehicle::MotorTarget> targets() const { return targets_; }
   std::span<const vehicle::DriveReport> drives() const { return drives_; }
+  /// What acted on wheel body `body` in the last step (Engine::wheelForces,
+  /// read once a step), valid until the next step.
+  const WheelForces& wheelForces(int body) const { return *wheel_forces_[static_cast<std::size_t>(body)]; }
   /// The hitch force of the last step, if the vehicle has a hitch.
   const std::optional<vehicle::HitchForce>& hitch() const { return hitch_; }
 
@@ -61,6 +64,7 @@ class Run {
   vehicle::VehicleEffects effects_;
   std::vector<int> actuated_;
   vehicle::VehicleState state_;
+  std::vector<const WheelForces*> wheel_forces_;  // per body, null for a body that is not a wheel
   std::vector<vehicle::DriveCommand> commands_;
   std::vector<vehicle::MotorTarget> targets_;
   std::vector<vehicle::DriveReport> drives_;

@@ -4,8 +4,8 @@
 // so a reader never sees half of one; read back to gather a study.
 #include <filesystem>
 
+#include "wtc/sim/run_summary.hpp"
 #include "wtc/sim/scene.hpp"
-#include "wtc/sim/scene_run.hpp"
 
 namespace wtc::sim {
 

@@ -30,7 +30,7 @@ inline constexpr double kTerrainBoundsMarginM = 2.0;
 /// (wtc::sim::replayTerrain; docs/vehicles-and-scenes.md gives the bytes
 /// this makes): a terrain within it is drawn whole, a larger one only
 /// around the vehicle's path, and coarser where that is still too much.
-/// A page stays a few MB whatever the terrain (issue 35: a large compact
+/// A page stays a few MB whatever the terrain (a large compact
 /// heightfield drawn whole made a page no browser finished drawing).
 inline constexpr long long kReplayTerrainMaxTriangles = 100'000;
 /// How far beyond every body's positions over the run a terrain too large

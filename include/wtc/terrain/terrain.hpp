@@ -11,8 +11,8 @@
 //
 // Stored and formed pieces. A piece is stored (a ConvexPolyhedron kept in
 // the terrain) or formed: a compact heightfield (addCompactHeightfield,
-// wtc/heightfield.hpp) keeps its samples, a compact triangle mesh
-// (MeshExtrusionOptions::compact, wtc/triangle_mesh.hpp) its vertices and
+// wtc/terrain/heightfield.hpp) keeps its samples, a compact triangle mesh
+// (MeshExtrusionOptions::compact, wtc/terrain/triangle_mesh.hpp) its vertices and
 // triangles, and each forms a prism when asked, bit for bit the one
 // addHeightfield or addTriangleMesh would store. Ids run over all pieces in
 // the order they were added. piece(id, scratch) gives either; piece(id)

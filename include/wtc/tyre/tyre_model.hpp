@@ -37,11 +37,11 @@
 #include <span>
 #include <vector>
 
-#include "wtc/tyre/effects.hpp"
-#include "wtc/tyre/contact_mode.hpp"
-#include "wtc/terrain/terrain.hpp"
-#include "wtc/tyre/tyre_parameters.hpp"
 #include "wtc/contact/wheel_contact.hpp"
+#include "wtc/terrain/terrain.hpp"
+#include "wtc/tyre/contact_mode.hpp"
+#include "wtc/tyre/effects.hpp"
+#include "wtc/tyre/tyre_parameters.hpp"
 #include "wtc/tyre/wheel_forces.hpp"
 
 namespace wtc {
@@ -131,16 +131,11 @@ class TyreModel {
                             const WheelMotion& motion, double step_seconds, std::span<const WheelContact> contacts,
                             WheelState& state) const;
 
-  /// What a force kernel reads (src/tyre_kernels.hpp).
-  struct KernelInputs;
-  using Kernel = void (*)(const KernelInputs&, std::span<const WheelContact>, std::span<const TreadState> tread_in,
-                          std::vector<TreadState>& tread_out, ContactForce* out);
-
  private:
   EffectSet effects_;
   ContactMode mode_;
   ContactOptions contact_options_;
-  Kernel kernel_ = nullptr;
+  int kernel_ = 0;  // the force kernel compiled for effects_ (src/tyre/tyre_kernels.hpp)
 };
 
 }  // namespace wtc

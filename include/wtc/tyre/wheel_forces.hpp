@@ -7,8 +7,8 @@
 
 #include <Eigen/Core>
 
-#include "wtc/tyre/explicit_stability.hpp"
 #include "wtc/contact/wheel_contact.hpp"
+#include "wtc/tyre/explicit_stability.hpp"
 
 namespace wtc {
 
@@ -20,12 +20,12 @@ struct WheelMotion {
 
 /// One contact's breakdown, for logging and controllers.
 struct ContactForce {
-  WheelContact contact;                                       ///< P, e, Z, piece, material.
-  double deflection_rate = 0.0;                               ///< v_z = V_P . e (m/s); > 0 into the ground.
-  double normal_force = 0.0;                                  ///< R_z = max(c Z + b v_z, 0) (N).
-  Eigen::Vector3d slip_velocity{Eigen::Vector3d::Zero()};     ///< V_s = V_P - v_z e (m/s).
-  double slip_ratio = 0.0;                                    ///< s = |V_s| / max(V_t, eps) (dimensionless).
-  double mu = 0.0;                                            ///< |R_xy| / R_z applied (dimensionless).
+  WheelContact contact;                                    ///< P, e, Z, piece, material.
+  double deflection_rate = 0.0;                            ///< v_z = V_P . e (m/s); > 0 into the ground.
+  double normal_force = 0.0;                               ///< R_z = max(c Z + b v_z, 0) (N).
+  Eigen::Vector3d slip_velocity{Eigen::Vector3d::Zero()};  ///< V_s = V_P - v_z e (m/s).
+  double slip_ratio = 0.0;                                 ///< s = |V_s| / max(V_t, eps) (dimensionless).
+  double mu = 0.0;                                         ///< |R_xy| / R_z applied (dimensionless).
   /// The most |R_xy| / R_z the tread holds now: the peak of mu(s) while it
   /// sticks, ramped out as V_t reaches eps, and mu beyond (dimensionless).
   /// Constraint mode gives it to the engine as its friction coefficient.

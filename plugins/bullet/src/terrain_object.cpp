@@ -50,7 +50,7 @@ std::vector<std::size_t> spatialOrder(std::span<const ConvexPolyhedron> pieces) 
 // A compact field as Bullet's heightfield shape over the field's own
 // samples: columns along x (Bullet's width), rows along y, heights[r cols +
 // c] (Bullet's layout), z up. flipQuadEdges splits each cell along
-// p00-p11, the prisms' diagonal (wtc/heightfield.hpp).
+// p00-p11, the prisms' diagonal (wtc/terrain/heightfield.hpp).
 std::unique_ptr<btHeightfieldTerrainShape> makeFieldShape(const Heightfield& f, btTransform& placement) {
   const auto [lo, hi] = std::minmax_element(f.heights.begin(), f.heights.end());
   auto shape = std::make_unique<btHeightfieldTerrainShape>(f.cols, f.rows, f.heights.data(), *lo, *hi,

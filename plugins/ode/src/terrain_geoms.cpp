@@ -166,7 +166,7 @@ Eigen::Vector3d TerrainGeoms::addConvex(const ConvexPolyhedron& piece) {
   }
   for (int f = 0; f < piece.faceCount(); ++f) {
     const Eigen::Vector3d n = piece.faceNormal(f);
-    numbers.insert(numbers.end(), {n.x(), n.y(), n.z(), piece.pd()[f] - n.dot(centroid)});
+    numbers.insert(numbers.end(), {n.x(), n.y(), n.z(), piece.faceOffsetLocal(f) - n.dot(centroid)});
     // Each polygon: its vertex count, then its vertices counter-clockwise
     // seen from outside (WTC's order is ODE's).
     const auto face = piece.faceVertices(f);

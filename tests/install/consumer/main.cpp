@@ -15,7 +15,7 @@
 #include <wtc/io/terrain_file.hpp>
 #include <wtc/ode/plugin.hpp>
 #include <wtc/geometry/point_query.hpp>
-#include <wtc/sim/make_engine.hpp>
+#include <wtc/sim/engine_table.hpp>
 #include <wtc/sim/scene_run.hpp>
 #include <wtc/terrain/terrain_primitives.hpp>
 

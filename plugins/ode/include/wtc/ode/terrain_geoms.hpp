@@ -39,8 +39,8 @@
 // point (Terrain::nearestPiece): ODE's triangle index (dContactGeom::side1)
 // is lost when ODE merges contacts. ODE's trimesh colliders (OPCODE)
 // compute in single precision: its contact points lie within a few float
-// ulps of the surface (2e-6 m measured at z = 10 m), more far from the
-// origin; the heightfield geom computes in double.
+// ulps of the surface, more far from the origin (docs/ode-plugin.md has the
+// measured error); the heightfield geom computes in double.
 //
 // The plugin tells terrain geoms by their space (contains()).
 #include <cstdint>

@@ -1,4 +1,4 @@
-#include "wtc/vehicle/climb_controller.hpp"
+#include "wtc/vehicle/controllers/climb_controller.hpp"
 
 #include <algorithm>
 #include <cmath>

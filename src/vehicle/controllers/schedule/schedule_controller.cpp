@@ -1,4 +1,4 @@
-#include "wtc/vehicle/schedule_controller.hpp"
+#include "wtc/vehicle/controllers/schedule_controller.hpp"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "wtc/vehicle/path_controller.hpp"
+#include "wtc/vehicle/controllers/path_controller.hpp"
 
 #include <cmath>
 

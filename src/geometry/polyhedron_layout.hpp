@@ -1,0 +1,50 @@
+#pragma once
+// The stored layout of a ConvexPolyhedron as the query kernels read it
+// (point_query.cpp, feature_regions.cpp) and the compact builders fill it
+// (formed prisms): structure-of-arrays coordinates in the piece's local
+// frame and the face-edge topology (convex_polyhedron.hpp has the layout).
+// Internal to wtc::core.
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "wtc/geometry/convex_polyhedron.hpp"
+
+namespace wtc::detail {
+
+struct PolyhedronLayout {
+  using P = ConvexPolyhedron;
+  static const double* vx(const P& p) { return p.vx(); }
+  static const double* vy(const P& p) { return p.vy(); }
+  static const double* vz(const P& p) { return p.vz(); }
+  static const double* nx(const P& p) { return p.nx(); }
+  static const double* ny(const P& p) { return p.ny(); }
+  static const double* nz(const P& p) { return p.nz(); }
+  static const double* pd(const P& p) { return p.pd(); }
+  static const double* faceEdgePlanes(const P& p, int f) { return p.faceEdgePlanes(f); }
+  static std::int32_t faceEdgeStart(const P& p, int f) { return p.faceEdgeStart(f); }
+  static std::int32_t faceEdgeTwin(const P& p, std::int32_t e) { return p.faceEdgeTwin(e); }
+  static int faceOfEdge(const P& p, std::int32_t e) { return p.faceOfEdge(e); }
+  static std::int32_t faceEdgeNext(const P& p, std::int32_t e) { return p.faceEdgeNext(e); }
+  static std::int32_t faceEdgeEnd(const P& p, std::int32_t e) { return p.faceEdgeEnd(e); }
+  static const double* faceEdgePlane(const P& p, std::int32_t e) { return p.faceEdgePlane(e); }
+  static int supportLocal(const P& p, const Eigen::Vector3d& dir, int hint) { return p.supportLocal(dir, hint); }
+  static double planeBoundLocal(const P& p, const Eigen::Vector3d& q, int* face) { return p.planeBoundLocal(q, face); }
+
+  /// A piece with the same face list as `like` (and as many vertices), built
+  /// from `vertices` with like's topology copied instead of matched anew: the
+  /// same piece, bit for bit, as fromMesh(vertices, faces) would build (for
+  /// pieces formed by the million: compact heightfields and meshes). The
+  /// caller vouches that the faces are planar (fromMesh checks it; zero
+  /// areas and a missing volume are still refused).
+  static ConvexPolyhedron sameTopologyAs(const ConvexPolyhedron& like, const std::vector<Eigen::Vector3d>& vertices,
+                                         const std::vector<std::vector<int>>& faces);
+  /// The same piece made into `into`, reusing its buffers (no allocation when
+  /// `into` had as many vertices, faces and face edges).
+  static void sameTopologyInto(ConvexPolyhedron& into, const ConvexPolyhedron& like,
+                               const std::vector<Eigen::Vector3d>& vertices,
+                               const std::vector<std::vector<int>>& faces);
+};
+
+}  // namespace wtc::detail
