@@ -19,6 +19,7 @@ WtcWheels::WtcWheels(Plugin& plugin, const vehicle::VehicleDescription& vehicle,
     wheel.axle_local = toBt(body.wheel->axle);
     wheel.description = sim::wheelDescription(body);
     wheel.effects = effects;
+    wheel.inertia_source = InertiaSource::kDescription;  // the description is the one source of its inertia
     plugin.addWheel(wheel);
   }
 }

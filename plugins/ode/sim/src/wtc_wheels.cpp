@@ -18,6 +18,7 @@ WtcWheels::WtcWheels(Plugin& plugin, const vehicle::VehicleDescription& vehicle,
     wheel.axle_local = body.wheel->axle;
     wheel.description = sim::wheelDescription(body);
     wheel.effects = effects;
+    wheel.inertia_source = InertiaSource::kDescription;  // the description is the one source of its inertia
     plugin.addWheel(wheel);
   }
 }
