@@ -579,10 +579,21 @@ def main():
     args = parser.parse_args()
     paths = args.vehicles or [os.path.join(ROOT, "vehicles", f) for f in ("six_wheel_robot.yaml", "towed_system.yaml")]
     mats = materials()
+    if args.material:
+        mats = {}
     for spec in args.material:
-        name, values = spec.split("=")
-        mu_max, s1, s2, f_r = (float(x) for x in values.split(","))
-        mats = {name: {"mu_max": mu_max, "s1": s1, "s2": s2, "f_r": f_r}}
+        try:
+            name, values = spec.split("=")
+            mu_max, s1, s2, f_r = (float(x) for x in values.split(","))
+        except ValueError:
+            sys.exit(f"mobility_bounds.py: --material '{spec}': expected NAME=mu_max,s1,s2,f_r (four numbers)")
+        if not (all(math.isfinite(x) for x in (mu_max, s1, s2, f_r)) and mu_max > 0 and s1 > 0 and s2 >= 0
+                and f_r >= 0):
+            sys.exit(f"mobility_bounds.py: --material '{spec}': needs mu_max > 0, s1 > 0, s2 >= 0, f_r >= 0")
+        mats[name] = {"mu_max": mu_max, "s1": s1, "s2": s2, "f_r": f_r}
+    for path in paths:
+        if not os.path.isfile(path):
+            sys.exit(f"mobility_bounds.py: {path}: no such vehicle file")
     for path in paths:
         v = load_vehicle(path)
         describe(v)

@@ -404,7 +404,7 @@ def main():
         doc = f.read()
     old_rows = parse_table(doc)
     ran = "every check" if args.all and not args.only else ("the checks " + ", ".join(args.only) if args.only else
-                                                            "every check but the slow ones (their cells are kept)")
+                                                            "every check but the slow ones, whose cells are from the last `--all` run")
     stamp = (f"Measured {datetime.date.today().isoformat()} at commit {git_commit()} by "
              f"`tools/validation_table.py{' --all' if args.all else ''}` ({ran}).")
     table = render(checks, results, old_rows, stamp)
