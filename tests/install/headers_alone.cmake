@@ -33,18 +33,9 @@ add_library(headers OBJECT
 target_link_libraries(headers PRIVATE wtc::study wtc::sim_engines wtc::bullet_sim wtc::ode_sim)
 ")
 
-set(configure_args -S ${WTC_WORK_DIR} -B ${WTC_WORK_DIR}/build -DCMAKE_PREFIX_PATH=${WTC_PREFIX}
-  -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF -DCMAKE_FIND_USE_SYSTEM_PACKAGE_REGISTRY=OFF)
-if(WTC_GENERATOR)
-  list(APPEND configure_args -G ${WTC_GENERATOR})
-endif()
-if(WTC_MAKE_PROGRAM)
-  list(APPEND configure_args -DCMAKE_MAKE_PROGRAM=${WTC_MAKE_PROGRAM})
-endif()
-if(WTC_CXX_COMPILER)
-  list(APPEND configure_args -DCMAKE_CXX_COMPILER=${WTC_CXX_COMPILER})
-endif()
-execute_process(COMMAND ${CMAKE_COMMAND} ${configure_args} RESULT_VARIABLE result OUTPUT_VARIABLE out
+include(${CMAKE_CURRENT_LIST_DIR}/consumer_configure.cmake)
+wtc_consumer_configure_args(${WTC_WORK_DIR} ${WTC_WORK_DIR}/build)
+execute_process(COMMAND ${CMAKE_COMMAND} ${consumer_configure_args} RESULT_VARIABLE result OUTPUT_VARIABLE out
   ERROR_VARIABLE err)
 if(NOT result EQUAL 0)
   message(FATAL_ERROR "configuring the headers' project failed (${result}):\n${out}\n${err}")

@@ -59,20 +59,9 @@ file(WRITE ${project}/CMakeLists.txt "${block}")
 file(COPY_FILE ${WTC_PROGRAM} ${project}/${source})
 message(STATUS "${project}/CMakeLists.txt (from ${WTC_README}):\n${block}")
 
-set(configure_args -S ${project} -B ${build} -DCMAKE_PREFIX_PATH=${WTC_PREFIX}
-  # Only the scratch prefix may provide wtc: no user or system registry.
-  -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF
-  -DCMAKE_FIND_USE_SYSTEM_PACKAGE_REGISTRY=OFF)
-if(WTC_GENERATOR)
-  list(APPEND configure_args -G ${WTC_GENERATOR})
-endif()
-if(WTC_MAKE_PROGRAM)
-  list(APPEND configure_args -DCMAKE_MAKE_PROGRAM=${WTC_MAKE_PROGRAM})
-endif()
-if(WTC_CXX_COMPILER)
-  list(APPEND configure_args -DCMAKE_CXX_COMPILER=${WTC_CXX_COMPILER})
-endif()
-run("configure ${name}" ${CMAKE_COMMAND} ${configure_args})
+include(${CMAKE_CURRENT_LIST_DIR}/consumer_configure.cmake)
+wtc_consumer_configure_args(${project} ${build})
+run("configure ${name}" ${CMAKE_COMMAND} ${consumer_configure_args})
 
 # The package must have come from the scratch prefix, not from elsewhere.
 file(STRINGS ${build}/CMakeCache.txt wtc_dir_line REGEX "^wtc_DIR:")
