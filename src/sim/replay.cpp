@@ -71,6 +71,7 @@ void writeBodies(std::ostream& out, const vehicle::VehicleDescription& v) {
           out << ",\"kind\":\"sphere\",\"radius\":" << mm(s.radius);
           break;
         case vehicle::Shape::Kind::kNone:
+        case vehicle::Shape::Kind::kHull:
           out << ",\"kind\":\"none\"";
           break;
       }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <BulletCollision/CollisionShapes/btCompoundShape.h>
+#include <BulletCollision/CollisionShapes/btConvexHullShape.h>
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
@@ -45,6 +46,29 @@ std::unique_ptr<btCollisionShape> cylinder(int axis, double r, double l) {
   }
 }
 
+// One shape (box, cylinder, sphere, convex hull) centred and aligned in its
+// own frame, or null for kNone; `keep` owns it.
+template <class Keep>
+btCollisionShape* partShape(const Shape& s, Keep& keep) {
+  switch (s.kind) {
+    case Shape::Kind::kBox:
+      return keep(std::make_unique<btBoxShape>(toBt(Eigen::Vector3d(0.5 * s.box_size))));
+    case Shape::Kind::kCylinder:
+      return keep(cylinder(s.cylinder_axis, s.radius, s.length));
+    case Shape::Kind::kSphere:
+      return keep(std::make_unique<btSphereShape>(s.radius));
+    case Shape::Kind::kHull: {
+      auto hull = std::make_unique<btConvexHullShape>();
+      for (const Eigen::Vector3d& p : s.hull_vertices) hull->addPoint(toBt(p), false);
+      hull->recalcLocalAabb();
+      return keep(std::move(hull));
+    }
+    case Shape::Kind::kNone:
+      break;
+  }
+  return nullptr;
+}
+
 // The body's collision shape, or null; `owned` keeps every shape made. A
 // wheel's is its tread (a cylinder, or a sphere: sim::treadIsSphere); with
 // WTC's wheels, WTC's algorithm replaces it against the terrain.
@@ -65,18 +89,16 @@ btCollisionShape* makeShape(const Body& body, const sim::EngineSettings& setting
     compound->addChildShape(btTransform(toBtRotation(turn)), keep(cylinder(1, g.free_radius, g.tread_width)));
     return keep(std::move(compound));
   }
-  const Shape& s = body.shape;
-  switch (s.kind) {
-    case Shape::Kind::kBox:
-      return keep(std::make_unique<btBoxShape>(toBt(Eigen::Vector3d(0.5 * s.box_size))));
-    case Shape::Kind::kCylinder:
-      return keep(cylinder(s.cylinder_axis, s.radius, s.length));
-    case Shape::Kind::kSphere:
-      return keep(std::make_unique<btSphereShape>(s.radius));
-    case Shape::Kind::kNone:
-      break;
+  if (!body.compound.empty()) {
+    // Several parts, each at its pose in the body (centre-of-mass) frame.
+    auto compound = std::make_unique<btCompoundShape>();
+    for (const vehicle::ShapePart& part : body.compound) {
+      btTransform pose(toBtRotation(Eigen::Matrix3d(part.pose_BS.linear())), toBt(part.pose_BS.translation()));
+      compound->addChildShape(pose, partShape(part.shape, keep));
+    }
+    return keep(std::move(compound));
   }
-  return nullptr;
+  return partShape(body.shape, keep);
 }
 
 class SimEngine final : public sim::EngineBase {
@@ -274,6 +296,10 @@ class SimEngine final : public sim::EngineBase {
     const btVector3 parent_com_to_pivot = toBt(r_p.transpose() * (b.joint.anchor - p.pose.translation()));
     const btVector3 pivot_to_com = toBt(r_c.transpose() * (b.pose.translation() - b.joint.anchor));
     const btVector3 axis = toBt(r_c.transpose() * b.joint.axis);
+    if (b.joint.mimic) {
+      throw InvalidInputError("wtc::bullet sim engine: joint '" + b.joint.name + "' of body '" + b.name +
+                              "' mimics another joint, which this engine does not hold yet");
+    }
     btMultiBody& mb = *r.multibody;
     switch (b.joint.type) {
       case JointType::kRevolute:

@@ -59,8 +59,15 @@ dGeomID makeGeom(const Body& body, const sim::EngineSettings& settings, dSpaceID
     if (dGeomGetClass(geom) == dCylinderClass) alignCylinder(geom, body.wheel->axle);
     return geom;
   }
+  if (!body.compound.empty()) {
+    throw InvalidInputError("wtc::ode sim engine: body '" + body.name +
+                            "' has a compound collision shape, which the ODE sim engine does not build");
+  }
   const Shape& s = body.shape;
   switch (s.kind) {
+    case Shape::Kind::kHull:
+      throw InvalidInputError("wtc::ode sim engine: body '" + body.name +
+                              "' has a convex hull collision shape, which the ODE sim engine does not build");
     case Shape::Kind::kBox:
       geom = dCreateBox(space, s.box_size.x(), s.box_size.y(), s.box_size.z());
       break;
@@ -304,6 +311,10 @@ class SimEngine final : public sim::EngineBase {
     Ref& r = refs_[i];
     const dBodyID parent = refs_[b.parent].body;
     const Eigen::Vector3d anchor = placement * b.joint.anchor;
+    if (b.joint.mimic) {
+      throw InvalidInputError("wtc::ode sim engine: joint '" + b.joint.name + "' of body '" + b.name +
+                              "' mimics another joint, which this engine does not hold yet");
+    }
     const Eigen::Vector3d axis = placement.linear() * b.joint.axis;
     switch (b.joint.type) {
       case JointType::kRevolute:
