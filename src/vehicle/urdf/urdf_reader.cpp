@@ -141,8 +141,7 @@ UrdfModel readUrdf(const std::filesystem::path& file, const UrdfOptions& options
   for (const auto& [name, joint] : model.joints_) {
     if (joint->type == urdf::Joint::FLOATING || joint->type == urdf::Joint::PLANAR) {
       refuse.joint(name, std::string("is ") + typeName(joint->type) +
-                             ": WTC's bodies hang by revolute, continuous, prismatic or fixed joints (a floating "
-                             "body is a root of its own URDF)");
+                             ": WTC's bodies hang by revolute, continuous, prismatic or fixed joints");
     }
   }
 

@@ -156,11 +156,12 @@ VehicleDescription readUrdfVehicleFile(const YamlReader& in, const YAML::Node& r
   options.package_path = packagePathFromEnvironment();
   if (const auto paths = YamlReader::get(root, "package_path")) {
     if (!paths->IsSequence()) in.fail(*paths, "package_path: expected a list of folders");
-    for (const auto& p : *paths) options.package_path.push_back(dir / in.string(p, "package_path"));
+    for (const auto& p : *paths)
+      options.package_path.push_back((dir / in.string(p, "package_path")).lexically_normal());
   }
   UrdfModel urdf;
   try {
-    urdf = readUrdf(dir / in.string(urdf_node, "urdf"), options);
+    urdf = readUrdf((dir / in.string(urdf_node, "urdf")).lexically_normal(), options);
   } catch (const InvalidInputError& e) {
     in.fail(urdf_node, e.what());
   }

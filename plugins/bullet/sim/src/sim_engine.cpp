@@ -11,6 +11,7 @@
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
+#include <BulletDynamics/Featherstone/btMultiBodyGearConstraint.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 #include <btBulletDynamicsCommon.h>
 
@@ -284,6 +285,35 @@ class SimEngine final : public sim::EngineBase {
       mb->forwardKinematics(rotations, offsets);
     }
     for (std::size_t i = 0; i < bodies.size(); ++i) addCollider(static_cast<int>(i), placement);
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      if (bodies[i].parent >= 0 && bodies[i].joint.mimic) addMimic(static_cast<int>(i));
+    }
+  }
+
+  // A mimic joint (URDF's <mimic>: q = k q_master + offset) as a gear
+  // constraint between two joint coordinates of one multibody. Its row is
+  // qdot_A + ratio qdot_B = 0 with the position error q_A + ratio q_B -
+  // target fed back (btMultiBodyGearConstraint.cpp): A the mimic joint's
+  // link, B the master's, ratio = -k, target = offset. It reads B's
+  // coordinate through A's multibody, so both must be one tree.
+  void addMimic(int i) {
+    const Body& b = vehicle().bodies[i];
+    const vehicle::Mimic& mimic = *b.joint.mimic;
+    const Ref& a = refs_[i];
+    const Ref& m = refs_[mimic.master];
+    if (a.multibody != m.multibody) {
+      throw InvalidInputError("wtc::bullet sim engine: mimic joint '" + b.joint.name + "' (body '" + b.name +
+                              "') and its master are in two trees: a gear constraint ties one multibody's joints");
+    }
+    auto gear = std::make_unique<btMultiBodyGearConstraint>(a.multibody, a.link, m.multibody, m.link,
+                                                            btVector3(0, 0, 0), btVector3(0, 0, 0),
+                                                            btMatrix3x3::getIdentity(), btMatrix3x3::getIdentity());
+    gear->setGearRatio(-mimic.multiplier);
+    gear->setRelativePositionTarget(mimic.offset);
+    gear->setErp(sim::kMimicErp);
+    gear->setMaxAppliedImpulse(sim::kMimicMaxImpulse);
+    world_.addMultiBodyConstraint(gear.get());
+    constraints_.push_back(std::move(gear));
   }
 
   void setupLink(int i) {
@@ -296,10 +326,6 @@ class SimEngine final : public sim::EngineBase {
     const btVector3 parent_com_to_pivot = toBt(r_p.transpose() * (b.joint.anchor - p.pose.translation()));
     const btVector3 pivot_to_com = toBt(r_c.transpose() * (b.pose.translation() - b.joint.anchor));
     const btVector3 axis = toBt(r_c.transpose() * b.joint.axis);
-    if (b.joint.mimic) {
-      throw InvalidInputError("wtc::bullet sim engine: joint '" + b.joint.name + "' of body '" + b.name +
-                              "' mimics another joint, which this engine does not hold yet");
-    }
     btMultiBody& mb = *r.multibody;
     switch (b.joint.type) {
       case JointType::kRevolute:
