@@ -144,6 +144,21 @@ TEST(UrdfFileTest, PackageMeshIsItsConvexHullBesideTheBox) {
   EXPECT_EQ(b.compound[1].shape.kind, Shape::Kind::kBox);
 }
 
+TEST(UrdfFileTest, ShippedUrdfsReadWithTheirBodyCounts) {
+  const std::filesystem::path vehicles = std::filesystem::path(WTC_SOURCE_DIR) / "vehicles";
+  EXPECT_EQ(readUrdf(vehicles / "six_wheel_robot.urdf").vehicle.bodies.size(), 11u);
+  EXPECT_EQ(readUrdf(vehicles / "towed_system_tug.urdf").vehicle.bodies.size(), 3u);
+  EXPECT_EQ(readUrdf(vehicles / "towed_system_towed.urdf").vehicle.bodies.size(), 5u);
+  const UrdfModel rover = readUrdf(vehicles / "rocker_bogie_rover.urdf", {.package_path = {vehicles}});
+  ASSERT_EQ(rover.vehicle.bodies.size(), 12u);
+  EXPECT_NEAR(rover.vehicle.totalMass(), 30.0, 1e-9);
+  // The chassis: its tensor's principal moments (docs/rocker-bogie-rover.md, from the values as written).
+  Eigen::Vector3d moments = rover.vehicle.bodies.at(0).inertia;
+  std::sort(moments.begin(), moments.end());
+  EXPECT_TRUE(moments.isApprox(Eigen::Vector3d(0.25135, 0.48032, 0.53309), 1e-4)) << moments.transpose();
+  EXPECT_EQ(rover.vehicle.bodies.at(0).name, "chassis");  // the file's order, not urdfdom's name order
+}
+
 // Refusals: the file, the link or joint, the problem.
 void expectRefused(const std::string& file, const std::vector<std::string>& fragments,
                    const UrdfOptions& options = {}) {

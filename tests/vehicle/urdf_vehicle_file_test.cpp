@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "wtc/base/error.hpp"
+#include "wtc/vehicle/controllers/path_controller.hpp"
 #include "wtc/vehicle/vehicle_file.hpp"
 
 namespace wtc::vehicle {
@@ -125,6 +126,21 @@ TEST(UrdfVehicleFileTest, RefusesDrivesAndWheelsNamingWhatTheUrdfLacks) {
 TEST(UrdfVehicleFileTest, RefusalsInsideTheUrdfNameBothFiles) {
   expectRefused("floating", kUrdf / "floating_joint.urdf", "",
                 {"floating_joint.urdf", "joint 'payload_joint' is floating"});
+}
+
+// The rover's chassis has products of inertia: its body frame is turned to
+// its principal axes, and the path controller, which steers by its body's x
+// and y, refuses it by name rather than steering by the wrong axes.
+TEST(UrdfVehicleFileTest, PathControllerRefusesABodyTurnedToItsPrincipalAxes) {
+  const VehicleDescription rover = loadVehicle(kSource / "vehicles" / "rocker_bogie_rover.yaml");
+  ASSERT_FALSE(rover.bodies.at(rover.find("chassis")).pose.linear().isIdentity(1e-6));
+  try {
+    PathController(rover, {.body = "chassis", .left_drive = "middle_left_wheel", .right_drive = "middle_right_wheel"},
+                   "scene.yaml");
+    ADD_FAILURE() << "the path controller took a body turned to its principal axes";
+  } catch (const InvalidInputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("body 'chassis' is turned from the vehicle's axes"));
+  }
 }
 
 }  // namespace
