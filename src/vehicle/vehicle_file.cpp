@@ -206,6 +206,23 @@ Body readBody(const YamlReader& in, const YAML::Node& node, bool is_wheel, const
 
 }  // namespace
 
+void readBodyInto(const YamlReader& in, const YAML::Node& bodies, std::size_t i, const YAML::Node& defaults,
+                  VehicleDescription& v) {
+  // A list item that is not a mapping ("- name" cut short) has no keys to read.
+  in.requireMap(bodies[i], ("bodies[" + std::to_string(i) + "]").c_str());
+  const YAML::Node name = bodies[i]["name"];
+  const YamlReader here = in.with("bodies[" + std::to_string(i) + "]" +
+                                  (name && name.IsScalar() ? " (" + name.as<std::string>() + ")" : "") + ": ");
+  Body body = readListedBody(here, bodies[i], defaults, v);
+  if (v.find(body.name) >= 0) here.fail(bodies[i]["name"], "name '" + body.name + "' is used twice");
+  try {
+    validate(body, static_cast<int>(v.bodies.size()), "body");
+  } catch (const InvalidInputError& e) {
+    here.fail(bodies[i], e.what());
+  }
+  v.bodies.push_back(std::move(body));
+}
+
 Hitch readHitch(const YamlReader& in, const YAML::Node& node, const VehicleDescription& v) {
   in.requireMap(node, "hitch");
   in.checkKeys(node, {"body_a", "point_a", "body_b", "point_b", "stiffness", "damping"});
@@ -228,7 +245,7 @@ VehicleDescription readVehicleFile(const std::filesystem::path& path) {
   const YAML::Node root = io::detail::loadYamlFile(path);
   const YamlReader in(path);
   in.requireMap(root, "vehicle file");
-  if (YamlReader::get(root, "urdf")) return readUrdfVehicleFile(in, root);
+  if (YamlReader::get(root, "urdf") || YamlReader::get(root, "parts")) return readUrdfVehicleFile(in, root);
   in.checkKeys(root, {"name", "description", "wheel_defaults", "bodies", "hitch"});
   VehicleDescription v;
   v.name = in.string(in.require(root, "name"), "name");
@@ -236,21 +253,7 @@ VehicleDescription readVehicleFile(const std::filesystem::path& path) {
   in.requireMap(defaults, "wheel_defaults");
   const YAML::Node bodies = in.require(root, "bodies");
   if (!bodies.IsSequence() || bodies.size() == 0) in.fail(bodies, "bodies: expected a non-empty list");
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    // A list item that is not a mapping ("- name" cut short) has no keys to read.
-    in.requireMap(bodies[i], ("bodies[" + std::to_string(i) + "]").c_str());
-    const YAML::Node name = bodies[i]["name"];
-    const YamlReader here = in.with("bodies[" + std::to_string(i) + "]" +
-                                    (name && name.IsScalar() ? " (" + name.as<std::string>() + ")" : "") + ": ");
-    Body body = readListedBody(here, bodies[i], defaults, v);
-    if (v.find(body.name) >= 0) here.fail(bodies[i]["name"], "name '" + body.name + "' is used twice");
-    try {
-      validate(body, static_cast<int>(v.bodies.size()), "body");
-    } catch (const InvalidInputError& e) {
-      here.fail(bodies[i], e.what());
-    }
-    v.bodies.push_back(std::move(body));
-  }
+  for (std::size_t i = 0; i < bodies.size(); ++i) readBodyInto(in, bodies, i, defaults, v);
   if (const auto hitch = YamlReader::get(root, "hitch")) {
     v.hitch = readHitch(in.with("hitch: "), *hitch, v);
   }

@@ -10,6 +10,11 @@ namespace wtc::vehicle {
 /// A `tyre:` mapping over `base`, validated at the offending key.
 TyreParameters readTyre(const io::detail::YamlReader& in, const YAML::Node& tyre, const TyreParameters& base);
 
+/// bodies[i] of a `bodies:` list (the YAML form's), its wheel over
+/// `defaults`, validated and appended to `v` (a parent named before it).
+void readBodyInto(const io::detail::YamlReader& in, const YAML::Node& bodies, std::size_t i, const YAML::Node& defaults,
+                  VehicleDescription& v);
+
 /// A `hitch:` mapping naming bodies of `v`.
 Hitch readHitch(const io::detail::YamlReader& in, const YAML::Node& node, const VehicleDescription& v);
 

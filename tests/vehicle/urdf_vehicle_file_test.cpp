@@ -28,15 +28,14 @@ std::filesystem::path writeVehicleFile(const std::string& test, const std::files
   return file;
 }
 
-TEST(UrdfVehicleFileTest, SixWheelRobotFromUrdfEqualsTheYamlRobot) {
-  const VehicleDescription yaml = loadVehicle(kSource / "vehicles" / "six_wheel_robot.yaml");
-  const VehicleDescription urdf = loadVehicle(kSource / "vehicles" / "six_wheel_robot_urdf.yaml");
+// Every field of two descriptions, exactly: the URDFs' decimals read back to
+// the YAML loader's doubles.
+void expectEqual(const VehicleDescription& yaml, const VehicleDescription& urdf) {
   EXPECT_EQ(urdf.name, yaml.name);
   ASSERT_EQ(urdf.bodies.size(), yaml.bodies.size());
   for (std::size_t i = 0; i < yaml.bodies.size(); ++i) {
     const Body& a = yaml.bodies[i];
     const Body& b = urdf.bodies[i];
-    // Exactly: the URDF's decimals read back to the YAML loader's doubles.
     EXPECT_EQ(b.name, a.name);
     EXPECT_EQ(b.mass, a.mass) << a.name;
     EXPECT_EQ(b.inertia, a.inertia) << a.name;
@@ -64,8 +63,29 @@ TEST(UrdfVehicleFileTest, SixWheelRobotFromUrdfEqualsTheYamlRobot) {
       EXPECT_EQ(b.wheel->axle, a.wheel->axle);
       EXPECT_EQ(b.wheel->tyre.radial_stiffness, a.wheel->tyre.radial_stiffness);
       EXPECT_EQ(b.wheel->tyre.radial_damping, a.wheel->tyre.radial_damping);
+      EXPECT_EQ(b.wheel->tyre.tangential_stiffness, a.wheel->tyre.tangential_stiffness);
     }
   }
+  ASSERT_EQ(urdf.hitch.has_value(), yaml.hitch.has_value());
+  if (yaml.hitch) {
+    EXPECT_EQ(urdf.hitch->body_a, yaml.hitch->body_a);
+    EXPECT_EQ(urdf.hitch->body_b, yaml.hitch->body_b);
+    EXPECT_EQ(urdf.hitch->point_a, yaml.hitch->point_a);
+    EXPECT_EQ(urdf.hitch->point_b, yaml.hitch->point_b);
+    EXPECT_EQ(urdf.hitch->stiffness, yaml.hitch->stiffness);
+    EXPECT_EQ(urdf.hitch->damping, yaml.hitch->damping);
+  }
+}
+
+TEST(UrdfVehicleFileTest, SixWheelRobotFromUrdfEqualsTheYamlRobot) {
+  expectEqual(loadVehicle(kSource / "vehicles" / "six_wheel_robot.yaml"),
+              loadVehicle(kSource / "vehicles" / "six_wheel_robot_urdf.yaml"));
+}
+
+// Two URDFs and two YAML casters in order, with the hitch.
+TEST(UrdfVehicleFileTest, TowedSystemFromTwoUrdfsEqualsTheYamlOne) {
+  expectEqual(loadVehicle(kSource / "vehicles" / "towed_system.yaml"),
+              loadVehicle(kSource / "vehicles" / "towed_system_urdf.yaml"));
 }
 
 TEST(UrdfVehicleFileTest, WheelTakesRadiusWidthAndAxleFromItsCylinderAndJoint) {

@@ -26,6 +26,41 @@ namespace {
 
 using io::detail::YamlReader;
 
+// The mechanism of one URDF, or of several URDFs and YAML bodies in order
+// (`parts:`): where each link and joint came from, for messages.
+struct Mechanism {
+  VehicleDescription vehicle;
+  std::map<std::string, int> link_body;
+  std::map<std::string, int> joint_body;
+  std::map<std::string, UrdfDriveLimits> drive_limits;
+  std::map<std::string, std::filesystem::path> link_file;
+  std::map<std::string, std::filesystem::path> joint_file;
+  std::string files;  ///< The URDF files, for "not a link of ..."
+};
+
+// Appends a URDF's bodies after those read so far (indices shifted).
+void append(const YamlReader& in, const YAML::Node& node, const UrdfModel& m, Mechanism& out) {
+  const int offset = static_cast<int>(out.vehicle.bodies.size());
+  for (Body b : m.vehicle.bodies) {
+    if (out.vehicle.find(b.name) >= 0) {
+      in.fail(node, m.file.string() + ": link '" + b.name + "' has the name of a body read before it");
+    }
+    if (b.parent >= 0) b.parent += offset;
+    if (b.joint.mimic) b.joint.mimic->master += offset;
+    out.vehicle.bodies.push_back(std::move(b));
+  }
+  for (const auto& [link, body] : m.link_body) {
+    out.link_body[link] = body + offset;
+    out.link_file[link] = m.file;
+  }
+  for (const auto& [joint, body] : m.joint_body) {
+    out.joint_body[joint] = body + offset;
+    out.joint_file[joint] = m.file;
+  }
+  out.drive_limits.insert(m.drive_limits.begin(), m.drive_limits.end());
+  out.files += (out.files.empty() ? "" : ", ") + m.file.string();
+}
+
 struct WheelSizes {
   std::optional<double> radius;
   std::optional<double> width;
@@ -42,9 +77,9 @@ WheelSizes readWheelSizes(const YamlReader& in, const YAML::Node& node, WheelSiz
 
 // The wheel on `body` (link `link`): its radius and width from the link's
 // cylinder unless given, its axle the joint's axis in the body frame.
-Wheel makeWheel(const YamlReader& in, const YAML::Node& node, const UrdfModel& urdf, const Body& body,
+Wheel makeWheel(const YamlReader& in, const YAML::Node& node, const Mechanism& urdf, const Body& body,
                 const std::string& link, const WheelSizes& sizes) {
-  const std::string where = urdf.file.string() + ": link '" + link + "'";
+  const std::string where = urdf.link_file.at(link).string() + ": link '" + link + "'";
   if (body.parent < 0 || body.joint.type != JointType::kRevolute) {
     in.fail(node, where + " is not on a revolute or continuous joint: a wheel turns on one");
   }
@@ -88,7 +123,7 @@ Wheel makeWheel(const YamlReader& in, const YAML::Node& node, const UrdfModel& u
   return w;
 }
 
-void readWheels(const YamlReader& in, const YAML::Node& root, const UrdfModel& urdf, VehicleDescription& v) {
+void readWheels(const YamlReader& in, const YAML::Node& root, const Mechanism& urdf, VehicleDescription& v) {
   WheelSizes defaults;
   if (const auto d = YamlReader::get(root, "wheel_defaults")) {
     in.requireMap(*d, "wheel_defaults");
@@ -106,18 +141,18 @@ void readWheels(const YamlReader& in, const YAML::Node& root, const UrdfModel& u
     const YAML::Node link_node = here.require(node, "link");
     const std::string link = here.string(link_node, "link");
     const auto it = urdf.link_body.find(link);
-    if (it == urdf.link_body.end()) here.fail(link_node, "link '" + link + "' is not a link of " + urdf.file.string());
+    if (it == urdf.link_body.end()) here.fail(link_node, "link '" + link + "' is not a link of " + urdf.files);
     Body& body = v.bodies[it->second];
     if (body.name != link) {
       here.fail(link_node, "link '" + link + "' is merged into '" + body.name + "' by a fixed joint in " +
-                               urdf.file.string() + ": a wheel turns on a joint of its own");
+                               urdf.link_file.at(link).string() + ": a wheel turns on a joint of its own");
     }
     if (body.wheel) here.fail(link_node, "link '" + link + "' is named a wheel twice");
     body.wheel = makeWheel(here, node, urdf, body, link, readWheelSizes(here, node, defaults));
   }
 }
 
-void readDrives(const YamlReader& in, const YAML::Node& root, const UrdfModel& urdf, VehicleDescription& v) {
+void readDrives(const YamlReader& in, const YAML::Node& root, const Mechanism& urdf, VehicleDescription& v) {
   const auto drives = YamlReader::get(root, "drives");
   if (!drives) return;
   in.requireMap(*drives, "drives");
@@ -126,8 +161,7 @@ void readDrives(const YamlReader& in, const YAML::Node& root, const UrdfModel& u
     const YamlReader here = in.with("drives: " + joint + ": ");
     const auto it = urdf.joint_body.find(joint);
     if (it == urdf.joint_body.end()) {
-      here.fail(kv.first,
-                "joint '" + joint + "' is not a revolute, continuous or prismatic joint of " + urdf.file.string());
+      here.fail(kv.first, "joint '" + joint + "' is not a revolute, continuous or prismatic joint of " + urdf.files);
     }
     const YAML::Node node = kv.second.IsNull() ? YAML::Node(YAML::NodeType::Map) : kv.second;
     here.requireMap(node, "drive");
@@ -138,9 +172,10 @@ void readDrives(const YamlReader& in, const YAML::Node& root, const UrdfModel& u
     a.max_speed = here.number(node, "max_speed", limits.velocity);
     a.position_gain = here.number(node, "position_gain", a.position_gain);
     if (!(a.max_effort > 0.0) || !(a.max_speed > 0.0)) {
-      here.fail(kv.first, "joint '" + joint + "' has no <limit effort velocity> in " + urdf.file.string() +
-                              " (effort " + formatNumber(limits.effort) + ", velocity " +
-                              formatNumber(limits.velocity) + "): give the drive's max_effort and max_speed");
+      here.fail(kv.first, "joint '" + joint + "' has no <limit effort velocity> in " +
+                              urdf.joint_file.at(joint).string() + " (effort " + formatNumber(limits.effort) +
+                              ", velocity " + formatNumber(limits.velocity) +
+                              "): give the drive's max_effort and max_speed");
     }
     v.bodies[it->second].joint.actuator = a;
   }
@@ -149,9 +184,9 @@ void readDrives(const YamlReader& in, const YAML::Node& root, const UrdfModel& u
 }  // namespace
 
 VehicleDescription readUrdfVehicleFile(const YamlReader& in, const YAML::Node& root) {
-  in.checkKeys(root, {"name", "description", "urdf", "package_path", "wheel_defaults", "wheels", "drives", "hitch"});
+  in.checkKeys(root,
+               {"name", "description", "urdf", "parts", "package_path", "wheel_defaults", "wheels", "drives", "hitch"});
   const std::filesystem::path dir = in.path().parent_path();
-  const YAML::Node urdf_node = in.require(root, "urdf");
   UrdfOptions options;
   options.package_path = packagePathFromEnvironment();
   if (const auto paths = YamlReader::get(root, "package_path")) {
@@ -159,11 +194,41 @@ VehicleDescription readUrdfVehicleFile(const YamlReader& in, const YAML::Node& r
     for (const auto& p : *paths)
       options.package_path.push_back((dir / in.string(p, "package_path")).lexically_normal());
   }
-  UrdfModel urdf;
-  try {
-    urdf = readUrdf((dir / in.string(urdf_node, "urdf")).lexically_normal(), options);
-  } catch (const InvalidInputError& e) {
-    in.fail(urdf_node, e.what());
+  const auto readOne = [&](const YAML::Node& node, Mechanism& out) {
+    UrdfModel m;
+    try {
+      m = readUrdf((dir / in.string(node, "urdf")).lexically_normal(), options);
+    } catch (const InvalidInputError& e) {
+      in.fail(node, e.what());
+    }
+    append(in, node, m, out);
+  };
+  Mechanism urdf;
+  const auto one = YamlReader::get(root, "urdf");
+  const auto parts = YamlReader::get(root, "parts");
+  if (one && parts) in.fail(*parts, "give one of 'urdf' (one URDF) and 'parts' (URDFs and bodies in order)");
+  if (one) {
+    readOne(*one, urdf);
+  } else {
+    // Parts in order, each a URDF ({urdf: file}) or YAML bodies ({bodies: [...]}, as in the YAML form, without
+    // wheel_defaults, parents among the bodies before them): the bodies' order is the parts'.
+    if (!parts->IsSequence() || parts->size() == 0) in.fail(*parts, "parts: expected a non-empty list");
+    for (std::size_t i = 0; i < parts->size(); ++i) {
+      const YAML::Node part = (*parts)[i];
+      const YamlReader here = in.with("parts[" + std::to_string(i) + "]: ");
+      here.requireMap(part, "part");
+      here.checkKeys(part, {"urdf", "bodies"});
+      if (part.size() != 1) here.fail(part, "give one of 'urdf' and 'bodies'");
+      if (const auto file = YamlReader::get(part, "urdf")) {
+        readOne(*file, urdf);
+        continue;
+      }
+      const YAML::Node bodies = part["bodies"];
+      if (!bodies.IsSequence() || bodies.size() == 0) here.fail(bodies, "bodies: expected a non-empty list");
+      for (std::size_t k = 0; k < bodies.size(); ++k) {
+        readBodyInto(here, bodies, k, YAML::Node(YAML::NodeType::Map), urdf.vehicle);
+      }
+    }
   }
   VehicleDescription v = urdf.vehicle;
   v.name = in.string(in.require(root, "name"), "name");
@@ -171,7 +236,7 @@ VehicleDescription readUrdfVehicleFile(const YamlReader& in, const YAML::Node& r
   readDrives(in, root, urdf, v);
   if (const auto hitch = YamlReader::get(root, "hitch")) v.hitch = readHitch(in.with("hitch: "), *hitch, v);
   try {
-    validate(v, urdf.file.string());
+    validate(v, in.path().string());
   } catch (const InvalidInputError& e) {
     in.fail(root, e.what());
   }
