@@ -4,7 +4,8 @@
 // joints are driven and how, the hitch.
 //
 //   name: six_wheel_robot
-//   urdf: six_wheel_robot.urdf         # relative to this file
+//   urdf: six_wheel_robot.urdf         # relative to this file; or, for several trees:
+//   # parts: [{urdf: a.urdf}, {bodies: [...YAML bodies...]}, {urdf: b.urdf}]   (bodies in that order)
 //   package_path: [.]                  # optional: folders for package:// (relative to this file)
 //   wheel_defaults: {tyre: {...}}      # optional: radius, width, tyre for every wheel
 //   wheels:
