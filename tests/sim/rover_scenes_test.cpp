@@ -24,10 +24,10 @@ namespace {
 
 namespace fs = std::filesystem;
 const fs::path kRoot = fs::path(WTC_SOURCE_DIR);
-// The mimic's position error, held by feedback at ERP 0.2 a step: well
-// under a milliradian while the suspension moves (measured: see the test's
-// output); 5 mrad is far beyond that and far below the 0.1 rad the rockers
-// turn over the rough ground.
+// The mimic's position error, held by feedback at ERP 0.2 a step, as the
+// test prints it: 1e-5 rad in Bullet, 1e-8 in ODE's dWorldStep, 5e-4 in its
+// quickstep over 6 s of rough ground. 5 mrad is ten times the largest, a
+// third of the 14 mrad the bar turns there.
 constexpr double kMimicToleranceRad = 5e-3;
 
 // The largest |q_left + q_bar| and |q_right - q_bar| over a run, and the
@@ -88,8 +88,9 @@ TEST(RoverScenesTest, DrivesStraightOnFlatGroundInBothEnginesAndModes) {
 }
 
 TEST(RoverScenesTest, CrossesRoughGroundWithItsDifferentialHeldInBothEnginesAndModes) {
-  for (const char* engine : kEngines) {
+  for (const char* engine : {"bullet", "ode", "ode_quick"}) {
     for (const char* mode : kModes) {
+      if (std::string(engine) == "ode_quick" && std::string(mode) == "constraint") continue;
       const std::string label = std::string(engine) + ", " + mode;
       const Outcome o = run("rover_rough", engine, mode, {{"duration", "6"}});
       EXPECT_GT(o.summary.fields.at("distance_m"), 0.6) << label;
