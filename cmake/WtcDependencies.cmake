@@ -27,6 +27,10 @@ find_package(assimp CONFIG REQUIRED)
 find_package(yaml-cpp CONFIG REQUIRED)
 # summary.json of a run (wtc::io), wtc-sim and wtc-study.
 find_package(nlohmann_json 3 CONFIG REQUIRED)
+# wtc::vehicle reads URDF files with urdfdom (its CMake config's targets
+# urdfdom::urdfdom_model, which bring console_bridge and TinyXML, the XML
+# parser urdfdom uses and the reader asks for the <link> elements' order).
+find_package(urdfdom CONFIG REQUIRED)
 # wtc::study runs a study's simulations on a TBB worker pool.
 find_package(TBB CONFIG REQUIRED)
 
@@ -49,5 +53,5 @@ function(wtc_require_linked_files)
     endforeach()
   endforeach()
 endfunction()
-wtc_require_linked_files(assimp::assimp yaml-cpp fcl Qhull::qhullcpp
+wtc_require_linked_files(assimp::assimp yaml-cpp urdfdom::urdfdom_model fcl Qhull::qhullcpp
   Qhull::qhull_r GTest::gtest GTest::gmock benchmark::benchmark)

@@ -2,6 +2,7 @@
 // writes the series, a summary and the figures. It parses, runs and
 // writes; everything physical is in the libraries.
 #include <unistd.h>
+#include <cstdlib>
 
 #include <CLI/CLI.hpp>
 #include <atomic>
@@ -76,7 +77,7 @@ int main(int argc, char** argv) {
   CLI::App app{"wtc-sim: run a scene (scenes/*.yaml) in Bullet or ODE with WTC wheels"};
   std::string scene_file, engine, mode, out;
   double dt = 0.0, duration = 0.0;
-  std::vector<std::string> sets;
+  std::vector<std::string> sets, package_path;
   bool quiet = false, no_plots = false, no_replay = false, skip_done = false;
   app.add_option("scene", scene_file, "scene file (YAML)")->required();
   app.add_option("--engine", engine, "bullet, ode or ode_quick (overrides the scene's)");
@@ -86,6 +87,8 @@ int main(int argc, char** argv) {
   app.add_option("--duration", duration, "simulated time (s)");
   app.add_option("--out", out, "output directory (new or empty; default runs/<scene>_<engine>_<mode>[_N])");
   app.add_option("--set", sets, "key.path=value: override any value of the scene (repeatable)");
+  app.add_option("--package-path", package_path,
+                 "folder in which package:// URIs of a URDF vehicle resolve, before WTC_PACKAGE_PATH (repeatable)");
   app.add_flag("--quiet", quiet, "no progress bar, no summary on stdout");
   app.add_flag("--no-plots", no_plots, "skip the figures");
   app.add_flag("--no-replay", no_replay, "skip the replay page (as a scene's output: {replay: false})");
@@ -98,6 +101,16 @@ int main(int argc, char** argv) {
   if (skip_done && out.empty()) {
     std::cerr << "wtc-sim: --skip-done needs --out (the directory that holds the run)\n";
     return 2;
+  }
+
+  if (!package_path.empty()) {
+    // The vehicle reader takes its package path from WTC_PACKAGE_PATH
+    // (wtc/vehicle/package_path.hpp): the folders given here go first.
+    std::string path;
+    for (const std::string& dir : package_path) path += (path.empty() ? "" : ":") + dir;
+    if (const char* env = std::getenv("WTC_PACKAGE_PATH"); env != nullptr && *env != '\0')
+      path += ":" + std::string(env);
+    setenv("WTC_PACKAGE_PATH", path.c_str(), 1);
   }
 
   std::vector<wtc::sim::Override> overrides;

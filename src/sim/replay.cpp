@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "wtc/base/error.hpp"
+#include "wtc/geometry/convex_polyhedron.hpp"
 #include "wtc/sim/replay_terrain.hpp"
 
 namespace wtc::sim {
@@ -44,6 +45,48 @@ void writeTerrain(std::ostream& out, const ReplayTerrain& terrain) {
   out << ",\"note\":" << quoted(terrain.note()) << '}';
 }
 
+// A shape's fields: its kind and sizes (mm); a hull as its triangles
+// (positions in mm, a fan over each face of its Qhull hull).
+void writeShape(std::ostream& out, const vehicle::Shape& s) {
+  switch (s.kind) {
+    case vehicle::Shape::Kind::kBox:
+      out << ",\"kind\":\"box\",\"size\":[" << mm(s.box_size.x()) << ',' << mm(s.box_size.y()) << ','
+          << mm(s.box_size.z()) << ']';
+      break;
+    case vehicle::Shape::Kind::kCylinder: {
+      const Eigen::Vector3d a = Eigen::Vector3d::Unit(s.cylinder_axis);
+      out << ",\"kind\":\"cylinder\",\"radius\":" << mm(s.radius) << ",\"width\":" << mm(s.length) << ",\"axis\":["
+          << a.x() << ',' << a.y() << ',' << a.z() << ']';
+      break;
+    }
+    case vehicle::Shape::Kind::kSphere:
+      out << ",\"kind\":\"sphere\",\"radius\":" << mm(s.radius);
+      break;
+    case vehicle::Shape::Kind::kHull: {
+      const ConvexPolyhedron hull = ConvexPolyhedron::fromPoints(s.hull_vertices);
+      out << ",\"kind\":\"hull\",\"positions\":[";
+      for (int v = 0; v < hull.vertexCount(); ++v) {
+        const Eigen::Vector3d p = hull.vertex(v);
+        out << (v ? "," : "") << mm(p.x()) << ',' << mm(p.y()) << ',' << mm(p.z());
+      }
+      out << "],\"indices\":[";
+      bool first = true;
+      for (int f = 0; f < hull.faceCount(); ++f) {
+        const auto face = hull.faceVertices(f);
+        for (std::size_t k = 1; k + 1 < face.size(); ++k) {
+          out << (first ? "" : ",") << face[0] << ',' << face[k] << ',' << face[k + 1];
+          first = false;
+        }
+      }
+      out << ']';
+      break;
+    }
+    case vehicle::Shape::Kind::kNone:
+      out << ",\"kind\":\"none\"";
+      break;
+  }
+}
+
 void writeBodies(std::ostream& out, const vehicle::VehicleDescription& v) {
   out << "\"bodies\":[";
   for (std::size_t i = 0; i < v.bodies.size(); ++i) {
@@ -54,26 +97,24 @@ void writeBodies(std::ostream& out, const vehicle::VehicleDescription& v) {
       out << ",\"kind\":\"wheel\",\"radius\":" << mm(b.wheel->geometry.free_radius)
           << ",\"width\":" << mm(b.wheel->geometry.tread_width) << ",\"axis\":[" << a.x() << ',' << a.y() << ','
           << a.z() << ']';
-    } else {
-      const vehicle::Shape& s = b.shape;
-      switch (s.kind) {
-        case vehicle::Shape::Kind::kBox:
-          out << ",\"kind\":\"box\",\"size\":[" << mm(s.box_size.x()) << ',' << mm(s.box_size.y()) << ','
-              << mm(s.box_size.z()) << ']';
-          break;
-        case vehicle::Shape::Kind::kCylinder: {
-          const Eigen::Vector3d a = Eigen::Vector3d::Unit(s.cylinder_axis);
-          out << ",\"kind\":\"cylinder\",\"radius\":" << mm(s.radius) << ",\"width\":" << mm(s.length) << ",\"axis\":["
-              << a.x() << ',' << a.y() << ',' << a.z() << ']';
-          break;
-        }
-        case vehicle::Shape::Kind::kSphere:
-          out << ",\"kind\":\"sphere\",\"radius\":" << mm(s.radius);
-          break;
-        case vehicle::Shape::Kind::kNone:
-          out << ",\"kind\":\"none\"";
-          break;
+    } else if (!b.compound.empty()) {
+      // Each part at its pose in the body's frame: [x, y, z] (mm) and the
+      // quaternion [w, x, y, z] (scaled as the poses' are).
+      out << ",\"kind\":\"compound\",\"parts\":[";
+      for (std::size_t k = 0; k < b.compound.size(); ++k) {
+        const vehicle::ShapePart& part = b.compound[k];
+        const Eigen::Vector3d& p = part.pose_BS.translation();
+        const Eigen::Quaterniond q(part.pose_BS.linear());
+        out << (k ? "," : "") << "{\"position\":[" << mm(p.x()) << ',' << mm(p.y()) << ',' << mm(p.z())
+            << "],\"quaternion\":[" << std::llround(q.w() * kQuaternionScale) << ','
+            << std::llround(q.x() * kQuaternionScale) << ',' << std::llround(q.y() * kQuaternionScale) << ','
+            << std::llround(q.z() * kQuaternionScale) << ']';
+        writeShape(out, part.shape);
+        out << '}';
       }
+      out << ']';
+    } else {
+      writeShape(out, b.shape);
     }
     out << '}';
   }

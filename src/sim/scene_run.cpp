@@ -27,8 +27,18 @@ constexpr double kJointAngleWarnRad = 0.1 / kDegPerRad;
 // the tyre's.
 constexpr double kSlipSpeedFloorMps = 0.1;
 
-double tiltRad(const Eigen::Isometry3d& pose) { return std::acos(std::clamp(pose.linear().col(2).z(), -1.0, 1.0)); }
-double yawRad(const Eigen::Isometry3d& pose) { return std::atan2(pose.linear()(1, 0), pose.linear()(0, 0)); }
+double tiltRad(const Eigen::Matrix3d& axes) { return std::acos(std::clamp(axes.col(2).z(), -1.0, 1.0)); }
+double yawRad(const Eigen::Matrix3d& axes) { return std::atan2(axes(1, 0), axes(0, 0)); }
+
+// The vehicle frame's axes in the world, from body `body`'s pose: a body's
+// frame is its principal frame, turned from V's axes by its reference
+// rotation where a URDF's tensor had products of inertia
+// (wtc/vehicle/principal_inertia.hpp), R_WV = R_WB R_VB^T. The tilt and
+// yaw are V's. (A body not turned gives its own axes, untouched.)
+Eigen::Matrix3d vehicleAxes(const Eigen::Isometry3d& pose_WB, const vehicle::Body& body) {
+  if (body.pose.linear().isIdentity(0.0)) return pose_WB.linear();
+  return pose_WB.linear() * body.pose.linear().transpose();
+}
 
 std::string mmOrDeg(double v, int digits) {
   char text[32];
@@ -145,7 +155,7 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
   const Eigen::Isometry3d start = run.state().bodies.front().pose;
   BoundsWatch bounds(*scene.terrain, v);
   bounds.observe(run.state());
-  double max_tilt = 0.0, yaw_change = 0.0, last_yaw = yawRad(start);
+  double max_tilt = 0.0, yaw_change = 0.0, last_yaw = yawRad(vehicleAxes(start, v.bodies.front()));
 
   std::vector<double> effort_sum(v.bodies.size(), 0.0);
   std::vector<double> peak_slip(v.bodies.size(), 0.0);
@@ -169,10 +179,12 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
     bounds.observe(run.state());
     const Eigen::Isometry3d& pose = run.state().bodies.front().pose;
     for (std::size_t i = 0; i < v.bodies.size(); ++i) {
-      if (v.bodies[i].parent < 0) max_tilt = std::max(max_tilt, tiltRad(run.state().bodies[i].pose));
+      if (v.bodies[i].parent < 0) {
+        max_tilt = std::max(max_tilt, tiltRad(vehicleAxes(run.state().bodies[i].pose, v.bodies[i])));
+      }
     }
     // Yaw unwrapped step by step (a turn in place may pass +-pi).
-    const double yaw = yawRad(pose);
+    const double yaw = yawRad(vehicleAxes(pose, v.bodies.front()));
     yaw_change += std::remainder(yaw - last_yaw, 2.0 * std::numbers::pi);
     last_yaw = yaw;
     for (const int b : v.actuated()) effort_sum[b] += std::abs(run.drives()[b].last_effort);

@@ -54,6 +54,25 @@ const char* jointName(JointType type) {
   return "?";
 }
 
+void validateShape(const Shape& s, const std::string& where, const std::string& what) {
+  if (s.kind == Shape::Kind::kBox) {
+    for (int k = 0; k < 3; ++k) requireLength(s.box_size[k], where, what + " box[" + std::to_string(k) + "]");
+  }
+  if (s.kind == Shape::Kind::kCylinder || s.kind == Shape::Kind::kSphere)
+    requireLength(s.radius, where, what + " radius");
+  if (s.kind == Shape::Kind::kCylinder) {
+    requireLength(s.length, where, what + " length");
+    if (s.cylinder_axis < 0 || s.cylinder_axis > 2) fail(where, what + " axis", std::to_string(s.cylinder_axis));
+  }
+  if (s.kind == Shape::Kind::kHull) {
+    // Fewer than 4 points span no volume: no hull.
+    if (s.hull_vertices.size() < 4) fail(where, what, "a hull needs at least 4 vertices");
+    for (const Eigen::Vector3d& p : s.hull_vertices) {
+      if (!p.allFinite()) fail(where, what + " hull vertex", formatVector(p) + " is not finite");
+    }
+  }
+}
+
 void validateJoint(Joint& joint, const std::string& where) {
   if (!joint.anchor.allFinite()) fail(where, "joint anchor", formatVector(joint.anchor) + " is not finite");
   const bool has_coordinate = joint.type == JointType::kRevolute || joint.type == JointType::kPrismatic;
@@ -71,6 +90,14 @@ void validateJoint(Joint& joint, const std::string& where) {
     requirePositive(joint.actuator->max_effort, where, "actuator max_effort");
     requirePositive(joint.actuator->max_speed, where, "actuator max_speed");
     requirePositive(joint.actuator->position_gain, where, "actuator position_gain");
+  }
+  if (joint.mimic) {
+    if (!has_coordinate) fail(where, "mimic", std::string("a ") + jointName(joint.type) + " joint cannot mimic");
+    if (!std::isfinite(joint.mimic->multiplier) || !std::isfinite(joint.mimic->offset)) {
+      fail(where, "mimic",
+           "multiplier " + formatNumber(joint.mimic->multiplier) + " and offset " + formatNumber(joint.mimic->offset) +
+               " must be finite");
+    }
   }
 }
 
@@ -92,15 +119,13 @@ void validate(Body& body, int index, const std::string& where) {
     normaliseAxis(body.wheel->axle, where, "wheel axle");
   }
 
-  const Shape& s = body.shape;
-  if (s.kind == Shape::Kind::kBox) {
-    for (int k = 0; k < 3; ++k) requireLength(s.box_size[k], where, "shape box[" + std::to_string(k) + "]");
-  }
-  if (s.kind == Shape::Kind::kCylinder || s.kind == Shape::Kind::kSphere)
-    requireLength(s.radius, where, "shape radius");
-  if (s.kind == Shape::Kind::kCylinder) {
-    requireLength(s.length, where, "shape length");
-    if (s.cylinder_axis < 0 || s.cylinder_axis > 2) fail(where, "shape axis", std::to_string(s.cylinder_axis));
+  validateShape(body.shape, where, "shape");
+  for (std::size_t k = 0; k < body.compound.size(); ++k) {
+    const ShapePart& part = body.compound[k];
+    const std::string what = "compound[" + std::to_string(k) + "]";
+    if (part.shape.kind == Shape::Kind::kNone) fail(where, what, "a compound's part needs a shape");
+    validateShape(part.shape, where, what);
+    if (!part.pose_BS.matrix().allFinite()) fail(where, what + " pose", "is not finite");
   }
 
   const Eigen::Vector3d& i = body.inertia;
@@ -132,6 +157,7 @@ Eigen::Vector3d solidInertia(const Shape& shape, double mass) {
     case Shape::Kind::kSphere:
       return Eigen::Vector3d::Constant(0.4 * mass * shape.radius * shape.radius);
     case Shape::Kind::kNone:
+    case Shape::Kind::kHull:
       break;
   }
   throw InvalidInputError("wtc::vehicle::solidInertia: a body without a shape needs its inertia given");
@@ -174,6 +200,15 @@ void validate(VehicleDescription& vehicle, const std::string& where) {
     if (body.name.empty()) throw InvalidInputError(where + ": body " + std::to_string(i) + " has no name");
     if (vehicle.find(body.name) != static_cast<int>(i)) fail(here, "name", "is used twice");
     validate(body, static_cast<int>(i), here);
+    if (body.parent >= 0 && body.joint.mimic) {
+      const int m = body.joint.mimic->master;
+      const int n = static_cast<int>(vehicle.bodies.size());
+      if (m < 0 || m >= n || m == static_cast<int>(i) || vehicle.bodies[m].parent < 0 ||
+          (vehicle.bodies[m].joint.type != JointType::kRevolute &&
+           vehicle.bodies[m].joint.type != JointType::kPrismatic)) {
+        fail(here, "mimic", "its master must be another body's revolute or prismatic joint");
+      }
+    }
   }
   if (vehicle.hitch) {
     Hitch& h = *vehicle.hitch;

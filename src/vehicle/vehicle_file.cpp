@@ -5,8 +5,9 @@
 #include <numbers>
 
 #include "io/file_support.hpp"
-#include "wtc/base/error.hpp"
 #include "io/yaml_reader.hpp"
+#include "vehicle/vehicle_file_parts.hpp"
+#include "wtc/base/error.hpp"
 
 namespace wtc::vehicle {
 namespace {
@@ -62,6 +63,39 @@ Shape readShape(const YamlReader& in, const YAML::Node& node) {
   return s;
 }
 
+}  // namespace
+
+TyreParameters readTyre(const YamlReader& in, const YAML::Node& tyre_node, const TyreParameters& base) {
+  const YAML::Node* tyre = &tyre_node;
+  in.requireMap(*tyre, "wheel.tyre");
+  in.checkKeys(
+      *tyre, {"radial_stiffness", "radial_damping", "rolling_radius_ratio", "slip_speed_floor", "tangential_stiffness",
+              "standstill_damping_ratio", "standstill_speed", "stability_fraction", "spin_floor"});
+  TyreParameters t = base;
+  t.radial_stiffness = in.number(*tyre, "radial_stiffness", t.radial_stiffness);
+  t.radial_damping = in.number(*tyre, "radial_damping", t.radial_damping);
+  t.rolling_radius_ratio = in.number(*tyre, "rolling_radius_ratio", t.rolling_radius_ratio);
+  t.slip_speed_floor = in.number(*tyre, "slip_speed_floor", t.slip_speed_floor);
+  t.tangential_stiffness = in.number(*tyre, "tangential_stiffness", t.tangential_stiffness);
+  t.standstill_damping_ratio = in.number(*tyre, "standstill_damping_ratio", t.standstill_damping_ratio);
+  t.standstill_speed = in.number(*tyre, "standstill_speed", t.standstill_speed);
+  t.stability_fraction = in.number(*tyre, "stability_fraction", t.stability_fraction);
+  t.spin_floor = in.number(*tyre, "spin_floor", t.spin_floor);
+  try {
+    validate(t, "wheel");
+  } catch (const InvalidInputError& e) {
+    // At the parameter the message names ("wheel: tyre radial_stiffness = -1 ...").
+    const std::string message = e.what();
+    for (const auto& entry : *tyre) {
+      if (message.find("tyre " + entry.first.Scalar() + " = ") != std::string::npos) in.fail(entry.second, message);
+    }
+    in.fail(*tyre, message);
+  }
+  return t;
+}
+
+namespace {
+
 Wheel readWheel(const YamlReader& in, const YAML::Node& node) {
   in.requireMap(node, "wheel");
   in.checkKeys(node, {"radius", "width", "axle", "tyre"});
@@ -71,32 +105,7 @@ Wheel readWheel(const YamlReader& in, const YAML::Node& node) {
   w.geometry.free_radius = in.length(in.require(node, "radius"), "wheel.radius");
   w.geometry.tread_width = in.length(in.require(node, "width"), "wheel.width");
   if (const auto axle = YamlReader::get(node, "axle")) w.axle = in.vector<3>(*axle, "wheel.axle");
-  if (const auto tyre = YamlReader::get(node, "tyre")) {
-    in.requireMap(*tyre, "wheel.tyre");
-    in.checkKeys(*tyre, {"radial_stiffness", "radial_damping", "rolling_radius_ratio", "slip_speed_floor",
-                         "tangential_stiffness", "standstill_damping_ratio", "standstill_speed", "stability_fraction",
-                         "spin_floor"});
-    TyreParameters& t = w.tyre;
-    t.radial_stiffness = in.number(*tyre, "radial_stiffness", t.radial_stiffness);
-    t.radial_damping = in.number(*tyre, "radial_damping", t.radial_damping);
-    t.rolling_radius_ratio = in.number(*tyre, "rolling_radius_ratio", t.rolling_radius_ratio);
-    t.slip_speed_floor = in.number(*tyre, "slip_speed_floor", t.slip_speed_floor);
-    t.tangential_stiffness = in.number(*tyre, "tangential_stiffness", t.tangential_stiffness);
-    t.standstill_damping_ratio = in.number(*tyre, "standstill_damping_ratio", t.standstill_damping_ratio);
-    t.standstill_speed = in.number(*tyre, "standstill_speed", t.standstill_speed);
-    t.stability_fraction = in.number(*tyre, "stability_fraction", t.stability_fraction);
-    t.spin_floor = in.number(*tyre, "spin_floor", t.spin_floor);
-    try {
-      validate(t, "wheel");
-    } catch (const InvalidInputError& e) {
-      // At the parameter the message names ("wheel: tyre radial_stiffness = -1 ...").
-      const std::string message = e.what();
-      for (const auto& entry : *tyre) {
-        if (message.find("tyre " + entry.first.Scalar() + " = ") != std::string::npos) in.fail(entry.second, message);
-      }
-      in.fail(*tyre, message);
-    }
-  }
+  if (const auto tyre = YamlReader::get(node, "tyre")) w.tyre = readTyre(in, *tyre, w.tyre);
   return w;
 }
 
@@ -173,7 +182,8 @@ Body readBody(const YamlReader& in, const YAML::Node& node, bool is_wheel, const
       b.shape = Shape{.kind = Shape::Kind::kCylinder,
                       .radius = b.wheel->geometry.free_radius,
                       .length = b.wheel->geometry.tread_width,
-                      .cylinder_axis = 1};
+                      .cylinder_axis = 1,
+                      .hull_vertices = {}};
     }
   }
   if (const auto inertia = YamlReader::get(node, "inertia")) {
@@ -194,6 +204,25 @@ Body readBody(const YamlReader& in, const YAML::Node& node, bool is_wheel, const
   return b;
 }
 
+}  // namespace
+
+void readBodyInto(const YamlReader& in, const YAML::Node& bodies, std::size_t i, const YAML::Node& defaults,
+                  VehicleDescription& v) {
+  // A list item that is not a mapping ("- name" cut short) has no keys to read.
+  in.requireMap(bodies[i], ("bodies[" + std::to_string(i) + "]").c_str());
+  const YAML::Node name = bodies[i]["name"];
+  const YamlReader here = in.with("bodies[" + std::to_string(i) + "]" +
+                                  (name && name.IsScalar() ? " (" + name.as<std::string>() + ")" : "") + ": ");
+  Body body = readListedBody(here, bodies[i], defaults, v);
+  if (v.find(body.name) >= 0) here.fail(bodies[i]["name"], "name '" + body.name + "' is used twice");
+  try {
+    validate(body, static_cast<int>(v.bodies.size()), "body");
+  } catch (const InvalidInputError& e) {
+    here.fail(bodies[i], e.what());
+  }
+  v.bodies.push_back(std::move(body));
+}
+
 Hitch readHitch(const YamlReader& in, const YAML::Node& node, const VehicleDescription& v) {
   in.requireMap(node, "hitch");
   in.checkKeys(node, {"body_a", "point_a", "body_b", "point_b", "stiffness", "damping"});
@@ -210,10 +239,13 @@ Hitch readHitch(const YamlReader& in, const YAML::Node& node, const VehicleDescr
   return h;
 }
 
+namespace {
+
 VehicleDescription readVehicleFile(const std::filesystem::path& path) {
   const YAML::Node root = io::detail::loadYamlFile(path);
   const YamlReader in(path);
   in.requireMap(root, "vehicle file");
+  if (YamlReader::get(root, "urdf") || YamlReader::get(root, "parts")) return readUrdfVehicleFile(in, root);
   in.checkKeys(root, {"name", "description", "wheel_defaults", "bodies", "hitch"});
   VehicleDescription v;
   v.name = in.string(in.require(root, "name"), "name");
@@ -221,21 +253,7 @@ VehicleDescription readVehicleFile(const std::filesystem::path& path) {
   in.requireMap(defaults, "wheel_defaults");
   const YAML::Node bodies = in.require(root, "bodies");
   if (!bodies.IsSequence() || bodies.size() == 0) in.fail(bodies, "bodies: expected a non-empty list");
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    // A list item that is not a mapping ("- name" cut short) has no keys to read.
-    in.requireMap(bodies[i], ("bodies[" + std::to_string(i) + "]").c_str());
-    const YAML::Node name = bodies[i]["name"];
-    const YamlReader here = in.with("bodies[" + std::to_string(i) + "]" +
-                                    (name && name.IsScalar() ? " (" + name.as<std::string>() + ")" : "") + ": ");
-    Body body = readListedBody(here, bodies[i], defaults, v);
-    if (v.find(body.name) >= 0) here.fail(bodies[i]["name"], "name '" + body.name + "' is used twice");
-    try {
-      validate(body, static_cast<int>(v.bodies.size()), "body");
-    } catch (const InvalidInputError& e) {
-      here.fail(bodies[i], e.what());
-    }
-    v.bodies.push_back(std::move(body));
-  }
+  for (std::size_t i = 0; i < bodies.size(); ++i) readBodyInto(in, bodies, i, defaults, v);
   if (const auto hitch = YamlReader::get(root, "hitch")) {
     v.hitch = readHitch(in.with("hitch: "), *hitch, v);
   }

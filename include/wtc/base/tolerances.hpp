@@ -142,3 +142,22 @@ namespace wtc::tolerance {
 inline constexpr double kReplayGridSlackRelative = 1e-9;
 
 }  // namespace wtc::tolerance
+
+namespace wtc::tolerance {
+
+/// A URDF collision element counts as centred on its body's centre of mass
+/// when it is nearer than this (m), and as along the body's axes when its
+/// axes are within this of them (dimensionless, a cosine's distance from 1
+/// or a sine): then it is the body's plain shape, not a compound part. A
+/// roll of pi/2 written as 1.5707963267948966 leaves 6e-17 in the rotation;
+/// 1e-9 is far above that and far below any intended offset or tilt.
+inline constexpr double kUrdfShapeOffsetM = 1e-9;
+inline constexpr double kUrdfAxisAlignment = 1e-9;
+
+/// A wheel link's cylinder must lie along its joint's axis to within this
+/// sine (dimensionless), and be centred on the link's centre of mass to
+/// within this distance (m): WTC's wheel turns about its centre on its axle.
+inline constexpr double kUrdfWheelAxisSine = 1e-6;
+inline constexpr double kUrdfWheelCentreM = 1e-6;
+
+}  // namespace wtc::tolerance

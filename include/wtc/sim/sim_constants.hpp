@@ -38,4 +38,15 @@ inline constexpr long long kReplayTerrainMaxTriangles = 100'000;
 /// 6 m from the vehicle, shows around it.
 inline constexpr double kReplayTerrainMarginM = 10.0;
 
+/// A mimic joint (URDF's <mimic>) is held as a velocity constraint with its
+/// position error fed back at this fraction per step (dimensionless), as a
+/// joint's ERP: ODE's default ERP 0.2, Bullet's gear constraint the same.
+inline constexpr double kMimicErp = 0.2;
+/// A mimic's two axes count as parallel when |cos| is within this of 1
+/// (dimensionless): ODE cannot hold such a mimic between two bodies.
+inline constexpr double kMimicParallelCos = 1e-6;
+/// The largest impulse a mimic's constraint applies in one step (N m s):
+/// unlimited in effect, as the rods or gears of a differential are rigid.
+inline constexpr double kMimicMaxImpulse = 1e6;
+
 }  // namespace wtc::sim

@@ -12,8 +12,10 @@
 //
 // Bodies that are wheels carry a WheelGeometry and tyre parameters; their
 // contact with the ground is WTC's, and every other body collides with the
-// ground through its box, cylinder or sphere shape. Bodies of one vehicle do
-// not collide with each other.
+// ground through its box, cylinder or sphere shape, or through a compound of
+// such shapes and convex hulls, each at its own pose (a body read from URDF
+// with several collision elements, or one off its centre of mass). Bodies
+// of one vehicle do not collide with each other.
 //
 // The description is immutable during a run; per-run state (joint
 // positions, actuator counters) lives with the engine and the run loop.
@@ -28,14 +30,23 @@
 namespace wtc::vehicle {
 
 /// A body's collision and inertia shape, centred on its centre of mass and
-/// aligned with its frame.
+/// aligned with its frame (or, as a part of a compound, with the part's).
 struct Shape {
-  enum class Kind { kNone, kBox, kCylinder, kSphere };
+  enum class Kind { kNone, kBox, kCylinder, kSphere, kHull };
   Kind kind = Kind::kNone;
   Eigen::Vector3d box_size{Eigen::Vector3d::Zero()};  ///< Full edge lengths along x, y, z (m), box only.
   double radius = 0.0;                                ///< Cylinder or sphere radius (m).
   double length = 0.0;                                ///< Cylinder length along its axis (m).
   int cylinder_axis = 1;                              ///< Cylinder axis in the body frame: 0 x, 1 y, 2 z.
+  /// Hull only: the vertices of a convex hull (m, in the shape's frame);
+  /// no inertia is computed from a hull (a URDF gives its link's).
+  std::vector<Eigen::Vector3d> hull_vertices;
+};
+
+/// One part of a compound collision shape, at its pose in the body's frame.
+struct ShapePart {
+  Shape shape;                                               ///< kBox, kCylinder, kSphere or kHull.
+  Eigen::Isometry3d pose_BS{Eigen::Isometry3d::Identity()};  ///< The part's frame S in the body frame B.
 };
 
 /// The principal moments of a solid of mass `mass` (kg) and shape `shape`
@@ -68,6 +79,15 @@ struct ActuatorLimits {
   double position_gain = 10.0;
 };
 
+/// A joint whose coordinate follows another's (URDF's <mimic>):
+/// q = multiplier q_master + offset. Engines hold it as a constraint or
+/// refuse the vehicle by the joint's name (docs/urdf.md).
+struct Mimic {
+  int master = -1;          ///< Index of the body whose joint is the master.
+  double multiplier = 1.0;  ///< (dimensionless; m/rad etc. across types)
+  double offset = 0.0;      ///< (rad or m)
+};
+
 /// The joint that holds a body to its parent.
 struct Joint {
   JointType type = JointType::kFixed;
@@ -75,6 +95,8 @@ struct Joint {
   Eigen::Vector3d axis{Eigen::Vector3d::UnitY()};   ///< Rotation or sliding axis in V (unit after validation).
   std::optional<JointLimits> limits;                ///< Revolute and prismatic only.
   std::optional<ActuatorLimits> actuator;           ///< A drive on the joint (revolute and prismatic only).
+  std::optional<Mimic> mimic;                       ///< Follows another joint (revolute and prismatic only).
+  std::string name;                                 ///< The joint's name in its source (URDF), for messages.
 };
 
 struct Body {
@@ -83,9 +105,12 @@ struct Body {
   Eigen::Vector3d inertia{Eigen::Vector3d::Zero()};       ///< Principal moments about the centre of mass (kg m^2).
   Eigen::Isometry3d pose{Eigen::Isometry3d::Identity()};  ///< Centre-of-mass frame in V at the reference (m).
   Shape shape;                                            ///< Collision with the ground (kNone: none).
-  std::optional<Wheel> wheel;                             ///< Present for a wheel.
-  int parent = -1;                                        ///< Index of the parent body; -1 for a root.
-  Joint joint;                                            ///< To the parent (ignored for a root).
+  /// When not empty, the body's collision shape instead of `shape`: the
+  /// parts together (a URDF link's several collision elements).
+  std::vector<ShapePart> compound;
+  std::optional<Wheel> wheel;  ///< Present for a wheel.
+  int parent = -1;             ///< Index of the parent body; -1 for a root.
+  Joint joint;                 ///< To the parent (ignored for a root).
 };
 
 /// The elastic hitch of the towed system (vehicles spec, section 2):

@@ -21,6 +21,10 @@
 //       joint: {anchor: [0.43, 0.28, 0.19]}    # merged over wheel_defaults.joint
 //   hitch: {body_a: tug, point_a: [..], body_b: towed, point_b: [..], stiffness: [Cx, Cy, Cz], damping: [..]}
 //
+// A vehicle file with `urdf:` (or `parts:`) takes its bodies from URDF files
+// instead and adds wheels, drives and a hitch (docs/urdf.md,
+// wtc/vehicle/urdf_file.hpp).
+//
 // Joints: {type: revolute|prismatic|ball|fixed, anchor (default: the body's
 // translation), axis, limits: [lower, upper] (rad or m) or limits_deg
 // (revolute), drive: {max_effort, max_speed, position_gain}}.

@@ -7,9 +7,11 @@
 #include <vector>
 
 #include <BulletCollision/CollisionShapes/btCompoundShape.h>
+#include <BulletCollision/CollisionShapes/btConvexHullShape.h>
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
+#include <BulletDynamics/Featherstone/btMultiBodyGearConstraint.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 #include <btBulletDynamicsCommon.h>
 
@@ -45,6 +47,29 @@ std::unique_ptr<btCollisionShape> cylinder(int axis, double r, double l) {
   }
 }
 
+// One shape (box, cylinder, sphere, convex hull) centred and aligned in its
+// own frame, or null for kNone; `keep` owns it.
+template <class Keep>
+btCollisionShape* partShape(const Shape& s, Keep& keep) {
+  switch (s.kind) {
+    case Shape::Kind::kBox:
+      return keep(std::make_unique<btBoxShape>(toBt(Eigen::Vector3d(0.5 * s.box_size))));
+    case Shape::Kind::kCylinder:
+      return keep(cylinder(s.cylinder_axis, s.radius, s.length));
+    case Shape::Kind::kSphere:
+      return keep(std::make_unique<btSphereShape>(s.radius));
+    case Shape::Kind::kHull: {
+      auto hull = std::make_unique<btConvexHullShape>();
+      for (const Eigen::Vector3d& p : s.hull_vertices) hull->addPoint(toBt(p), false);
+      hull->recalcLocalAabb();
+      return keep(std::move(hull));
+    }
+    case Shape::Kind::kNone:
+      break;
+  }
+  return nullptr;
+}
+
 // The body's collision shape, or null; `owned` keeps every shape made. A
 // wheel's is its tread (a cylinder, or a sphere: sim::treadIsSphere); with
 // WTC's wheels, WTC's algorithm replaces it against the terrain.
@@ -65,18 +90,16 @@ btCollisionShape* makeShape(const Body& body, const sim::EngineSettings& setting
     compound->addChildShape(btTransform(toBtRotation(turn)), keep(cylinder(1, g.free_radius, g.tread_width)));
     return keep(std::move(compound));
   }
-  const Shape& s = body.shape;
-  switch (s.kind) {
-    case Shape::Kind::kBox:
-      return keep(std::make_unique<btBoxShape>(toBt(Eigen::Vector3d(0.5 * s.box_size))));
-    case Shape::Kind::kCylinder:
-      return keep(cylinder(s.cylinder_axis, s.radius, s.length));
-    case Shape::Kind::kSphere:
-      return keep(std::make_unique<btSphereShape>(s.radius));
-    case Shape::Kind::kNone:
-      break;
+  if (!body.compound.empty()) {
+    // Several parts, each at its pose in the body (centre-of-mass) frame.
+    auto compound = std::make_unique<btCompoundShape>();
+    for (const vehicle::ShapePart& part : body.compound) {
+      btTransform pose(toBtRotation(Eigen::Matrix3d(part.pose_BS.linear())), toBt(part.pose_BS.translation()));
+      compound->addChildShape(pose, partShape(part.shape, keep));
+    }
+    return keep(std::move(compound));
   }
-  return nullptr;
+  return partShape(body.shape, keep);
 }
 
 class SimEngine final : public sim::EngineBase {
@@ -262,6 +285,35 @@ class SimEngine final : public sim::EngineBase {
       mb->forwardKinematics(rotations, offsets);
     }
     for (std::size_t i = 0; i < bodies.size(); ++i) addCollider(static_cast<int>(i), placement);
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      if (bodies[i].parent >= 0 && bodies[i].joint.mimic) addMimic(static_cast<int>(i));
+    }
+  }
+
+  // A mimic joint (URDF's <mimic>: q = k q_master + offset) as a gear
+  // constraint between two joint coordinates of one multibody. Its row is
+  // qdot_A + ratio qdot_B = 0 with the position error q_A + ratio q_B -
+  // target fed back (btMultiBodyGearConstraint.cpp): A the mimic joint's
+  // link, B the master's, ratio = -k, target = offset. It reads B's
+  // coordinate through A's multibody, so both must be one tree.
+  void addMimic(int i) {
+    const Body& b = vehicle().bodies[i];
+    const vehicle::Mimic& mimic = *b.joint.mimic;
+    const Ref& a = refs_[i];
+    const Ref& m = refs_[mimic.master];
+    if (a.multibody != m.multibody) {
+      throw InvalidInputError("wtc::bullet sim engine: mimic joint '" + b.joint.name + "' (body '" + b.name +
+                              "') and its master are in two trees: a gear constraint ties one multibody's joints");
+    }
+    auto gear = std::make_unique<btMultiBodyGearConstraint>(a.multibody, a.link, m.multibody, m.link,
+                                                            btVector3(0, 0, 0), btVector3(0, 0, 0),
+                                                            btMatrix3x3::getIdentity(), btMatrix3x3::getIdentity());
+    gear->setGearRatio(-mimic.multiplier);
+    gear->setRelativePositionTarget(mimic.offset);
+    gear->setErp(sim::kMimicErp);
+    gear->setMaxAppliedImpulse(sim::kMimicMaxImpulse);
+    world_.addMultiBodyConstraint(gear.get());
+    constraints_.push_back(std::move(gear));
   }
 
   void setupLink(int i) {

@@ -9,6 +9,7 @@
 #include <ode/ode.h>
 #include <ode/threading_impl.h>
 
+#include "body_geoms.hpp"
 #include "native_wheels.hpp"
 #include "sim/engine_base.hpp"
 #include "src/conversions.hpp"
@@ -49,7 +50,8 @@ void alignCylinder(dGeomID geom, const Eigen::Vector3d& axis) {
 // The body's collision geom in `space`, attached to `b`, or null. A wheel's
 // is its tread (a cylinder, or a sphere: sim::treadIsSphere); with WTC's
 // wheels, WTC replaces it against the terrain.
-dGeomID makeGeom(const Body& body, const sim::EngineSettings& settings, dSpaceID space, dBodyID b) {
+dGeomID makeGeom(const Body& body, const sim::EngineSettings& settings, dSpaceID space, dBodyID b,
+                 std::deque<ConvexGeomData>& convex) {
   dGeomID geom = nullptr;
   if (body.wheel) {
     const WheelGeometry& g = body.wheel->geometry;
@@ -59,23 +61,31 @@ dGeomID makeGeom(const Body& body, const sim::EngineSettings& settings, dSpaceID
     if (dGeomGetClass(geom) == dCylinderClass) alignCylinder(geom, body.wheel->axle);
     return geom;
   }
-  const Shape& s = body.shape;
-  switch (s.kind) {
-    case Shape::Kind::kBox:
-      geom = dCreateBox(space, s.box_size.x(), s.box_size.y(), s.box_size.z());
-      break;
-    case Shape::Kind::kCylinder:
-      geom = dCreateCylinder(space, s.radius, s.length);
-      break;
-    case Shape::Kind::kSphere:
-      geom = dCreateSphere(space, s.radius);
-      break;
-    case Shape::Kind::kNone:
-      return nullptr;
+  return addBodyGeoms(body, space, b, convex);
+}
+
+// Refuses, before any ODE object exists, the mimic joints ODE cannot hold
+// (SimEngine::Mimic says why): a prismatic one, one whose master hangs from
+// another body, one about an axis parallel to its master's.
+void checkMimics(const vehicle::VehicleDescription& v) {
+  for (const Body& b : v.bodies) {
+    if (b.parent < 0 || !b.joint.mimic) continue;
+    const vehicle::Mimic& mimic = *b.joint.mimic;
+    const Body& master = v.bodies[mimic.master];
+    const std::string name = "wtc::ode sim engine: mimic joint '" + b.joint.name + "' (body '" + b.name + "')";
+    if (b.joint.type != JointType::kRevolute || master.joint.type != JointType::kRevolute) {
+      throw InvalidInputError(name + ": ODE holds a mimic between two revolute joints only");
+    }
+    if (b.parent != master.parent) {
+      throw InvalidInputError(name + " and its master '" + master.joint.name +
+                              "' hang from different bodies: ODE holds a mimic between two joints of one parent only");
+    }
+    if (std::abs(b.joint.axis.dot(master.joint.axis)) > 1.0 - sim::kMimicParallelCos) {
+      throw InvalidInputError(name + " and its master '" + master.joint.name +
+                              "' turn about parallel axes: that ties three bodies, which ODE's two-body joints "
+                              "cannot hold (Bullet can: a gear constraint on one multibody)");
+    }
   }
-  dGeomSetBody(geom, b);
-  if (s.kind == Shape::Kind::kCylinder) alignCylinder(geom, Eigen::Vector3d::Unit(s.cylinder_axis));
-  return geom;
 }
 
 class SimEngine final : public sim::EngineBase {
@@ -86,6 +96,7 @@ class SimEngine final : public sim::EngineBase {
         terrain_(terrain),
         stepper_(stepper),
         refs_(v.bodies.size()) {
+    checkMimics(v);
     {
       const std::lock_guard<std::mutex> lock(odeGlobalsLock());
       dInitODE2(0);  // counted: matched by dCloseODE in the destructor
@@ -105,6 +116,9 @@ class SimEngine final : public sim::EngineBase {
     contacts_ = dJointGroupCreate(0);
     plugin_ = std::make_unique<Plugin>(world_, space_, terrain, settings.mode);
     for (std::size_t i = 0; i < v.bodies.size(); ++i) buildBody(static_cast<int>(i), placement);
+    for (std::size_t i = 0; i < v.bodies.size(); ++i) {
+      if (v.bodies[i].parent >= 0 && v.bodies[i].joint.mimic) buildMimic(static_cast<int>(i));
+    }
     // The wheels' strategy, chosen once: ODE's own, or WTC's.
     std::vector<WheelBody> wheels;
     for (const int body : v.wheels()) wheels.push_back({refs_[body].body, refs_[body].geom});
@@ -155,6 +169,7 @@ class SimEngine final : public sim::EngineBase {
     for (Ref& r : refs_) {
       if (r.wheel_drive) driveWheel(r, h);
     }
+    for (const Mimic& m : mimics_) holdMimic(m, h);
     if (stepper_ == Stepper::kQuick) {
       const std::lock_guard<std::mutex> lock(odeGlobalsLock());
       dRandSetSeed(quickstep_seed_);
@@ -285,7 +300,7 @@ class SimEngine final : public sim::EngineBase {
     dMatrix3 rotation;
     toOde(pose.linear(), rotation);
     dBodySetRotation(r.body, rotation);
-    r.geom = makeGeom(b, settings(), space_, r.body);
+    r.geom = makeGeom(b, settings(), space_, r.body, convex_);
     if (b.parent >= 0) buildJoint(i, placement);
   }
 
@@ -386,6 +401,57 @@ class SimEngine final : public sim::EngineBase {
     }
   }
 
+  // A mimic joint (URDF's <mimic>: q = k q_master + offset) as a one-axis
+  // angular motor between the two joints' child bodies
+  // (docs/rocker-bogie-rover.md, "The differential"). With a and b the two
+  // hinges' world axes, c = a . b, and both hinges on one parent body P,
+  // (w_1 - w_P) = qdot_1 a and (w_2 - w_P) = qdot_2 b, so along
+  //   n = ((k c - 1) a + (c - k) b) / (c^2 - 1)
+  // (w_1 - w_2) . n = qdot_1 - k qdot_2: P's rotation cancels and the
+  // motor, holding that rate at 0, holds the mimic (n = a + k b for
+  // perpendicular axes). n is fixed in neither body: set every step. Two
+  // parallel axes (c^2 = 1) leave P in the rate (three bodies), which a
+  // joint between two bodies cannot hold: refused, as are mimics across
+  // parents or of a prismatic joint.
+  struct Mimic {
+    dJointID motor = nullptr;
+    int body = -1;    // the mimic joint's child
+    int master = -1;  // the master joint's child
+    double multiplier = 1.0;
+    double offset = 0.0;
+  };
+
+  void buildMimic(int i) {
+    const vehicle::Mimic& mimic = *vehicle().bodies[i].joint.mimic;
+    Mimic m{.motor = dJointCreateAMotor(world_, nullptr),
+            .body = i,
+            .master = mimic.master,
+            .multiplier = mimic.multiplier,
+            .offset = mimic.offset};
+    dJointAttach(m.motor, refs_[i].body, refs_[mimic.master].body);
+    dJointSetAMotorMode(m.motor, dAMotorUser);
+    dJointSetAMotorNumAxes(m.motor, 1);
+    dJointSetAMotorParam(m.motor, dParamFMax, dInfinity);
+    mimics_.push_back(m);
+    holdMimic(m, settings().step_seconds);
+  }
+
+  // The motor's axis for this step, and its rate: 0 plus the position
+  // error fed back, -erp (q - k q_master - offset) / h (a motor corrects
+  // no drift of its own).
+  void holdMimic(const Mimic& m, double h) {
+    dVector3 a_ode, b_ode;
+    const dJointID joint = refs_[m.body].joint, master = refs_[m.master].joint;
+    dJointGetHingeAxis(joint, a_ode);
+    dJointGetHingeAxis(master, b_ode);
+    const Eigen::Vector3d a = toEigen(a_ode), b = toEigen(b_ode);
+    const double c = a.dot(b), k = m.multiplier;
+    const Eigen::Vector3d n = ((k * c - 1.0) * a + (c - k) * b) / (c * c - 1.0);
+    dJointSetAMotorAxis(m.motor, 0, 0, n.x(), n.y(), n.z());
+    const double error = dJointGetHingeAngle(joint) - k * dJointGetHingeAngle(master) - m.offset;
+    dJointSetAMotorParam(m.motor, dParamVel, -sim::kMimicErp * error / h);
+  }
+
   // Whether any terrain piece's box overlaps the geom's (or the space's) box.
   bool nearTerrain(dGeomID geom) {
     dReal box[6];
@@ -406,6 +472,8 @@ class SimEngine final : public sim::EngineBase {
   dJointGroupID contacts_ = nullptr;
   std::unique_ptr<Plugin> plugin_;
   std::vector<Ref> refs_;
+  std::vector<Mimic> mimics_;
+  std::deque<ConvexGeomData> convex_;  // what the bodies' convex geoms point into
   std::unique_ptr<OdeWheels> wheels_;  // WtcWheels or NativeWheels
   MessageLog messages_;                // ODE's messages in this engine's steps
   struct MessageSteps {

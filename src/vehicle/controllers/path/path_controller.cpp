@@ -46,6 +46,14 @@ PathController::PathController(const VehicleDescription& v, const PathController
   if (r.wheel->geometry.free_radius != radius_) {
     throw InvalidInputError(where + ": the drive wheels have different radii");
   }
+  // The controller steers by the body's axes (x forward, y left): a body
+  // turned to its principal axes (a URDF tensor with products of inertia)
+  // has other axes.
+  if (!v.bodies[body_].pose.linear().isIdentity(0.0)) {
+    throw InvalidInputError(where + ": body '" + p.body +
+                            "' is turned from the vehicle's axes (its principal axes of inertia): the path controller "
+                            "steers by the body's x forward and y left; name a body whose inertia is diagonal in them");
+  }
   // Both wheels' centres in the body's frame; the axle is the line between.
   const Eigen::Isometry3d to_body = v.bodies[body_].pose.inverse();
   const Eigen::Vector3d pl = to_body * l.pose.translation(), pr = to_body * r.pose.translation();

@@ -1,0 +1,90 @@
+// A body's shape as ODE geoms (body_geoms.hpp).
+#include "body_geoms.hpp"
+
+#include "src/conversions.hpp"
+#include "wtc/geometry/convex_polyhedron.hpp"
+
+namespace wtc::ode {
+namespace {
+
+using vehicle::Shape;
+
+// A convex hull as dCreateConvex wants it: points and planes relative to
+// the hull's centroid (ODE wants its convex geom's origin inside, every
+// plane offset >= 0), as the plugin's terrain pieces are made
+// (plugins/ode/src/terrain_geoms.cpp). Returns the geom; `centre` is the
+// centroid in the shape's frame, where the geom's origin must sit.
+dGeomID makeConvex(const Shape& s, dSpaceID space, std::deque<ConvexGeomData>& store, Eigen::Vector3d& centre) {
+  const ConvexPolyhedron hull = ConvexPolyhedron::fromPoints(s.hull_vertices);
+  centre = hull.centroid();
+  ConvexGeomData& data = store.emplace_back();
+  for (int v = 0; v < hull.vertexCount(); ++v) {
+    const Eigen::Vector3d p = hull.vertex(v) - centre;
+    data.numbers.insert(data.numbers.end(), {p.x(), p.y(), p.z()});
+  }
+  for (int f = 0; f < hull.faceCount(); ++f) {
+    const Eigen::Vector3d n = hull.faceNormal(f);
+    data.numbers.insert(data.numbers.end(), {n.x(), n.y(), n.z(), hull.faceOffset(f) - n.dot(centre)});
+    const auto face = hull.faceVertices(f);
+    data.polygons.push_back(static_cast<unsigned int>(face.size()));
+    data.polygons.insert(data.polygons.end(), face.begin(), face.end());
+  }
+  const dReal* points = data.numbers.data();
+  return dCreateConvex(space, points + 3 * hull.vertexCount(), static_cast<unsigned int>(hull.faceCount()), points,
+                       static_cast<unsigned int>(hull.vertexCount()), data.polygons.data());
+}
+
+// One part's geom on `b`, at pose_BS from the body's centre of mass.
+dGeomID addPart(const Shape& s, const Eigen::Isometry3d& pose_BS, dSpaceID space, dBodyID b,
+                std::deque<ConvexGeomData>& store) {
+  dGeomID geom = nullptr;
+  Eigen::Isometry3d offset = pose_BS;
+  switch (s.kind) {
+    case Shape::Kind::kBox:
+      geom = dCreateBox(space, s.box_size.x(), s.box_size.y(), s.box_size.z());
+      break;
+    case Shape::Kind::kCylinder:
+      // ODE's cylinder lies along its z: turned onto the shape's axis.
+      geom = dCreateCylinder(space, s.radius, s.length);
+      offset.linear() = pose_BS.linear() * Eigen::Matrix3d(Eigen::Quaterniond::FromTwoVectors(
+                                               Eigen::Vector3d::UnitZ(), Eigen::Vector3d::Unit(s.cylinder_axis)));
+      break;
+    case Shape::Kind::kSphere:
+      geom = dCreateSphere(space, s.radius);
+      break;
+    case Shape::Kind::kHull: {
+      Eigen::Vector3d centre;
+      geom = makeConvex(s, space, store, centre);
+      offset.translation() = pose_BS * centre;
+      break;
+    }
+    case Shape::Kind::kNone:
+      return nullptr;
+  }
+  dGeomSetBody(geom, b);
+  if (!offset.translation().isZero(0.0)) {
+    dGeomSetOffsetPosition(geom, offset.translation().x(), offset.translation().y(), offset.translation().z());
+  }
+  // A cylinder's turn is always set (a YAML body's cylinder was turned so
+  // even along z: its runs stay as they were).
+  if (s.kind == Shape::Kind::kCylinder || !offset.linear().isIdentity(0.0)) {
+    dMatrix3 m;
+    toOde(Eigen::Matrix3d(offset.linear()), m);
+    dGeomSetOffsetRotation(geom, m);
+  }
+  return geom;
+}
+
+}  // namespace
+
+dGeomID addBodyGeoms(const vehicle::Body& body, dSpaceID space, dBodyID b, std::deque<ConvexGeomData>& convex) {
+  if (body.compound.empty()) return addPart(body.shape, Eigen::Isometry3d::Identity(), space, b, convex);
+  dGeomID first = nullptr;
+  for (const vehicle::ShapePart& part : body.compound) {
+    const dGeomID geom = addPart(part.shape, part.pose_BS, space, b, convex);
+    if (first == nullptr) first = geom;
+  }
+  return first;
+}
+
+}  // namespace wtc::ode
