@@ -13,6 +13,7 @@
 
 #include "app_files.hpp"
 #include "runner/run_outputs.hpp"
+#include "vehicle/controllers/controller_types.hpp"
 #include "wtc-sim/run_directory.hpp"
 #include "wtc/base/error.hpp"
 #include "wtc/sim/engine_table.hpp"
@@ -25,6 +26,16 @@ namespace fs = std::filesystem;
 
 std::atomic<bool> g_stop{false};
 extern "C" void onSignal(int) { g_stop = true; }
+
+// `controller: {type: python, ...}` (the Python package's, docs/python.md):
+// wtc-sim has no Python to run it in, and says where to run it instead.
+wtc::vehicle::ControllerFactory refusePythonController(const wtc::io::detail::YamlReader& in, const YAML::Node& node,
+                                                       const wtc::vehicle::VehicleDescription& /*vehicle*/) {
+  in.fail(node,
+          "controller: type python is a controller written in Python, which wtc-sim cannot run; run the "
+          "scene from Python: python3 -m wtc run " +
+              in.path().string() + " (docs/python.md)");
+}
 
 }  // namespace
 
@@ -56,6 +67,7 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  wtc::vehicle::addControllerType({"python", &refusePythonController});
   std::vector<wtc::sim::Override> overrides;
   wtc::apps::SkipDone skip = wtc::apps::SkipDone::kRun;
   wtc::sim::Scene scene;

@@ -30,6 +30,12 @@ struct TerrainHandle {
   std::shared_ptr<const Terrain> terrain;
 };
 
+/// Body `b` of `vehicle` as a dict: name, index, parent, mass (kg), pose
+/// (4 x 4, the centre-of-mass frame in the vehicle frame V at the
+/// reference configuration, m), joint (type, axis), and for a wheel its
+/// radius r_f and tread width w (m) and axle (body frame).
+py::dict bodyDescription(const vehicle::VehicleDescription& vehicle, int b);
+
 void bindErrors(py::module_& m);
 void bindScenes(py::module_& m);
 void bindRuns(py::module_& m);

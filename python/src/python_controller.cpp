@@ -190,6 +190,35 @@ vehicle::ControllerFactory readPythonController(const io::detail::YamlReader& in
 
 }  // namespace
 
+py::dict bodyDescription(const vehicle::VehicleDescription& vehicle, int b) {
+  if (b < 0 || b >= static_cast<int>(vehicle.bodies.size())) {
+    throw InvalidInputError("body " + std::to_string(b) + ": vehicle '" + vehicle.name + "' has " +
+                            std::to_string(vehicle.bodies.size()) + " bodies");
+  }
+  const vehicle::Body& body = vehicle.bodies[static_cast<std::size_t>(b)];
+  py::array_t<double> pose({py::ssize_t{4}, py::ssize_t{4}});
+  auto m = pose.mutable_unchecked<2>();
+  for (int i = 0; i < 4; ++i) {
+    for (int j = 0; j < 4; ++j) m(i, j) = body.pose.matrix()(i, j);
+  }
+  static const char* const kJointNames[] = {"revolute", "prismatic", "ball", "fixed"};
+  py::dict d;
+  d["name"] = body.name;
+  d["index"] = b;
+  d["parent"] = body.parent;
+  d["mass"] = body.mass;
+  d["pose"] = pose;
+  d["joint"] = kJointNames[static_cast<int>(body.joint.type)];
+  d["joint_axis"] = std::array<double, 3>{body.joint.axis.x(), body.joint.axis.y(), body.joint.axis.z()};
+  d["driven"] = body.joint.actuator.has_value();
+  if (body.wheel) {
+    d["radius"] = body.wheel->geometry.free_radius;
+    d["width"] = body.wheel->geometry.tread_width;
+    d["axle"] = std::array<double, 3>{body.wheel->axle.x(), body.wheel->axle.y(), body.wheel->axle.z()};
+  }
+  return d;
+}
+
 SharedObject share(py::object object) {
   return SharedObject(new py::object(std::move(object)), [](py::object* o) {
     py::gil_scoped_acquire gil;
@@ -233,6 +262,15 @@ void bindControllers(py::module_& m) {
             return b;
           },
           py::arg("name"), "A body's index by its name.")
+      .def(
+          "description",
+          [](const Sensors& s, const py::object& body) {
+            const int b = py::isinstance<py::str>(body) ? s.vehicle->find(body.cast<std::string>()) : body.cast<int>();
+            if (b < 0)
+              throw InvalidInputError("wtc.Sensors.description: no body " + py::repr(body).cast<std::string>());
+            return bodyDescription(*s.vehicle, b);
+          },
+          py::arg("body"), "The body's description (name or index): wtc.Scene.body's dict.")
       .def_property_readonly(
           "position",
           [](const Sensors& s) {

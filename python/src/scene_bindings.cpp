@@ -57,6 +57,18 @@ void bindScenes(py::module_& m) {
       .def_property_readonly("wheels", [](const LoadedScene& s) { return bodyNames(s, s.scene.vehicle.wheels()); })
       .def_property_readonly("drives", [](const LoadedScene& s) { return bodyNames(s, s.scene.vehicle.actuated()); })
       .def_property_readonly("terrain", [](const LoadedScene& s) { return TerrainHandle{s.scene.terrain}; })
+      .def(
+          "body",
+          [](const LoadedScene& s, const std::string& name) {
+            const int b = s.scene.vehicle.find(name);
+            if (b < 0)
+              throw InvalidInputError("wtc.Scene.body: vehicle '" + s.scene.vehicle.name + "' has no body '" + name +
+                                      "'");
+            return bodyDescription(s.scene.vehicle, b);
+          },
+          py::arg("name"),
+          "The body's description: name, index, parent, mass (kg), pose (4 x 4 in the vehicle frame, m), joint, "
+          "and a wheel's radius, width (m) and axle.")
       .def("__repr__", [](const LoadedScene& s) {
         return "<wtc.Scene " + s.scene.name + ": " + s.scene.engine.engine + ", " +
                std::string(sim::modeName(s.scene.engine)) + ", dt " + formatNumber(s.scene.engine.step_seconds) +
