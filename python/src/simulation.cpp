@@ -10,8 +10,10 @@
 
 #include <Eigen/Geometry>
 #include <atomic>
+#include <chrono>
 
 #include "bindings.hpp"
+#include "python_controller.hpp"
 #include "signal_watch.hpp"
 #include "wtc/base/error.hpp"
 #include "wtc/sim/engine_table.hpp"
@@ -57,6 +59,22 @@ class Simulation {
     }
     watch_.raiseIfSignalled();
     return done;
+  }
+
+  // The benchmark's measure (bench/python_controller_bench.py): seconds
+  // per call of a fresh controller's update on this step's sensors, `n`
+  // calls, the GIL released between them as in a run. `controller`: a
+  // Python one, or None for the scene's own.
+  double controllerCallSeconds(const py::object& controller, int n) const {
+    std::unique_ptr<vehicle::Controller> c =
+        controller.is_none() ? scene().make_controller() : makePythonController(share(controller), scene().vehicle);
+    if (!c) throw InvalidInputError("wtc.Simulation: the scene has no controller to time");
+    std::vector<vehicle::DriveCommand> commands(run_.commands().begin(), run_.commands().end());
+    py::gil_scoped_release nogil;
+    c->update(run_.state(), commands);  // a first call (a controller may read its geometry once)
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int i = 0; i < n; ++i) c->update(run_.state(), commands);
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / std::max(n, 1);
   }
 
   const sim::Scene& scene() const { return loaded_->scene; }
@@ -234,6 +252,8 @@ void bindSimulation(py::module_& m) {
             return effort;
           },
           "Each drive's effort in the last step (N m or N), in the order of Scene.drives.")
+      .def("_controller_call_seconds", &Simulation::controllerCallSeconds, py::arg("controller"), py::arg("n"),
+           "Seconds per call of a fresh controller's update on this step's sensors (None: the scene's).")
       .def("series", &Simulation::series, "The recorded series, arrays shaped (rows, ...).")
       .def("summary", &Simulation::summary, "The run's figures so far.");
 }
