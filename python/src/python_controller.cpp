@@ -10,7 +10,9 @@ namespace wtc::python {
 namespace {
 
 // What update's `sensors` argument is: the state of this step, valid for
-// the call only (arrays are built when read).
+// the call only (arrays are built when read). Owned by its Python object
+// (a controller may keep it); the call's end clears its pointers, and a
+// read after it is refused.
 struct Sensors {
   const vehicle::VehicleState* state = nullptr;
   const vehicle::VehicleDescription* vehicle = nullptr;
@@ -20,6 +22,11 @@ struct Sensors {
 const vehicle::VehicleState& stateOf(const Sensors& s) {
   if (s.state == nullptr) throw InvalidInputError("wtc.Sensors: read outside the update call it was given to");
   return *s.state;
+}
+
+const vehicle::VehicleDescription& vehicleOf(const Sensors& s) {
+  stateOf(s);
+  return *s.vehicle;
 }
 
 template <class Get>
@@ -46,12 +53,18 @@ class PythonController final : public vehicle::Controller {
 
   void update(const vehicle::VehicleState& state, std::span<vehicle::DriveCommand> commands) override {
     py::gil_scoped_acquire gil;
-    Sensors sensors{&state, &vehicle_, commands};
-    py::object wrapped = py::cast(&sensors, py::return_value_policy::reference);
-    py::object result = (*update_)(state.time, wrapped);
+    py::object wrapped = py::cast(Sensors{&state, &vehicle_, commands});
+    Sensors& sensors = wrapped.cast<Sensors&>();
+    py::object result;
+    try {
+      result = (*update_)(state.time, wrapped);
+    } catch (...) {
+      sensors = Sensors{};
+      throw;
+    }
     // The object may outlive the call (kept by the controller): it must not
-    // reach this state after it.
-    wrapped.cast<Sensors&>().state = nullptr;
+    // reach this step's state after it.
+    sensors = Sensors{};
     if (!result.is_none()) apply(result, commands);
   }
 
@@ -251,13 +264,13 @@ void bindControllers(py::module_& m) {
       .def_property_readonly("bodies",
                              [](const Sensors& s) {
                                std::vector<std::string> names;
-                               for (const auto& b : s.vehicle->bodies) names.push_back(b.name);
+                               for (const auto& b : vehicleOf(s).bodies) names.push_back(b.name);
                                return names;
                              })
       .def(
           "index",
           [](const Sensors& s, const std::string& name) {
-            const int b = s.vehicle->find(name);
+            const int b = vehicleOf(s).find(name);
             if (b < 0) throw InvalidInputError("wtc.Sensors.index: no body '" + name + "'");
             return b;
           },
@@ -265,10 +278,11 @@ void bindControllers(py::module_& m) {
       .def(
           "description",
           [](const Sensors& s, const py::object& body) {
-            const int b = py::isinstance<py::str>(body) ? s.vehicle->find(body.cast<std::string>()) : body.cast<int>();
+            const int b =
+                py::isinstance<py::str>(body) ? vehicleOf(s).find(body.cast<std::string>()) : body.cast<int>();
             if (b < 0)
               throw InvalidInputError("wtc.Sensors.description: no body " + py::repr(body).cast<std::string>());
-            return bodyDescription(*s.vehicle, b);
+            return bodyDescription(vehicleOf(s), b);
           },
           py::arg("body"), "The body's description (name or index): wtc.Scene.body's dict.")
       .def_property_readonly(
@@ -369,6 +383,7 @@ void bindControllers(py::module_& m) {
       .def_property_readonly(
           "command_values",
           [](const Sensors& s) {
+            stateOf(s);
             py::array_t<double> a(static_cast<py::ssize_t>(s.commands.size()));
             for (std::size_t i = 0; i < s.commands.size(); ++i)
               a.mutable_at(static_cast<py::ssize_t>(i)) = s.commands[i].value;

@@ -147,3 +147,23 @@ def test_a_python_controller_is_called_every_step_with_the_sensors(source_dir):
     drives = scene.drives
     commands = sim.series()["drive_command"][-1]
     assert commands[drives.index("tug_left_wheel")] == 2.0 and commands[drives.index("tug_right_wheel")] == 2.0
+
+
+class Keeping:
+    """Keeps the sensors it was given (a mistake: they are the step's)."""
+
+    def __init__(self):
+        self.kept = None
+
+    def update(self, t, sensors):
+        self.kept = sensors
+
+
+def test_sensors_kept_past_their_call_are_refused(source_dir):
+    scene = wtc.load_scene(source_dir / "scenes/towed_path.yaml", duration=0.1)
+    controller = Keeping()
+    wtc.Simulation(scene, controller=controller).step(2)
+    for read in [lambda s: s.position, lambda s: s.bodies, lambda s: s.description("tug"), lambda s: s.command_values,
+                 lambda s: s.contact_points(1)]:
+        with pytest.raises(wtc.InvalidInputError, match="read outside the update call it was given to"):
+            read(controller.kept)
