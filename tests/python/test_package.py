@@ -1,4 +1,8 @@
 """The package: imported from the build tree, scenes loaded with overrides, C++ errors as wtc.Error."""
+import os
+import subprocess
+import sys
+
 import pytest
 
 import wtc
@@ -57,3 +61,22 @@ def test_a_missing_file_is_an_invalid_input_error(tmp_path):
         wtc.load_scene(tmp_path / "nothing.yaml")
     with pytest.raises(wtc.InvalidInputError, match="nothing.yaml"):
         wtc.load_terrain(tmp_path / "nothing.yaml")
+
+
+def test_cmake_install_puts_an_importable_package_under_the_prefix(tmp_path, source_dir):
+    prefix = tmp_path / "prefix"
+    subprocess.run([os.environ["WTC_CMAKE"], "--install", os.environ["WTC_BUILD_DIR"], "--prefix", str(prefix),
+                    "--component", "python"], check=True, capture_output=True)
+    site = prefix / os.environ["WTC_PYTHON_INSTALL_DIR"]
+    assert (site / "wtc/__init__.py").exists()
+    script = ("import sys, wtc; print(wtc.__file__); "
+              "s = wtc.load_scene(sys.argv[1], duration=0.01); "
+              "print(wtc.run(s, out=sys.argv[2], progress=False, plots=False)['steps'])")
+    env = dict(os.environ, PYTHONPATH=str(site))
+    done = subprocess.run([sys.executable, "-c", script, str(source_dir / "scenes/robot_straight.yaml"),
+                           str(tmp_path / "run")], capture_output=True, text=True, env=env, cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    lines = done.stdout.splitlines()
+    assert lines[0].startswith(str(site)), lines
+    assert lines[1] == "25"
+    assert (tmp_path / "run/bodies.csv").exists()
