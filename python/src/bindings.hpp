@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include "wtc/sim/run_summary.hpp"
 #include "wtc/sim/scene.hpp"
 #include "wtc/sim/scene_file.hpp"
 #include "wtc/terrain/terrain.hpp"
@@ -35,6 +36,9 @@ struct TerrainHandle {
 /// reference configuration, m), joint (type, axis), and for a wheel its
 /// radius r_f and tread width w (m) and axle (body frame).
 py::dict bodyDescription(const vehicle::VehicleDescription& vehicle, int b);
+
+/// A run's summary as a dict (summary.json's figures; docs/python.md).
+py::dict summaryDict(const sim::RunSummary& summary);
 
 void bindErrors(py::module_& m);
 void bindScenes(py::module_& m);

@@ -35,6 +35,8 @@ std::string moduleIdentity() {
   return identity;
 }
 
+}  // namespace
+
 py::dict summaryDict(const sim::RunSummary& s) {
   py::dict d;
   d["scene"] = s.scene;
@@ -75,6 +77,8 @@ py::dict summaryDict(const sim::RunSummary& s) {
   d["program"] = s.program;
   return d;
 }
+
+namespace {
 
 // Prints wtc-sim's progress bar on stderr.
 void progressBar(double f) {

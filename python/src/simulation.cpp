@@ -18,6 +18,7 @@
 #include "wtc/base/error.hpp"
 #include "wtc/sim/engine_table.hpp"
 #include "wtc/sim/run.hpp"
+#include "wtc/sim/scene_run.hpp"
 
 namespace wtc::python {
 namespace {
@@ -26,13 +27,11 @@ namespace {
 constexpr int kBodyColumns = 13;  // x y z (m), qw qx qy qz, vx vy vz (m/s), wx wy wz (rad/s)
 constexpr int kWheelColumns = 4;  // contacts, Fx Fy Fz (N)
 
-class Simulation {
+class Simulation final : private sim::RunObserver {
  public:
   explicit Simulation(std::shared_ptr<LoadedScene> loaded, int record_every)
       : loaded_(std::move(loaded)),
         engine_(sim::makeEngine(scene().engine, *scene().terrain, scene().vehicle, scene().placement)),
-        controller_(scene().make_controller()),
-        run_(*engine_, controller_.get(), scene().vehicle_effects),
         wheels_(scene().vehicle.wheels()),
         drives_(scene().vehicle.actuated()),
         every_(record_every),
@@ -40,22 +39,21 @@ class Simulation {
     if (record_every < 1) {
       throw InvalidInputError("wtc.Simulation: record_every = " + std::to_string(record_every) + " must be >= 1");
     }
-    record();
+    sim::RunOptions options;
+    options.stop = &stop_;
+    options.observer = this;
+    scene_run_ = std::make_unique<sim::SceneRun>(scene(), *engine_, options);
   }
 
-  // Steps n times (GIL released), recording every every_-th step. Returns
-  // the steps taken (fewer after a non-finite state).
+  // Steps n times (GIL released) as runScene does, recording every
+  // every_-th step; stops at the scene's duration or a non-finite or
+  // diverged state. Returns the steps taken.
   std::uint64_t step(std::uint64_t n) {
-    std::uint64_t done = 0;
     stop_ = false;
+    std::uint64_t done = 0;
     {
       py::gil_scoped_release nogil;
-      for (; done < n && !stop_; ++done) {
-        if (run_.nonFinite()) break;
-        run_.step();
-        if (run_.steps() % static_cast<std::uint64_t>(every_) == 0) record();
-        watch_.observe(run_);
-      }
+      done = scene_run_->advance(n);
     }
     watch_.raiseIfSignalled();
     return done;
@@ -69,16 +67,18 @@ class Simulation {
     std::unique_ptr<vehicle::Controller> c =
         controller.is_none() ? scene().make_controller() : makePythonController(share(controller), scene().vehicle);
     if (!c) throw InvalidInputError("wtc.Simulation: the scene has no controller to time");
-    std::vector<vehicle::DriveCommand> commands(run_.commands().begin(), run_.commands().end());
+    const sim::Run& r = run();
+    std::vector<vehicle::DriveCommand> commands(r.commands().begin(), r.commands().end());
     py::gil_scoped_release nogil;
-    c->update(run_.state(), commands);  // a first call (a controller may read its geometry once)
+    c->update(r.state(), commands);  // a first call (a controller may read its geometry once)
     const auto t0 = std::chrono::steady_clock::now();
-    for (int i = 0; i < n; ++i) c->update(run_.state(), commands);
+    for (int i = 0; i < n; ++i) c->update(r.state(), commands);
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / std::max(n, 1);
   }
 
   const sim::Scene& scene() const { return loaded_->scene; }
-  const sim::Run& run() const { return run_; }
+  const sim::Run& run() const { return scene_run_->run(); }
+  bool ended() const { return scene_run_->ended(); }
 
   py::dict series() const {
     const auto rows = static_cast<py::ssize_t>(time_.size());
@@ -102,35 +102,20 @@ class Simulation {
     return d;
   }
 
-  // The run's figures so far (sim::Run's), without the scene's criteria:
-  // those are judged by wtc.run at a run's end.
-  py::dict summary() const {
-    py::dict d;
-    d["steps"] = run_.steps();
-    d["sim_time"] = run_.time();
-    d["nan"] = run_.nonFinite();
-    d["diverged"] = run_.diverged();
-    d["max_penetration"] = run_.maxDeflection();
-    d["max_joint_gap"] = run_.maxJointError().distance;
-    d["max_joint_angle"] = run_.maxJointError().angle;
-    d["energy_growth_max"] = run_.energyBalance().maxGrowth();
-    py::list drives;
-    for (const int b : drives_) {
-      const vehicle::DriveReport& r = run_.drives()[b];
-      py::dict one;
-      one["name"] = scene().vehicle.bodies[b].name;
-      one["steps"] = r.steps;
-      one["saturated_steps"] = r.saturated_steps;
-      one["peak_effort"] = r.peak_effort;
-      drives.append(one);
-    }
-    d["drives"] = drives;
-    return d;
-  }
+  // The run's summary as wtc.run gives it (without the outputs); before
+  // the scene's end, that of a run interrupted there.
+  py::dict summary() const { return summaryDict(scene_run_->summary()); }
 
  private:
-  void record() {
-    const vehicle::VehicleState& s = run_.state();
+  // After each step (and at the start): a row every every_-th step, and a
+  // look at Python's signals.
+  void observe(const sim::Run& run) override {
+    if (run.steps() % static_cast<std::uint64_t>(every_) == 0) record(run);
+    watch_.observe(run);
+  }
+
+  void record(const sim::Run& run) {
+    const vehicle::VehicleState& s = run.state();
     time_.push_back(s.time);
     for (std::size_t b = 0; b < s.bodies.size(); ++b) {
       const vehicle::BodyKinematics& k = s.bodies[b];
@@ -143,23 +128,22 @@ class Simulation {
       joint_rate_.push_back(s.joint_rate[b]);
     }
     for (const int w : wheels_) {
-      const WheelForces& f = run_.wheelForces(w);
+      const WheelForces& f = run.wheelForces(w);
       wheel_.insert(wheel_.end(), {static_cast<double>(f.contacts.size()), f.force.x(), f.force.y(), f.force.z()});
     }
     for (const int b : drives_) {
-      drive_effort_.push_back(run_.drives()[b].last_effort);
-      drive_command_.push_back(run_.commands()[b].value);
+      drive_effort_.push_back(run.drives()[b].last_effort);
+      drive_command_.push_back(run.commands()[b].value);
     }
   }
 
   std::shared_ptr<LoadedScene> loaded_;  // holds the terrain the engine uses
   std::unique_ptr<sim::Engine> engine_;
-  std::unique_ptr<vehicle::Controller> controller_;
-  sim::Run run_;
   std::vector<int> wheels_, drives_;
   int every_;
   std::atomic<bool> stop_{false};
   SignalWatch watch_;
+  std::unique_ptr<sim::SceneRun> scene_run_;  // last: made in the constructor's body, with this as its observer
   std::vector<double> time_, body_, joint_position_, joint_rate_, wheel_, drive_effort_, drive_command_;
 };
 
@@ -207,6 +191,8 @@ void bindSimulation(py::module_& m) {
       .def_property_readonly(
           "time", [](const Simulation& s) { return s.run().time(); }, "simulated time (s)")
       .def_property_readonly("steps", [](const Simulation& s) { return s.run().steps(); })
+      .def_property_readonly("ended", &Simulation::ended,
+                             "True at the scene's duration or after a non-finite or diverged state.")
       .def_property_readonly("bodies",
                              [](const Simulation& s) {
                                std::vector<std::string> names;
@@ -255,7 +241,8 @@ void bindSimulation(py::module_& m) {
       .def("_controller_call_seconds", &Simulation::controllerCallSeconds, py::arg("controller"), py::arg("n"),
            "Seconds per call of a fresh controller's update on this step's sensors (None: the scene's).")
       .def("series", &Simulation::series, "The recorded series, arrays shaped (rows, ...).")
-      .def("summary", &Simulation::summary, "The run's figures so far.");
+      .def("summary", &Simulation::summary,
+           "The run's summary as wtc.run returns it (without out); before the scene's end, an interrupted run's.");
 }
 
 }  // namespace wtc::python

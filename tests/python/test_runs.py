@@ -87,7 +87,7 @@ def read_csv(path):
 
 def test_a_simulation_steps_the_run_that_wtc_run_records(source_dir, tmp_path):
     scene = wtc.load_scene(source_dir / "scenes/robot_ledge.yaml", engine="ode", duration=0.5)
-    wtc.run(scene, out=tmp_path / "run", progress=False, plots=False, replay=False)
+    whole = wtc.run(scene, out=tmp_path / "run", progress=False, plots=False, replay=False)
     header, rows = read_csv(tmp_path / "run/bodies.csv")
     every = round(1.0 / (100.0 * scene.dt))  # the scene's 100 rows per second
     sim = wtc.Simulation(scene, record_every=every)
@@ -108,7 +108,23 @@ def test_a_simulation_steps_the_run_that_wtc_run_records(source_dir, tmp_path):
     assert wheels["force"].shape == (len(scene.wheels), 3)
     assert wheels["contacts"].sum() >= len(scene.wheels)  # standing on the ground
     assert sim.drive_efforts().shape == (len(scene.drives),)
-    assert sim.summary()["steps"] == 1250
+    # At the scene's end the run is over, and its summary is wtc.run's.
+    assert sim.ended and sim.step(10) == 0
+    summary = sim.summary()
+    for key in CLOCK_FIELDS | {"out", "replay", "figures"}:
+        summary.pop(key, None), whole.pop(key, None)
+    assert summary == whole
+
+
+def test_a_simulation_summary_before_the_end_is_an_interrupted_runs(source_dir):
+    scene = wtc.load_scene(source_dir / "scenes/robot_straight.yaml", duration=1.0)
+    sim = wtc.Simulation(scene)
+    sim.step(100)
+    summary = sim.summary()
+    assert not sim.ended
+    assert summary["steps"] == 100 and summary["interrupted"] and not summary["success"]
+    assert summary["sim_time"] == pytest.approx(0.04)
+    assert any(f.startswith("interrupted") for f in summary["failed"])
 
 
 def test_the_engine_steps_without_the_gil(source_dir, tmp_path):
