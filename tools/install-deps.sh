@@ -13,6 +13,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-matplotlib                    # wtc-sim's figures
   python3-yaml                                  # tools/validation_table.py, tools/mobility_bounds.py
+  python3-dev pybind11-dev python3-numpy python3-pytest  # the Python package wtc (python/) and its tests
   libjs-three chromium-headless-shell           # the replay page (three.js) and its test (headless Chromium)
   clang-14 libclang-rt-14-dev                   # libFuzzer, ASan, UBSan for fuzz/ (ctest -L fuzz)
   libtbb-dev parallel                           # the accuracy study: runs on all cores (TBB), or as a job list (GNU parallel)

@@ -13,11 +13,11 @@
 #include <optional>
 
 #include "app_files.hpp"
+#include "runner/run_outputs.hpp"
+#include "vehicle/controllers/controller_types.hpp"
 #include "wtc-sim/run_directory.hpp"
 #include "wtc/base/error.hpp"
 #include "wtc/sim/engine_table.hpp"
-#include "wtc/sim/replay.hpp"
-#include "wtc/sim/run_summary_file.hpp"
 #include "wtc/sim/scene_file.hpp"
 #include "wtc/sim/scene_run.hpp"
 
@@ -28,47 +28,14 @@ namespace fs = std::filesystem;
 std::atomic<bool> g_stop{false};
 extern "C" void onSignal(int) { g_stop = true; }
 
-// A directory for this run that no earlier run used: `requested` if given
-// (it must not exist or be empty; with --skip-done, kRedo: the files of
-// the unfinished run of the same settings it holds are removed, and
-// nothing else: run_directory.hpp), else runs/<scene>_<engine>_<mode>[_N].
-// Its marker is written before anything else.
-fs::path outputDirectory(const std::string& requested, wtc::apps::SkipDone skip, const std::string& key,
-                         const wtc::sim::RunSummary& names, const std::string& scene_file) {
-  fs::path dir;
-  if (!requested.empty()) {
-    dir = requested;
-    wtc::apps::requireDirectoryOrNothing(requested);
-    if (skip == wtc::apps::SkipDone::kRedo) {
-      wtc::apps::removeRunFiles(dir);
-    } else if (fs::exists(dir) && !fs::is_empty(dir)) {
-      throw wtc::InvalidInputError("--out " + requested +
-                                   ": the directory exists and is not empty (an earlier run's?)");
-    }
-    fs::create_directories(dir);
-  } else {
-    const std::string base = "runs/" + names.scene + "_" + names.engine + "_" + names.mode;
-    dir = base;
-    for (int n = 2; fs::exists(dir); ++n) dir = base + "_" + std::to_string(n);
-    fs::create_directories(dir);
-  }
-  wtc::apps::writeMarker(dir, key, scene_file, names.scene, names.engine, names.mode);
-  return dir;
-}
-
-// The replay page beside the run's data, with three.js copied in so the
-// directory can be moved. Returns what went wrong, or "".
-std::string writeReplayPage(const fs::path& dir) {
-  const fs::path three = WTC_THREE_JS_DIR;
-  const fs::path files[][2] = {{wtc::apps::ownFile("wtc-sim", "replay.html"), dir / "replay.html"},
-                               {three / "build/three.min.js", dir / "three.min.js"},
-                               {three / "examples/js/controls/OrbitControls.js", dir / "OrbitControls.js"}};
-  for (const auto& [from, to] : files) {
-    std::error_code error;
-    fs::copy_file(from, to, fs::copy_options::overwrite_existing, error);
-    if (error) return "cannot copy " + from.string() + " (is libjs-three installed?): " + error.message();
-  }
-  return {};
+// `controller: {type: python, ...}` (the Python package's, docs/python.md):
+// wtc-sim has no Python to run it in, and says where to run it instead.
+wtc::vehicle::ControllerFactory refusePythonController(const wtc::io::detail::YamlReader& in, const YAML::Node& node,
+                                                       const wtc::vehicle::VehicleDescription& /*vehicle*/) {
+  in.fail(node,
+          "controller: type python is a controller written in Python, which wtc-sim cannot run; run the "
+          "scene from Python: python3 -m wtc run " +
+              in.path().string() + " (docs/python.md)");
 }
 
 }  // namespace
@@ -113,6 +80,7 @@ int main(int argc, char** argv) {
     setenv("WTC_PACKAGE_PATH", path.c_str(), 1);
   }
 
+  wtc::vehicle::addControllerType({"python", &refusePythonController});
   std::vector<wtc::sim::Override> overrides;
   wtc::apps::SkipDone skip = wtc::apps::SkipDone::kRun;
   wtc::sim::Scene scene;
@@ -137,16 +105,18 @@ int main(int argc, char** argv) {
 
   try {
     const auto engine_ptr = wtc::sim::makeEngine(scene.engine, *scene.terrain, scene.vehicle, scene.placement);
-    wtc::sim::RunSummary names;
-    names.scene = scene.name;
-    names.engine = scene.engine.engine;
-    names.mode = std::string(wtc::sim::modeName(scene.engine));
-    const fs::path dir = outputDirectory(out, skip, key, names, fs::absolute(scene_file).string());
+    wtc::apps::OutputRequest request;
+    request.out = out;
+    request.skip = skip;
+    request.settings_key = key;
+    request.scene_file = fs::absolute(scene_file);
+    request.replay = !no_replay;
+    request.plots = !no_plots;
+    request.program = wtc::apps::programIdentity();
 
     std::signal(SIGINT, onSignal);
     std::signal(SIGTERM, onSignal);
     wtc::sim::RunOptions options;
-    options.out_dir = dir;
     options.stop = &g_stop;
     const bool bar = !quiet && isatty(STDERR_FILENO);
     if (bar) {
@@ -155,46 +125,18 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "\r[%-40s] %3d%%", std::string(filled, '#').c_str(), static_cast<int>(f * 100.0));
         std::fflush(stderr);
       };
+      request.on_run_end = [] { std::fprintf(stderr, "\n"); };
     }
-    // A summary from the start: a run killed before its end (SIGKILL, a
-    // power cut) leaves one that says so; the end replaces it whole.
-    wtc::sim::writeRunStarted(dir / "summary.json", scene);
     // Said on stderr when it happens, even with --quiet (a warning, not progress).
     options.warn = [bar](const std::string& warning) {
       std::fprintf(stderr, "%swtc-sim: warning: %s\n", bar ? "\n" : "", warning.c_str());
     };
-    std::optional<wtc::sim::Replay> replay;
-    std::string replay_said = "replay.html";
-    if (no_replay || !scene.output.replay) {
-      replay_said = no_replay ? "no replay (--no-replay)" : "no replay (output.replay: false)";
-    } else {
-      replay.emplace(scene, scene.output.replay_fps);
-      options.observer = &*replay;
-    }
-    wtc::sim::RunSummary summary = wtc::sim::runScene(scene, *engine_ptr, options);
-    summary.program = wtc::apps::programIdentity();
-    if (bar) std::fprintf(stderr, "\n");
-    wtc::sim::writeRunSummary(dir / "summary.json", summary);
-    if (replay) {
-      replay->write(dir / "replay_data.js", summary);
-      if (const std::string problem = writeReplayPage(dir); !problem.empty()) {
-        std::cerr << "wtc-sim: warning: replay page not written: " << problem << '\n';
-      }
-    }
-    for (const std::string& w : summary.warnings) std::cerr << "wtc-sim: warning: " << w << '\n';
-
-    std::string figures = "skipped (--no-plots)";
-    if (!no_plots && scene.output.plots) {
-      // The drives on sliding joints: their travel (m) and force (N) get axes of their own.
-      std::string prismatic;
-      for (const int b : scene.vehicle.actuated()) {
-        if (scene.vehicle.bodies[b].joint.type != wtc::vehicle::JointType::kPrismatic) continue;
-        prismatic += (prismatic.empty() ? "" : ",") + scene.vehicle.bodies[b].name;
-      }
-      figures = wtc::apps::runPlotScript(wtc::apps::ownFile("wtc-sim", "plot_run.py"), dir, {"--prismatic", prismatic})
-                    ? "drawn"
-                    : "not drawn (python3 with matplotlib is needed; see above)";
-    }
+    request.warn = [](const std::string& warning) { std::cerr << "wtc-sim: warning: " << warning << '\n'; };
+    const wtc::apps::RunOutcome outcome = wtc::apps::runWithOutputs(scene, *engine_ptr, request, options);
+    const wtc::sim::RunSummary& summary = outcome.summary;
+    const fs::path& dir = outcome.dir;
+    const std::string& replay_said = outcome.replay_said;
+    const std::string& figures = outcome.figures;
     if (!quiet) {
       char headline[64] = "success";
       if (summary.interrupted) {

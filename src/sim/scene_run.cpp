@@ -134,7 +134,129 @@ std::string describe(const FailedCriterion& f) {
   return text;
 }
 
-RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& options) {
+// Everything runScene kept in its locals, kept between stretches of steps.
+struct SceneRun::State {
+  State(const Scene& scene, Engine& engine, const RunOptions& options)
+      : scene(scene),
+        engine(engine),
+        options(options),
+        controller(scene.make_controller()),
+        run(engine, controller.get(), scene.vehicle_effects),
+        spring_watch(scene.vehicle, options.warn),
+        bounds(*scene.terrain, scene.vehicle) {}
+
+  const Scene& scene;
+  Engine& engine;
+  RunOptions options;
+  std::unique_ptr<vehicle::Controller> controller;
+  Run run;
+  UnstableSpringWatch spring_watch;
+  std::optional<Recorder> recorder;
+  std::uint64_t steps = 0, every = 1, progress_every = 1;
+  Eigen::Isometry3d start{Eigen::Isometry3d::Identity()};
+  BoundsWatch bounds;
+  double max_tilt = 0.0, yaw_change = 0.0, last_yaw = 0.0;
+  std::vector<double> effort_sum, peak_slip;
+  std::vector<int> wheels;
+  // Contact breaks: steps at which a wheel that touched the ground at the
+  // step before touches nothing. A wheel rolling on flat ground has none; a
+  // chattering contact (a rigid one bouncing on and off) has one in every
+  // few steps, so their rate measures jitter.
+  std::vector<char> touching;
+  std::uint64_t contact_breaks = 0;
+  double hitch_peak = 0.0, hitch_sum_x = 0.0;
+  double wall_seconds = 0.0, wtc0 = 0.0;
+};
+
+SceneRun::SceneRun(const Scene& scene, Engine& engine, const RunOptions& options)
+    : s_(std::make_unique<State>(scene, engine, options)) {
+  State& x = *s_;
+  const Run& run = x.run;
+  const vehicle::VehicleDescription& v = scene.vehicle;
+  const double dt = scene.engine.step_seconds;
+  if (options.out_dir) x.recorder.emplace(*options.out_dir, run);
+  x.steps = stepCount(scene.duration_seconds, dt);  // throws for a step count not whole
+  x.every = std::max<std::uint64_t>(1, std::llround(1.0 / (scene.output.rate_hz * dt)));
+  x.progress_every = std::max<std::uint64_t>(1, x.steps / 100);
+  x.start = run.state().bodies.front().pose;
+  x.bounds.observe(run.state());
+  x.last_yaw = yawRad(vehicleAxes(x.start, v.bodies.front()));
+  x.effort_sum.assign(v.bodies.size(), 0.0);
+  x.peak_slip.assign(v.bodies.size(), 0.0);
+  x.wheels = v.wheels();
+  x.touching.assign(v.bodies.size(), 0);
+  const auto t0 = std::chrono::steady_clock::now();
+  x.wtc0 = engine.contactSeconds();
+  if (x.recorder) x.recorder->record(run);
+  if (options.observer != nullptr) options.observer->observe(run);
+  x.wall_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+SceneRun::~SceneRun() = default;
+
+const Run& SceneRun::run() const { return s_->run; }
+
+bool SceneRun::ended() const { return s_->run.steps() >= s_->steps || s_->run.nonFinite() || s_->run.diverged(); }
+
+std::uint64_t SceneRun::advance(std::uint64_t n) {
+  State& x = *s_;
+  Run& run = x.run;
+  const RunOptions& options = x.options;
+  const vehicle::VehicleDescription& v = x.scene.vehicle;
+  const std::uint64_t steps = x.steps, first = run.steps();
+  const auto t0 = std::chrono::steady_clock::now();
+  while (run.steps() < steps && run.steps() - first < n) {
+    if (options.stop != nullptr && options.stop->load()) break;
+    run.step();
+    x.spring_watch.look(x.engine, run);
+    if (run.nonFinite() || run.diverged()) break;
+    x.bounds.observe(run.state());
+    const Eigen::Isometry3d& pose = run.state().bodies.front().pose;
+    for (std::size_t i = 0; i < v.bodies.size(); ++i) {
+      if (v.bodies[i].parent < 0) {
+        x.max_tilt = std::max(x.max_tilt, tiltRad(vehicleAxes(run.state().bodies[i].pose, v.bodies[i])));
+      }
+    }
+    // Yaw unwrapped step by step (a turn in place may pass +-pi).
+    const double yaw = yawRad(vehicleAxes(pose, v.bodies.front()));
+    x.yaw_change += std::remainder(yaw - x.last_yaw, 2.0 * std::numbers::pi);
+    x.last_yaw = yaw;
+    for (const int b : v.actuated()) x.effort_sum[b] += std::abs(run.drives()[b].last_effort);
+    for (const int w : x.wheels) {
+      const bool touches = run.state().wheels[w].contacts > 0;
+      x.contact_breaks += x.touching[w] && !touches ? 1 : 0;
+      x.touching[w] = touches ? 1 : 0;
+      if (run.state().bodies[w].linear_velocity.norm() < kSlipSpeedFloorMps) continue;
+      for (const ContactForce& c : run.wheelForces(w).contacts) x.peak_slip[w] = std::max(x.peak_slip[w], c.slip_ratio);
+    }
+    if (run.hitch()) {
+      // P on the towed body in the tug's horizontal axes: x > 0 when pulling.
+      x.hitch_peak = std::max(x.hitch_peak, run.hitch()->force_local.head<2>().norm());
+      x.hitch_sum_x += run.hitch()->force_local.x();
+    }
+    if (x.recorder && run.steps() % x.every == 0) x.recorder->record(run);
+    if (options.observer != nullptr) options.observer->observe(run);
+    if (options.progress && run.steps() % x.progress_every == 0) {
+      options.progress(static_cast<double>(run.steps()) / static_cast<double>(steps));
+    }
+  }
+  x.wall_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return run.steps() - first;
+}
+
+RunSummary SceneRun::summary() const {
+  const State& x = *s_;
+  const Scene& scene = x.scene;
+  const Engine& engine = x.engine;
+  const Run& run = x.run;
+  const vehicle::VehicleDescription& v = scene.vehicle;
+  const std::uint64_t steps = x.steps;
+  const std::unique_ptr<vehicle::Controller>& controller = x.controller;
+  const UnstableSpringWatch& spring_watch = x.spring_watch;
+  const BoundsWatch& bounds = x.bounds;
+  const std::vector<int>& wheels = x.wheels;
+  const double max_tilt = x.max_tilt, yaw_change = x.yaw_change;
+  const Eigen::Isometry3d& start = x.start;
   RunSummary summary;
   summary.scene = scene.name;
   summary.engine = scene.engine.engine;
@@ -142,72 +264,8 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
   summary.dt = scene.engine.step_seconds;
   summary.parameters = scene.parameters;
   summary.warnings = scene.warnings;  // reading the scene's (a mesh's skipped triangles) first
-
-  const std::unique_ptr<vehicle::Controller> controller = scene.make_controller();
-  Run run(engine, controller.get(), scene.vehicle_effects);
-  UnstableSpringWatch spring_watch(scene.vehicle, options.warn);
-  std::optional<Recorder> recorder;
-  if (options.out_dir) recorder.emplace(*options.out_dir, run);
-  const vehicle::VehicleDescription& v = scene.vehicle;
-  const std::uint64_t steps = stepCount(scene.duration_seconds, summary.dt);  // throws for a step count not whole
-  const auto every = std::max<std::uint64_t>(1, std::llround(1.0 / (scene.output.rate_hz * summary.dt)));
-  const std::uint64_t progress_every = std::max<std::uint64_t>(1, steps / 100);
-  const Eigen::Isometry3d start = run.state().bodies.front().pose;
-  BoundsWatch bounds(*scene.terrain, v);
-  bounds.observe(run.state());
-  double max_tilt = 0.0, yaw_change = 0.0, last_yaw = yawRad(vehicleAxes(start, v.bodies.front()));
-
-  std::vector<double> effort_sum(v.bodies.size(), 0.0);
-  std::vector<double> peak_slip(v.bodies.size(), 0.0);
-  const std::vector<int> wheels = v.wheels();
-  // Contact breaks: steps at which a wheel that touched the ground at the
-  // step before touches nothing. A wheel rolling on flat ground has none; a
-  // chattering contact (a rigid one bouncing on and off) has one in every
-  // few steps, so their rate measures jitter.
-  std::vector<char> touching(v.bodies.size(), 0);
-  std::uint64_t contact_breaks = 0;
-  double hitch_peak = 0.0, hitch_sum_x = 0.0;
-  const auto t0 = std::chrono::steady_clock::now();
-  const double wtc0 = engine.contactSeconds();
-  if (recorder) recorder->record(run);
-  if (options.observer != nullptr) options.observer->observe(run);
-  while (run.steps() < steps) {
-    if (options.stop != nullptr && options.stop->load()) break;
-    run.step();
-    spring_watch.look(engine, run);
-    if (run.nonFinite() || run.diverged()) break;
-    bounds.observe(run.state());
-    const Eigen::Isometry3d& pose = run.state().bodies.front().pose;
-    for (std::size_t i = 0; i < v.bodies.size(); ++i) {
-      if (v.bodies[i].parent < 0) {
-        max_tilt = std::max(max_tilt, tiltRad(vehicleAxes(run.state().bodies[i].pose, v.bodies[i])));
-      }
-    }
-    // Yaw unwrapped step by step (a turn in place may pass +-pi).
-    const double yaw = yawRad(vehicleAxes(pose, v.bodies.front()));
-    yaw_change += std::remainder(yaw - last_yaw, 2.0 * std::numbers::pi);
-    last_yaw = yaw;
-    for (const int b : v.actuated()) effort_sum[b] += std::abs(run.drives()[b].last_effort);
-    for (const int w : wheels) {
-      const bool touches = run.state().wheels[w].contacts > 0;
-      contact_breaks += touching[w] && !touches ? 1 : 0;
-      touching[w] = touches ? 1 : 0;
-      if (run.state().bodies[w].linear_velocity.norm() < kSlipSpeedFloorMps) continue;
-      for (const ContactForce& c : run.wheelForces(w).contacts) peak_slip[w] = std::max(peak_slip[w], c.slip_ratio);
-    }
-    if (run.hitch()) {
-      // P on the towed body in the tug's horizontal axes: x > 0 when pulling.
-      hitch_peak = std::max(hitch_peak, run.hitch()->force_local.head<2>().norm());
-      hitch_sum_x += run.hitch()->force_local.x();
-    }
-    if (recorder && run.steps() % every == 0) recorder->record(run);
-    if (options.observer != nullptr) options.observer->observe(run);
-    if (options.progress && run.steps() % progress_every == 0) {
-      options.progress(static_cast<double>(run.steps()) / static_cast<double>(steps));
-    }
-  }
-  summary.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  summary.wtc_time = engine.contactSeconds() - wtc0;
+  summary.wall_time = x.wall_seconds;
+  summary.wtc_time = engine.contactSeconds() - x.wtc0;
 
   summary.steps = run.steps();
   summary.sim_time = run.time();
@@ -224,7 +282,7 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
                               .steps = d.steps,
                               .saturated_steps = d.saturated_steps,
                               .peak_effort = d.peak_effort,
-                              .mean_effort = d.steps > 0 ? effort_sum[b] / static_cast<double>(d.steps) : 0.0});
+                              .mean_effort = d.steps > 0 ? x.effort_sum[b] / static_cast<double>(d.steps) : 0.0});
     summary.saturation_steps += d.saturated_steps;
     if (d.saturated_steps > 0) {
       summary.warnings.push_back("drive " + v.bodies[b].name + " saturated in " + std::to_string(d.saturated_steps) +
@@ -271,11 +329,11 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
   summary.fields["yaw_change_deg"] = yaw_change * kDegPerRad;
   summary.fields["max_tilt_deg"] = max_tilt * kDegPerRad;
   summary.fields["contact_breaks_per_s"] =
-      summary.sim_time > 0.0 ? static_cast<double>(contact_breaks) / summary.sim_time : 0.0;
-  for (const int w : wheels) summary.wheel_peak_slip[v.bodies[w].name] = peak_slip[w];
+      summary.sim_time > 0.0 ? static_cast<double>(x.contact_breaks) / summary.sim_time : 0.0;
+  for (const int w : wheels) summary.wheel_peak_slip[v.bodies[w].name] = x.peak_slip[w];
   if (v.hitch && run.steps() > 0) {
-    summary.fields["hitch_force_peak_N"] = hitch_peak;
-    summary.fields["hitch_force_mean_x_N"] = hitch_sum_x / static_cast<double>(run.steps());
+    summary.fields["hitch_force_peak_N"] = x.hitch_peak;
+    summary.fields["hitch_force_mean_x_N"] = x.hitch_sum_x / static_cast<double>(run.steps());
   }
   const bool controller_failed = controller && controller->failed();
   if (controller) controller->summarize(summary.fields);
@@ -321,6 +379,12 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
   }
   summary.success = failed.empty();
   return summary;
+}
+
+RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& options) {
+  SceneRun run(scene, engine, options);
+  run.advance(std::numeric_limits<std::uint64_t>::max());
+  return run.summary();
 }
 
 }  // namespace wtc::sim
