@@ -22,8 +22,8 @@ import tempfile
 import matplotlib.image
 import numpy
 
-CHROMIUM_FLAGS = ["--no-sandbox", "--enable-unsafe-swiftshader", "--use-angle=swiftshader",
-                  "--window-size=900,600", "--virtual-time-budget=4000", "--hide-scrollbars"]
+import headless_page  # beside this file
+
 SAMPLES = 1501            # 1500 x 1500 cells
 SPACING_M = 0.05          # 75 m x 75 m
 PAGE_LIMIT_BYTES = 5_000_000
@@ -114,21 +114,13 @@ def main():
         fail("the terrain drawn does not cover the path")
 
     page = os.path.join(out, "replay.html")
-    dom = subprocess.run([chromium, *CHROMIUM_FLAGS, "--dump-dom", f"file://{page}?t=0.5&play=0"],
-                         capture_output=True, text=True, timeout=120).stdout
-    match = re.search(r'<div id="status">([^<]*)</div>', dom)
-    if not match or not match.group(1):
-        fail("the page wrote no status (did its script run?)")
-    status = json.loads(match.group(1).replace("&quot;", '"'))
+    status = headless_page.page_status(chromium, page, "t=0.5&play=0", fail)
     if status["errors"]:
         fail("JavaScript errors: " + "; ".join(status["errors"]))
     if status["terrain_triangles"] != triangles or status["bodies"] < 1:
         fail(f"the page drew {status['terrain_triangles']} terrain triangles and {status['bodies']} bodies")
     shot = os.path.join(artifacts, "replay_large_terrain.png")
-    subprocess.run([chromium, *CHROMIUM_FLAGS, f"--screenshot={shot}", f"file://{page}?t=0.5&play=0"],
-                   capture_output=True, timeout=120)
-    if not os.path.exists(shot):
-        fail("no screenshot")
+    headless_page.screenshot(chromium, page, "t=0.5&play=0", shot, fail)
     pixels = matplotlib.image.imread(shot)[:, :, :3]
     lower = pixels[pixels.shape[0] // 2:]
     drawn = (abs(lower - BACKGROUND).sum(axis=2) > 0.05).mean()

@@ -11,15 +11,14 @@ usage: replay_page_test.py WTC_SIM CHROMIUM SOURCE_DIR ARTIFACTS_DIR
 """
 import json
 import os
-import re
 import subprocess
 import sys
 import tempfile
 
 import matplotlib.image
 
-CHROMIUM_FLAGS = ["--no-sandbox", "--enable-unsafe-swiftshader", "--use-angle=swiftshader",
-                  "--window-size=900,600", "--virtual-time-budget=4000", "--hide-scrollbars"]
+import headless_page  # beside this file
+
 PAGE_LIMIT_BYTES = 5_000_000  # the issue's bound for a 60 s run of the robot
 NEAR_PX = 40                  # "around the vehicle": a square of this half-width
 MIN_CHANGED_FRACTION = 0.05   # of that square's pixels
@@ -38,19 +37,11 @@ def run_scene(wtc_sim, source, out, duration):
 
 
 def page_status(chromium, page, query):
-    dom = subprocess.run([chromium, *CHROMIUM_FLAGS, "--dump-dom", f"file://{page}?{query}"], capture_output=True,
-                         text=True, timeout=120).stdout
-    match = re.search(r'<div id="status">([^<]*)</div>', dom)
-    if not match or not match.group(1):
-        fail(f"the page wrote no status for ?{query} (did its script run?)")
-    return json.loads(match.group(1).replace("&quot;", '"'))
+    return headless_page.page_status(chromium, page, query, fail)
 
 
 def screenshot(chromium, page, query, path):
-    subprocess.run([chromium, *CHROMIUM_FLAGS, f"--screenshot={path}", f"file://{page}?{query}"],
-                   capture_output=True, timeout=120)
-    if not os.path.exists(path):
-        fail(f"no screenshot for ?{query}")
+    headless_page.screenshot(chromium, page, query, path, fail)
     return matplotlib.image.imread(path)[:, :, :3]
 
 

@@ -10,13 +10,12 @@ a wheel's tread and spoke, a plain shape.
 """
 import json
 import os
-import re
 import subprocess
 import sys
 import tempfile
 
-CHROMIUM_FLAGS = ["--no-sandbox", "--enable-unsafe-swiftshader", "--use-angle=swiftshader",
-                  "--window-size=900,600", "--virtual-time-budget=4000", "--hide-scrollbars"]
+import headless_page  # beside this file
+
 
 
 def fail(message):
@@ -51,12 +50,7 @@ def main():
     expected = sum(len(b["parts"]) if b["kind"] == "compound" else 2 if b["kind"] == "wheel" else
                    0 if b["kind"] == "none" else 1 for b in data["bodies"])
     page = os.path.join(out, "replay.html")
-    dom = subprocess.run([chromium, *CHROMIUM_FLAGS, "--dump-dom", f"file://{page}?t=0&play=0&follow=0"],
-                         capture_output=True, text=True, timeout=120).stdout
-    match = re.search(r'<div id="status">([^<]*)</div>', dom)
-    if not match or not match.group(1):
-        fail("the page wrote no status (did its script run?)")
-    status = json.loads(match.group(1).replace("&quot;", '"'))
+    status = headless_page.page_status(chromium, page, "t=0&play=0&follow=0", fail)
     if status["errors"]:
         fail("JavaScript errors: " + "; ".join(status["errors"]))
     if status["shapes"] != expected:
