@@ -199,7 +199,13 @@ def main():
         out = f"cut_{sig.name}"
         p = subprocess.Popen([wtc_sim, scene, "--duration", "600", "--out", out, "--no-plots"],
                              stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
-        time.sleep(2.0)
+        # Signalled once the run has begun (its summary.json says "running") and has run a while: a fixed
+        # wait was too short under the sanitizers on a loaded machine (no summary.json yet at 2 s).
+        deadline = time.monotonic() + 120.0
+        while not os.path.exists(os.path.join(out, "summary.json")) and p.poll() is None \
+                and time.monotonic() < deadline:
+            time.sleep(0.1)
+        time.sleep(1.0)
         p.send_signal(sig)
         stdout = p.communicate()[0]
         with open(os.path.join(out, "summary.json")) as f:
