@@ -134,7 +134,13 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
   summary.warnings = scene.warnings;  // reading the scene's (a mesh's skipped triangles) first
 
   const std::unique_ptr<vehicle::Controller> controller = scene.make_controller();
-  Run run(engine, controller.get(), scene.vehicle_effects);
+  // A vehicle that starts moving (vehicle.velocity): told before the run
+  // reads its first state; one at rest is not told, so that the engines
+  // start exactly as they always have.
+  if (!scene.start_velocity_V.isZero(0.0)) {
+    engine.setVelocities(startVelocities(scene.vehicle, scene.placement, scene.start_velocity_V));
+  }
+  Run run(engine, controller.get(), scene.vehicle_effects, scene.drawbar);
   UnstableSpringWatch spring_watch(scene.vehicle, options.warn);
   std::optional<Recorder> recorder;
   if (options.out_dir) recorder.emplace(*options.out_dir, run);

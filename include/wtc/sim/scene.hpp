@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "wtc/sim/drawbar.hpp"
 #include "wtc/sim/engine.hpp"
 #include "wtc/vehicle/controller.hpp"
 #include "wtc/vehicle/vehicle_effects.hpp"
@@ -42,6 +43,10 @@ struct Scene {
   std::shared_ptr<const Terrain> terrain;
   vehicle::VehicleDescription vehicle;
   Eigen::Isometry3d placement{Eigen::Isometry3d::Identity()};  ///< The vehicle frame V in the world.
+  /// The vehicle's velocity at the start (m/s, in V), its wheels rolling
+  /// (startVelocities); zero: at rest, and the engines are not told.
+  Eigen::Vector3d start_velocity_V{Eigen::Vector3d::Zero()};
+  std::optional<Drawbar> drawbar;  ///< A drawbar rig pulling the vehicle, if any.
   vehicle::VehicleEffects vehicle_effects;
   std::string controller_type;  ///< "none", "schedule", ...
   /// A fresh controller for one run (controllers keep state).
