@@ -232,7 +232,7 @@ std::string eventScene(const EventVehicle& v, const std::string& event, double v
     if (own) {
       text += "success: {min_wheel_height: " + num(value + e.r_min - 0.01) + ", max_tilt_deg: 45}\n";
     } else {
-      text += "success: {min_distance: " + num(approach + length + far + 0.1) + ", max_tilt_deg: 45}\n";
+      text += "success: {min_advance: " + num(approach + length + far + 0.1) + ", max_tilt_deg: 45}\n";
     }
     return text;
   }
@@ -265,7 +265,7 @@ std::string eventScene(const EventVehicle& v, const std::string& event, double v
     if (grade) {
       text += schedule(v, "[[0, 0], [" + num(kRampSeconds) + ", " + num(s.grade.wheel_rate_radps) + "]]");
       text +=
-          "success: {min_distance: " + num(progress * std::cos(theta)) + ", max_tilt_deg: " + num(value + 30.0) + "}\n";
+          "success: {min_advance: " + num(progress * std::cos(theta)) + ", max_tilt_deg: " + num(value + 30.0) + "}\n";
     } else {
       text += schedule(v, "[[0, 0]]");
       text += "success: {max_distance: " + num(side ? s.side_slope.max_slide_m : s.parked.max_slide_m) +

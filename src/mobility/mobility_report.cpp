@@ -39,8 +39,8 @@ std::string reportTable(const MobilityOutcome& outcome) {
     if (r.torque_coefficient) measured += " (ΣT/(r W) " + num(*r.torque_coefficient) + ")";
     std::string how = r.note;
     if (!r.trials.empty()) how = std::to_string(r.trials.size()) + " runs; " + how;
-    t += "| " + r.quantity + " | " + r.engine + " | " + r.mode + " | " + measured + " | " + bound + " | " +
-         against(r) + " | " + r.governs + " | " + how + " |\n";
+    t += "| " + r.quantity + " | " + r.engine + " | " + r.mode + " | " + measured + " | " + bound + " | " + against(r) +
+         " | " + r.governs + " | " + how + " |\n";
   }
   return t;
 }
@@ -60,9 +60,8 @@ void writeReport(const EventVehicle& v, const MobilitySettings& s, const Mobilit
   j["complete"] = outcome.pending_jobs == 0;
   nlohmann::json results = nlohmann::json::array();
   for (const EventResult& r : outcome.results) {
-    nlohmann::json e = {{"event", r.event},   {"engine", r.engine},   {"mode", r.mode}, {"quantity", r.quantity},
-                        {"unit", r.unit},     {"bound", r.bound},     {"governs", r.governs},
-                        {"note", r.note}};
+    nlohmann::json e = {{"event", r.event}, {"engine", r.engine}, {"mode", r.mode},       {"quantity", r.quantity},
+                        {"unit", r.unit},   {"bound", r.bound},   {"governs", r.governs}, {"note", r.note}};
     e["measured"] = r.measured ? nlohmann::json(*r.measured) : nlohmann::json(nullptr);
     if (r.bound_lower) e["bound_lower"] = *r.bound_lower;
     if (r.slip >= 0.0) e["slip"] = r.slip;
@@ -81,9 +80,9 @@ void writeReport(const EventVehicle& v, const MobilitySettings& s, const Mobilit
   if (!md) throw InvalidInputError("wtc::mobility::writeReport: cannot write " + (out / "report.md").string());
   md << "# Mobility events: " << v.description.name << "\n\n"
      << "`" << command << "`\n\n"
-     << "Vehicle " << v.file.string() << ": " << num(v.statics.mass_kg) << " kg. Ground: mu_max " << num(s.ground.mu_max)
-     << ", s1 " << num(s.ground.s1) << ", s2 " << num(s.ground.s2) << ", f_r " << num(s.ground.rolling_resistance)
-     << ".\n\n"
+     << "Vehicle " << v.file.string() << ": " << num(v.statics.mass_kg) << " kg. Ground: mu_max "
+     << num(s.ground.mu_max) << ", s1 " << num(s.ground.s1) << ", s2 " << num(s.ground.s2) << ", f_r "
+     << num(s.ground.rolling_resistance) << ".\n\n"
      << (outcome.pending_jobs ? "**Incomplete**: " + std::to_string(outcome.pending_jobs) +
                                     " runs of the next round are in jobs.txt.\n\n"
                               : std::string())

@@ -54,12 +54,13 @@ void describeSearch(Unit& u, const Search& range) {
     r.note = "passed the search's top: at least this (raise the range)";
   } else {
     r.measured = u.lo;
-    r.note = "bisection to " + formatNumber(range.resolution) + (any ? "" : "; no trial passed (at most the range's low)") +
+    r.note = "bisection to " + formatNumber(range.resolution) +
+             (any ? "" : "; no trial passed (at most the range's low)") +
              "; first failure above: " + r.trials.back().failure;
     for (const Trial& t : r.trials) {
-      if (!t.passed && t.value == u.hi) r.note = "bisection to " + formatNumber(range.resolution) +
-                                                 (any ? "" : "; no trial passed") + "; at " + formatNumber(t.value) +
-                                                 ": " + t.failure;
+      if (!t.passed && t.value == u.hi)
+        r.note = "bisection to " + formatNumber(range.resolution) + (any ? "" : "; no trial passed") + "; at " +
+                 formatNumber(t.value) + ": " + t.failure;
     }
   }
 }
@@ -74,7 +75,7 @@ std::string failureOf(const sim::RunSummary& summary, const std::string& event) 
     if (event == "side_slope" && what == "max_distance") what = "slid";
     if (event == "side_slope" && what == "max_tilt_deg") what = "tipped";
     if ((event == "parked") && what == "max_distance") what = "slid";
-    if ((event == "grade" || event == "step" || event == "gap") && what == "min_distance") what = "stopped short";
+    if ((event == "grade" || event == "step" || event == "gap") && what == "min_advance") what = "stopped short";
     text += (text.empty() ? "" : ", ") + what;
   }
   return text.empty() ? "failed" : text;
@@ -108,6 +109,10 @@ MobilityOutcome runMobility(const EventVehicle& v, const MobilitySettings& s, co
           u.result.quantity = "tallest step";
           u.result.unit = "m";
           setBound(u.result, b.step_m);
+          if (s.step.vehicle_controller && hasClimbingController(v.description)) {
+            u.result.quantity = "tallest step (the vehicle's climbing controller)";
+            u.result.governs += "; the bound is a plain drive's: a climbing controller's reach is its geometry's";
+          }
         } else if (event == "grade") {
           u.result.quantity = "steepest grade from rest";
           u.result.unit = "deg";
@@ -124,6 +129,7 @@ MobilityOutcome runMobility(const EventVehicle& v, const MobilitySettings& s, co
           u.result.quantity = "widest gap";
           u.result.unit = "m";
           setBound(u.result, b.gap_m);
+          u.result.governs += " (one wheel dropping into it: a vehicle whose other axles carry it may bridge more)";
         } else if (event == "coast") {
           u.result.quantity = "coast-down deceleration";
           u.result.unit = "m/s^2";

@@ -261,6 +261,14 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
   const vehicle::BodyKinematics& end = run.state().bodies.front();
   const double distance = (end.pose.translation() - start.translation()).head<2>().norm();
   summary.fields["distance_m"] = distance;
+  if (scene.success.min_advance) {
+    // Along the first body's x axis at the start, horizontal (a scene that asks only: the summaries of
+    // the others keep their fields).
+    const Eigen::Vector3d x = start.linear().col(0);
+    const Eigen::Vector2d heading =
+        x.head<2>().norm() > 0.0 ? Eigen::Vector2d(x.head<2>().normalized()) : Eigen::Vector2d::Zero();
+    summary.fields["advance_m"] = heading.dot((end.pose.translation() - start.translation()).head<2>());
+  }
   summary.fields["final_speed_mps"] = end.linear_velocity.head<2>().norm();
   summary.fields["yaw_change_deg"] = yaw_change * kDegPerRad;
   summary.fields["max_tilt_deg"] = max_tilt * kDegPerRad;
@@ -309,6 +317,9 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
   if (!summary.nan && !summary.diverged && !summary.interrupted) {
     if (c.min_distance && !(distance >= *c.min_distance)) fail("min_distance", *c.min_distance, distance, "m", "");
     if (c.max_distance && !(distance <= *c.max_distance)) fail("max_distance", *c.max_distance, distance, "m", "");
+    if (c.min_advance && !(summary.fields.at("advance_m") >= *c.min_advance)) {
+      fail("min_advance", *c.min_advance, summary.fields.at("advance_m"), "m", "forward, along the start heading");
+    }
     if (c.min_wheel_height && !(lowest_wheel >= *c.min_wheel_height)) {
       fail("min_wheel_height", *c.min_wheel_height, lowest_wheel, "m", "the lowest wheel centre at the end");
     }

@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 
 #include "sim_test_support.hpp"
 #include "wtc/base/constants.hpp"
@@ -15,6 +17,8 @@
 #include "wtc/sim/drawbar.hpp"
 #include "wtc/sim/engine_table.hpp"
 #include "wtc/sim/run.hpp"
+#include "wtc/sim/scene_file.hpp"
+#include "wtc/sim/scene_run.hpp"
 #include "wtc/sim/start_velocity.hpp"
 #include "wtc/terrain/material.hpp"
 #include "wtc/tyre/traction_law.hpp"
@@ -234,6 +238,28 @@ TEST(ScheduleOffAfterTest, TheDrivesFollowTheScheduleThenAreOff) {
   wheels.off_after = 1.0;
   wheels.mode = vehicle::DriveMode::kOff;
   EXPECT_THROW(vehicle::ScheduleController(robot, {wheels}, "test"), InvalidInputError);
+}
+
+// Case: a robot driving backward 1 m passes min_distance but not min_advance, which counts going back as
+// negative (a vehicle sliding down a grade must not pass a climb).
+TEST(MinAdvanceTest, GoingBackCountsNegative) {
+  const std::filesystem::path path = std::filesystem::path(WTC_SOURCE_DIR) / "scenes" / "wtc_min_advance_test.yaml.tmp";
+  std::ofstream(path) << "name: back\nduration: 3\nterrain: ../terrains/flat.yaml\n"
+                         "vehicle: ../vehicles/six_wheel_robot.yaml\n"
+                         "controller: {type: schedule, schedules: [{drives: [front_left_wheel, front_right_wheel, "
+                         "middle_left_wheel, middle_right_wheel, rear_left_wheel, rear_right_wheel], mode: velocity, "
+                         "points: [[0, 0], [0.5, -3]]}]}\n"
+                         "success: {min_distance: 0.5, min_advance: 0.5}\n";
+  const sim::Scene scene = sim::loadScene(path);
+  std::filesystem::remove(path);
+  ASSERT_EQ(scene.success.min_advance, 0.5);
+  const auto engine = sim::makeEngine(scene.engine, *scene.terrain, scene.vehicle, scene.placement);
+  const sim::RunSummary summary = sim::runScene(scene, *engine);
+  EXPECT_GT(summary.fields.at("distance_m"), 0.5);
+  EXPECT_LT(summary.fields.at("advance_m"), -0.5);
+  ASSERT_EQ(summary.failed_criteria.size(), 1u);
+  EXPECT_EQ(summary.failed_criteria.front().criterion, "min_advance");
+  EXPECT_FALSE(summary.success);
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryEngine, MobilityRigsTest, ::testing::ValuesIn(everyEngine()),

@@ -54,7 +54,7 @@ struct MobilityOptions {
   std::filesystem::path wtc_sim;  ///< The wtc-sim program.
   int workers = 1;
   bool job_list = false;  ///< Write the next round's runs as <out>/jobs.txt instead of running them.
-  std::function<void(const std::string&)> progress;
+  std::function<void(const std::string&)> progress = {};
 };
 
 /// Runs (or lists) every event of settings.events for `vehicle`. Throws

@@ -24,7 +24,7 @@ struct StepSettings {
   double approach_speed_mps = 0.3;  ///< The plain drive's speed on the level, r_f omega (m/s).
   double approach_m = 1.0;          ///< From the front wheels to the face at the start (m).
   double top_m = 3.0;               ///< The ledge's top, past the face (m).
-  Search height_m{0.0, 0.5, 0.01};  ///< The issue's 1 cm.
+  Search height_m{0.0, 0.8, 0.01};  ///< The issue's 1 cm.
   double duration_s = 25.0;  ///< At least (a plain drive's run lasts until the whole vehicle could be past the face).
   bool vehicle_controller = true;  ///< Use the vehicle's own climbing controller where it has one (climb).
 };

@@ -29,6 +29,10 @@ struct OutputSettings {
 struct SuccessCriteria {
   std::optional<double> min_distance;  ///< The vehicle's first body moved at least this far, horizontally (m).
   std::optional<double> max_distance;  ///< And at most this far (m).
+  /// The first body moved at least this far forward: along its own x axis
+  /// at the start, projected on the horizontal (m; going back counts
+  /// negative, so a vehicle sliding down a grade does not pass).
+  std::optional<double> min_advance;
   double max_tilt_deg = 45.0;          ///< Every root's z axis within this of the vertical (deg).
   /// At the end every wheel's centre at least this high (world z, m): on top of a ledge.
   std::optional<double> min_wheel_height;
