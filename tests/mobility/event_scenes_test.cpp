@@ -24,6 +24,10 @@ namespace {
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
+// The turn lags the ramp by the body's yaw inertia (measured: 0.33 % below Omega (T - 0.5 s) over 6 s in
+// Bullet and ODE, docs/mobility-bounds.md); relative.
+constexpr double kTurnTolerance = 0.01;
+
 EventVehicle shipped(const std::string& file) {
   EventVehicle v;
   v.file = fs::path(WTC_SOURCE_DIR) / "vehicles" / file;
@@ -107,6 +111,30 @@ TEST(EventScenesTest, TheCoastDownSceneRunsAndSlowsTheRobotAsTheBoundSays) {
   // v(T) = V - a T: 1.5 s at 0.1574 m/s^2 after the tread's first loading.
   const double a = computeBounds(v.statics, settings).coast_mps2.value;
   EXPECT_NEAR(summary.fields.at("distance_m"), settings.coast.speed_mps * 1.5 - 0.5 * a * 1.5 * 1.5, 0.01);
+}
+
+// Case: turning in place at wheel rates +-3 rad/s (ramped over 1 s), the robot yaws at the rate the slip
+// law's balance gives (docs/mobility-bounds.md, 3.7: 0.870 rad/s), Omega (T - 0.5 s) over the run, in every
+// engine and WTC contact mode.
+TEST(EventScenesTest, TheRobotTurnsInPlaceAtTheSlipLawsYawRateInEveryEngine) {
+  MobilitySettings settings;
+  settings.turn.duration_s = 3.0;
+  const EventVehicle v = shipped("six_wheel_robot.yaml");
+  const double rate = computeBounds(v.statics, settings).turn_radps->value;
+  EXPECT_NEAR(rate, 0.870, 0.0005);
+  const double expected = rate * (settings.turn.duration_s - 0.5) * 180.0 / std::numbers::pi;
+  const sim::Scene base = load(eventScene(v, "turn", 0.0, settings));
+  for (const std::string_view engine : sim::engineNames()) {
+    for (const char* mode : {"force", "constraint"}) {
+      sim::Scene scene = base;
+      scene.engine.engine = std::string(engine);
+      sim::parseMode(mode, scene.engine, "test");
+      const auto e = sim::makeEngine(scene.engine, *scene.terrain, scene.vehicle, scene.placement);
+      const double turned = std::abs(sim::runScene(scene, *e).fields.at("yaw_change_deg"));
+      RecordProperty(std::string(engine) + "_" + mode + "_yaw_deg", std::to_string(turned));
+      EXPECT_NEAR(turned, expected, kTurnTolerance * expected) << engine << " " << mode;
+    }
+  }
 }
 
 }  // namespace

@@ -80,8 +80,7 @@ TEST(MobilityRunTest, TheSearchBisectsBelowTheBoundAndTheCoastDownMeetsIt) {
   EXPECT_TRUE(fs::exists(options.out / "report.json"));
   std::ifstream md(options.out / "report.md");
   const std::string text((std::istreambuf_iterator<char>(md)), {});
-  EXPECT_NE(text.find("| steepest grade from rest | bullet | force | 32 deg | 38.66 deg |"), std::string::npos)
-      << text;
+  EXPECT_NE(text.find("| steepest grade from rest | bullet | force | 32 deg | 38.66 deg |"), std::string::npos) << text;
 }
 
 TEST(MobilityRunTest, AJobListRoundByRoundGivesThePoolsResults) {

@@ -158,6 +158,7 @@ TEST_P(MobilityRigsTest, ARobotStartedAt1MpsCoastsDownAsRollingResistanceSays) {
   const double m = totalMass(robot);
   const double ratio = robot.bodies[robot.wheels().front()].wheel->tyre.rolling_radius_ratio;
   const double expected = asphalt.rolling_resistance * ratio * kGravityMps2 * m / (m + wheelInertiaMass(robot));
+  RecordProperty("deceleration_mps2", std::to_string(measured));
   EXPECT_NEAR(measured, expected, kDecelerationTolerance * expected);
   EXPECT_NEAR(expected, 0.1574, 5e-5);  // docs/mobility-bounds.md's number, from the same description
 }
@@ -194,6 +195,7 @@ TEST_P(MobilityRigsTest, ADrawbarAtAnImposedSlipPullsMuOfThatSlipTimesTheWeight)
   }
   const double weight = totalMass(robot) * kGravityMps2;
   const double expected = tractionCoefficient(Material{}, kRigSlip);
+  RecordProperty("dp_per_weight", std::to_string(pull / steps / weight));
   EXPECT_NEAR(pull / steps / weight, expected, kPullTolerance * expected);
   EXPECT_NEAR(run.state().bodies.front().linear_velocity.x(), kRigSpeedMps, 1e-3);
   EXPECT_LT(run.energyBalance().maxGrowth(), 1e-3 * weight);  // the drives' and the rig's work explain it
