@@ -268,8 +268,9 @@ std::string eventScene(const EventVehicle& v, const std::string& event, double v
           "success: {min_advance: " + num(progress * std::cos(theta)) + ", max_tilt_deg: " + num(value + 30.0) + "}\n";
     } else {
       text += schedule(v, "[[0, 0]]");
-      text += "success: {max_distance: " + num(side ? s.side_slope.max_slide_m : s.parked.max_slide_m) +
-              ", max_tilt_deg: " + num(value + (side ? s.side_slope.max_tilt_deg : 30.0)) + "}\n";
+      text +=
+          "success: {max_final_speed: " + num(side ? s.side_slope.max_final_speed_mps : s.parked.max_final_speed_mps) +
+          ", max_tilt_deg: " + num(value + (side ? s.side_slope.max_tilt_deg : 30.0)) + "}\n";
     }
     return text;
   }

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <map>
 
@@ -58,9 +59,12 @@ void describeSearch(Unit& u, const Search& range) {
              (any ? "" : "; no trial passed (at most the range's low)") +
              "; first failure above: " + r.trials.back().failure;
     for (const Trial& t : r.trials) {
-      if (!t.passed && t.value == u.hi)
-        r.note = "bisection to " + formatNumber(range.resolution) + (any ? "" : "; no trial passed") + "; at " +
-                 formatNumber(t.value) + ": " + t.failure;
+      if (!t.passed && t.value == u.hi) {
+        char value[32];
+        std::snprintf(value, sizeof value, "%.6g", t.value);
+        r.note = "bisection to " + formatNumber(range.resolution) + (any ? "" : "; no trial passed") + "; at " + value +
+                 ": " + t.failure;
+      }
     }
   }
 }
@@ -72,9 +76,9 @@ std::string failureOf(const sim::RunSummary& summary, const std::string& event) 
   std::string text;
   for (const sim::FailedCriterion& f : summary.failed_criteria) {
     std::string what = f.criterion;
-    if (event == "side_slope" && what == "max_distance") what = "slid";
+    if (event == "side_slope" && what == "max_final_speed") what = "slid";
     if (event == "side_slope" && what == "max_tilt_deg") what = "tipped";
-    if ((event == "parked") && what == "max_distance") what = "slid";
+    if ((event == "parked") && what == "max_final_speed") what = "slid";
     if ((event == "grade" || event == "step" || event == "gap") && what == "min_advance") what = "stopped short";
     text += (text.empty() ? "" : ", ") + what;
   }

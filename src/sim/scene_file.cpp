@@ -383,10 +383,14 @@ sim::Scene readSceneFile(const std::filesystem::path& path, std::span<const Over
   }
   if (const auto s = YamlReader::get(root, "success")) {
     in.requireMap(*s, "success");
-    in.checkKeys(*s, {"min_distance", "max_distance", "min_advance", "max_tilt_deg", "min_wheel_height"});
+    in.checkKeys(
+        *s, {"min_distance", "max_distance", "min_advance", "max_final_speed", "max_tilt_deg", "min_wheel_height"});
     if (const auto d = YamlReader::get(*s, "min_distance")) scene.success.min_distance = in.number(*d, "min_distance");
     if (const auto d = YamlReader::get(*s, "max_distance")) scene.success.max_distance = in.number(*d, "max_distance");
     if (const auto d = YamlReader::get(*s, "min_advance")) scene.success.min_advance = in.number(*d, "min_advance");
+    if (const auto d = YamlReader::get(*s, "max_final_speed")) {
+      scene.success.max_final_speed = in.number(*d, "max_final_speed");
+    }
     scene.success.max_tilt_deg = in.number(*s, "max_tilt_deg", scene.success.max_tilt_deg);
     if (const auto d = YamlReader::get(*s, "min_wheel_height")) {
       scene.success.min_wheel_height = in.number(*d, "min_wheel_height");

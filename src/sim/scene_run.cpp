@@ -317,6 +317,10 @@ RunSummary runScene(const Scene& scene, Engine& engine, const RunOptions& option
   if (!summary.nan && !summary.diverged && !summary.interrupted) {
     if (c.min_distance && !(distance >= *c.min_distance)) fail("min_distance", *c.min_distance, distance, "m", "");
     if (c.max_distance && !(distance <= *c.max_distance)) fail("max_distance", *c.max_distance, distance, "m", "");
+    const double final_speed = summary.fields.at("final_speed_mps");
+    if (c.max_final_speed && !(final_speed <= *c.max_final_speed)) {
+      fail("max_final_speed", *c.max_final_speed, final_speed, "m/s", "still moving at the end");
+    }
     if (c.min_advance && !(summary.fields.at("advance_m") >= *c.min_advance)) {
       fail("min_advance", *c.min_advance, summary.fields.at("advance_m"), "m", "forward, along the start heading");
     }

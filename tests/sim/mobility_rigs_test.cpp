@@ -243,15 +243,16 @@ TEST(ScheduleOffAfterTest, TheDrivesFollowTheScheduleThenAreOff) {
 }
 
 // Case: a robot driving backward 1 m passes min_distance but not min_advance, which counts going back as
-// negative (a vehicle sliding down a grade must not pass a climb).
-TEST(MinAdvanceTest, GoingBackCountsNegative) {
+// negative (a vehicle sliding down a grade must not pass a climb), nor max_final_speed (still moving); a
+// robot standing passes max_final_speed (a parked vehicle that settled and holds).
+TEST(MinAdvanceTest, GoingBackCountsNegativeAndAVehicleStillMovingFailsMaxFinalSpeed) {
   const std::filesystem::path path = std::filesystem::path(WTC_SOURCE_DIR) / "scenes" / "wtc_min_advance_test.yaml.tmp";
   std::ofstream(path) << "name: back\nduration: 3\nterrain: ../terrains/flat.yaml\n"
                          "vehicle: ../vehicles/six_wheel_robot.yaml\n"
                          "controller: {type: schedule, schedules: [{drives: [front_left_wheel, front_right_wheel, "
                          "middle_left_wheel, middle_right_wheel, rear_left_wheel, rear_right_wheel], mode: velocity, "
                          "points: [[0, 0], [0.5, -3]]}]}\n"
-                         "success: {min_distance: 0.5, min_advance: 0.5}\n";
+                         "success: {min_distance: 0.5, min_advance: 0.5, max_final_speed: 0.01}\n";
   const sim::Scene scene = sim::loadScene(path);
   std::filesystem::remove(path);
   ASSERT_EQ(scene.success.min_advance, 0.5);
@@ -259,9 +260,19 @@ TEST(MinAdvanceTest, GoingBackCountsNegative) {
   const sim::RunSummary summary = sim::runScene(scene, *engine);
   EXPECT_GT(summary.fields.at("distance_m"), 0.5);
   EXPECT_LT(summary.fields.at("advance_m"), -0.5);
-  ASSERT_EQ(summary.failed_criteria.size(), 1u);
-  EXPECT_EQ(summary.failed_criteria.front().criterion, "min_advance");
+  ASSERT_EQ(summary.failed_criteria.size(), 2u);
+  EXPECT_EQ(summary.failed_criteria[0].criterion, "max_final_speed");  // still driving at 0.57 m/s
+  EXPECT_EQ(summary.failed_criteria[1].criterion, "min_advance");
   EXPECT_FALSE(summary.success);
+
+  // Case: standing, it settles and holds: max_final_speed passes.
+  std::ofstream(path) << "name: stand\nduration: 1\nterrain: ../terrains/flat.yaml\n"
+                         "vehicle: ../vehicles/six_wheel_robot.yaml\ncontroller: {type: none}\n"
+                         "success: {max_final_speed: 0.01}\n";
+  const sim::Scene standing = sim::loadScene(path);
+  std::filesystem::remove(path);
+  const auto e2 = sim::makeEngine(standing.engine, *standing.terrain, standing.vehicle, standing.placement);
+  EXPECT_TRUE(sim::runScene(standing, *e2).success);
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryEngine, MobilityRigsTest, ::testing::ValuesIn(everyEngine()),

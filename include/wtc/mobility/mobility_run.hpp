@@ -37,8 +37,8 @@ struct EventResult {
   double bound = 0.0;
   std::optional<double> bound_lower;
   std::string governs;
-  std::vector<Trial> trials;  ///< A search's runs in order.
-  double slip = -1.0;         ///< The drawbar's driving slip i (-1 for other events).
+  std::vector<Trial> trials;                 ///< A search's runs in order.
+  double slip = -1.0;                        ///< The drawbar's driving slip i (-1 for other events).
   std::optional<double> torque_coefficient;  ///< The drawbar's sum |T| / (r_f W).
 };
 

@@ -33,7 +33,10 @@ struct SuccessCriteria {
   /// at the start, projected on the horizontal (m; going back counts
   /// negative, so a vehicle sliding down a grade does not pass).
   std::optional<double> min_advance;
-  double max_tilt_deg = 45.0;          ///< Every root's z axis within this of the vertical (deg).
+  /// At the end the first body moves at most this fast (m/s, horizontal): it
+  /// holds (a parked vehicle that settled), rather than slides.
+  std::optional<double> max_final_speed;
+  double max_tilt_deg = 45.0;  ///< Every root's z axis within this of the vertical (deg).
   /// At the end every wheel's centre at least this high (world z, m): on top of a ledge.
   std::optional<double> min_wheel_height;
 };
