@@ -47,7 +47,8 @@ def main():
     searches = [r for r in results if r["trials"]]
     if searches:
         events = sorted({r["event"] for r in searches})
-        fig, axes = plt.subplots(1, len(events), figsize=(4 * len(events), 3.6), squeeze=False)
+        fig, axes = plt.subplots(1, len(events), figsize=(4.2 * len(events), 4), squeeze=False,
+                                 constrained_layout=True)
         for ax, event in zip(axes[0], events):
             rows = [r for r in searches if r["event"] == event]
             for k, r in enumerate(rows):
@@ -66,7 +67,6 @@ def main():
             ax.grid(True, alpha=0.3)
             ax.legend(fontsize=7)
         fig.suptitle(f"{name}: searches")
-        fig.tight_layout()
         fig.savefig(os.path.join(out, "searches.png"), dpi=120)
     return 0
 

@@ -291,13 +291,15 @@ std::string eventScene(const EventVehicle& v, const std::string& event, double v
     text += placement(v, Eigen::Vector3d::Zero(), I, ", velocity: [" + num(speed) + ", 0, 0]");
     if (event == "drawbar") {
       // The wheels at omega = V / (r_f (1 - i)) from the start, the anchor on a spring k = (k/W) W with
-      // damping ratio zeta (c = 2 zeta sqrt(k m)), at the first body's centre of mass.
+      // damping ratio zeta (c = 2 zeta sqrt(k m)), at ground level below the first body's centre of mass:
+      // a horizontal pull there has no moment about the ground line, so it moves no load between the
+      // axles (the bound's level loads); a pull at height h would move DP h / wheelbase.
       const double k = s.drawbar.stiffness_per_weight * v.statics.weight();
       const double c = 2.0 * s.drawbar.damping_ratio * std::sqrt(k * v.statics.mass_kg);
       const vehicle::Body& first = v.description.bodies.front();
       const Eigen::Vector3d p = first.pose.translation();
       text += schedule(v, "[[0, " + num(speed / (r * (1.0 - value))) + "]]");
-      text += "drawbar: {body: " + first.name + ", point: [" + num(p.x()) + ", " + num(p.y()) + ", " + num(p.z()) +
+      text += "drawbar: {body: " + first.name + ", point: [" + num(p.x()) + ", " + num(p.y()) + ", 0" +
               "], speed: " + num(speed) + ", stiffness: " + num(k) + ", damping: " + num(c) + "}\n";
     } else if (event == "coast") {
       text += onlyOthersHeld(v);
