@@ -270,6 +270,7 @@ std::string eventScene(const EventVehicle& v, const std::string& event, double v
       text += schedule(v, "[[0, 0]]");
       text +=
           "success: {max_final_speed: " + num(side ? s.side_slope.max_final_speed_mps : s.parked.max_final_speed_mps) +
+          ", max_distance: " + num(side ? s.side_slope.max_slide_m : s.parked.max_slide_m) +
           ", max_tilt_deg: " + num(value + (side ? s.side_slope.max_tilt_deg : 30.0)) + "}\n";
     }
     return text;

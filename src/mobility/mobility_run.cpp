@@ -76,9 +76,9 @@ std::string failureOf(const sim::RunSummary& summary, const std::string& event) 
   std::string text;
   for (const sim::FailedCriterion& f : summary.failed_criteria) {
     std::string what = f.criterion;
-    if (event == "side_slope" && what == "max_final_speed") what = "slid";
+    if (event == "side_slope" && (what == "max_final_speed" || what == "max_distance")) what = "slid";
     if (event == "side_slope" && what == "max_tilt_deg") what = "tipped";
-    if ((event == "parked") && what == "max_final_speed") what = "slid";
+    if (event == "parked" && (what == "max_final_speed" || what == "max_distance")) what = "slid";
     if ((event == "grade" || event == "step" || event == "gap") && what == "min_advance") what = "stopped short";
     text += (text.empty() ? "" : ", ") + what;
   }

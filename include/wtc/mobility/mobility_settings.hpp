@@ -38,15 +38,18 @@ struct GradeSettings {
 
 struct ParkedSettings {
   Search degrees{0.0, 45.0, 0.25};
-  /// Held: at the end the first body moves at most this fast (m/s). (Not a distance: the tyres' tread
-  /// and the sections settle by up to 6 cm near the limit, then hold.)
+  /// Held: at the end the first body moves at most this fast (m/s), having moved at most max_slide_m
+  /// (the tyres' tread and the sections settle by up to 6 cm near the limit, then hold; a vehicle that
+  /// slides and stops elsewhere, the towed system jackknifing across a slope, did not hold).
   double max_final_speed_mps = 0.005;
+  double max_slide_m = 0.2;
   double duration_s = 5.0;
 };
 
 struct SideSlopeSettings {
   Search degrees{0.0, 60.0, 0.25};
   double max_final_speed_mps = 0.005;  ///< Holds: at the end it moves at most this fast (m/s); slides beyond.
+  double max_slide_m = 0.2;            ///< And moved at most this far (m), as ParkedSettings's.
   double max_tilt_deg = 30.0;          ///< Tips: a root tilted this much beyond the slope (deg).
   double duration_s = 5.0;
 };
