@@ -47,9 +47,13 @@ def main():
     searches = [r for r in results if r["trials"]]
     if searches:
         events = sorted({r["event"] for r in searches})
-        fig, axes = plt.subplots(1, len(events), figsize=(4.2 * len(events), 4), squeeze=False,
+        cols = min(3, len(events))
+        nrows = (len(events) + cols - 1) // cols
+        fig, axes = plt.subplots(nrows, cols, figsize=(4.6 * cols, 3.8 * nrows), squeeze=False,
                                  constrained_layout=True)
-        for ax, event in zip(axes[0], events):
+        for ax in axes.flat[len(events):]:
+            ax.axis("off")
+        for ax, event in zip(axes.flat, events):
             rows = [r for r in searches if r["event"] == event]
             for k, r in enumerate(rows):
                 xs = list(range(1, len(r["trials"]) + 1))
@@ -59,13 +63,14 @@ def main():
                            [t["value"] for t in r["trials"] if t["passed"]], marker="o", color=f"C{k}")
                 ax.scatter([x for x, t in zip(xs, r["trials"]) if not t["passed"]],
                            [t["value"] for t in r["trials"] if not t["passed"]], marker="x", color=f"C{k}")
-            ax.axhline(rows[0]["bound"], color="k", ls="--", label=f"bound ({rows[0]['governs']})")
+            ax.axhline(rows[0]["bound"], color="k", ls="--", label="bound")
             if "bound_lower" in rows[0]:
                 ax.axhline(rows[0]["bound_lower"], color="k", ls=":")
             ax.set_title(f"{rows[0]['quantity']} ({rows[0]['unit']})", fontsize=9)
+            ax.set_yscale("log" if event in ("step", "gap") and rows[0]["bound"] < 0.05 else "linear")
             ax.set_xlabel("run (o passed, x failed)")
             ax.grid(True, alpha=0.3)
-            ax.legend(fontsize=7)
+            ax.legend(fontsize=6)
         fig.suptitle(f"{name}: searches")
         fig.savefig(os.path.join(out, "searches.png"), dpi=120)
     return 0

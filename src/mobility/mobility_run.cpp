@@ -80,7 +80,7 @@ std::string failureOf(const sim::RunSummary& summary, const std::string& event) 
     if (event == "side_slope" && what == "max_tilt_deg") what = "tipped";
     if (event == "parked" && (what == "max_final_speed" || what == "max_distance")) what = "slid";
     if ((event == "grade" || event == "step" || event == "gap") && what == "min_advance") what = "stopped short";
-    text += (text.empty() ? "" : ", ") + what;
+    if (text.find(what) == std::string::npos) text += (text.empty() ? "" : ", ") + what;
   }
   return text.empty() ? "failed" : text;
 }
