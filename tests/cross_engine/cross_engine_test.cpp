@@ -146,6 +146,18 @@ double ledgeFootContacts(Engine engine, ContactMode mode) {
   return static_cast<double>(sim->forces().contacts.size());
 }
 
+// A disc put down sliding at 1 m/s without spin (issue 39's "sliding disc"): the ground's force acts at
+// the contact, so L = m v + I omega / r_f changes only by the rolling-resistance moment, -f_r m g r_0 / r_f
+// per second, while it slides and after (whatever the slip law); once it rolls (omega r_f = v),
+// v = L / (m + I / r_f^2). Measured after 1 s: 2/3 (v0 - f_r g (r_0/r_f) t) for a disc.
+double slidingDiscSpeed(Engine engine, ContactMode mode) {
+  const Terrain ground = flatGround();
+  auto sim = makeEngineSim(engine, mode, ground, kMass, {-5, 0, kRadius - restDeflection()}, Hold::kUpright);
+  sim->setMotion({1.0, 0, 0}, 0.0);
+  run(*sim, 1.0);
+  return sim->velocity().x();
+}
+
 double settleDeflectionLight(Engine engine, ContactMode mode) {
   const Terrain ground = flatGround();
   const double light = 3.7;  // the robot's wheel alone (kg)
@@ -182,6 +194,8 @@ std::vector<NamedScene> scenes() {
   // A side force of 0.3 m g held by mu(s) R_z at 1 m/s: V_y = s with mu(s) = 0.3.
   const double drift = -asphalt.s1 * std::log(1.0 - 0.3 / asphalt.mu_max);
   const double light = 3.7 * kGravityMps2 / kStiffness;
+  // The sliding disc: 2/3 of v0 = 1 m/s less what rolling resistance took in 1 s (slidingDiscSpeed).
+  const double disc = 2.0 / 3.0 * (1.0 - 0.018 * kGravityMps2 * 0.97 * 1.0);
   return {
       {"settle deflection", "m", settleDeflection, restDeflection(), 0.02 * restDeflection()},
       {"settle deflection of the light wheel", "m", settleDeflectionLight, light, 0.02 * light},
@@ -191,6 +205,7 @@ std::vector<NamedScene> scenes() {
       {"saturated traction acceleration", "m/s^2", saturatedAcceleration, 0.8 * kGravityMps2,
        0.02 * 0.8 * kGravityMps2},
       {"lateral drift under a side force", "m/s", lateralDrift, drift, 0.05 * drift},
+      {"sliding disc speed after 1 s", "m/s", slidingDiscSpeed, disc, 0.01 * disc},
       {"time to climb a 6 cm step", "s", stepClimbSeconds, kNoClosedForm, 0.0},
       {"contacts at the ledge foot", "count", ledgeFootContacts, 2.0, 0.0},
   };
