@@ -44,10 +44,12 @@ int main(int argc, char** argv) {
   int workers = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   bool no_plots = false;
   for (CLI::App* sub : {app.add_subcommand("run", "make the runs, round by round, on --workers processes; report"),
-                        app.add_subcommand("jobs", "write the next round's runs to <out>/jobs.txt (run them, call "
-                                                   "again until none is left); report what is finished")}) {
+                        app.add_subcommand("jobs",
+                                           "write the next round's runs to <out>/jobs.txt (run them, call "
+                                           "again until none is left); report what is finished")}) {
     sub->add_option("vehicle", vehicle_file, "vehicle file (YAML or URDF)")->required();
-    sub->add_option("--settings", settings_file, "settings file (default: every default, apps/wtc-mobility/settings.yaml)");
+    sub->add_option("--settings", settings_file,
+                    "settings file (default: every default, apps/wtc-mobility/settings.yaml)");
     sub->add_option("--out", out, "output directory (default mobility/<vehicle name>)");
     sub->add_option("--engine", engines, "engines (default: the settings')");
     sub->add_option("--mode", modes, "modes (default: the settings')");
@@ -90,9 +92,10 @@ int main(int argc, char** argv) {
     for (int i = 1; i < argc; ++i) command += " " + std::string(argv[i]);
     wtc::mobility::writeReport(vehicle, settings, outcome, options.out, command);
     if (outcome.pending_jobs > 0) {
-      std::printf("wtc-mobility: %zu runs of the next round in %s; run them (parallel < jobs.txt), then call "
-                  "again\n",
-                  outcome.pending_jobs, (dir / "jobs.txt").c_str());
+      std::printf(
+          "wtc-mobility: %zu runs of the next round in %s; run them (parallel < jobs.txt), then call "
+          "again\n",
+          outcome.pending_jobs, (dir / "jobs.txt").c_str());
       return 0;
     }
     std::printf("wtc-mobility: %zu runs made; report: %s\n", outcome.runs_made, (dir / "report.md").c_str());
