@@ -32,7 +32,7 @@ double EnergyBalance::energyOf(const vehicle::VehicleState& state,
 }
 
 void EnergyBalance::step(const vehicle::VehicleState& state, std::span<const WheelForces* const> wheel_forces,
-                         std::span<const vehicle::DriveReport> drives) {
+                         std::span<const vehicle::DriveReport> drives, double rig_work) {
   energy_ = energyOf(state, wheel_forces);
   if (!started_) {
     initial_ = energy_;
@@ -41,6 +41,7 @@ void EnergyBalance::step(const vehicle::VehicleState& state, std::span<const Whe
   }
   const double h = h_;
   for (std::size_t i = 0; i < drives.size(); ++i) drive_work_ += drives[i].last_effort * state.joint_rate[i] * h;
+  rig_work_ += rig_work;
   if (growth() > max_growth_) {
     max_growth_ = growth();
     max_growth_time_ = state.time;

@@ -18,4 +18,11 @@ std::size_t EngineBase::wheelIndex(int body) const {
   return static_cast<std::size_t>(k);
 }
 
+void EngineBase::requireOnePerBody(std::size_t count) const {
+  if (count != vehicle().bodies.size()) {
+    throw InvalidInputError(name_ + ": setVelocities: " + std::to_string(count) + " velocities for " +
+                            std::to_string(vehicle().bodies.size()) + " bodies");
+  }
+}
+
 }  // namespace wtc::sim

@@ -34,6 +34,10 @@ class EngineBase : public Engine {
   /// for one the vehicle does not have.
   std::size_t wheelIndex(int body) const;
 
+  /// Throws InvalidInputError unless `count` velocities are one per body
+  /// (setVelocities).
+  void requireOnePerBody(std::size_t count) const;
+
  private:
   std::string name_;
   std::vector<int> wheel_of_body_;  // per body: its index in vehicle().wheels(), or -1

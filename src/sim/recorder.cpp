@@ -56,6 +56,11 @@ Recorder::Recorder(const std::filesystem::path& dir, const Run& run)
     hitch_ << "t_s,dx_m,dy_m,dz_m,px_N,py_N,pz_N";
     endRow(hitch_);
   }
+  if (run.hasDrawbar()) {
+    drawbar_.open(dir / "drawbar.csv");
+    drawbar_ << "t_s,pull_N,extension_m,point_speed_mps";
+    endRow(drawbar_);
+  }
 }
 
 void Recorder::record(const Run& run) {
@@ -92,6 +97,11 @@ void Recorder::record(const Run& run) {
     hitch_ << s.time << ',' << h.deflection.x() << ',' << h.deflection.y() << ',' << h.deflection.z() << ','
            << h.force_local.x() << ',' << h.force_local.y() << ',' << h.force_local.z();
     endRow(hitch_);
+  }
+  if (drawbar_.isOpen()) {
+    const DrawbarForce& d = *run.drawbar();
+    drawbar_ << s.time << ',' << d.pull_N << ',' << d.extension_m << ',' << d.point_speed_mps;
+    endRow(drawbar_);
   }
 }
 

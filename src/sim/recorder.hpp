@@ -7,6 +7,7 @@
 //   drives.csv  t, then per drive: position rate command target_rate effort saturated
 //   wheels.csv  t, then per wheel: contacts fx fy fz max_slip
 //   hitch.csv   t dx dy dz px py pz   (the towed system only)
+//   drawbar.csv t pull extension point_speed   (a scene with a drawbar only)
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -49,7 +50,7 @@ class Recorder {
   void record(const Run& run);
 
  private:
-  detail::CsvFile bodies_, drives_, wheels_, hitch_;
+  detail::CsvFile bodies_, drives_, wheels_, hitch_, drawbar_;
   std::vector<int> actuated_, wheel_bodies_;
 };
 

@@ -21,7 +21,8 @@ bool beyondBounds(const vehicle::BodyKinematics& k) {
 
 }  // namespace
 
-Run::Run(Engine& engine, vehicle::Controller* controller, const vehicle::VehicleEffects& effects)
+Run::Run(Engine& engine, vehicle::Controller* controller, const vehicle::VehicleEffects& effects,
+         const std::optional<Drawbar>& drawbar)
     : engine_(engine),
       controller_(controller),
       effects_(effects),
@@ -38,6 +39,10 @@ Run::Run(Engine& engine, vehicle::Controller* controller, const vehicle::Vehicle
   targets_.resize(n);
   drives_.resize(n);
   sense();
+  if (drawbar) {
+    drawbar_.emplace(*drawbar, engine.vehicle(), state_.bodies.at(drawbar->body), "drawbar");
+    drawbar_force_ = drawbar_->force(state_.bodies[drawbar->body], state_.time);
+  }
 }
 
 void Run::step() {
@@ -55,12 +60,25 @@ void Run::step() {
     engine_.addForce(h.body_b, hitch_->force_on_b, hitch_->point_b);
     engine_.addForce(h.body_a, -hitch_->force_on_b, hitch_->point_a);
   }
+  if (drawbar_) {
+    drawbar_force_ = drawbar_->force(state_.bodies[drawbar_->body()], state_.time);
+    engine_.addForce(drawbar_->body(), drawbar_force_->force_W, drawbar_force_->point_W);
+  }
   engine_.step();
   ++steps_;
   state_.time = static_cast<double>(steps_) * engine_.settings().step_seconds;
   for (const int b : actuated_) vehicle::record(drives_[b], targets_[b], engine_.motorEffort(b));
   sense();
-  energy_.step(state_, wheel_forces_, drives_);
+  // The rig's work of the step, with the point's velocity after it (as the
+  // drives': EnergyBalance).
+  double rig_work = 0.0;
+  if (drawbar_) {
+    const vehicle::BodyKinematics& k = state_.bodies[drawbar_->body()];
+    const Eigen::Vector3d v_P =
+        k.linear_velocity + k.angular_velocity.cross(drawbar_force_->point_W - k.pose.translation());
+    rig_work = drawbar_force_->force_W.dot(v_P) * engine_.settings().step_seconds;
+  }
+  energy_.step(state_, wheel_forces_, drives_, rig_work);
 }
 
 void Run::sense() {

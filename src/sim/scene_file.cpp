@@ -11,6 +11,7 @@
 #include "io/yaml_reader.hpp"
 #include "vehicle/controllers/controller_types.hpp"
 #include "wtc/base/error.hpp"
+#include "wtc/sim/sim_constants.hpp"
 #include "wtc/sim/step_count.hpp"
 #include "wtc/vehicle/vehicle_file.hpp"
 
@@ -208,6 +209,49 @@ void readEffects(const YamlReader& in, const YAML::Node& node, sim::Scene& scene
   }
 }
 
+// `drawbar: {body, point, force}` or `{body, point, speed, stiffness,
+// damping}` (wtc/sim/drawbar.hpp).
+Drawbar readDrawbar(const YamlReader& in, const YAML::Node& node, const vehicle::VehicleDescription& vehicle) {
+  in.requireMap(node, "drawbar");
+  in.checkKeys(node, {"body", "point", "force", "speed", "stiffness", "damping"});
+  Drawbar d;
+  const YAML::Node body = in.require(node, "body");
+  const std::string name = in.string(body, "drawbar.body");
+  d.body = vehicle.find(name);
+  if (d.body < 0) in.fail(body, "drawbar.body: '" + name + "' is not a body of vehicle '" + vehicle.name + "'");
+  d.point_V = in.vector<3>(in.require(node, "point"), "drawbar.point");
+  const auto force = YamlReader::get(node, "force");
+  const auto speed = YamlReader::get(node, "speed");
+  if (force && speed) {
+    in.fail(*speed,
+            "drawbar: give either force (a constant pull, N) or speed, stiffness and damping (an anchor "
+            "moving at that speed), not both");
+  }
+  if (force) {
+    for (const char* key : {"stiffness", "damping"}) {
+      if (node[key]) in.fail(node[key], std::string("drawbar.") + key + ": only for an anchor (speed), not with force");
+    }
+    d.force_N = in.number(*force, "drawbar.force");
+  } else {
+    if (!speed) in.fail(node, "drawbar: give force (a constant pull, N) or speed, stiffness and damping (an anchor)");
+    d.speed_mps = in.number(*speed, "drawbar.speed");
+    d.stiffness_Npm = in.number(in.require(node, "stiffness"), "drawbar.stiffness");
+    d.damping_Nspm = in.number(node, "damping", 0.0);
+  }
+  try {
+    validate(d, vehicle, "drawbar");
+  } catch (const InvalidInputError& e) {
+    // The value at fault: the anchor's numbers, else the point.
+    const char* keys[] = {"speed", "stiffness", "damping"};
+    YAML::Node at = node["point"];
+    for (const char* key : keys) {
+      if (std::string(e.what()).find(std::string(key) + " =") != std::string::npos && node[key]) at = node[key];
+    }
+    in.fail(at, e.what());
+  }
+  return d;
+}
+
 // Reads the file that `node` (under `key`) names, relative to the scene;
 // its errors are placed at that node too: "scene.yaml:12:10: terrain:
 // ../terrains/x.yaml: file not found".
@@ -243,7 +287,8 @@ sim::Scene readSceneFile(const std::filesystem::path& path, std::span<const Over
     in = in.withOrigin({.subtree = applyOverride(root, o, name), .label = name, .replaces_position = true});
   }
   in.checkKeys(root, {"name", "description", "parameters", "engine", "mode", "dt", "duration", "solver_iterations",
-                      "solver_residual", "terrain", "vehicle", "effects", "controller", "output", "success", "cases"});
+                      "solver_residual", "terrain", "vehicle", "effects", "controller", "output", "success", "cases",
+                      "drawbar"});
 
   sim::Scene scene;
   scene.source = path.string();
@@ -309,10 +354,19 @@ sim::Scene readSceneFile(const std::filesystem::path& path, std::span<const Over
     scene.vehicle = referencedFile(in, v, "vehicle", vehicle::loadVehicle);
   } else {
     in.requireMap(v, "vehicle");
-    in.checkKeys(v, {"file", "translation", "rotation"});
+    in.checkKeys(v, {"file", "translation", "rotation", "velocity"});
     scene.vehicle = referencedFile(in, in.require(v, "file"), "vehicle.file", vehicle::loadVehicle);
     scene.placement = in.with("vehicle: ").pose(v);
+    if (const auto velocity = YamlReader::get(v, "velocity")) {
+      scene.start_velocity_V = in.vector<3>(*velocity, "vehicle.velocity");
+      if (scene.start_velocity_V.norm() > kDivergedSpeedMps) {
+        in.fail(*velocity, "vehicle.velocity: " + formatNumber(scene.start_velocity_V.norm()) +
+                               " m/s is beyond the speed at which a run stops as diverged, " +
+                               formatNumber(kDivergedSpeedMps) + " m/s");
+      }
+    }
   }
+  if (const auto d = YamlReader::get(root, "drawbar")) scene.drawbar = readDrawbar(in, *d, scene.vehicle);
 
   readEffects(in, YamlReader::get(root, "effects").value_or(YAML::Load("[full]")), scene);
   readController(in, in.require(root, "controller"), scene);
@@ -329,9 +383,14 @@ sim::Scene readSceneFile(const std::filesystem::path& path, std::span<const Over
   }
   if (const auto s = YamlReader::get(root, "success")) {
     in.requireMap(*s, "success");
-    in.checkKeys(*s, {"min_distance", "max_distance", "max_tilt_deg", "min_wheel_height"});
+    in.checkKeys(
+        *s, {"min_distance", "max_distance", "min_advance", "max_final_speed", "max_tilt_deg", "min_wheel_height"});
     if (const auto d = YamlReader::get(*s, "min_distance")) scene.success.min_distance = in.number(*d, "min_distance");
     if (const auto d = YamlReader::get(*s, "max_distance")) scene.success.max_distance = in.number(*d, "max_distance");
+    if (const auto d = YamlReader::get(*s, "min_advance")) scene.success.min_advance = in.number(*d, "min_advance");
+    if (const auto d = YamlReader::get(*s, "max_final_speed")) {
+      scene.success.max_final_speed = in.number(*d, "max_final_speed");
+    }
     scene.success.max_tilt_deg = in.number(*s, "max_tilt_deg", scene.success.max_tilt_deg);
     if (const auto d = YamlReader::get(*s, "min_wheel_height")) {
       scene.success.min_wheel_height = in.number(*d, "min_wheel_height");

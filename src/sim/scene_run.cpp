@@ -13,6 +13,7 @@
 #include "wtc/base/tolerances.hpp"
 #include "wtc/sim/run.hpp"
 #include "wtc/sim/sim_constants.hpp"
+#include "wtc/sim/start_velocity.hpp"
 #include "wtc/sim/step_count.hpp"
 
 namespace wtc::sim {
@@ -122,6 +123,16 @@ std::string shortNumber(double v) {
   return text;
 }
 
+// Sets a vehicle that starts moving (vehicle.velocity) going before the run
+// reads its first state, then makes the scene's controller. A vehicle at
+// rest is not told, so that the engines start exactly as they always have.
+std::unique_ptr<vehicle::Controller> startAndMakeController(const Scene& scene, Engine& engine) {
+  if (!scene.start_velocity_V.isZero(0.0)) {
+    engine.setVelocities(startVelocities(scene.vehicle, scene.placement, scene.start_velocity_V));
+  }
+  return scene.make_controller();
+}
+
 }  // namespace
 
 std::string describe(const FailedCriterion& f) {
@@ -140,8 +151,8 @@ struct SceneRun::State {
       : scene(scene),
         engine(engine),
         options(options),
-        controller(scene.make_controller()),
-        run(engine, controller.get(), scene.vehicle_effects),
+        controller(startAndMakeController(scene, engine)),
+        run(engine, controller.get(), scene.vehicle_effects, scene.drawbar),
         spring_watch(scene.vehicle, options.warn),
         bounds(*scene.terrain, scene.vehicle) {}
 
@@ -325,6 +336,14 @@ RunSummary SceneRun::summary() const {
   const vehicle::BodyKinematics& end = run.state().bodies.front();
   const double distance = (end.pose.translation() - start.translation()).head<2>().norm();
   summary.fields["distance_m"] = distance;
+  if (scene.success.min_advance) {
+    // Along the vehicle's x axis at the start, horizontal (a scene that asks only: the summaries of
+    // the others keep their fields).
+    const Eigen::Vector3d x_W = vehicleAxes(start, v.bodies.front()).col(0);
+    const Eigen::Vector2d heading =
+        x_W.head<2>().norm() > 0.0 ? Eigen::Vector2d(x_W.head<2>().normalized()) : Eigen::Vector2d::Zero();
+    summary.fields["advance_m"] = heading.dot((end.pose.translation() - start.translation()).head<2>());
+  }
   summary.fields["final_speed_mps"] = end.linear_velocity.head<2>().norm();
   summary.fields["yaw_change_deg"] = yaw_change * kDegPerRad;
   summary.fields["max_tilt_deg"] = max_tilt * kDegPerRad;
@@ -373,6 +392,13 @@ RunSummary SceneRun::summary() const {
   if (!summary.nan && !summary.diverged && !summary.interrupted) {
     if (c.min_distance && !(distance >= *c.min_distance)) fail("min_distance", *c.min_distance, distance, "m", "");
     if (c.max_distance && !(distance <= *c.max_distance)) fail("max_distance", *c.max_distance, distance, "m", "");
+    const double final_speed = summary.fields.at("final_speed_mps");
+    if (c.max_final_speed && !(final_speed <= *c.max_final_speed)) {
+      fail("max_final_speed", *c.max_final_speed, final_speed, "m/s", "still moving at the end");
+    }
+    if (c.min_advance && !(summary.fields.at("advance_m") >= *c.min_advance)) {
+      fail("min_advance", *c.min_advance, summary.fields.at("advance_m"), "m", "forward, along the start heading");
+    }
     if (c.min_wheel_height && !(lowest_wheel >= *c.min_wheel_height)) {
       fail("min_wheel_height", *c.min_wheel_height, lowest_wheel, "m", "the lowest wheel centre at the end");
     }

@@ -290,5 +290,63 @@ TEST(SceneFileTest, ControllerTypesComeFromOneTableThatALayerAboveMayExtend) {
   EXPECT_THROW(vehicle::addControllerType({.name = "path", .read = vehicle::readPathController}), InvalidInputError);
 }
 
+
+// The mobility rigs' keys (docs/mobility-bounds.md, "Test rigs"): a
+// vehicle's starting velocity, a drawbar, a schedule that switches its
+// drives off; read as given, each misuse refused at its line and key.
+TEST(SceneFileTest, TheRigsKeysAreReadAndTheirMisusesRefusedWhereTheyStand) {
+  const std::string head = "name: t\nduration: 1\nterrain: ../terrains/flat.yaml\ncontroller: {type: none}\n";
+  const std::string robot = "vehicle: {file: ../vehicles/six_wheel_robot.yaml, velocity: [1, 0, 0]}\n";
+  const fs::path path = kScenes / "wtc_scene_file_rigs_test.yaml.tmp";
+  std::ofstream(path)
+      << head << robot
+      << "drawbar: {body: middle, point: [-0.3, 0, 0.19], speed: 0.3, stiffness: 2.0e4, damping: 3000}\n";
+  const Scene scene = loadScene(path);
+  fs::remove(path);
+  EXPECT_EQ(scene.start_velocity_V, Eigen::Vector3d(1, 0, 0));
+  ASSERT_TRUE(scene.drawbar.has_value());
+  EXPECT_EQ(scene.drawbar->body, scene.vehicle.find("middle"));
+  EXPECT_EQ(scene.drawbar->point_V, Eigen::Vector3d(-0.3, 0, 0.19));
+  EXPECT_FALSE(scene.drawbar->force_N.has_value());
+  EXPECT_EQ(scene.drawbar->speed_mps, 0.3);
+  EXPECT_EQ(scene.drawbar->stiffness_Npm, 2.0e4);
+  EXPECT_EQ(scene.drawbar->damping_Nspm, 3000.0);
+  EXPECT_EQ(errorOf(head + robot + "drawbar: {body: middle, point: [0, 0, 0], force: 100}\n"), "no error");
+
+  EXPECT_THAT(errorOf(head + "vehicle: {file: ../vehicles/six_wheel_robot.yaml, velocity: [2000, 0, 0]}\n"),
+              HasSubstr(":5:61: vehicle.velocity: 2000 m/s is beyond the speed at which a run stops as diverged"));
+  EXPECT_THAT(errorOf(head + "vehicle: {file: ../vehicles/six_wheel_robot.yaml, velocity: [1, 0]}\n"),
+              HasSubstr(":5:61: vehicle.velocity: expected a list of 3 numbers"));
+  EXPECT_THAT(errorOf(head + robot + "drawbar: {body: mast, point: [0, 0, 0], force: 1}\n"),
+              HasSubstr(":6:17: drawbar.body: 'mast' is not a body of vehicle 'six_wheel_robot'"));
+  EXPECT_THAT(errorOf(head + robot + "drawbar: {body: middle, point: [0, 0, 0], force: 1, speed: 1}\n"),
+              HasSubstr(":6:60: drawbar: give either force (a constant pull, N) or speed, stiffness and damping"));
+  EXPECT_THAT(errorOf(head + robot + "drawbar: {body: middle, point: [0, 0, 0]}\n"),
+              HasSubstr(":6:10: drawbar: give force (a constant pull, N) or speed, stiffness and damping"));
+  EXPECT_THAT(errorOf(head + robot + "drawbar: {body: middle, point: [0, 0, 0], force: 1, stiffness: 5}\n"),
+              HasSubstr(":6:64: drawbar.stiffness: only for an anchor (speed), not with force"));
+  EXPECT_THAT(errorOf(head + robot + "drawbar: {body: middle, point: [0, 0, 0], speed: 1, stiffness: 0}\n"),
+              HasSubstr(":6:64: drawbar: stiffness = 0 must be finite and > 0 (N/m) for a moving anchor"));
+  EXPECT_THAT(errorOf(head + robot + "drawbar: {body: middle, point: [0, 0, 0], speed: 1}\n"),
+              HasSubstr("missing key 'stiffness'"));
+  EXPECT_THAT(
+      errorOf(head + robot + "drawbar: {body: middle, point: [0, 0, 0], speed: 1, stiffness: 1, damping: -1}\n"),
+      HasSubstr("drawbar: damping = -1 must be finite and >= 0 (N s/m)"));
+  EXPECT_THAT(errorOf(head + robot + "drawbar: {body: middle, point: [1e300, 0, 0], force: 1}\n"),
+              HasSubstr(":6:32: drawbar: point must be finite and within 1e+06 m"));
+  EXPECT_THAT(errorOf(head + robot + "drawbar: {body: middle, point: [0, 0, 0], force: 1, pull: 2}\n"),
+              HasSubstr("unknown key 'pull'"));
+
+  const std::string schedule =
+      "name: t\nduration: 1\nterrain: ../terrains/flat.yaml\n"
+      "vehicle: ../vehicles/six_wheel_robot.yaml\ncontroller: {type: schedule, schedules: "
+      "[{drives: [front_left_wheel], mode: ";
+  EXPECT_EQ(errorOf(schedule + "velocity, points: [[0, 1]], off_after: 0.5}]}\n"), "no error");
+  EXPECT_THAT(errorOf(schedule + "velocity, points: [[0, 1]], off_after: -1}]}\n"),
+              HasSubstr("controller.schedules[0]: off_after: -1 must be >= 0 (s)"));
+  EXPECT_THAT(errorOf(schedule + "off, points: [[0, 1]], off_after: 1}]}\n"),
+              HasSubstr("controller.schedules[0]: off_after: the schedule's mode is off already"));
+}
+
 }  // namespace
 }  // namespace wtc::sim

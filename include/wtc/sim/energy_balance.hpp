@@ -11,7 +11,8 @@
 // I_b the principal moments in the body frame R_b; z_b the centre's height;
 // c_k, Z_k a tyre's radial stiffness and deflection; Delta, C the hitch's
 // deflection in the tug's axes and stiffness) changes by the work of what
-// acts on it. Of that, only the drives are sources: their work is
+// acts on it. Of that, only the drives (and a rig outside the vehicle, a
+// drawbar: its W_rig = sum F . v_P h, drawbar.hpp) are sources: the drives' work is
 //
 //   W = sum over steps and drives of effort x joint rate x h,
 //
@@ -27,7 +28,7 @@
 // tug). Gravity is in E. Constraint mode's contact is the same spring and
 // damper, implicit (engine_contact.hpp), so its c Z^2 / 2 is stored alike.
 //
-// So the unexplained growth G = E - E_1 - W stays at or below zero but for
+// So the unexplained growth G = E - E_1 - W - W_rig stays at or below zero but for
 // the integrators' error. The balance starts after the first step (E_1,
 // W from the second step on): the engines report the tyres' contacts only
 // after a step, and a tyre pressed into the ground at the start holds
@@ -53,9 +54,11 @@ class EnergyBalance {
   /// After each step (the first sets E_1): the drives' work of the step
   /// (their last efforts by body, N m or N) and E of `state`, the state
   /// after it, with each wheel's contacts in `wheel_forces` (by body; null
-  /// for a body that is not a wheel). Allocates nothing.
+  /// for a body that is not a wheel). `rig_work` is what a rig outside the
+  /// vehicle did on it in the step (J: a drawbar's F . v_P h), a source like
+  /// the drives'. Allocates nothing.
   void step(const vehicle::VehicleState& state, std::span<const WheelForces* const> wheel_forces,
-            std::span<const vehicle::DriveReport> drives);
+            std::span<const vehicle::DriveReport> drives, double rig_work = 0.0);
 
   /// E after the last step (J; 0 before the first).
   double energy() const { return energy_; }
@@ -64,7 +67,9 @@ class EnergyBalance {
   double driveWork() const { return drive_work_; }
   /// G = E - E_1 - W now, and its largest value so far with the time it
   /// had it (J, s; 0 until it grows).
-  double growth() const { return energy_ - initial_ - drive_work_; }
+  double growth() const { return energy_ - initial_ - drive_work_ - rig_work_; }
+  /// The rigs' work since the first step (J).
+  double rigWork() const { return rig_work_; }
   double maxGrowth() const { return max_growth_; }
   double maxGrowthTime() const { return max_growth_time_; }
 
@@ -75,7 +80,7 @@ class EnergyBalance {
   std::vector<int> wheels_;
   double h_;  // (s)
   bool started_ = false;
-  double initial_ = 0.0, energy_ = 0.0, drive_work_ = 0.0;
+  double initial_ = 0.0, energy_ = 0.0, drive_work_ = 0.0, rig_work_ = 0.0;
   double max_growth_ = 0.0, max_growth_time_ = 0.0;
 };
 

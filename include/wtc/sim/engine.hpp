@@ -22,6 +22,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -29,6 +30,7 @@
 #include <Eigen/Geometry>
 
 #include "wtc/adapter/wheel_listener.hpp"
+#include "wtc/sim/start_velocity.hpp"
 #include "wtc/terrain/terrain.hpp"
 #include "wtc/tyre/contact_mode.hpp"
 #include "wtc/tyre/effects.hpp"
@@ -116,6 +118,13 @@ class Engine {
   virtual void addForce(int body, const Eigen::Vector3d& force, const Eigen::Vector3d& point) = 0;
   /// One step of settings().step_seconds.
   virtual void step() = 0;
+  /// Before the first step: every body's velocity (one per body, world),
+  /// such as startVelocities gives. The engines keep what their joints
+  /// allow: Bullet's multibodies take the roots' velocities and each
+  /// joint's rate from the child's velocity against its parent's, ODE takes
+  /// each body's as given; the two agree for velocities the joints allow
+  /// (startVelocities' do). Throws InvalidInputError for a wrong count.
+  virtual void setVelocities(std::span<const BodyVelocity> velocities) = 0;
 
   /// Pose and velocity of a body's centre of mass (world).
   virtual vehicle::BodyKinematics body(int body) const = 0;

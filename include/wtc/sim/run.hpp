@@ -9,6 +9,7 @@
 #include <span>
 #include <vector>
 
+#include "wtc/sim/drawbar.hpp"
 #include "wtc/sim/energy_balance.hpp"
 #include "wtc/sim/engine.hpp"
 #include "wtc/vehicle/controller.hpp"
@@ -20,8 +21,10 @@ namespace wtc::sim {
 class Run {
  public:
   /// `engine` and `controller` must outlive the run; a null controller
-  /// leaves every drive off (a passive vehicle).
-  Run(Engine& engine, vehicle::Controller* controller, const vehicle::VehicleEffects& effects = {});
+  /// leaves every drive off (a passive vehicle). A drawbar, if given, pulls
+  /// from the start (DrawbarRig, placed on the vehicle as it stands now).
+  Run(Engine& engine, vehicle::Controller* controller, const vehicle::VehicleEffects& effects = {},
+      const std::optional<Drawbar>& drawbar = std::nullopt);
 
   /// One engine step. Throws InvalidInputError for a non-finite command.
   void step();
@@ -39,6 +42,10 @@ class Run {
   const WheelForces& wheelForces(int body) const { return *wheel_forces_[static_cast<std::size_t>(body)]; }
   /// The hitch force of the last step, if the vehicle has a hitch.
   const std::optional<vehicle::HitchForce>& hitch() const { return hitch_; }
+  /// The drawbar's pull of the last step (before the first: the pull the
+  /// first will apply), if the run has a drawbar.
+  const std::optional<DrawbarForce>& drawbar() const { return drawbar_force_; }
+  bool hasDrawbar() const { return drawbar_.has_value(); }
 
   /// Over the run so far: the largest joint error (vehicle::jointError),
   /// the deepest tyre deflection Z of any contact (m), and whether any body
@@ -69,6 +76,8 @@ class Run {
   std::vector<vehicle::MotorTarget> targets_;
   std::vector<vehicle::DriveReport> drives_;
   std::optional<vehicle::HitchForce> hitch_;
+  std::optional<DrawbarRig> drawbar_;
+  std::optional<DrawbarForce> drawbar_force_;
   vehicle::JointError max_joint_error_;
   double max_deflection_ = 0.0;
   bool non_finite_ = false;

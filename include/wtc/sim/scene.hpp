@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "wtc/sim/drawbar.hpp"
 #include "wtc/sim/engine.hpp"
 #include "wtc/vehicle/controller.hpp"
 #include "wtc/vehicle/vehicle_effects.hpp"
@@ -28,7 +29,14 @@ struct OutputSettings {
 struct SuccessCriteria {
   std::optional<double> min_distance;  ///< The vehicle's first body moved at least this far, horizontally (m).
   std::optional<double> max_distance;  ///< And at most this far (m).
-  double max_tilt_deg = 45.0;          ///< Every root's z axis within this of the vertical (deg).
+  /// The first body moved at least this far forward: along its own x axis
+  /// at the start, projected on the horizontal (m; going back counts
+  /// negative, so a vehicle sliding down a grade does not pass).
+  std::optional<double> min_advance;
+  /// At the end the first body moves at most this fast (m/s, horizontal): it
+  /// holds (a parked vehicle that settled), rather than slides.
+  std::optional<double> max_final_speed;
+  double max_tilt_deg = 45.0;  ///< Every root's z axis within this of the vertical (deg).
   /// At the end every wheel's centre at least this high (world z, m): on top of a ledge.
   std::optional<double> min_wheel_height;
 };
@@ -42,6 +50,10 @@ struct Scene {
   std::shared_ptr<const Terrain> terrain;
   vehicle::VehicleDescription vehicle;
   Eigen::Isometry3d placement{Eigen::Isometry3d::Identity()};  ///< The vehicle frame V in the world.
+  /// The vehicle's velocity at the start (m/s, in V), its wheels rolling
+  /// (startVelocities); zero: at rest, and the engines are not told.
+  Eigen::Vector3d start_velocity_V{Eigen::Vector3d::Zero()};
+  std::optional<Drawbar> drawbar;  ///< A drawbar rig pulling the vehicle, if any.
   vehicle::VehicleEffects vehicle_effects;
   std::string controller_type;  ///< "none", "schedule", ...
   /// A fresh controller for one run (controllers keep state).

@@ -4,6 +4,7 @@
 // in time and held after the last. Standing, driving straight, turning in
 // place and reconfiguring are schedules; the climbing and path-following
 // controllers are their own classes.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,14 +23,18 @@ struct DriveSchedule {
   std::vector<std::string> drives;  ///< Body names whose joint has a drive.
   DriveMode mode = DriveMode::kVelocity;
   std::vector<SchedulePoint> points;  ///< At least one.
+  /// From this time on (s, >= 0) the drives are off (free joints): a drive
+  /// that drives, then lets its wheel coast (a coast-down rig). None: never.
+  std::optional<double> off_after = std::nullopt;
 };
 
 class ScheduleController final : public Controller {
  public:
   /// Throws InvalidInputError naming `where` and the schedule for a name
   /// that is not a driven body of `vehicle`, a drive scheduled twice, no
-  /// points, times not increasing, or non-finite values. Drives not named
-  /// stay off.
+  /// points, times not increasing, non-finite values, or an off_after that
+  /// is negative, not finite, or on a schedule whose mode is already off.
+  /// Drives not named stay off.
   ScheduleController(const VehicleDescription& vehicle, std::vector<DriveSchedule> schedules, const std::string& where);
 
   void update(const VehicleState& state, std::span<DriveCommand> commands) override;
@@ -42,6 +47,7 @@ class ScheduleController final : public Controller {
     std::vector<int> bodies;
     DriveMode mode;
     std::vector<SchedulePoint> points;
+    std::optional<double> off_after;
   };
   std::vector<Entry> entries_;
 };

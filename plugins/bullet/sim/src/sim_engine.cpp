@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <span>
 #include <vector>
 
 #include <BulletCollision/CollisionShapes/btCompoundShape.h>
@@ -160,6 +161,49 @@ class SimEngine final : public sim::EngineBase {
     for (WarmStartedJointLimit* limit : limits_) limit->stepped();
     for (LinkFrames& f : link_frames_) f.valid = false;
     wheels_->stepped();
+  }
+
+  // The roots' velocities as given; each link's joint rate from its
+  // velocity against its parent's (btMultiBody's joint velocities: a
+  // revolute or prismatic joint's rate along its axis, a spherical joint's
+  // relative angular velocity in the link's frame).
+  void setVelocities(std::span<const sim::BodyVelocity> velocities) override {
+    requireOnePerBody(velocities.size());
+    const std::vector<Body>& bodies = vehicle().bodies;
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      const Ref& r = refs_[i];
+      const sim::BodyVelocity& v = velocities[i];
+      if (r.link < 0) {
+        r.multibody->setBaseVel(toBt(v.linear));
+        r.multibody->setBaseOmega(toBt(v.angular));
+        continue;
+      }
+      const int parent = bodies[i].parent;
+      const sim::BodyVelocity& p = velocities[parent];
+      const Eigen::Matrix3d R_WC = body(static_cast<int>(i)).pose.linear();
+      const Eigen::Vector3d r_PC = body(static_cast<int>(i)).pose.translation() - body(parent).pose.translation();
+      const Eigen::Vector3d w_rel = v.angular - p.angular;
+      const Eigen::Vector3d v_rel = v.linear - p.linear - p.angular.cross(r_PC);
+      const btMultibodyLink& link = r.multibody->getLink(r.link);
+      switch (bodies[i].joint.type) {
+        case JointType::kRevolute:
+          r.multibody->setJointVel(r.link, w_rel.dot(R_WC * toEigen(link.getAxisTop(0))));
+          break;
+        case JointType::kPrismatic:
+          r.multibody->setJointVel(r.link, v_rel.dot(R_WC * toEigen(link.getAxisBottom(0))));
+          break;
+        case JointType::kBall: {
+          const Eigen::Vector3d w_C = R_WC.transpose() * w_rel;
+          btScalar rates[3] = {w_C.x(), w_C.y(), w_C.z()};
+          r.multibody->setJointVelMultiDof(r.link, rates);
+          break;
+        }
+        case JointType::kFixed:
+          break;
+      }
+    }
+    // The plugin's cache of link velocities was read at the start pose.
+    for (LinkVelocities& lv : detail::PluginState::of(*plugin_).link_velocities) lv.valid = false;
   }
 
   vehicle::BodyKinematics body(int body) const override {

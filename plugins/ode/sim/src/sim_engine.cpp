@@ -4,6 +4,7 @@
 
 #include <array>
 #include <mutex>
+#include <span>
 #include <vector>
 
 #include <ode/ode.h>
@@ -157,6 +158,17 @@ class SimEngine final : public sim::EngineBase {
 
   void addForce(int body, const Eigen::Vector3d& force, const Eigen::Vector3d& point) override {
     dBodyAddForceAtPos(refs_.at(body).body, force.x(), force.y(), force.z(), point.x(), point.y(), point.z());
+  }
+
+  // Each body's velocity as given: ODE's joints hold the bodies together
+  // from the next step on, and take their rates from them.
+  void setVelocities(std::span<const sim::BodyVelocity> velocities) override {
+    requireOnePerBody(velocities.size());
+    for (std::size_t i = 0; i < velocities.size(); ++i) {
+      const sim::BodyVelocity& v = velocities[i];
+      dBodySetLinearVel(refs_[i].body, v.linear.x(), v.linear.y(), v.linear.z());
+      dBodySetAngularVel(refs_[i].body, v.angular.x(), v.angular.y(), v.angular.z());
+    }
   }
 
   void step() override {

@@ -23,7 +23,16 @@ ScheduleController::ScheduleController(const VehicleDescription& vehicle, std::v
                                 " s does not increase");
       }
     }
-    Entry entry{.bodies = {}, .mode = schedule.mode, .points = schedule.points};
+    if (schedule.off_after) {
+      if (!std::isfinite(*schedule.off_after) || *schedule.off_after < 0.0) {
+        throw InvalidInputError(at + ": off_after = " + formatNumber(*schedule.off_after) +
+                                " must be finite and >= 0 (s)");
+      }
+      if (schedule.mode == DriveMode::kOff) {
+        throw InvalidInputError(at + ": off_after on a schedule whose mode is off (its drives are off throughout)");
+      }
+    }
+    Entry entry{.bodies = {}, .mode = schedule.mode, .points = schedule.points, .off_after = schedule.off_after};
     for (const std::string& name : schedule.drives) {
       const int b = vehicle.find(name);
       if (b < 0 || !vehicle.bodies[b].joint.actuator || vehicle.bodies[b].parent < 0) {
@@ -51,6 +60,10 @@ double ScheduleController::valueAt(const std::vector<SchedulePoint>& points, dou
 
 void ScheduleController::update(const VehicleState& state, std::span<DriveCommand> commands) {
   for (const Entry& e : entries_) {
+    if (e.off_after && state.time >= *e.off_after) {
+      for (const int b : e.bodies) commands[b] = {.mode = DriveMode::kOff, .value = 0.0};
+      continue;
+    }
     const double value = valueAt(e.points, state.time);
     for (const int b : e.bodies) commands[b] = {.mode = e.mode, .value = value};
   }

@@ -14,7 +14,7 @@ std::vector<DriveSchedule> readSchedules(const YamlReader& in, const YAML::Node&
     const YamlReader s = in.with("controller.schedules[" + std::to_string(i) + "]: ");
     const YAML::Node n = node[i];
     s.requireMap(n, "a schedule");
-    s.checkKeys(n, {"drives", "mode", "points"});
+    s.checkKeys(n, {"drives", "mode", "points", "off_after"});
     DriveSchedule schedule;
     const YAML::Node drives = s.require(n, "drives");
     if (!drives.IsSequence()) s.fail(drives, "drives: expected a list of body names");
@@ -34,6 +34,14 @@ std::vector<DriveSchedule> readSchedules(const YamlReader& in, const YAML::Node&
     for (std::size_t k = 0; k < points.size(); ++k) {
       const Eigen::Vector2d p = s.vector<2>(points[k], "points[" + std::to_string(k) + "]");
       schedule.points.push_back({.time = p.x(), .value = p.y()});
+    }
+    if (const auto off = YamlReader::get(n, "off_after")) {
+      schedule.off_after = s.number(*off, "off_after");
+      if (*schedule.off_after < 0.0)
+        s.fail(*off, "off_after: " + formatNumber(*schedule.off_after) + " must be >= 0 (s)");
+      if (schedule.mode == DriveMode::kOff) {
+        s.fail(*off, "off_after: the schedule's mode is off already (its drives are off throughout)");
+      }
     }
     schedules.push_back(std::move(schedule));
   }

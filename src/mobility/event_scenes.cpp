@@ -1,0 +1,340 @@
+// The events' scenes (wtc/mobility/event_scenes.hpp). Geometry in the
+// vehicle frame of its file: x forward, y left, z up, ground at z = 0.
+#include "wtc/mobility/event_scenes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include <Eigen/Geometry>
+
+#include "wtc/base/constants.hpp"
+#include "wtc/base/error.hpp"
+#include "wtc/vehicle/controllers/climb_controller.hpp"
+
+namespace wtc::mobility {
+namespace {
+
+constexpr double kRampSeconds = 1.0;      // drives ramp to their rate over this (s)
+constexpr double kMarginM = 0.5;          // ground beyond what the run needs, each way (m)
+constexpr double kPieceThicknessM = 0.5;  // every piece's thickness (m)
+constexpr double kRunsOnFactor = 1.5;     // a search run lasts this many times its nominal travel time
+constexpr double kAxleTolM = 1e-6;
+
+// The wheels' extent in x (vehicle frame, m): the rearmost and frontmost contact reach.
+struct Extent {
+  double rear = 0.0, front = 0.0;              // x of the rearmost wheel's back, the frontmost's front
+  double wheel_rear = 0.0, wheel_front = 0.0;  // their centres' x
+  double r_front = 0.0, r_min = 0.0, r_max = 0.0;
+  double half_width = 0.0;  // the largest |y| of a wheel plus its half width
+};
+
+Extent extent(const EventVehicle& v) {
+  Extent e{.rear = INFINITY,
+           .front = -INFINITY,
+           .wheel_rear = INFINITY,
+           .wheel_front = -INFINITY,
+           .r_front = 0.0,
+           .r_min = INFINITY,
+           .r_max = 0.0,
+           .half_width = 0.0};
+  for (const WheelInfo& w : v.statics.wheels) {
+    const double x = w.position.x(), r = w.radius_m;
+    e.rear = std::min(e.rear, x - r);
+    if (x + r > e.front) {
+      e.front = x + r;
+      e.r_front = r;
+    }
+    e.wheel_rear = std::min(e.wheel_rear, x);
+    e.wheel_front = std::max(e.wheel_front, x);
+    e.r_min = std::min(e.r_min, r);
+    e.r_max = std::max(e.r_max, r);
+    e.half_width = std::max(e.half_width, std::abs(w.position.y()) + r);
+  }
+  return e;
+}
+
+std::string num(double v) {
+  std::ostringstream out;
+  out.precision(10);
+  out << v;
+  return out.str();
+}
+
+std::string list(const std::vector<std::string>& names) {
+  std::string out = "[";
+  for (std::size_t i = 0; i < names.size(); ++i) out += (i ? ", " : "") + names[i];
+  return out + "]";
+}
+
+std::vector<std::string> drivenWheels(const EventVehicle& v) {
+  std::vector<std::string> names;
+  for (const WheelInfo& w : v.statics.wheels) {
+    if (w.driven) names.push_back(w.name);
+  }
+  return names;
+}
+
+// The drives that are not wheels' (the robot's sections): held at their reference positions.
+std::vector<std::string> otherDrives(const EventVehicle& v) {
+  std::vector<std::string> names;
+  for (const int b : v.description.actuated()) {
+    if (!v.description.bodies[b].wheel) names.push_back(v.description.bodies[b].name);
+  }
+  return names;
+}
+
+// The driven wheels' common radius (their rates are set from it; the shipped vehicles' driven wheels
+// share one).
+double drivenRadius(const EventVehicle& v) {
+  for (const WheelInfo& w : v.statics.wheels) {
+    if (w.driven) return w.radius_m;
+  }
+  throw InvalidInputError("wtc::mobility: vehicle '" + v.description.name + "' has no driven wheel");
+}
+
+// A schedule controller: the driven wheels at `points` (velocity), the other drives held.
+std::string schedule(const EventVehicle& v, const std::string& wheel_points) {
+  std::string s = "controller:\n  type: schedule\n  schedules:\n";
+  s += "    - {drives: " + list(drivenWheels(v)) + ", mode: velocity, points: " + wheel_points + "}\n";
+  if (!otherDrives(v).empty()) s += "    - {drives: " + list(otherDrives(v)) + ", mode: position, points: [[0, 0]]}\n";
+  return s;
+}
+
+std::string onlyOthersHeld(const EventVehicle& v) {
+  if (otherDrives(v).empty()) return "controller: {type: none}\n";
+  return "controller:\n  type: schedule\n  schedules:\n    - {drives: " + list(otherDrives(v)) +
+         ", mode: position, points: [[0, 0]]}\n";
+}
+
+std::string ground(const Material& g) {
+  return "terrain:\n  materials:\n    ground: {mu_max: " + num(g.mu_max) + ", s1: " + num(g.s1) + ", s2: " + num(g.s2) +
+         ", rolling_resistance: " + num(g.rolling_resistance) + "}\n  pieces:\n";
+}
+
+std::string placement(const EventVehicle& v, const Eigen::Vector3d& t, const Eigen::Matrix3d& R,
+                      const std::string& extra = "") {
+  const Eigen::AngleAxisd aa(R);
+  Eigen::Vector3d axis = aa.axis();
+  double degrees = aa.angle() * 180.0 / std::numbers::pi;
+  if (std::abs(degrees) < 1e-12) axis = Eigen::Vector3d::UnitZ();
+  return "vehicle: {file: '" + v.file.string() + "', translation: [" + num(t.x()) + ", " + num(t.y()) + ", " +
+         num(t.z()) + "], rotation: {axis: [" + num(axis.x()) + ", " + num(axis.y()) + ", " + num(axis.z()) +
+         "], degrees: " + num(degrees) + "}" + extra + "}\n";
+}
+
+// `text` inside single quotes in YAML: a quote doubled.
+std::string quoted(const std::string& text) {
+  std::string out;
+  for (const char c : text) out += c == '\'' ? std::string("''") : std::string(1, c);
+  return out;
+}
+
+std::string head(const EventVehicle& v, const std::string& event, double value, const std::string& description,
+                 double duration) {
+  return "# A mobility event's trial, written by wtc-mobility (docs/mobility.md): replay it with wtc-sim.\n"
+         "name: " +
+         sceneName(v, event, value) + "\ndescription: '" + quoted(description) + "'\nduration: " + num(duration) +
+         "\neffects: [full]\noutput: {rate_hz: 100}\n";
+}
+
+// A flat slab around the vehicle's path from x0 to x1 (m).
+std::string slab(double x0, double x1, double half_width) {
+  const double length = x1 - x0 + 2.0 * kMarginM, width = 2.0 * (half_width + kMarginM) + 4.0;
+  return "    - {type: slab, material: ground, size: [" + num(length) + ", " + num(width) +
+         "], thickness: " + num(kPieceThicknessM) + ", translation: [" + num(0.5 * (x0 + x1)) + ", 0, 0]}\n";
+}
+
+// A duration that is a whole number of 0.1 s (so any dt dividing 0.1 s divides it).
+double roundDuration(double seconds) { return std::ceil(seconds * 10.0 - 1e-9) / 10.0; }
+
+}  // namespace
+
+std::string sceneName(const EventVehicle& v, const std::string& event, double value) {
+  std::string name = v.description.name + "_" + event;
+  if (event == "step" || event == "grade" || event == "parked" || event == "side_slope" || event == "drawbar" ||
+      event == "gap") {
+    char text[32];
+    std::snprintf(text, sizeof text, "_%.6g", value);
+    name += text;
+  }
+  for (char& c : name) {
+    const bool ok =
+        (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-' || c == '.';
+    if (!ok) c = '_';
+  }
+  return name;
+}
+
+bool hasClimbingController(const vehicle::VehicleDescription& v) {
+  try {
+    vehicle::ClimbController controller(v, vehicle::ClimbControllerParams{}, "wtc::mobility");
+    return true;
+  } catch (const InvalidInputError&) {
+    return false;
+  }
+}
+
+bool isSkidSteered(const VehicleStatics& v) {
+  if (!v.allDriven() || v.roots.size() != 1) return false;
+  const double half = std::abs(v.wheels.front().position.y());
+  return std::all_of(v.wheels.begin(), v.wheels.end(),
+                     [&](const WheelInfo& w) { return std::abs(std::abs(w.position.y()) - half) < kAxleTolM; });
+}
+
+std::string eventScene(const EventVehicle& v, const std::string& event, double value, const MobilitySettings& s) {
+  const Extent e = extent(v);
+  const double r = drivenRadius(v);
+  const double length = e.front - e.rear;
+  const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
+  std::string text;
+  if (event == "step" || event == "gap") {
+    // Front of the vehicle `approach` before the face at x = 0; climbed (crossed): the rearmost wheel's
+    // back past the face (the far edge) by a margin, so the first body moved approach + length + margin.
+    const bool step = event == "step";
+    const double speed = step ? s.step.approach_speed_mps : s.gap.approach_speed_mps;
+    const double approach = step ? s.step.approach_m : s.gap.approach_m;
+    const double far = step ? 0.0 : value;
+    const double travel = approach + length + far + kMarginM;
+    const double duration = roundDuration(
+        std::max(step ? s.step.duration_s : s.gap.duration_s, kRunsOnFactor * travel / speed + kRampSeconds));
+    const bool own = step && s.step.vehicle_controller && hasClimbingController(v.description);
+    text = head(v, event, value,
+                step ? "The tallest step: a ledge of " + num(value) + " m, " +
+                           (own ? "the vehicle's climbing controller" : "plain drive forward") + " at " + num(speed) +
+                           " m/s."
+                     : "The widest gap: " + num(value) + " m, plain drive forward at " + num(speed) + " m/s.",
+                duration);
+    text += ground(s.ground);
+    if (step) {
+      text += "    - {type: ledge, material: ground, height: " + num(value) +
+              ", approach_length: " + num(approach + length + 2.0 * kMarginM) +
+              ", top_length: " + num(length + 2.0 + travel) + ", width: " + num(2.0 * e.half_width + 2.0) +
+              ", thickness: " + num(kPieceThicknessM) + "}\n";
+    } else {
+      // Two boxes, top faces at z = 0, `value` apart: nothing under the gap.
+      const double near_len = approach + length + 2.0 * kMarginM, far_len = length + 2.0 + travel;
+      const double w = 2.0 * e.half_width + 2.0, depth = 1.0;
+      text += "    - {type: box, material: ground, size: [" + num(near_len) + ", " + num(w) + ", " + num(depth) +
+              "], translation: [" + num(-0.5 * near_len) + ", 0, " + num(-0.5 * depth) + "]}\n";
+      text += "    - {type: box, material: ground, size: [" + num(far_len) + ", " + num(w) + ", " + num(depth) +
+              "], translation: [" + num(value + 0.5 * far_len) + ", 0, " + num(-0.5 * depth) + "]}\n";
+    }
+    text += placement(v, Eigen::Vector3d(-approach - e.front, 0.0, 0.0), I);
+    if (own) {
+      text += "controller: {type: climb, approach_speed: " + num(speed) + "}\n";
+    } else {
+      text += schedule(v, "[[0, 0], [" + num(kRampSeconds) + ", " + num(speed / r) + "]]");
+    }
+    // The climbing controller stops once on top: every wheel's centre above the top (equal radii, as the
+    // controller's robot has); a plain drive keeps driving: the rearmost wheel past the face (the far edge).
+    if (own) {
+      text += "success: {min_wheel_height: " + num(value + e.r_min - 0.01) + ", max_tilt_deg: 45}\n";
+    } else {
+      text += "success: {min_advance: " + num(approach + length + far + 0.1) + ", max_tilt_deg: 45}\n";
+    }
+    return text;
+  }
+  if (event == "grade" || event == "parked" || event == "side_slope") {
+    const double theta = value * std::numbers::pi / 180.0;
+    const bool grade = event == "grade", side = event == "side_slope";
+    const double progress = grade ? s.grade.min_progress_m : 0.0;
+    const double duration =
+        roundDuration(grade ? s.grade.duration_s : (side ? s.side_slope.duration_s : s.parked.duration_s));
+    // The incline rises along +x from its foot at x = 0. Climbing and parked: the vehicle faces up it,
+    // pitched by theta. Across it: its x axis along world y, its y axis down the slope, z the slope's normal.
+    const double x_s = (side ? e.half_width : -e.rear) + kMarginM;
+    const double slope_length =
+        x_s + (side ? e.half_width : e.front) + progress / std::max(std::cos(theta), 0.1) + 2.0 * kMarginM + 1.0;
+    Eigen::Matrix3d R = Eigen::AngleAxisd(-theta, Eigen::Vector3d::UnitY()).toRotationMatrix();
+    if (side) {
+      R.col(0) = Eigen::Vector3d::UnitY();
+      R.col(1) = Eigen::Vector3d(-std::cos(theta), 0.0, -std::sin(theta));
+      R.col(2) = Eigen::Vector3d(-std::sin(theta), 0.0, std::cos(theta));
+    }
+    const std::string what = grade
+                                 ? "The steepest grade climbed from rest: "
+                                 : (side ? "Parked across a slope, wheels held: " : "Parked up a grade, wheels held: ");
+    text = head(v, event, value, what + num(value) + " deg.", duration);
+    text += ground(s.ground);
+    text += "    - {type: incline, material: ground, degrees: " + num(value) + ", length: " + num(slope_length) +
+            ", width: " + num(2.0 * (side ? length : e.half_width) + 4.0) + ", thickness: " + num(kPieceThicknessM) +
+            "}\n";
+    text += placement(v, Eigen::Vector3d(x_s, 0.0, x_s * std::tan(theta)), R);
+    if (grade) {
+      text += schedule(v, "[[0, 0], [" + num(kRampSeconds) + ", " + num(s.grade.wheel_rate_radps) + "]]");
+      text +=
+          "success: {min_advance: " + num(progress * std::cos(theta)) + ", max_tilt_deg: " + num(value + 30.0) + "}\n";
+    } else {
+      text += schedule(v, "[[0, 0]]");
+      text +=
+          "success: {max_final_speed: " + num(side ? s.side_slope.max_final_speed_mps : s.parked.max_final_speed_mps) +
+          ", max_distance: " + num(side ? s.side_slope.max_slide_m : s.parked.max_slide_m) +
+          ", max_tilt_deg: " + num(value + (side ? s.side_slope.max_tilt_deg : 30.0)) + "}\n";
+    }
+    return text;
+  }
+  if (event == "drawbar" || event == "coast" || event == "braking") {
+    const double speed =
+        event == "drawbar" ? s.drawbar.speed_mps : (event == "coast" ? s.coast.speed_mps : s.braking.speed_mps);
+    const double duration =
+        roundDuration(event == "drawbar" ? s.drawbar.settle_s + s.drawbar.mean_s
+                                         : (event == "coast" ? s.coast.duration_s : s.braking.duration_s));
+    const double travel = speed * duration + 1.0;
+    text =
+        head(v, event, value,
+             event == "drawbar" ? "Drawbar pull at driving slip " + num(value) + ", anchor at " + num(speed) + " m/s."
+                                : (event == "coast" ? "Coast-down from " + num(speed) + " m/s, drives off."
+                                                    : "Locked-wheel stop from " + num(speed) + " m/s."),
+             duration);
+    text += ground(s.ground) + slab(e.rear - kMarginM, e.front + travel, e.half_width);
+    text += placement(v, Eigen::Vector3d::Zero(), I, ", velocity: [" + num(speed) + ", 0, 0]");
+    if (event == "drawbar") {
+      // The wheels at omega = V / (r_f (1 - i)) from the start, the anchor on a spring k = (k/W) W with
+      // damping ratio zeta (c = 2 zeta sqrt(k m)), at ground level below the first body's centre of mass:
+      // a horizontal pull there has no moment about the ground line, so it moves no load between the
+      // axles (the bound's level loads); a pull at height h would move DP h / wheelbase.
+      const double k = s.drawbar.stiffness_per_weight * v.statics.weight();
+      const double c = 2.0 * s.drawbar.damping_ratio * std::sqrt(k * v.statics.mass_kg);
+      const vehicle::Body& first = v.description.bodies.front();
+      const Eigen::Vector3d p = first.pose.translation();
+      text += schedule(v, "[[0, " + num(speed / (r * (1.0 - value))) + "]]");
+      text += "drawbar: {body: " + first.name + ", point: [" + num(p.x()) + ", " + num(p.y()) + ", 0" +
+              "], speed: " + num(speed) + ", stiffness: " + num(k) + ", damping: " + num(c) + "}\n";
+    } else if (event == "coast") {
+      text += onlyOthersHeld(v);
+    } else {
+      text += schedule(v, "[[0, 0]]");
+    }
+    return text;
+  }
+  if (event == "turn") {
+    if (!isSkidSteered(v.statics)) {
+      throw InvalidInputError("wtc::mobility: vehicle '" + v.description.name +
+                              "' is not skid-steered (every wheel driven, on one track): no turning in place");
+    }
+    const double duration = roundDuration(s.turn.duration_s);
+    text = head(v, event, value,
+                "Turning in place: left wheels at -" + num(s.turn.wheel_rate_radps) + " rad/s, right at +" +
+                    num(s.turn.wheel_rate_radps) + " rad/s.",
+                duration);
+    text += ground(s.ground) + slab(-length - 2.0, length + 2.0, length + 2.0);
+    text += placement(v, Eigen::Vector3d::Zero(), I);
+    std::vector<std::string> left, right;
+    for (const WheelInfo& w : v.statics.wheels) (w.position.y() > 0.0 ? left : right).push_back(w.name);
+    const std::string ramp = "[[0, 0], [" + num(kRampSeconds) + ", ";
+    text += "controller:\n  type: schedule\n  schedules:\n";
+    text +=
+        "    - {drives: " + list(left) + ", mode: velocity, points: " + ramp + num(-s.turn.wheel_rate_radps) + "]]}\n";
+    text +=
+        "    - {drives: " + list(right) + ", mode: velocity, points: " + ramp + num(s.turn.wheel_rate_radps) + "]]}\n";
+    if (!otherDrives(v).empty()) {
+      text += "    - {drives: " + list(otherDrives(v)) + ", mode: position, points: [[0, 0]]}\n";
+    }
+    return text;
+  }
+  throw InvalidInputError("wtc::mobility: unknown event '" + event + "'");
+}
+
+}  // namespace wtc::mobility

@@ -1,0 +1,273 @@
+// The events' rounds (wtc/mobility/mobility_run.hpp): each round asks every
+// unfinished search for its next trial and every one-run event for its run,
+// makes the runs not yet finished (the study's pool, or a job list), reads
+// them back and advances the searches.
+#include "wtc/mobility/mobility_run.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+
+#include "io/content_hash.hpp"
+#include "wtc/base/error.hpp"
+#include "wtc/sim/run_summary_file.hpp"
+#include "wtc/study/study_runner.hpp"
+
+namespace wtc::mobility {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool isSearch(const std::string& event) {
+  return event == "step" || event == "grade" || event == "parked" || event == "side_slope" || event == "gap";
+}
+
+Search rangeOf(const std::string& event, const MobilitySettings& s) {
+  if (event == "step") return s.step.height_m;
+  if (event == "grade") return s.grade.degrees;
+  if (event == "parked") return s.parked.degrees;
+  if (event == "side_slope") return s.side_slope.degrees;
+  return s.gap.width_m;
+}
+
+// One event in one engine and mode (a drawbar: at one slip).
+struct Unit {
+  EventResult result;
+  double lo = 0.0, hi = 0.0;  // a search's largest pass and smallest failure so far
+  bool done = false;
+};
+
+// A search's next value: the range's top first, then halving [lo, hi] on the resolution's grid.
+std::optional<double> nextValue(Unit& u, const Search& range) {
+  if (u.result.trials.empty()) return range.high;
+  if (u.result.trials.front().passed || u.hi - u.lo <= range.resolution * (1.0 + 1e-9)) return std::nullopt;
+  const double steps = std::max(1.0, std::round(0.5 * (u.hi - u.lo) / range.resolution));
+  return u.lo + steps * range.resolution;
+}
+
+void describeSearch(Unit& u, const Search& range) {
+  EventResult& r = u.result;
+  const bool any = std::any_of(r.trials.begin(), r.trials.end(), [](const Trial& t) { return t.passed; });
+  if (r.trials.front().passed) {
+    r.measured = range.high;
+    r.note = "passed the search's top: at least this (raise the range)";
+  } else {
+    r.measured = u.lo;
+    r.note = "bisection to " + formatNumber(range.resolution) +
+             (any ? "" : "; no trial passed (at most the range's low)") +
+             "; first failure above: " + r.trials.back().failure;
+    for (const Trial& t : r.trials) {
+      if (!t.passed && t.value == u.hi) {
+        char value[32];
+        std::snprintf(value, sizeof value, "%.6g", t.value);
+        r.note = "bisection to " + formatNumber(range.resolution) + (any ? "" : "; no trial passed") + "; at " + value +
+                 ": " + t.failure;
+      }
+    }
+  }
+}
+
+std::string failureOf(const sim::RunSummary& summary, const std::string& event) {
+  if (summary.crashed) return "crashed";
+  if (summary.nan) return "non-finite state";
+  if (summary.diverged) return "diverged";
+  std::string text;
+  for (const sim::FailedCriterion& f : summary.failed_criteria) {
+    std::string what = f.criterion;
+    if (event == "side_slope" && (what == "max_final_speed" || what == "max_distance")) what = "slid";
+    if (event == "side_slope" && what == "max_tilt_deg") what = "tipped";
+    if (event == "parked" && (what == "max_final_speed" || what == "max_distance")) what = "slid";
+    if ((event == "grade" || event == "step" || event == "gap") && what == "min_advance") what = "stopped short";
+    if (text.find(what) == std::string::npos) text += (text.empty() ? "" : ", ") + what;
+  }
+  return text.empty() ? "failed" : text;
+}
+
+void setBound(EventResult& r, const Bound& b) {
+  r.bound = b.value;
+  r.bound_lower = b.lower;
+  r.governs = b.governs;
+}
+
+}  // namespace
+
+MobilityOutcome runMobility(const EventVehicle& v, const MobilitySettings& s, const MobilityOptions& opt) {
+  validate(s);
+  MobilityOutcome outcome;
+  outcome.bounds = computeBounds(v.statics, s);
+  const VehicleBounds& b = outcome.bounds;
+  fs::create_directories(opt.out / "scenes");
+  fs::create_directories(opt.out / "runs");
+
+  std::vector<Unit> units;
+  for (const std::string& event : s.events) {
+    for (const std::string& engine : s.engines) {
+      for (const std::string& mode : s.modes) {
+        Unit u;
+        u.result.event = event;
+        u.result.engine = engine;
+        u.result.mode = mode;
+        if (event == "step") {
+          u.result.quantity = "tallest step";
+          u.result.unit = "m";
+          setBound(u.result, b.step_m);
+          if (s.step.vehicle_controller && hasClimbingController(v.description)) {
+            u.result.quantity = "tallest step (the vehicle's climbing controller)";
+            u.result.governs += "; the bound is a plain drive's: a climbing controller's reach is its geometry's";
+          }
+        } else if (event == "grade") {
+          u.result.quantity = "steepest grade from rest";
+          u.result.unit = "deg";
+          setBound(u.result, b.grade_deg);
+        } else if (event == "parked") {
+          u.result.quantity = "steepest grade held";
+          u.result.unit = "deg";
+          setBound(u.result, b.parked_deg);
+        } else if (event == "side_slope") {
+          u.result.quantity = "side slope held";
+          u.result.unit = "deg";
+          setBound(u.result, b.side_slope_deg);
+        } else if (event == "gap") {
+          u.result.quantity = "widest gap";
+          u.result.unit = "m";
+          setBound(u.result, b.gap_m);
+          u.result.governs += " (one wheel dropping into it: a vehicle whose other axles carry it may bridge more)";
+        } else if (event == "coast") {
+          u.result.quantity = "coast-down deceleration";
+          u.result.unit = "m/s^2";
+          setBound(u.result, b.coast_mps2);
+        } else if (event == "braking") {
+          u.result.quantity = "locked stop";
+          u.result.unit = "m";
+          setBound(u.result, b.braking_m);
+        } else if (event == "turn") {
+          u.result.quantity = "yaw rate turning in place";
+          u.result.unit = "rad/s";
+          if (!b.turn_radps) {
+            u.result.note = "not skid-steered: the event does not apply";
+            u.done = true;
+          } else {
+            setBound(u.result, *b.turn_radps);
+          }
+        }
+        if (isSearch(event)) {
+          u.lo = rangeOf(event, s).low;
+          u.hi = rangeOf(event, s).high;
+        }
+        if (event != "drawbar") {
+          units.push_back(u);
+          continue;
+        }
+        for (const DrawbarPoint& p : b.drawbar) {
+          Unit d = u;
+          d.result.slip = p.slip;
+          d.result.quantity = "DP/W at i = " + formatNumber(p.slip);
+          d.result.unit = "";
+          d.result.bound = p.dp_per_weight;
+          d.result.governs = "mu(s) at the driven wheels";
+          units.push_back(d);
+        }
+      }
+    }
+  }
+
+  for (int round = 0;; ++round) {
+    // Each unfinished unit's next run.
+    struct Want {
+      Unit* unit;
+      double value;
+      study::PlannedRun run;
+    };
+    std::vector<Want> wanted;
+    std::map<std::string, bool> written;
+    for (Unit& u : units) {
+      if (u.done) continue;
+      double value = u.result.slip;
+      if (isSearch(u.result.event)) {
+        const std::optional<double> next = nextValue(u, rangeOf(u.result.event, s));
+        if (!next) {
+          u.done = true;
+          describeSearch(u, rangeOf(u.result.event, s));
+          continue;
+        }
+        value = *next;
+      }
+      const std::string text = eventScene(v, u.result.event, value, s);
+      const std::string name = sceneName(v, u.result.event, value);
+      const fs::path scene = opt.out / "scenes" / (name + ".yaml");
+      if (!written[name]) {
+        std::ofstream(scene) << text;
+        written[name] = true;
+      }
+      study::PlannedRun run;
+      run.scenario = u.result.event;
+      run.scene_file = fs::absolute(scene);
+      run.overrides = {{.path = "engine", .value = u.result.engine},
+                       {.path = "mode", .value = u.result.mode},
+                       {.path = "dt", .value = formatNumber(s.dt_s)}};
+      run.origins = {"engines", "modes", "dt"};
+      run.sweep = "mobility";
+      run.label = u.result.engine + " " + u.result.mode;
+      // The scene's text is in the key: other settings (a ground, a speed) never reuse a run.
+      const std::uint64_t h =
+          io::fnv1a(text + "\n" + u.result.engine + "\n" + u.result.mode + "\n" + formatNumber(s.dt_s));
+      run.key = name + "-" + u.result.engine + "-" + u.result.mode + "-" + io::hexDigits(h);
+      wanted.push_back({&u, value, run});
+    }
+    if (wanted.empty()) break;
+
+    study::StudyPlan pending;
+    pending.name = "mobility";
+    pending.source = opt.out / "scenes";
+    for (const Want& w : wanted) {
+      if (sim::runEnded(study::runDirectory(opt.out, w.run))) continue;
+      if (std::none_of(pending.runs.begin(), pending.runs.end(),
+                       [&](const study::PlannedRun& r) { return r.key == w.run.key; })) {
+        pending.runs.push_back(w.run);
+        if (std::find(pending.scenarios.begin(), pending.scenarios.end(), w.run.scenario) == pending.scenarios.end()) {
+          pending.scenarios.push_back(w.run.scenario);
+        }
+      }
+    }
+    if (!pending.runs.empty()) {
+      if (opt.job_list) {
+        std::ofstream jobs(opt.out / "jobs.txt");
+        for (const std::string& line : study::jobLines(pending, opt.out, opt.wtc_sim)) jobs << line << '\n';
+        outcome.pending_jobs = pending.runs.size();
+        break;
+      }
+      if (opt.progress) {
+        opt.progress("round " + std::to_string(round + 1) + ": " + std::to_string(pending.runs.size()) + " runs");
+      }
+      study::runPlan(pending, opt.out, opt.workers, opt.wtc_sim);
+      outcome.runs_made += pending.runs.size();
+    }
+    for (const Want& w : wanted) {
+      Unit& u = *w.unit;
+      const fs::path dir = study::runDirectory(opt.out, w.run);
+      const sim::RunSummary summary = sim::readRunSummary(dir / "summary.json");
+      if (isSearch(u.result.event)) {
+        Trial t{.value = w.value, .passed = summary.success && !summary.crashed, .failure = {}, .run = w.run.key};
+        if (!t.passed) t.failure = failureOf(summary, u.result.event);
+        (t.passed ? u.lo : u.hi) = w.value;
+        u.result.trials.push_back(t);
+        continue;
+      }
+      u.done = true;
+      if (summary.crashed || summary.nan || summary.diverged) {
+        u.result.note = "the run failed: " + failureOf(summary, u.result.event) + " (" + w.run.key + ")";
+        continue;
+      }
+      double torque = 0.0;
+      u.result.measured = measureRun(v, u.result.event, s, dir, &torque);
+      if (u.result.event == "drawbar") u.result.torque_coefficient = torque;
+      u.result.note = w.run.key;
+    }
+  }
+  for (const Unit& u : units) outcome.results.push_back(u.result);
+  return outcome;
+}
+
+}  // namespace wtc::mobility

@@ -1,0 +1,105 @@
+// The events run on the study's worker pool and as a job list: a grade
+// search bisects to its resolution and lands below the bound within it, a
+// coast-down measures the bound's deceleration, and the job list made
+// round by round (run the lines, call again) gives the pool's results.
+#include "wtc/mobility/mobility_run.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "wtc/mobility/mobility_report.hpp"
+#include "wtc/vehicle/vehicle_file.hpp"
+
+namespace wtc::mobility {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr double kCoastTolerance = 0.01;  // relative (measured: 5e-4 in Bullet, force mode)
+
+EventVehicle robot() {
+  EventVehicle v;
+  v.file = fs::path(WTC_SOURCE_DIR) / "vehicles" / "six_wheel_robot.yaml";
+  v.description = vehicle::loadVehicle(v.file);
+  v.statics = describeStatics(v.description);
+  return v;
+}
+
+// A short search: [0, 48] deg by 16 (trials 48, 32, then done), 3 s runs; and a 1.5 s coast-down.
+MobilitySettings quick() {
+  MobilitySettings s;
+  s.engines = {"bullet"};
+  s.modes = {"force"};
+  s.events = {"grade", "coast"};
+  s.grade.degrees = {0.0, 48.0, 16.0};
+  s.grade.duration_s = 3.0;
+  s.grade.min_progress_m = 0.2;
+  s.coast.duration_s = 1.5;
+  return s;
+}
+
+fs::path freshDir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / name;
+  fs::remove_all(dir);
+  return dir;
+}
+
+const EventResult& find(const MobilityOutcome& o, const std::string& event) {
+  for (const EventResult& r : o.results) {
+    if (r.event == event) return r;
+  }
+  throw std::runtime_error("no " + event);
+}
+
+TEST(MobilityRunTest, TheSearchBisectsBelowTheBoundAndTheCoastDownMeetsIt) {
+  const EventVehicle v = robot();
+  MobilityOptions options{.out = freshDir("wtc_mobility_run_test"), .wtc_sim = WTC_SIM_EXE, .workers = 2};
+  const MobilityOutcome o = runMobility(v, quick(), options);
+  EXPECT_EQ(o.runs_made, 3u);
+  const EventResult& grade = find(o, "grade");
+  ASSERT_EQ(grade.trials.size(), 2u);
+  EXPECT_EQ(grade.trials[0].value, 48.0);
+  EXPECT_FALSE(grade.trials[0].passed);  // beyond atan 0.8 = 38.66 deg
+  EXPECT_EQ(grade.trials[1].value, 32.0);
+  EXPECT_TRUE(grade.trials[1].passed);
+  ASSERT_TRUE(grade.measured.has_value());
+  EXPECT_EQ(*grade.measured, 32.0);
+  EXPECT_LE(*grade.measured, grade.bound);
+  EXPECT_GE(*grade.measured + 16.0, grade.bound);
+  const EventResult& coast = find(o, "coast");
+  ASSERT_TRUE(coast.measured.has_value());
+  EXPECT_NEAR(*coast.measured, coast.bound, kCoastTolerance * coast.bound);
+  // The scenes are kept for the user to replay.
+  EXPECT_TRUE(fs::exists(options.out / "scenes" / "six_wheel_robot_grade_32.yaml"));
+  // A second call finds every run finished and makes none.
+  EXPECT_EQ(runMobility(v, quick(), options).runs_made, 0u);
+  writeReport(v, quick(), o, options.out, "test");
+  EXPECT_TRUE(fs::exists(options.out / "report.json"));
+  std::ifstream md(options.out / "report.md");
+  const std::string text((std::istreambuf_iterator<char>(md)), {});
+  EXPECT_NE(text.find("| steepest grade from rest | bullet | force | 32 deg | 38.66 deg |"), std::string::npos) << text;
+}
+
+TEST(MobilityRunTest, AJobListRoundByRoundGivesThePoolsResults) {
+  const EventVehicle v = robot();
+  MobilityOptions options{.out = freshDir("wtc_mobility_jobs_test"), .wtc_sim = WTC_SIM_EXE, .job_list = true};
+  std::vector<std::size_t> rounds;
+  MobilityOutcome o;
+  for (int call = 0; call < 5; ++call) {
+    o = runMobility(v, quick(), options);
+    if (o.pending_jobs == 0) break;
+    rounds.push_back(o.pending_jobs);
+    std::ifstream jobs(options.out / "jobs.txt");
+    for (std::string line; std::getline(jobs, line);) ASSERT_LE(std::system(line.c_str()) >> 8, 1) << line;
+  }
+  EXPECT_EQ(rounds, (std::vector<std::size_t>{2, 1}));  // grade 48 and the coast; then grade 32
+  EXPECT_EQ(o.runs_made, 0u);
+  EXPECT_EQ(*find(o, "grade").measured, 32.0);
+  EXPECT_TRUE(find(o, "coast").measured.has_value());
+}
+
+}  // namespace
+}  // namespace wtc::mobility
