@@ -76,6 +76,9 @@ int main(int argc, char** argv) {
     vehicle.description = wtc::vehicle::loadVehicle(vehicle.file);
     vehicle.statics = wtc::mobility::describeStatics(vehicle.description);
     const fs::path dir = out.empty() ? fs::path("mobility") / vehicle.description.name : fs::path(out);
+    if (fs::exists(dir) && !fs::is_directory(dir)) {
+      throw wtc::InvalidInputError("--out " + dir.string() + ": exists and is not a directory (the report's folder)");
+    }
     fs::create_directories(dir);
 
     wtc::mobility::MobilityOptions options;

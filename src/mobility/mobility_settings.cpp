@@ -112,6 +112,30 @@ std::string eventProblem(const std::string& name) {
   return "'" + name + "' is not an event (known: " + known + ")";
 }
 
+// The engine table's and the scene's own refusals of a name, as a problem
+// ("" for a known one): the settings file and the command line say the same.
+std::string engineProblem(const std::string& name) {
+  sim::EngineSettings settings;
+  settings.engine = name;
+  settings.engine_where = "engines";
+  try {
+    sim::requireEngine(settings);
+  } catch (const InvalidInputError& error) {
+    return error.what();
+  }
+  return {};
+}
+
+std::string modeProblem(const std::string& name) {
+  sim::EngineSettings settings;
+  try {
+    sim::parseMode(name, settings, "modes");
+  } catch (const InvalidInputError& error) {
+    return error.what();
+  }
+  return {};
+}
+
 std::vector<std::string> readNames(const YamlReader& in, const YAML::Node& node, const std::string& key) {
   if (!node.IsSequence() || node.size() == 0) in.fail(node, key + ": expected a list of names");
   std::vector<std::string> names;
@@ -163,25 +187,13 @@ MobilitySettings readSettings(const std::filesystem::path& path) {
   if (const auto e = YamlReader::get(root, "engines")) {
     s.engines = readNames(in, *e, "engines");
     for (std::size_t i = 0; i < s.engines.size(); ++i) {
-      sim::EngineSettings settings;
-      settings.engine = s.engines[i];
-      settings.engine_where = "engines";
-      try {
-        sim::requireEngine(settings);
-      } catch (const InvalidInputError& error) {
-        in.fail((*e)[i], error.what());
-      }
+      if (const std::string p = engineProblem(s.engines[i]); !p.empty()) in.fail((*e)[i], p);
     }
   }
   if (const auto m = YamlReader::get(root, "modes")) {
     s.modes = readNames(in, *m, "modes");
     for (std::size_t i = 0; i < s.modes.size(); ++i) {
-      sim::EngineSettings settings;
-      try {
-        sim::parseMode(s.modes[i], settings, "modes");
-      } catch (const InvalidInputError& error) {
-        in.fail((*m)[i], error.what());
-      }
+      if (const std::string p = modeProblem(s.modes[i]); !p.empty()) in.fail((*m)[i], p);
     }
   }
   if (const auto d = YamlReader::get(root, "dt")) {
@@ -259,6 +271,12 @@ void validate(const MobilitySettings& settings) {
   }
   for (const std::string& e : copy.events) {
     if (const std::string p = eventProblem(e); !p.empty()) throw InvalidInputError(where + "events: " + p);
+  }
+  for (const std::string& e : copy.engines) {
+    if (const std::string p = engineProblem(e); !p.empty()) throw InvalidInputError(where + p);
+  }
+  for (const std::string& m : copy.modes) {
+    if (const std::string p = modeProblem(m); !p.empty()) throw InvalidInputError(where + p);
   }
   for (const Section& section : sections(copy)) {
     for (const NumberField& f : section.numbers) {

@@ -270,6 +270,13 @@ VehicleDescription readVehicleFile(const std::filesystem::path& path) {
 }  // namespace
 
 VehicleDescription loadVehicle(const std::filesystem::path& path) {
+  // A URDF alone lacks what makes a vehicle (which links are wheels, their
+  // tyres, the drives): said plainly rather than as the XML's YAML error.
+  if (path.extension() == ".urdf" || path.extension() == ".URDF") {
+    throw InvalidInputError(path.string() +
+                            ": a URDF, not a vehicle file: give a vehicle file (YAML) that names it (urdf: " +
+                            path.filename().string() + ") and adds its wheels and drives (docs/urdf.md)");
+  }
   return io::detail::withYamlErrors(path, [&] { return readVehicleFile(path); });
 }
 

@@ -3,7 +3,7 @@
 
 The table between the markers `<!-- cases: begin -->` and `<!-- cases: end -->`
 is the case list itself: each row's command is run as a user would type it from
-the repository's root (with wtc-sim and wtc-study on PATH, through bash, in a
+the repository's root (with wtc-sim, wtc-study and wtc-mobility on PATH, through bash, in a
 scratch directory that links the repository's folders, so that nothing is
 written into the tree), and its exit status and the message excerpt on stderr
 are checked. A row whose status is `pending: row N` (a fix made on another
@@ -12,7 +12,7 @@ merging). The file also checks that every file in tests/bad_input is used by a
 case, and that every test the library table names exists, so that the document
 and the behaviour cannot drift apart.
 
-usage: run_cases.py --wtc-sim PATH --wtc-study PATH --source DIR [--run-pending] [--only ID]
+usage: run_cases.py --wtc-sim PATH --wtc-study PATH --wtc-mobility PATH --source DIR [--run-pending] [--only ID]
 """
 import argparse
 import os
@@ -68,6 +68,7 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--wtc-sim", required=True)
     parser.add_argument("--wtc-study", required=True)
+    parser.add_argument("--wtc-mobility", required=True)
     parser.add_argument("--source", required=True)
     parser.add_argument("--run-pending", action="store_true")
     parser.add_argument("--only", help="run the case of this id only")
@@ -87,8 +88,8 @@ def main():
         failures.append(f"case ids used twice: {duplicates}")
 
     env = dict(os.environ)
-    env["PATH"] = os.pathsep.join([os.path.dirname(os.path.abspath(args.wtc_sim)),
-                                   os.path.dirname(os.path.abspath(args.wtc_study)), env.get("PATH", "")])
+    programs = (args.wtc_sim, args.wtc_study, args.wtc_mobility)
+    env["PATH"] = os.pathsep.join([os.path.dirname(os.path.abspath(p)) for p in programs] + [env.get("PATH", "")])
     work = scratch(source)
     ran = skipped = 0
     for case, _, _, command, exit_text, excerpt, status in rows:

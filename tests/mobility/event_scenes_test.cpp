@@ -11,6 +11,7 @@
 #include <fstream>
 #include <numbers>
 
+#include "scratch_path.hpp"
 #include "wtc/base/error.hpp"
 #include "wtc/mobility/mobility_bounds.hpp"
 #include "wtc/sim/engine_table.hpp"
@@ -37,7 +38,7 @@ EventVehicle shipped(const std::string& file) {
 }
 
 sim::Scene load(const std::string& text) {
-  const fs::path path = fs::temp_directory_path() / "wtc_event_scene_test.yaml";
+  const fs::path path = wtc::test::scratchPath("wtc_event_scene_test.yaml");
   std::ofstream(path) << text;
   return sim::loadScene(path);
 }

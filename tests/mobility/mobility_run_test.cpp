@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "scratch_path.hpp"
 #include "wtc/mobility/mobility_report.hpp"
 #include "wtc/vehicle/vehicle_file.hpp"
 
@@ -42,7 +43,7 @@ MobilitySettings quick() {
 }
 
 fs::path freshDir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / name;
+  const fs::path dir = wtc::test::scratchPath(name);
   fs::remove_all(dir);
   return dir;
 }

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "scratch_path.hpp"
 #include "wtc/base/error.hpp"
 
 namespace wtc::mobility {
@@ -17,7 +18,7 @@ using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
 fs::path write(const std::string& text) {
-  const fs::path path = fs::temp_directory_path() / "wtc_mobility_settings_test.yaml";
+  const fs::path path = wtc::test::scratchPath("wtc_mobility_settings_test.yaml");
   std::ofstream(path) << text;
   return path;
 }
@@ -91,6 +92,26 @@ TEST(MobilitySettingsTest, BadSettingsAreRefusedAtTheirLineAndColumn) {
   MobilitySettings s;
   s.parked.degrees.resolution = -1;
   EXPECT_THROW(validate(s), InvalidInputError);
+}
+
+// The command line's --engine and --mode reach validate, not the file's
+// reader: refused there too, before any scene is written.
+TEST(MobilitySettingsTest, UnknownEnginesAndModesFromTheCommandLineAreRefusedByName) {
+  const auto problem = [](const MobilitySettings& s) {
+    try {
+      validate(s);
+    } catch (const InvalidInputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  MobilitySettings s;
+  s.engines = {"bullet", "physx"};
+  EXPECT_THAT(problem(s), HasSubstr("unknown engine 'physx'"));
+  s = MobilitySettings();
+  s.modes = {"rigid"};
+  EXPECT_THAT(problem(s), HasSubstr("modes: 'rigid'"));
+  EXPECT_EQ(problem(MobilitySettings()), "");
 }
 
 }  // namespace

@@ -5,18 +5,18 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include <unistd.h>
 #include <atomic>
 #include <filesystem>
 
+#include "scratch_path.hpp"
 #include "wtc/base/constants.hpp"
-#include "wtc/sim/run_summary_file.hpp"
-#include "wtc/sim/scene_file.hpp"
+#include "wtc/base/tolerances.hpp"
 #include "wtc/sim/engine_table.hpp"
 #include "wtc/sim/run.hpp"
+#include "wtc/sim/run_summary_file.hpp"
+#include "wtc/sim/scene_file.hpp"
 #include "wtc/sim/scene_run.hpp"
 #include "wtc/sim/sim_constants.hpp"
-#include "wtc/base/tolerances.hpp"
 
 namespace wtc::sim {
 namespace {
@@ -71,7 +71,7 @@ TEST(RunOutcomeTest, AnInterruptedRunSaysWhenItStopped) {
 }
 
 TEST(RunOutcomeTest, FailedCriteriaAreWrittenAndReadBack) {
-  const fs::path dir = fs::temp_directory_path() / ("wtc_run_outcome_" + std::to_string(::getpid()));
+  const fs::path dir = wtc::test::scratchPath("wtc_run_outcome");
   fs::create_directories(dir);
   const fs::path file = dir / "summary.json";
   RunSummary s = run(scene("robot_straight", {{"duration", "0.4"}}));

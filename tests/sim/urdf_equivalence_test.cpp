@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "scratch_path.hpp"
 #include "wtc/sim/engine_table.hpp"
 #include "wtc/sim/scene_file.hpp"
 #include "wtc/sim/scene_run.hpp"
@@ -26,8 +27,8 @@ constexpr double kSeriesTolerance = 1e-9;  // relative to max(1, |value|): the i
 
 fs::path runScene(const std::string& scene, const std::string& engine, const std::string& mode,
                   const std::string& vehicle_file) {
-  const fs::path out = fs::temp_directory_path() /
-                       ("wtc_urdf_equivalence_" + engine + "_" + mode + "_" + fs::path(vehicle_file).stem().string());
+  const fs::path out = wtc::test::scratchPath("wtc_urdf_equivalence_" + engine + "_" + mode + "_" +
+                                              fs::path(vehicle_file).stem().string());
   fs::remove_all(out);
   fs::create_directories(out);
   const sim::Scene s =

@@ -11,6 +11,7 @@
 #include <functional>
 #include <set>
 
+#include "scratch_path.hpp"
 #include "wtc/base/error.hpp"
 #include "wtc/sim/run_summary_file.hpp"
 #include "wtc/study/study_file.hpp"
@@ -28,7 +29,7 @@ using wtc::study::StudyPlan;
 const fs::path kTinyStudy = fs::path(WTC_SOURCE_DIR) / "tests/study/tiny_study.yaml";
 
 fs::path freshDirectory(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("wtc_study_test_" + name + "_" + std::to_string(::getpid()));
+  const fs::path dir = wtc::test::scratchPath("wtc_study_test_" + name);
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "scratch_path.hpp"
 #include "wtc/base/error.hpp"
 #include "wtc/vehicle/controllers/path_controller.hpp"
 #include "wtc/vehicle/vehicle_file.hpp"
@@ -21,7 +22,7 @@ const std::filesystem::path kUrdf = kSource / "tests" / "urdf";
 // A vehicle file in a fresh folder naming `urdf` (absolute) and `body`.
 std::filesystem::path writeVehicleFile(const std::string& test, const std::filesystem::path& urdf,
                                        const std::string& body) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("wtc_urdf_vehicle_" + test);
+  const std::filesystem::path dir = wtc::test::scratchPath("wtc_urdf_vehicle_" + test);
   std::filesystem::create_directories(dir);
   const std::filesystem::path file = dir / "vehicle.yaml";
   std::ofstream(file) << "name: test\nurdf: " << urdf.string() << "\n" << body;

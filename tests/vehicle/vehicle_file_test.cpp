@@ -9,6 +9,7 @@
 #include <fstream>
 #include <numbers>
 
+#include "scratch_path.hpp"
 #include "wtc/base/error.hpp"
 
 namespace wtc::vehicle {
@@ -60,7 +61,7 @@ TEST(VehicleFileTest, TowedSystemHasTwoRootsAndAHitchWhosePointsMeet) {
 }
 
 std::string errorOfFile(const std::string& text) {
-  const auto path = std::filesystem::temp_directory_path() / "wtc_vehicle_file_test.yaml";
+  const auto path = wtc::test::scratchPath("wtc_vehicle_file_test.yaml");
   std::ofstream(path) << text;
   try {
     loadVehicle(path);
