@@ -85,6 +85,33 @@ std::string failureOf(const sim::RunSummary& summary, const std::string& event) 
   return text.empty() ? "failed" : text;
 }
 
+// What each event measures, in what unit, against which of the bounds (the
+// turn's is optional: only a skid-steered vehicle has one; the drawbar's
+// are per slip, made below).
+struct EventQuantity {
+  const char* event;
+  const char* quantity;
+  const char* unit;
+  Bound VehicleBounds::*bound;
+};
+
+const EventQuantity* quantityOf(const std::string& event) {
+  static const EventQuantity table[] = {
+      {"step", "tallest step", "m", &VehicleBounds::step_m},
+      {"grade", "steepest grade from rest", "deg", &VehicleBounds::grade_deg},
+      {"parked", "steepest grade held", "deg", &VehicleBounds::parked_deg},
+      {"side_slope", "side slope held", "deg", &VehicleBounds::side_slope_deg},
+      {"gap", "widest gap", "m", &VehicleBounds::gap_m},
+      {"coast", "coast-down deceleration", "m/s^2", &VehicleBounds::coast_mps2},
+      {"braking", "locked stop", "m", &VehicleBounds::braking_m},
+      {"turn", "yaw rate turning in place", "rad/s", nullptr},
+  };
+  for (const EventQuantity& q : table) {
+    if (event == q.event) return &q;
+  }
+  return nullptr;
+}
+
 void setBound(EventResult& r, const Bound& b) {
   r.bound = b.value;
   r.bound_lower = b.lower;
@@ -109,48 +136,23 @@ MobilityOutcome runMobility(const EventVehicle& v, const MobilitySettings& s, co
         u.result.event = event;
         u.result.engine = engine;
         u.result.mode = mode;
-        if (event == "step") {
-          u.result.quantity = "tallest step";
-          u.result.unit = "m";
-          setBound(u.result, b.step_m);
-          if (s.step.vehicle_controller && hasClimbingController(v.description)) {
-            u.result.quantity = "tallest step (the vehicle's climbing controller)";
-            u.result.governs += "; the bound is a plain drive's: a climbing controller's reach is its geometry's";
-          }
-        } else if (event == "grade") {
-          u.result.quantity = "steepest grade from rest";
-          u.result.unit = "deg";
-          setBound(u.result, b.grade_deg);
-        } else if (event == "parked") {
-          u.result.quantity = "steepest grade held";
-          u.result.unit = "deg";
-          setBound(u.result, b.parked_deg);
-        } else if (event == "side_slope") {
-          u.result.quantity = "side slope held";
-          u.result.unit = "deg";
-          setBound(u.result, b.side_slope_deg);
-        } else if (event == "gap") {
-          u.result.quantity = "widest gap";
-          u.result.unit = "m";
-          setBound(u.result, b.gap_m);
-          u.result.governs += " (one wheel dropping into it: a vehicle whose other axles carry it may bridge more)";
-        } else if (event == "coast") {
-          u.result.quantity = "coast-down deceleration";
-          u.result.unit = "m/s^2";
-          setBound(u.result, b.coast_mps2);
-        } else if (event == "braking") {
-          u.result.quantity = "locked stop";
-          u.result.unit = "m";
-          setBound(u.result, b.braking_m);
-        } else if (event == "turn") {
-          u.result.quantity = "yaw rate turning in place";
-          u.result.unit = "rad/s";
-          if (!b.turn_radps) {
+        if (const EventQuantity* q = quantityOf(event)) {
+          u.result.quantity = q->quantity;
+          u.result.unit = q->unit;
+          if (q->bound != nullptr) {
+            setBound(u.result, b.*(q->bound));
+          } else if (b.turn_radps) {
+            setBound(u.result, *b.turn_radps);
+          } else {
             u.result.note = "not skid-steered: the event does not apply";
             u.done = true;
-          } else {
-            setBound(u.result, *b.turn_radps);
           }
+        }
+        if (event == "step" && s.step.vehicle_controller && hasClimbingController(v.description)) {
+          u.result.quantity = "tallest step (the vehicle's climbing controller)";
+          u.result.governs += "; the bound is a plain drive's: a climbing controller's reach is its geometry's";
+        } else if (event == "gap") {
+          u.result.governs += " (one wheel dropping into it: a vehicle whose other axles carry it may bridge more)";
         }
         if (isSearch(event)) {
           u.lo = rangeOf(event, s).low;
