@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <sstream>
 
@@ -92,6 +93,16 @@ double drivenRadius(const EventVehicle& v) {
     if (w.driven) return w.radius_m;
   }
   throw InvalidInputError("wtc::mobility: vehicle '" + v.description.name + "' has no driven wheel");
+}
+
+// The slowest of the driven wheels' drive limits (max_speed, rad/s): a
+// commanded rate beyond it is clamped (wtc/vehicle/drive.hpp).
+double drivenMaxRate(const EventVehicle& v) {
+  double rate = std::numeric_limits<double>::infinity();
+  for (const WheelInfo& w : v.statics.wheels) {
+    if (w.driven && w.max_rate_radps > 0.0) rate = std::min(rate, w.max_rate_radps);
+  }
+  return rate;
 }
 
 // A schedule controller: the driven wheels at `points` (velocity), the other drives held.
@@ -200,6 +211,11 @@ std::string eventScene(const EventVehicle& v, const std::string& event, double v
     const double duration = roundDuration(
         std::max(step ? s.step.duration_s : s.gap.duration_s, kRunsOnFactor * travel / speed + kRampSeconds));
     const bool own = step && s.step.vehicle_controller && hasClimbingController(v.description);
+    // The ground past the face (the far edge) holds the whole travel and, for a plain drive that never
+    // stops, all it can roll in the run: its front at most speed (duration - ramp / 2) from the start,
+    // rolling without slip (a short vehicle's run is long: the settings' duration is the robot's climb).
+    const double reach = own ? 0.0 : speed * (duration - 0.5 * kRampSeconds) - approach - far + kMarginM;
+    const double beyond = std::max(length + 2.0 + travel, reach);
     text = head(v, event, value,
                 step ? "The tallest step: a ledge of " + num(value) + " m, " +
                            (own ? "the vehicle's climbing controller" : "plain drive forward") + " at " + num(speed) +
@@ -209,12 +225,11 @@ std::string eventScene(const EventVehicle& v, const std::string& event, double v
     text += ground(s.ground);
     if (step) {
       text += "    - {type: ledge, material: ground, height: " + num(value) +
-              ", approach_length: " + num(approach + length + 2.0 * kMarginM) +
-              ", top_length: " + num(length + 2.0 + travel) + ", width: " + num(2.0 * e.half_width + 2.0) +
-              ", thickness: " + num(kPieceThicknessM) + "}\n";
+              ", approach_length: " + num(approach + length + 2.0 * kMarginM) + ", top_length: " + num(beyond) +
+              ", width: " + num(2.0 * e.half_width + 2.0) + ", thickness: " + num(kPieceThicknessM) + "}\n";
     } else {
       // Two boxes, top faces at z = 0, `value` apart: nothing under the gap.
-      const double near_len = approach + length + 2.0 * kMarginM, far_len = length + 2.0 + travel;
+      const double near_len = approach + length + 2.0 * kMarginM, far_len = beyond;
       const double w = 2.0 * e.half_width + 2.0, depth = 1.0;
       text += "    - {type: box, material: ground, size: [" + num(near_len) + ", " + num(w) + ", " + num(depth) +
               "], translation: [" + num(-0.5 * near_len) + ", 0, " + num(-0.5 * depth) + "]}\n";
@@ -276,8 +291,11 @@ std::string eventScene(const EventVehicle& v, const std::string& event, double v
     return text;
   }
   if (event == "drawbar" || event == "coast" || event == "braking") {
-    const double speed =
-        event == "drawbar" ? s.drawbar.speed_mps : (event == "coast" ? s.coast.speed_mps : s.braking.speed_mps);
+    // The drawbar's wheels turn at omega = V / (r_f (1 - i)); where that is beyond the drives' limit, which
+    // would clamp it and impose a smaller slip than asked, the anchor and the vehicle go slower instead:
+    // V = min(V, omega_max r_f (1 - i)) (the slip law, and so DP/W, depends on the slip alone).
+    const double speed = event == "drawbar" ? std::min(s.drawbar.speed_mps, drivenMaxRate(v) * r * (1.0 - value))
+                                            : (event == "coast" ? s.coast.speed_mps : s.braking.speed_mps);
     const double duration =
         roundDuration(event == "drawbar" ? s.drawbar.settle_s + s.drawbar.mean_s
                                          : (event == "coast" ? s.coast.duration_s : s.braking.duration_s));
