@@ -40,35 +40,36 @@ DirectStepper::DirectStepper(dWorldID world, std::vector<dBodyID> bodies, std::v
 
 DirectStepOutcome DirectStepper::step(double h, MessageLog& log, std::span<const dJointID> duplicate_contacts) {
   save();
-  if (!gaveUp(h)) return DirectStepOutcome::kSolved;
+  if (!gaveUp(h, attempt_)) return DirectStepOutcome::kSolved;
   restore();
   if (!released_.empty() || !duplicate_contacts.empty()) {
     setResting(true);
     for (const dJointID j : duplicate_contacts) dJointDisable(j);
-    const bool again = gaveUp(h);
+    const bool again = gaveUp(h, retry_);
     setResting(false);
     for (const dJointID j : duplicate_contacts) dJointEnable(j);
+    retry_.clear();
     if (!again) {
       attempt_.clear();
       return DirectStepOutcome::kDegenerateRowsLeftOut;
     }
     restore();
   }
-  // ODE's messages of the first solve are the step's: the rows it zeroed
-  // are now solved by quickstep, but the direct solver did give up.
+  // The first solve's messages are the step's: the rows ODE zeroed are now
+  // solved by quickstep, but its direct solver did give up on this step.
   log.merge(attempt_);
   attempt_.clear();
   quick_step_(h);
   return DirectStepOutcome::kQuickStep;
 }
 
-bool DirectStepper::gaveUp(double h) {
-  const std::uint64_t before = attempt_.total();
+bool DirectStepper::gaveUp(double h, MessageLog& said) {
+  const std::uint64_t before = said.total();
   {
-    const MessageLog::Capture capture(attempt_);
+    const MessageLog::Capture capture(said);
     dWorldStep(world_, h);
   }
-  return attempt_.total() != before;
+  return said.total() != before;
 }
 
 // dWorldStep clears the force and torque accumulators and moves the

@@ -60,7 +60,7 @@ struct StoppedJoint {
 enum class DirectStepOutcome {
   kSolved,                 ///< dWorldStep's first solve
   kDegenerateRowsLeftOut,  ///< ODE gave up; solved again without the degenerate rows (1.)
-  kQuickStep,              ///< ODE gave up again (or no stop rested): dWorldQuickStep's (2.)
+  kQuickStep,              ///< ODE gave up again, or had no such row: dWorldQuickStep's (2.)
 };
 
 class DirectStepper {
@@ -91,9 +91,9 @@ class DirectStepper {
 
   void save();
   void restore();
-  void findRestingStops();         // into released_, before the step
-  void setResting(bool released);  // released_'s stops open, or back where they were
-  bool gaveUp(double h);           // one dWorldStep inside a capture of attempt_
+  void findRestingStops();                  // into released_, before the step
+  void setResting(bool released);           // released_'s stops open, or back where they were
+  bool gaveUp(double h, MessageLog& said);  // one dWorldStep, its messages counted in `said`
 
   dWorldID world_;
   std::vector<dBodyID> bodies_;
@@ -101,7 +101,8 @@ class DirectStepper {
   std::function<void(double)> quick_step_;
   std::vector<BodyState> saved_;        // the bodies before the step (sized once)
   std::vector<ReleasedStop> released_;  // the stops resting at the step's start (sized once)
-  MessageLog attempt_;                  // ODE's messages of the current solve
+  MessageLog attempt_;                  // ODE's messages of a step's first solve
+  MessageLog retry_;                    // and of its solve without the degenerate rows
 };
 
 }  // namespace wtc::ode

@@ -132,6 +132,11 @@ class SimEngine final : public sim::EngineBase {
     }
     useWheels(*wheels_);
     if (stepper_ == Stepper::kDirect) makeDirectStepper();
+    // Room for every body touching a few pieces at once: a step's body
+    // contacts are then noted without allocating (step_allocation_test).
+    constexpr std::size_t kPiecesPerBody = 4;
+    body_contacts_.reserve(refs_.size() * kPiecesPerBody * kMaxContactsPerPair);
+    duplicate_contacts_.reserve(body_contacts_.capacity());
   }
 
   ~SimEngine() override {
