@@ -10,7 +10,10 @@
 //   - memory: the resident set after the first simulated minute stays
 //     within kMemoryGrowthBytes.
 //
-//   build/bench/wtc_soak [--minutes M] [--engine bullet|ode|ode_quick] [scene.yaml ...]
+//   - what the engine's solver said (ODE's LCP giving up: Engine::
+//     solverMessages), reported per scene; not a failure of the soak.
+//
+//   build/bench/wtc_soak [--minutes M] [--engine bullet|ode|ode_quick] [--mode force|constraint] [scene.yaml ...]
 //
 // Without scenes: every scenes/*.yaml. Exit status 1 if any check fails.
 #include <unistd.h>
@@ -24,9 +27,9 @@
 #include <vector>
 
 #include "wtc/base/constants.hpp"
-#include "wtc/sim/scene_file.hpp"
 #include "wtc/sim/engine_table.hpp"
 #include "wtc/sim/run.hpp"
+#include "wtc/sim/scene_file.hpp"
 
 namespace {
 
@@ -68,11 +71,24 @@ struct Result {
   double sim_time = 0.0, wall = 0.0, work = 0.0, gross_work = 0.0, max_excess = 0.0;
   long rss_minute = 0, rss_end = 0;
   bool nan = false, ok = true;
+  std::string solver;  // what the engine's solver said: "none", or each message with its steps and first time
 };
 
-Result soak(const fs::path& file, const std::string& engine, double minutes) {
+std::string solverSaid(const wtc::sim::Engine& engine) {
+  std::string said;
+  for (const wtc::sim::SolverMessage& m : engine.solverMessages()) {
+    char line[256];
+    std::snprintf(line, sizeof line, "%s%s '%s' in %llu steps (first at t = %.4f s)", said.empty() ? "" : "; ",
+                  m.engine.c_str(), m.text.c_str(), static_cast<unsigned long long>(m.steps), m.first_time_s);
+    said += line;
+  }
+  return said.empty() ? "none" : said;
+}
+
+Result soak(const fs::path& file, const std::string& engine, const std::string& mode, double minutes) {
   std::vector<wtc::sim::Override> overrides = {{"duration", std::to_string(60.0 * minutes)}};
   if (!engine.empty()) overrides.push_back({"engine", engine});
+  if (!mode.empty()) overrides.push_back({"mode", mode});
   const wtc::sim::Scene scene = wtc::sim::loadScene(file, overrides);
   const auto e = wtc::sim::makeEngine(scene.engine, *scene.terrain, scene.vehicle, scene.placement);
   const auto controller = scene.make_controller();
@@ -110,6 +126,7 @@ Result soak(const fs::path& file, const std::string& engine, double minutes) {
   r.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.sim_time = run.time();
   r.rss_end = residentBytes();
+  r.solver = solverSaid(*e);
   const bool memory_flat = r.rss_minute == 0 || r.rss_end - r.rss_minute <= kMemoryGrowthBytes;
   r.ok = !r.nan && r.max_excess <= kEnergySlackFraction * r.gross_work + kEnergySlackJ && memory_flat;
   return r;
@@ -119,7 +136,7 @@ Result soak(const fs::path& file, const std::string& engine, double minutes) {
 
 int main(int argc, char** argv) {
   double minutes = 10.0;
-  std::string engine;
+  std::string engine, mode;
   std::vector<fs::path> scenes;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -127,6 +144,8 @@ int main(int argc, char** argv) {
       minutes = std::stod(argv[++i]);
     } else if (a == "--engine" && i + 1 < argc) {
       engine = argv[++i];
+    } else if (a == "--mode" && i + 1 < argc) {
+      mode = argv[++i];
     } else {
       scenes.emplace_back(a);
     }
@@ -139,15 +158,15 @@ int main(int argc, char** argv) {
   }
   std::printf(
       "| scene | simulated (s) | wall (s) | NaN | drive work (J) | largest energy excess (J) | allowed (J) | "
-      "RSS after 1 min / end (MB) | ok |\n|---|---:|---:|---|---:|---:|---:|---:|---|\n");
+      "RSS after 1 min / end (MB) | ok | solver messages |\n|---|---:|---:|---|---:|---:|---:|---:|---|---|\n");
   bool all = true;
   for (const fs::path& file : scenes) {
     try {
-      const Result r = soak(file, engine, minutes);
-      std::printf("| %s | %.0f | %.1f | %s | %.0f | %.2f | %.1f | %.1f / %.1f | %s |\n", r.scene.c_str(), r.sim_time,
-                  r.wall, r.nan ? "yes" : "no", r.work, r.max_excess,
+      const Result r = soak(file, engine, mode, minutes);
+      std::printf("| %s | %.0f | %.1f | %s | %.0f | %.2f | %.1f | %.1f / %.1f | %s | %s |\n", r.scene.c_str(),
+                  r.sim_time, r.wall, r.nan ? "yes" : "no", r.work, r.max_excess,
                   kEnergySlackFraction * r.gross_work + kEnergySlackJ, r.rss_minute / 1e6, r.rss_end / 1e6,
-                  r.ok ? "yes" : "NO");
+                  r.ok ? "yes" : "NO", r.solver.c_str());
       std::fflush(stdout);
       all = all && r.ok;
     } catch (const std::exception& e) {

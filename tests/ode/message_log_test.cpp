@@ -78,6 +78,47 @@ TEST(MessageLogTest, CountsTheMessagesOfTheStepsItCapturesAndPassesOnTheRest) {
   dSetMessageHandler(nullptr);
 }
 
+// A solve tried in a log of its own and kept (wtc::ode_sim's direct step)
+// is counted in the engine's log as if it had come there: merged by
+// message, the first in full kept from the log it first came to; a solve
+// dropped is forgotten.
+TEST(MessageLogTest, ALogMergedIntoAnotherCountsThereAsIfItHadComeThere) {
+  MessageLog engine_log, attempt;
+  {
+    const MessageLog::Capture capture(engine_log);
+    dMessage(kLcpNumber, kLcpFormat, -1.5e-17);
+  }
+  {
+    const MessageLog::Capture capture(attempt);
+    dMessage(kLcpNumber, kLcpFormat, 0.0);
+    dMessage(7, "something else (%d)", 4);
+  }
+  engine_log.merge(attempt);
+  EXPECT_EQ(engine_log.total(), 3u);
+  ASSERT_EQ(engine_log.counts().size(), 2u);
+  EXPECT_EQ(engine_log.counts()[0].count, 2u);
+  EXPECT_EQ(engine_log.counts()[0].first, "LCP internal error, s <= 0 (s=-1.5000e-17)");
+  EXPECT_EQ(engine_log.counts()[1].text, "something else");
+  EXPECT_EQ(engine_log.counts()[1].first, "something else (4)");
+  // Case: a message merged in is found again by its format when it comes.
+  {
+    const MessageLog::Capture capture(engine_log);
+    dMessage(7, "something else (%d)", 5);
+  }
+  EXPECT_EQ(engine_log.counts().size(), 2u);
+  EXPECT_EQ(engine_log.counts()[1].count, 2u);
+  // Case: cleared, a log has nothing, and counts afresh.
+  attempt.clear();
+  EXPECT_EQ(attempt.total(), 0u);
+  EXPECT_TRUE(attempt.counts().empty());
+  {
+    const MessageLog::Capture capture(attempt);
+    dMessage(kLcpNumber, kLcpFormat, 0.0);
+  }
+  ASSERT_EQ(attempt.counts().size(), 1u);
+  EXPECT_EQ(attempt.counts()[0].first, "LCP internal error, s <= 0 (s=0.0000e+00)");
+}
+
 TEST(MessageLogTest, WithoutAHandlerBeforeItPrintsAsOdeAndRestoresNone) {
   dSetMessageHandler(nullptr);
   {

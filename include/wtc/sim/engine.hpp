@@ -98,7 +98,11 @@ void validate(const EngineSettings& settings, const std::string& where);
 /// A message an engine's solver gave as it went on stepping, counted
 /// instead of printed: ODE's "LCP internal error, s <= 0" says that its
 /// direct solver stopped pivoting and left the rows it had not solved
-/// without force in that step (wtc/ode/message_log.hpp).
+/// without force in that step (wtc/ode/message_log.hpp). WTC's ODE engine
+/// does not keep such a solve: it solves the step again without the rows
+/// that made the pivot degenerate and, where ODE still gives up, by
+/// dWorldQuickStep; only that last case is a message here
+/// (plugins/ode/sim/src/direct_step.hpp, docs/hard-cases.md).
 struct SolverMessage {
   std::string engine;         ///< Whose: "ODE".
   std::string text;           ///< The message without its numbers: "LCP internal error, s <= 0".

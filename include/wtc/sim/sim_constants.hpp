@@ -20,6 +20,17 @@ inline constexpr double kDivergedSpeedMps = 1e3;
 inline constexpr double kDivergedAngularSpeedRadps = 1e4;
 inline constexpr double kDivergedDistanceM = kMaxLengthM;
 
+/// Two contacts of one pair of bodies (or a body and the ground) closer
+/// than this (m), with normals whose cosine is within kDuplicateContactCos
+/// of 1 (dimensionless), are one contact found twice (a box against two
+/// terrain pieces that share a face). Kept as ODE's collider gives them,
+/// they are left out of a step only when they made ODE's direct solver give
+/// up (its Dantzig LCP meets their rows as a degenerate pair;
+/// docs/hard-cases.md). 1 nm: far below any feature, far above roundoff of
+/// coordinates of a few metres.
+inline constexpr double kDuplicateContactM = 1e-9;
+inline constexpr double kDuplicateContactCos = 1e-12;
+
 /// A body's centre may go this far (m) beyond the terrain's bounding box,
 /// horizontally, or below its lowest point, before the run counts as having
 /// left its terrain (not a success): a vehicle at the terrain's edge has

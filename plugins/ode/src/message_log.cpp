@@ -107,6 +107,28 @@ void MessageLog::add(int number, const char* format, std::va_list args) noexcept
   }
 }
 
+void MessageLog::merge(const MessageLog& other) {
+  total_ += other.total_;
+  for (std::size_t j = 0; j < other.counts_.size(); ++j) {
+    const MessageCount& m = other.counts_[j];
+    const auto same = std::find_if(counts_.begin(), counts_.end(),
+                                   [&](const MessageCount& c) { return c.number == m.number && c.text == m.text; });
+    if (same != counts_.end()) {
+      same->count += m.count;
+      continue;
+    }
+    formats_.reserve(formats_.size() + 1);
+    counts_.push_back(m);
+    formats_.push_back(other.formats_[j]);
+  }
+}
+
+void MessageLog::clear() noexcept {
+  counts_.clear();
+  formats_.clear();
+  total_ = 0;
+}
+
 std::string messageText(std::string_view format) {
   std::string text;
   for (std::size_t i = 0; i < format.size();) {

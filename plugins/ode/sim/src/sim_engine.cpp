@@ -11,6 +11,7 @@
 #include <ode/threading_impl.h>
 
 #include "body_geoms.hpp"
+#include "direct_step.hpp"
 #include "native_wheels.hpp"
 #include "sim/engine_base.hpp"
 #include "src/conversions.hpp"
@@ -130,6 +131,12 @@ class SimEngine final : public sim::EngineBase {
       wheels_ = std::make_unique<WtcWheels>(*plugin_, v, wheels, settings.tyre_effects, contacts_);
     }
     useWheels(*wheels_);
+    if (stepper_ == Stepper::kDirect) makeDirectStepper();
+    // Room for every body touching a few pieces at once: a step's body
+    // contacts are then noted without allocating (step_allocation_test).
+    constexpr std::size_t kPiecesPerBody = 4;
+    body_contacts_.reserve(refs_.size() * kPiecesPerBody * kMaxContactsPerPair);
+    duplicate_contacts_.reserve(body_contacts_.capacity());
   }
 
   ~SimEngine() override {
@@ -177,18 +184,17 @@ class SimEngine final : public sim::EngineBase {
     const std::uint64_t messages_before = messages_.total();
     const MessageLog::Capture capture(messages_);
     plugin_->beginStep(h);
+    body_contacts_.clear();
+    duplicate_contacts_.clear();
     dSpaceCollide(space_, this, &SimEngine::nearCallback);
     for (Ref& r : refs_) {
       if (r.wheel_drive) driveWheel(r, h);
     }
     for (const Mimic& m : mimics_) holdMimic(m, h);
     if (stepper_ == Stepper::kQuick) {
-      const std::lock_guard<std::mutex> lock(odeGlobalsLock());
-      dRandSetSeed(quickstep_seed_);
-      dWorldQuickStep(world_, h);
-      quickstep_seed_ = dRandGetSeed();
+      quickStep(h);
     } else {
-      dWorldStep(world_, h);
+      direct_->step(h, messages_, duplicate_contacts_);  // a solve ODE gave up on is done again (direct_step.hpp)
     }
     dJointGroupEmpty(contacts_);
     wheels_->stepped();
@@ -270,6 +276,30 @@ class SimEngine final : public sim::EngineBase {
     vehicle::MotorTarget target;  // the wheel drive's, this step
     double effort = 0.0;          // the wheel drive's torque, this step (N m)
   };
+
+  void quickStep(double h) {
+    const std::lock_guard<std::mutex> lock(odeGlobalsLock());
+    dRandSetSeed(quickstep_seed_);
+    dWorldQuickStep(world_, h);
+    quickstep_seed_ = dRandGetSeed();
+  }
+
+  // dWorldStep with what it needs to solve a step again: every body, and
+  // the joints with stops (a resting one can make its LCP give up).
+  void makeDirectStepper() {
+    std::vector<dBodyID> bodies;
+    std::vector<StoppedJoint> stopped;
+    for (std::size_t i = 0; i < refs_.size(); ++i) {
+      bodies.push_back(refs_[i].body);
+      const Body& b = vehicle().bodies[i];
+      if (b.parent < 0 || !b.joint.limits) continue;
+      if (b.joint.type == JointType::kRevolute || b.joint.type == JointType::kPrismatic) {
+        stopped.push_back({.joint = refs_[i].joint, .lower = b.joint.limits->lower, .upper = b.joint.limits->upper});
+      }
+    }
+    direct_ = std::make_unique<DirectStepper>(world_, std::move(bodies), std::move(stopped),
+                                              [this](double h) { quickStep(h); });
+  }
 
   // In how many steps each message of messages_ came, and the first (1 the
   // engine's first step); called after a step in which some came.
@@ -409,8 +439,25 @@ class SimEngine final : public sim::EngineBase {
     for (int k = 0; k < n; ++k) {
       contact[k].surface.mode = dContactApprox1;
       contact[k].surface.mu = sim::kBodyGroundFriction;
-      dJointAttach(dJointCreateContact(e.world_, e.contacts_, &contact[k]), body_a, body_b);
+      const dJointID joint = dJointCreateContact(e.world_, e.contacts_, &contact[k]);
+      dJointAttach(joint, body_a, body_b);
+      e.noteBodyContact(joint, body_a, body_b, contact[k].geom);
     }
+  }
+
+  // Keeps this step's body contacts, and marks `joint` as a duplicate when
+  // it repeats an earlier one of the same bodies (sim::kDuplicateContactM):
+  // left out of a step only if ODE's direct solver gives up (direct_step.hpp).
+  void noteBodyContact(dJointID joint, dBodyID a, dBodyID b, const dContactGeom& g) {
+    const Eigen::Vector3d p = toEigen(g.pos), n = toEigen(g.normal);
+    for (const BodyContact& c : body_contacts_) {
+      if (c.a == a && c.b == b && (c.point - p).norm() <= sim::kDuplicateContactM &&
+          c.normal.dot(n) >= 1.0 - sim::kDuplicateContactCos) {
+        duplicate_contacts_.push_back(joint);
+        return;
+      }
+    }
+    body_contacts_.push_back({.a = a, .b = b, .point = p, .normal = n});
   }
 
   // A mimic joint (URDF's <mimic>: q = k q_master + offset) as a one-axis
@@ -485,9 +532,16 @@ class SimEngine final : public sim::EngineBase {
   std::unique_ptr<Plugin> plugin_;
   std::vector<Ref> refs_;
   std::vector<Mimic> mimics_;
-  std::deque<ConvexGeomData> convex_;  // what the bodies' convex geoms point into
-  std::unique_ptr<OdeWheels> wheels_;  // WtcWheels or NativeWheels
-  MessageLog messages_;                // ODE's messages in this engine's steps
+  std::deque<ConvexGeomData> convex_;      // what the bodies' convex geoms point into
+  std::unique_ptr<OdeWheels> wheels_;      // WtcWheels or NativeWheels
+  std::unique_ptr<DirectStepper> direct_;  // Stepper::kDirect's
+  struct BodyContact {
+    dBodyID a, b;
+    Eigen::Vector3d point, normal;
+  };
+  std::vector<BodyContact> body_contacts_;    // this step's body-ground contacts (scratch)
+  std::vector<dJointID> duplicate_contacts_;  // those of this step's that repeat one of them
+  MessageLog messages_;                       // ODE's messages in this engine's steps
   struct MessageSteps {
     std::uint64_t seen = 0;   // messages_.counts()[k].count after the last step that had it
     std::uint64_t steps = 0;  // steps that had it

@@ -75,6 +75,12 @@ class MessageLog {
   /// still counted in total()).
   void add(int number, const char* format, std::va_list args) noexcept;
 
+  /// Counts `other`'s messages here too, as if they had come here (a solve
+  /// tried in a log of its own and then kept: wtc::ode_sim's direct step).
+  void merge(const MessageLog& other);
+  /// Forgets every message (a solve tried and dropped).
+  void clear() noexcept;
+
  private:
   std::vector<MessageCount> counts_;
   std::vector<const char*> formats_;  // counts_[k]'s first format, to find it again without allocating
