@@ -26,7 +26,24 @@ struct PolyhedronLayout {
   static std::int32_t faceEdgeStart(const P& p, int f) { return p.faceEdgeStart(f); }
   static std::int32_t faceEdgeTwin(const P& p, std::int32_t e) { return p.faceEdgeTwin(e); }
   static int faceOfEdge(const P& p, std::int32_t e) { return p.faceOfEdge(e); }
-  static std::int32_t faceEdgeNext(const P& p, std::int32_t e) { return p.faceEdgeNext(e); }
+  /// ConvexPolyhedron::faceEdgeNext, inline: the vertex-region walk takes
+  /// it once per edge around the vertex.
+  static std::int32_t faceEdgeNext(const P& p, std::int32_t e) {
+    const std::int32_t* start = p.topology_.data();
+    if (p.face_count_ > kScanFaces) return p.faceEdgeNext(e);
+    int f = 0;
+    while (start[f + 1] <= e) ++f;
+    return e + 1 < start[f + 1] ? e + 1 : start[f];
+  }
+  // Up to this many faces faceOfEdge scans the face starts (as
+  // ConvexPolyhedron::faceOfEdge does).
+  static constexpr int kScanFaces = 16;
+  /// Face f's vertex indices (faceVertices(f).data()) and their count,
+  /// inline for the query kernels.
+  static const std::int32_t* faceVertexList(const P& p, int f) {
+    return p.topology_.data() + p.face_count_ + 1 + p.topology_[f];
+  }
+  static int faceSize(const P& p, int f) { return p.topology_[f + 1] - p.topology_[f]; }
   static std::int32_t faceEdgeEnd(const P& p, std::int32_t e) { return p.faceEdgeEnd(e); }
   static const double* faceEdgePlane(const P& p, std::int32_t e) { return p.faceEdgePlane(e); }
   static int supportLocal(const P& p, const Eigen::Vector3d& dir, int hint) { return p.supportLocal(dir, hint); }
