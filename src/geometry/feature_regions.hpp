@@ -31,6 +31,18 @@ FaceRegion classifyLarge(const ConvexPolyhedron& poly, const Eigen::Vector3d& q,
 // answer, and a call apiece (with the region passed through memory) cost
 // more than their bodies on small pieces.
 
+// Bit k set when q is beyond side plane k of a face of N edges (s . q < s . a).
+template <int N>
+inline std::uint32_t crossedEdges(const double* side, const Eigen::Vector3d& q) {
+  std::uint32_t mask = 0;
+#pragma GCC unroll 4
+  for (int k = 0; k < N; ++k, side += 4) {
+    const bool beyond = side[0] * q.x() + side[1] * q.y() + side[2] * q.z() < side[3];
+    mask |= static_cast<std::uint32_t>(beyond) << k;
+  }
+  return mask;
+}
+
 // Which edges of face `face` the projection of q onto its plane lies beyond.
 // Face vertices run counter-clockwise about the outward normal n, so the
 // projection is on the inner side of edge (a, b) when s . q >= s . a with
@@ -52,9 +64,18 @@ inline FaceRegion classify(const ConvexPolyhedron& poly, const Eigen::Vector3d& 
   FaceRegion region;
   if (size > kMaskEdges) return classifyLarge(poly, q, face);
   std::uint32_t mask = 0;
-  for (int k = 0; k < size; ++k, side += 4) {
-    const bool beyond = side[0] * q.x() + side[1] * q.y() + side[2] * q.z() < side[3];
-    mask |= static_cast<std::uint32_t>(beyond) << k;
+  switch (size) {  // triangles and quads (every face of a prism or a box) unrolled
+    case 3:
+      mask = crossedEdges<3>(side, q);
+      break;
+    case 4:
+      mask = crossedEdges<4>(side, q);
+      break;
+    default:
+      for (int k = 0; k < size; ++k, side += 4) {
+        const bool beyond = side[0] * q.x() + side[1] * q.y() + side[2] * q.z() < side[3];
+        mask |= static_cast<std::uint32_t>(beyond) << k;
+      }
   }
   if (mask == 0) return region;
   region.inside = false;
