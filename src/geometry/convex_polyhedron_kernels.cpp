@@ -3,6 +3,7 @@
 // bound. Construction and validation are in convex_polyhedron.cpp.
 #include <algorithm>
 
+#include "polyhedron_layout.hpp"
 #include "wtc/geometry/convex_polyhedron.hpp"
 
 namespace wtc {
@@ -82,29 +83,6 @@ double ConvexPolyhedron::planeBound(const Eigen::Vector3d& p, int* face) const {
   return planeBoundLocal(p - origin_, face);
 }
 
-namespace {
-
-// max_i (n_i . q - d_i) and its face over N faces, the loop unrolled for the
-// pieces a terrain forms (a heightfield prism or an extruded triangle has 5
-// faces, a box 6): the same scan and the same arithmetic as the general one.
-template <int N>
-double planeBoundOf(const double* a, const double* b, const double* c, const double* d, const Eigen::Vector3d& q,
-                    int* face) {
-  int best = 0;
-  double best_value = a[0] * q.x() + b[0] * q.y() + c[0] * q.z() - d[0];
-#pragma GCC unroll 8
-  for (int f = 1; f < N; ++f) {
-    const double value = a[f] * q.x() + b[f] * q.y() + c[f] * q.z() - d[f];
-    const bool better = value > best_value;  // branch-free, as in supportLocal
-    best = better ? f : best;
-    best_value = better ? value : best_value;
-  }
-  if (face != nullptr) *face = best;
-  return best_value;
-}
-
-}  // namespace
-
 double ConvexPolyhedron::planeBoundLocal(const Eigen::Vector3d& q, int* face) const {
   const double* a = nx();
   const double* b = ny();
@@ -112,9 +90,9 @@ double ConvexPolyhedron::planeBoundLocal(const Eigen::Vector3d& q, int* face) co
   const double* d = pd();
   switch (face_count_) {
     case 5:
-      return planeBoundOf<5>(a, b, c, d, q, face);
+      return detail::PolyhedronLayout::planeBoundOf<5>(*this, q, face);
     case 6:
-      return planeBoundOf<6>(a, b, c, d, q, face);
+      return detail::PolyhedronLayout::planeBoundOf<6>(*this, q, face);
     default:
       break;
   }
