@@ -3,6 +3,7 @@
 #include "polyhedron_layout.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -19,12 +20,12 @@ namespace {
 
 // Newell's method: the area-weighted normal of a polygon, robust for
 // polygons that are planar only to roundoff (merged hull facets).
-Eigen::Vector3d newellNormal(const std::vector<Eigen::Vector3d>& local, const std::vector<int>& face) {
+Eigen::Vector3d newellNormal(const Eigen::Vector3d* local, const std::int32_t* face, int size) {
   // Edge vectors from the first vertex: no cancellation from large
   // coordinates.
   Eigen::Vector3d n = Eigen::Vector3d::Zero();
   const Eigen::Vector3d& first = local[face[0]];
-  for (std::size_t k = 1; k + 1 < face.size(); ++k) {
+  for (int k = 1; k + 1 < size; ++k) {
     n += (local[face[k]] - first).cross(local[face[k + 1]] - first);
   }
   return n;
@@ -200,10 +201,29 @@ void ConvexPolyhedron::assembleInto(ConvexPolyhedron& poly, const std::vector<Ei
   poly.vertex_count_ = nv;
   poly.face_count_ = nf;
   poly.flat_ = flat;
+  poly.has_adjacency_ = nv >= tolerance::kHillClimbMinVertices;
 
-  // One scratch list per thread: heightfields form prisms by the million.
-  thread_local std::vector<Eigen::Vector3d> local;
-  local.resize(nv);
+  // Topology first: the face lists the numbers below are computed from, read
+  // flat (offsets, then indices) rather than through the nested vectors.
+  // A copied topology is this very face list (the caller's word).
+  if (topology != nullptr) {
+    poly.topology_ = *topology;  // assignment: into's buffer if it is large enough
+  } else {
+    faceLists(poly, faces);
+  }
+  const std::int32_t* face_start = poly.topology_.data();
+  const std::int32_t* face_list = face_start + nf + 1;
+  const auto face_edges = static_cast<std::size_t>(face_start[nf]);
+
+  // Scratch for the local vertices: on the stack for the small pieces that
+  // heightfields and meshes form by the million, else one list per thread.
+  std::array<Eigen::Vector3d, kStackVertices> small;
+  thread_local std::vector<Eigen::Vector3d> large;
+  Eigen::Vector3d* local = small.data();
+  if (nv > kStackVertices) {
+    large.resize(nv);
+    local = large.data();
+  }
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   for (int i = 0; i < nv; ++i) {
     local[i] = vertices[i] - poly.origin_;
@@ -211,8 +231,6 @@ void ConvexPolyhedron::assembleInto(ConvexPolyhedron& poly, const std::vector<Ei
   }
   poly.centroid_local_ = sum / nv;
 
-  std::size_t face_edges = 0;
-  for (const auto& face : faces) face_edges += face.size();
   poly.numbers_.resize(3 * static_cast<std::size_t>(nv) + 4 * static_cast<std::size_t>(nf) + 4 * face_edges);
   double* num = poly.numbers_.data();
   for (int i = 0; i < nv; ++i) {
@@ -228,12 +246,14 @@ void ConvexPolyhedron::assembleInto(ConvexPolyhedron& poly, const std::vector<Ei
   const bool check_planar = hull_normals == nullptr && topology == nullptr;
   double* n_out = num + 3 * nv;
   for (int f = 0; f < nf; ++f) {
+    const std::int32_t* face = face_list + face_start[f];
+    const int face_size = face_start[f + 1] - face_start[f];
     Eigen::Vector3d n;
     if (hull_normals != nullptr) {
       // Qhull's hyperplane: robust where a sliver facet's vertices are not.
       n = (*hull_normals)[f].normalized();
     } else {
-      const Eigen::Vector3d area = newellNormal(local, faces[f]);
+      const Eigen::Vector3d area = newellNormal(local, face, face_size);
       const double twice_area = area.norm();
       if (!(twice_area > planar_tol * planar_tol)) {
         fail("face " + std::to_string(f) + " has zero area (its vertices are collinear or coincide)");
@@ -246,7 +266,7 @@ void ConvexPolyhedron::assembleInto(ConvexPolyhedron& poly, const std::vector<Ei
     for (int i = 0; i < nv; ++i) d = std::max(d, n.dot(local[i]));
     double face_min = d;
     if (check_planar) {
-      for (int i : faces[f]) face_min = std::min(face_min, n.dot(local[i]));
+      for (int k = 0; k < face_size; ++k) face_min = std::min(face_min, n.dot(local[face[k]]));
     }
     if (d - face_min > planar_tol) {
       fail("face " + std::to_string(f) + " is not planar, or the mesh is not convex or not oriented " +
@@ -264,9 +284,10 @@ void ConvexPolyhedron::assembleInto(ConvexPolyhedron& poly, const std::vector<Ei
   double* side = n_out + 4 * nf;
   for (int f = 0; f < nf; ++f) {
     const Eigen::Vector3d n(n_out[f], n_out[nf + f], n_out[2 * nf + f]);
-    const auto& face = faces[f];
-    for (std::size_t k = 0; k < face.size(); ++k) {
-      const Eigen::Vector3d& a = local[face[k == 0 ? face.size() - 1 : k - 1]];
+    const std::int32_t* face = face_list + face_start[f];
+    const int face_size = face_start[f + 1] - face_start[f];
+    for (int k = 0; k < face_size; ++k) {
+      const Eigen::Vector3d& a = local[face[k == 0 ? face_size - 1 : k - 1]];
       const Eigen::Vector3d s_in = n.cross(local[face[k]] - a);
       side[0] = s_in.x();
       side[1] = s_in.y();
@@ -278,14 +299,13 @@ void ConvexPolyhedron::assembleInto(ConvexPolyhedron& poly, const std::vector<Ei
   if (!flat && poly.planeBoundLocal(poly.centroid_local_, nullptr) >= -planar_tol) {
     fail("the faces do not enclose a volume (the centroid is not strictly inside every face plane)");
   }
+  if (topology == nullptr) twinsAndAdjacency(poly, faces);
+  poly.numbers_.shrink_to_fit();
+}
 
-  poly.has_adjacency_ = nv >= tolerance::kHillClimbMinVertices;
-  if (topology != nullptr) {
-    poly.topology_ = *topology;  // assignment: into's buffer if it is large enough
-    poly.numbers_.shrink_to_fit();
-    return;
-  }
-  // Topology: face lists, then (large pieces only) vertex adjacency.
+void ConvexPolyhedron::faceLists(ConvexPolyhedron& poly, const std::vector<std::vector<int>>& faces) {
+  std::size_t face_edges = 0;
+  for (const auto& face : faces) face_edges += face.size();
   auto& topo = poly.topology_;
   topo.clear();
   topo.reserve(1 + faces.size() + 2 * face_edges);  // offsets, face lists, twins: one allocation
@@ -293,11 +313,16 @@ void ConvexPolyhedron::assembleInto(ConvexPolyhedron& poly, const std::vector<Ei
   std::size_t total = 0;
   for (const auto& face : faces) topo.push_back(static_cast<std::int32_t>(total += face.size()));
   for (const auto& face : faces) topo.insert(topo.end(), face.begin(), face.end());
+}
+
+void ConvexPolyhedron::twinsAndAdjacency(ConvexPolyhedron& poly, const std::vector<std::vector<int>>& faces) {
+  auto& topo = poly.topology_;
   const std::size_t twins_at = topo.size();
+  const auto total = static_cast<std::size_t>(topo[poly.face_count_]);
   topo.resize(twins_at + total);
   matchTwins(faces, topo.data() + twins_at);
   if (poly.has_adjacency_) {
-    std::vector<std::set<int>> neighbors(nv);
+    std::vector<std::set<int>> neighbors(poly.vertex_count_);
     for (const auto& face : faces) {
       for (std::size_t k = 0; k < face.size(); ++k) {
         const int a = face[k];
@@ -312,7 +337,6 @@ void ConvexPolyhedron::assembleInto(ConvexPolyhedron& poly, const std::vector<Ei
     for (const auto& n : neighbors) topo.insert(topo.end(), n.begin(), n.end());
   }
   topo.shrink_to_fit();
-  poly.numbers_.shrink_to_fit();
 }
 
 }  // namespace wtc

@@ -3,6 +3,7 @@
 // bound. Construction and validation are in convex_polyhedron.cpp.
 #include <algorithm>
 
+#include "polyhedron_layout.hpp"
 #include "wtc/geometry/convex_polyhedron.hpp"
 
 namespace wtc {
@@ -87,6 +88,14 @@ double ConvexPolyhedron::planeBoundLocal(const Eigen::Vector3d& q, int* face) co
   const double* b = ny();
   const double* c = nz();
   const double* d = pd();
+  switch (face_count_) {
+    case 5:
+      return detail::PolyhedronLayout::planeBoundOf<5>(*this, q, face);
+    case 6:
+      return detail::PolyhedronLayout::planeBoundOf<6>(*this, q, face);
+    default:
+      break;
+  }
   int best = 0;
   double best_value = a[0] * q.x() + b[0] * q.y() + c[0] * q.z() - d[0];
   for (int f = 1; f < face_count_; ++f) {

@@ -26,11 +26,60 @@ struct PolyhedronLayout {
   static std::int32_t faceEdgeStart(const P& p, int f) { return p.faceEdgeStart(f); }
   static std::int32_t faceEdgeTwin(const P& p, std::int32_t e) { return p.faceEdgeTwin(e); }
   static int faceOfEdge(const P& p, std::int32_t e) { return p.faceOfEdge(e); }
-  static std::int32_t faceEdgeNext(const P& p, std::int32_t e) { return p.faceEdgeNext(e); }
+  /// ConvexPolyhedron::faceEdgeNext, inline: the vertex-region walk takes
+  /// it once per edge around the vertex.
+  static std::int32_t faceEdgeNext(const P& p, std::int32_t e) {
+    const std::int32_t* start = p.topology_.data();
+    if (p.face_count_ > kScanFaces) return p.faceEdgeNext(e);
+    int f = 0;
+    while (start[f + 1] <= e) ++f;
+    return e + 1 < start[f + 1] ? e + 1 : start[f];
+  }
+  // Up to this many faces faceOfEdge scans the face starts (as
+  // ConvexPolyhedron::faceOfEdge does).
+  static constexpr int kScanFaces = 16;
+  /// Face f's vertex indices (faceVertices(f).data()) and their count,
+  /// inline for the query kernels.
+  static const std::int32_t* faceVertexList(const P& p, int f) {
+    return p.topology_.data() + p.face_count_ + 1 + p.topology_[f];
+  }
+  static int faceSize(const P& p, int f) { return p.topology_[f + 1] - p.topology_[f]; }
   static std::int32_t faceEdgeEnd(const P& p, std::int32_t e) { return p.faceEdgeEnd(e); }
   static const double* faceEdgePlane(const P& p, std::int32_t e) { return p.faceEdgePlane(e); }
   static int supportLocal(const P& p, const Eigen::Vector3d& dir, int hint) { return p.supportLocal(dir, hint); }
-  static double planeBoundLocal(const P& p, const Eigen::Vector3d& q, int* face) { return p.planeBoundLocal(q, face); }
+  /// The face-plane bound, inline for the pieces a terrain forms (a
+  /// heightfield prism or an extruded triangle has 5 faces, a box 6): the
+  /// query's first step, on its critical path.
+  static double planeBoundLocal(const P& p, const Eigen::Vector3d& q, int* face) {
+    switch (p.face_count_) {
+      case 5:
+        return planeBoundOf<5>(p, q, face);
+      case 6:
+        return planeBoundOf<6>(p, q, face);
+      default:
+        return p.planeBoundLocal(q, face);
+    }
+  }
+  /// max_i (n_i . q - d_i) and its face over exactly N faces, unrolled: the
+  /// same scan and arithmetic as ConvexPolyhedron::planeBoundLocal's.
+  template <int N>
+  static double planeBoundOf(const P& p, const Eigen::Vector3d& q, int* face) {
+    const double* a = p.nx();
+    const double* b = p.ny();
+    const double* c = p.nz();
+    const double* d = p.pd();
+    int best = 0;
+    double best_value = a[0] * q.x() + b[0] * q.y() + c[0] * q.z() - d[0];
+#pragma GCC unroll 8
+    for (int f = 1; f < N; ++f) {
+      const double value = a[f] * q.x() + b[f] * q.y() + c[f] * q.z() - d[f];
+      const bool better = value > best_value;  // branch-free, as in supportLocal
+      best = better ? f : best;
+      best_value = better ? value : best_value;
+    }
+    if (face != nullptr) *face = best;
+    return best_value;
+  }
 
   /// A piece with the same face list as `like` (and as many vertices), built
   /// from `vertices` with like's topology copied instead of matched anew: the

@@ -149,6 +149,14 @@ class ConvexPolyhedron {
   static void assembleInto(ConvexPolyhedron& poly, const std::vector<Eigen::Vector3d>& vertices,
                            const std::vector<std::vector<int>>& faces, bool flat,
                            const std::vector<Eigen::Vector3d>* hull_normals, const std::vector<std::int32_t>* topology);
+  // assembleInto's topology of a new face list, into poly.topology_: the
+  // face offsets and lists (before the numbers, which read them), then the
+  // twins and, for large pieces, the adjacency (after the numbers' checks,
+  // so that a bad face is reported before a bad edge, as it always was).
+  static void faceLists(ConvexPolyhedron& poly, const std::vector<std::vector<int>>& faces);
+  static void twinsAndAdjacency(ConvexPolyhedron& poly, const std::vector<std::vector<int>>& faces);
+  // Vertices up to which assembleInto keeps its scratch on the stack.
+  static constexpr int kStackVertices = 16;
   int hillClimb(const Eigen::Vector3d& dir, int start) const;
   std::span<const std::int32_t> vertexNeighbors(int i) const;
 
