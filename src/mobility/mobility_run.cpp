@@ -69,11 +69,18 @@ void describeSearch(Unit& u, const Search& range) {
   }
 }
 
-std::string failureOf(const sim::RunSummary& summary, const std::string& event) {
+}  // namespace
+
+std::string trialFailure(const sim::RunSummary& summary, const std::string& event) {
   if (summary.crashed) return "crashed";
   if (summary.nan) return "non-finite state";
   if (summary.diverged) return "diverged";
-  std::string text;
+  // A run whose joints came apart did not move the vehicle the description
+  // gives (a solver that did not hold a bogie): whatever it reached is not
+  // the vehicle's.
+  std::string text = sim::jointsCameApart(summary) ? "joints came apart" : "";
+  if (summary.success && !text.empty()) return text;
+  if (summary.success) return {};
   for (const sim::FailedCriterion& f : summary.failed_criteria) {
     std::string what = f.criterion;
     if (event == "side_slope" && (what == "max_final_speed" || what == "max_distance")) what = "slid";
@@ -84,6 +91,8 @@ std::string failureOf(const sim::RunSummary& summary, const std::string& event) 
   }
   return text.empty() ? "failed" : text;
 }
+
+namespace {
 
 // What each event measures, in what unit, against which of the bounds (the
 // turn's is optional: only a skid-steered vehicle has one; the drawbar's
@@ -251,15 +260,15 @@ MobilityOutcome runMobility(const EventVehicle& v, const MobilitySettings& s, co
       const fs::path dir = study::runDirectory(opt.out, w.run);
       const sim::RunSummary summary = sim::readRunSummary(dir / "summary.json");
       if (isSearch(u.result.event)) {
-        Trial t{.value = w.value, .passed = summary.success && !summary.crashed, .failure = {}, .run = w.run.key};
-        if (!t.passed) t.failure = failureOf(summary, u.result.event);
+        const std::string failure = trialFailure(summary, u.result.event);
+        Trial t{.value = w.value, .passed = failure.empty(), .failure = failure, .run = w.run.key};
         (t.passed ? u.lo : u.hi) = w.value;
         u.result.trials.push_back(t);
         continue;
       }
       u.done = true;
-      if (summary.crashed || summary.nan || summary.diverged) {
-        u.result.note = "the run failed: " + failureOf(summary, u.result.event) + " (" + w.run.key + ")";
+      if (summary.crashed || summary.nan || summary.diverged || sim::jointsCameApart(summary)) {
+        u.result.note = "the run failed: " + trialFailure(summary, u.result.event) + " (" + w.run.key + ")";
         continue;
       }
       double torque = 0.0;

@@ -21,8 +21,6 @@ namespace {
 
 constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 // The bounds on a joint's error through a scene (warned above).
-constexpr double kJointGapWarnM = 1e-3;
-constexpr double kJointAngleWarnRad = 0.1 / kDegPerRad;
 // A wheel's peak slip ratio counts only while its centre moves at least
 // this fast (m/s): below, s = |V_s| / max(V_t, eps) is eps's figure, not
 // the tyre's.
@@ -322,7 +320,7 @@ RunSummary SceneRun::summary() const {
                                (m.steps == 1 ? " step" : " steps") + " (first at t = " + mmOrDeg(m.first_time_s, 4) +
                                " s" + (m.count != m.steps ? "; " + std::to_string(m.count) + " times" : "") + ")");
   }
-  if (summary.max_joint_gap > kJointGapWarnM || summary.max_joint_angle > kJointAngleWarnRad) {
+  if (jointsCameApart(summary)) {
     summary.warnings.push_back("joints came apart by up to " + mmOrDeg(summary.max_joint_gap * 1e3, 3) + " mm and " +
                                mmOrDeg(summary.max_joint_angle * kDegPerRad, 3) + " deg (bound: 1 mm, 0.1 deg)");
   }

@@ -16,6 +16,7 @@
 #include "wtc/mobility/event_scenes.hpp"
 #include "wtc/mobility/mobility_bounds.hpp"
 #include "wtc/mobility/mobility_settings.hpp"
+#include "wtc/sim/run_summary.hpp"
 
 namespace wtc::mobility {
 
@@ -61,6 +62,12 @@ struct MobilityOptions {
 /// InvalidInputError for settings the scenes refuse, before any run.
 MobilityOutcome runMobility(const EventVehicle& vehicle, const MobilitySettings& settings,
                             const MobilityOptions& options);
+
+/// Why a run of `event` does not count ("" when it does): crashed,
+/// non-finite, diverged, its joints came apart beyond the run's bounds
+/// (sim::jointsCameApart), or the scene's failed criteria in the event's
+/// words ("slid", "tipped", "stopped short").
+std::string trialFailure(const sim::RunSummary& summary, const std::string& event);
 
 /// The event's measured quantity read from a finished run's directory
 /// (drawbar: DP/W; coast: deceleration; braking: stopping distance; turn:

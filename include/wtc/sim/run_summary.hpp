@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "wtc/sim/sim_constants.hpp"
+
 namespace wtc::sim {
 
 struct DriveSummary {
@@ -77,5 +79,11 @@ struct RunSummary {
   std::map<std::string, double> fields;
   std::map<std::string, double> parameters;  ///< The scene's, after overrides.
 };
+
+/// Whether the run's joints came apart beyond the bounds of
+/// sim_constants.hpp (kJointGapBoundM, kJointAngleBoundRad).
+inline bool jointsCameApart(const RunSummary& summary) {
+  return summary.max_joint_gap > kJointGapBoundM || summary.max_joint_angle > kJointAngleBoundRad;
+}
 
 }  // namespace wtc::sim

@@ -1,4 +1,6 @@
 #pragma once
+
+#include <numbers>
 // The constants of whole-vehicle runs (wtc::sim), with units, in one place;
 // the core's physical constants are in wtc/base/constants.hpp.
 #include "wtc/base/constants.hpp"
@@ -30,6 +32,14 @@ inline constexpr double kDivergedDistanceM = kMaxLengthM;
 /// coordinates of a few metres.
 inline constexpr double kDuplicateContactM = 1e-9;
 inline constexpr double kDuplicateContactCos = 1e-12;
+
+/// A vehicle's joints that came apart by more than this over a run (the
+/// largest gap at a joint's anchor, the largest angle off its axis,
+/// vehicle::jointError) did not hold the mechanism the description gives:
+/// the run warns, and a mobility trial does not count. A joint solved to
+/// the engines' tolerance stays within microns and thousandths of a degree.
+inline constexpr double kJointGapBoundM = 1e-3;
+inline constexpr double kJointAngleBoundRad = 0.1 * std::numbers::pi / 180.0;
 
 /// A body's centre may go this far (m) beyond the terrain's bounding box,
 /// horizontally, or below its lowest point, before the run counts as having
