@@ -51,13 +51,24 @@ struct Vertical {
   double z = 0.0, v = 0.0;
 };
 
-// One implicit Euler step of the spring-damper (c, b) under gravity, with
-// ODE's cap on the row's target velocity ERP Z / h = c Z / (h c + b); the row
-// solves v+ = target - CFM f, f = (target - v+) (h c + b) >= 0.
-Vertical implicitStep(Vertical s, double c, double b, double h, double cap = kNoCap) {
+// What an engine setting does to the row: ODE's cap on its target velocity
+// (m/s), Bullet's linear slop (m), which it adds to the contact's distance
+// (btSequentialImpulseConstraintSolver::setupContactConstraintInternal:
+// penetration = distance + m_linearSlop; a penetration below zero asks
+// ERP (-penetration) / h, one above zero lets the bodies approach by
+// penetration / h, with no ERP).
+struct Row {
+  double cap = kNoCap, slop = 0.0;
+};
+
+// One implicit Euler step of the spring-damper (c, b) under gravity: the
+// row's target velocity, ERP Z / h = c Z / (h c + b) with the defaults,
+// then v+ = target - CFM f, f = (target - v+) (h c + b) >= 0.
+Vertical implicitStep(Vertical s, double c, double b, double h, Row row = {}) {
   const double depth = kRadius - s.z, free = s.v - kGravityMps2 * h;
   if (depth <= 0.0) return {s.z + h * free, free};
-  const double inverse_cfm = h * c + b, target = std::min(c * depth / inverse_cfm, cap);
+  const double inverse_cfm = h * c + b, error = depth - row.slop;
+  const double target = std::min(error > 0.0 ? c * error / inverse_cfm : error / h, row.cap);
   double v = (kMass * free + h * inverse_cfm * target) / (kMass + h * inverse_cfm);
   if (target - v < 0.0) v = free;  // the row never pulls
   return {s.z + h * v, v};
@@ -87,7 +98,7 @@ constexpr double kSteps[] = {4e-4, 1e-2, 2e-2};
 // through the ground (a capped row) and the contact is no longer the
 // tread's lowest point; it still runs on, and `deepest` says how far.
 template <class Step, class Read>
-Gaps compare(const Tyre& tyre, double h, Step step, Read read, double cap = kNoCap) {
+Gaps compare(const Tyre& tyre, double h, Step step, Read read, Row row = {}) {
   constexpr double kThroughM = 0.5 * kRadius;
   Gaps gaps;
   Vertical alone = read();
@@ -99,8 +110,8 @@ Gaps compare(const Tyre& tyre, double h, Step step, Read read, double cap = kNoC
       gaps.deepest = std::max(gaps.deepest, kRadius - read().z);
       continue;
     }
-    const Vertical after = read(), expected = implicitStep(before, tyre.stiffness, tyre.damping, h, cap);
-    alone = implicitStep(alone, tyre.stiffness, tyre.damping, h, cap);
+    const Vertical after = read(), expected = implicitStep(before, tyre.stiffness, tyre.damping, h, row);
+    alone = implicitStep(alone, tyre.stiffness, tyre.damping, h, row);
     gaps.step_velocity = std::max(gaps.step_velocity, std::abs(after.v - expected.v));
     gaps.step_height = std::max(gaps.step_height, std::abs(after.z - expected.z));
     gaps.run_height = std::max(gaps.run_height, std::abs(after.z - alone.z));
@@ -223,7 +234,7 @@ TEST(ImplicitNormalRowTest, EachStepIsTheImplicitEulerStepInBulletsMultiBodySolv
 // One ODE world with the wheel dropped, its world settings set by `setUp`,
 // compared by `compare` against the recursion capped at `cap`.
 template <class SetUp>
-Gaps odeDrop(Stepper stepper, const Tyre& tyre, double h, SetUp setUp, double cap = kNoCap) {
+Gaps odeDrop(Stepper stepper, const Tyre& tyre, double h, SetUp setUp, Row row = {}) {
   const Terrain ground = flatGround();
   OdeWorld w(ground, ContactMode::kConstraint, stepper);
   setUp(w.world);
@@ -235,7 +246,7 @@ Gaps odeDrop(Stepper stepper, const Tyre& tyre, double h, SetUp setUp, double ca
       [&] {
         return Vertical{position(wheel.body).z(), velocity(wheel.body).z()};
       },
-      cap);
+      row);
 }
 
 std::string stepperName(Stepper stepper) {
@@ -272,13 +283,48 @@ TEST(ImplicitNormalRowTest, OdesMaxCorrectingVelocityCapsTheSpringAndDeparts) {
     for (const Tyre* tyre : {&kShallow, &kDeep}) {
       for (const double h : kSteps) {
         const std::string what = label(stepperName(stepper) + " capped at 0.1 m/s", *tyre, h);
-        const Gaps capped = odeDrop(stepper, *tyre, h, setCap, kDemoCapMps);
+        const Gaps capped = odeDrop(stepper, *tyre, h, setCap, Row{kDemoCapMps});
         report(what + " (against the capped row)", capped, h);
         EXPECT_LT(capped.step_velocity, kStepVelocityRelative * kGravityMps2 * h) << what;
         const Gaps departure = odeDrop(stepper, *tyre, h, setCap);
         report(what + " (against the implicit step)", departure, h);
         EXPECT_GT(departure.step_velocity, 1e3 * kStepVelocityRelative * kGravityMps2 * h) << what;
       }
+    }
+  }
+}
+
+// Bullet adds its linear slop (0 by default) to every contact's distance,
+// in the rigid-body solver (setupContactConstraintInternal) and in the
+// plugin's way around the split impulse (setSpring keeps (Z - slop) ERP / h):
+// the spring's zero moves down by the slop, and below it the row is a
+// plain velocity limit (no ERP, no spring). With 1 mm the row is that
+// recursion to round-off, and departs from the implicit step of c Z.
+TEST(ImplicitNormalRowTest, BulletsLinearSlopMovesTheSpringsZeroAndDeparts) {
+  constexpr double kSlopM = 0.001;
+  const Terrain ground = flatGround();
+  for (const Tyre* tyre : {&kShallow, &kDeep}) {
+    for (const double h : kSteps) {
+      const auto drop = [&](Row row) {
+        BulletWorld w(ground, ContactMode::kConstraint);
+        w.world.getSolverInfo().m_linearSlop = kSlopM;
+        BulletWheel& wheel = w.addWheelBody(kMass, btVector3(0, 0, kRadius + tyre->drop));
+        wheel.body->setAngularFactor(btVector3(0, 0, 0));
+        addWheel(w, wheel, EffectSet::full(), tyreOf(*tyre));
+        return compare(
+            *tyre, h, [&] { w.world.stepSimulation(h, 1, h); },
+            [&] {
+              return Vertical{wheel.body->getCenterOfMassPosition().z(), wheel.body->getLinearVelocity().z()};
+            },
+            row);
+      };
+      const std::string what = label("Bullet with a 1 mm linear slop", *tyre, h);
+      const Gaps slop = drop(Row{kNoCap, kSlopM});
+      report(what + " (against the slop's row)", slop, h);
+      EXPECT_LT(slop.step_velocity, kStepVelocityRelative * kGravityMps2 * h) << what;
+      const Gaps departure = drop(Row{});
+      report(what + " (against the implicit step)", departure, h);
+      EXPECT_GT(departure.step_velocity, 1e3 * kStepVelocityRelative * kGravityMps2 * h) << what;
     }
   }
 }
