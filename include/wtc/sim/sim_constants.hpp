@@ -1,9 +1,10 @@
 #pragma once
 
-#include <numbers>
 // The constants of whole-vehicle runs (wtc::sim), with units, in one place;
 // the core's physical constants are in wtc/base/constants.hpp.
 #include "wtc/base/constants.hpp"
+
+#include <numbers>
 
 namespace wtc::sim {
 
