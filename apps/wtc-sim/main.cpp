@@ -49,7 +49,7 @@ int main(int argc, char** argv) {
   app.add_option("scene", scene_file, "scene file (YAML)")->required();
   app.add_option("--engine", engine, "bullet, ode or ode_quick (overrides the scene's)");
   app.add_option("--mode", mode,
-                 "force or constraint (WTC), engine_cylinder or engine_sphere (the engine's own wheel contact)");
+                 "force, constraint or implicit (WTC), engine_cylinder or engine_sphere (the engine's own wheel contact)");
   app.add_option("--dt", dt, "step (s)");
   app.add_option("--duration", duration, "simulated time (s)");
   app.add_option("--out", out, "output directory (new or empty; default runs/<scene>_<engine>_<mode>[_N])");

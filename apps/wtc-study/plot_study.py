@@ -47,7 +47,7 @@ def main(study_dir):
                 ax.scatter(x, y, marker="x", color=colour, s=28)
             else:
                 face = colour if r["mode"] != "constraint" else "none"
-                marker = "s" if r["mode"].startswith("engine") else "o"
+                marker = "s" if r["mode"].startswith("engine") else "^" if r["mode"] == "implicit" else "o"
                 ax.scatter(x, y, marker=marker, facecolors=face, edgecolors=colour, s=28)
         front = sorted((r for r in runs if r["on_front"] == "1"), key=lambda r: float(r["wall_time_s"]))
         ax.step([float(r["wall_time_s"]) for r in front],
@@ -59,6 +59,7 @@ def main(study_dir):
         for engine, colour in COLOURS.items():
             ax.scatter([], [], color=colour, label=engine)
         ax.scatter([], [], facecolors="none", edgecolors="k", label="constraint mode (hollow)")
+        ax.scatter([], [], marker="^", color="k", label="implicit mode (triangle)")
         ax.scatter([], [], marker="s", color="k", label="the engine's own wheel contact (square)")
         ax.scatter([], [], marker="x", color="k", label="failed the scene's criterion")
         ax.scatter([], [], marker="*", color="k", s=90, label="the reference (error 0)")

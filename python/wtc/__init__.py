@@ -30,7 +30,7 @@ def _yaml_text(value):
 def load_scene(path, engine=None, mode=None, dt=None, duration=None, set=None):
     """Reads a scene file as wtc-sim does with --engine, --mode, --dt, --duration and --set.
 
-    path: the scene file (scenes/*.yaml); engine: "bullet", "ode" or "ode_quick"; mode: "force", "constraint",
+    path: the scene file (scenes/*.yaml); engine: "bullet", "ode" or "ode_quick"; mode: "force", "constraint", "implicit",
     "engine_cylinder" or "engine_sphere"; dt: step (s); duration: simulated time (s); set: {key.path: value},
     each an override as --set key.path=value (a parameter's name, or a path into the document), in order.
     Raises wtc.InvalidInputError naming the file, line, column and key of what is wrong.

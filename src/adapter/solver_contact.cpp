@@ -33,6 +33,14 @@ SolverContact toSolverContact(const ContactForce& f, const TyreParameters& tyre,
   } else {
     c.friction_direction = c.normal.unitOrthogonal();
   }
+  if (model.mode() == ContactMode::kImplicit) {  // the tread's rows, as the model made them
+    const TreadRows& rows = f.tread_rows;
+    c.friction = rows.damping[0] > 0.0 ? rows.limit[0] : 0.0;
+    c.friction_direction = rows.direction;
+    c.friction_velocity = rows.velocity;
+    c.friction_damping = rows.damping;
+    c.friction_across = rows.damping[1] > 0.0 ? rows.limit[1] : 0.0;
+  }
   return c;
 }
 

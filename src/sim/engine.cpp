@@ -23,6 +23,7 @@ void parseMode(std::string_view name, EngineSettings& settings, const std::strin
   static constexpr std::pair<std::string_view, std::pair<ContactMode, std::optional<NativeWheelShape>>> kModes[] = {
       {"force", {ContactMode::kForce, std::nullopt}},
       {"constraint", {ContactMode::kConstraint, std::nullopt}},
+      {"implicit", {ContactMode::kImplicit, std::nullopt}},
       {"engine_cylinder", {ContactMode::kForce, NativeWheelShape::kCylinder}},
       {"engine_sphere", {ContactMode::kForce, NativeWheelShape::kSphere}}};
   for (const auto& [mode_name, mode] : kModes) {
@@ -32,7 +33,7 @@ void parseMode(std::string_view name, EngineSettings& settings, const std::strin
     return;
   }
   throw InvalidInputError(where + ": '" + std::string(name) +
-                          "' (expected force, constraint, engine_cylinder or engine_sphere)");
+                          "' (expected force, constraint, implicit, engine_cylinder or engine_sphere)");
 }
 
 std::vector<double> nativeWheelFrictions(const Terrain& terrain) {

@@ -24,6 +24,13 @@ double tractionSecant(const Material& m, double slip_ratio) {
 
 double tractionInitialSlope(const Material& m) { return m.mu_max * (1.0 + m.s2) / m.s1; }
 
+// d/ds of mu_max (1 - q) (1 + s2 q), dq/ds = -q / s1:
+// mu_max (q / s1) (1 - s2 + 2 s2 q).
+double tractionSlope(const Material& m, double slip_ratio) {
+  const double q = std::exp(-slip_ratio / m.s1);
+  return m.mu_max * q / m.s1 * (1.0 - m.s2 + 2.0 * m.s2 * q);
+}
+
 double tractionPeak(const Material& m) {
   return m.s2 <= 1.0 ? m.mu_max : m.mu_max * (1.0 + m.s2) * (1.0 + m.s2) / (4.0 * m.s2);
 }

@@ -60,12 +60,31 @@ TreadState inheritTread(std::span<const TreadState> previous, const Vector3d& e)
 // is at least cos(18.4 deg) long; the fallback only keeps the axes finite.
 struct TreadAxes {
   std::array<Vector3d, 2> t;
+  Vector3d e;
 };
 TreadAxes treadAxes(const Vector3d& axle, const Vector3d& e) {
   Vector3d lateral = axle - axle.dot(e) * e;
   const double length = lateral.norm();
   lateral = length > 0.5 ? Vector3d(lateral / length) : e.unitOrthogonal();
-  return {{e.cross(lateral), lateral}};
+  return {{e.cross(lateral), lateral}, e};
+}
+
+// Implicit mode's rows for a tread that acts as a spring over the coming
+// step (tyre_model.hpp's elastic branch, and Coulomb's law): with
+// d+ = decay d + w V+ (d this step's deflection, the last step's d+ at the
+// V seen now), G+ = -k (d+ + tau V+) = K (v - V+), K = k (w + tau),
+// v = -decay d / (w + tau): the same K along both axes, so any frame will do;
+// row 0 along the spring's force. `target` is v (m/s), `force` the force now.
+TreadRows springRows(const TreadAxes& axes, const Vector3d& e, const Vector3d& target, double damping,
+                     const Vector3d& force, double limit, double mu_now) {
+  TreadRows rows;
+  const double norm = force.norm();
+  rows.direction = norm > 0.0 ? Vector3d(force / norm) : axes.t[0];
+  const Vector3d across = rows.direction.cross(e);
+  rows.velocity = {target.dot(rows.direction), target.dot(across)};
+  rows.damping = {damping, damping};
+  rows.limit = {limit, std::sqrt(std::max(limit * limit - mu_now * mu_now, 0.0))};
+  return rows;
 }
 
 // The slip law through the relaxing tread (tyre_model.hpp), per tread axis i
@@ -92,12 +111,13 @@ void slipLawTraction(const Inputs& in, const Material& m, double normal_force, c
     return;
   }
   std::array<double, 2> sigma, slip_velocity, memory, elastic, slip;
+  std::array<Relaxation, 2> relaxed;
   for (int i = 0; i < 2; ++i) {
     sigma[i] = slope_load / in.tread_stiffness[i];  // (m)
     slip_velocity[i] = axes.t[i].dot(f.slip_velocity);
-    const Relaxation r = relaxation(in.step, in.transport_speed * in.step / sigma[i]);
-    memory[i] = r.decay * axes.t[i].dot(t.u) + r.weight * slip_velocity[i];
-    elastic[i] = r.decay * axes.t[i].dot(t.elastic) + r.weight * slip_velocity[i];
+    relaxed[i] = relaxation(in.step, in.transport_speed * in.step / sigma[i]);
+    memory[i] = relaxed[i].decay * axes.t[i].dot(t.u) + relaxed[i].weight * slip_velocity[i];
+    elastic[i] = relaxed[i].decay * axes.t[i].dot(t.elastic) + relaxed[i].weight * slip_velocity[i];
   }
   // The law's force from the memory (per axis), after capping |u_i / sigma_i|
   // at s_sat; s1 ln(1/kTractionSaturation) <= s_sat spares the logarithm
@@ -128,7 +148,9 @@ void slipLawTraction(const Inputs& in, const Material& m, double normal_force, c
     memory = elastic;
     force = law(memory);
   }
-  if (tread.squaredNorm() >= force.squaredNorm()) {
+  const bool loading = tread.squaredNorm() >= force.squaredNorm();
+  const double law_mu = force.norm() / normal_force;
+  if (loading) {
     for (int i = 0; i < 2; ++i) {  // held at the law
       elastic[i] = -force[i] / in.tread_stiffness[i] - in.tread_damping_time[i] * slip_velocity[i];
     }
@@ -139,6 +161,40 @@ void slipLawTraction(const Inputs& in, const Material& m, double normal_force, c
   f.mu = force.norm() / normal_force;
   t.u = memory[0] * axes.t[0] + memory[1] * axes.t[1];
   t.elastic = elastic[0] * axes.t[0] + elastic[1] * axes.t[1];
+  if (!in.implicit_tread) return;
+  // Implicit mode: the force at the end of the step. The lag w + tau is
+  // how far the end's slip velocity V+ moves the tread over the step.
+  std::array<double, 2> lag;
+  for (int i = 0; i < 2; ++i) lag[i] = relaxed[i].weight + in.tread_damping_time[i];  // (s)
+  if (!loading) {  // unloading: the spring (springRows)
+    Vector3d target = Vector3d::Zero();
+    for (int i = 0; i < 2; ++i) target -= (relaxed[i].decay * elastic[i] / lag[i]) * axes.t[i];
+    f.tread_rows = springRows(axes, axes.e, target, in.tread_stiffness[kRolling] * lag[kRolling],
+                              f.tangential_force, law_mu, f.mu);
+    return;
+  }
+  // Loading: the law at the end's slip q+ = (decay u + (w + tau) V+) / sigma,
+  // F+ = -R_z mu(|q+|) q+/|q+|, linearized about V+ = V (the slip seen
+  // now), q* = (decay u + (w + tau) V) / sigma. Along -q* (row 0) its
+  // stiffness in V+ is R_z mu'(|q*|) (w + tau) / sigma, across it (row 1)
+  // R_z (mu/s)(|q*|) (w + tau) / sigma (the law turns with the slip): both
+  // k (w + tau) at small slip, where the spring and the law agree. Exact
+  // where mu is linear; the curvature of mu within one step is the
+  // approximation (docs/tyre-model.md). Where mu' <= 0 (saturated, or past
+  // a peak) row 0 keeps a floor of its stiffness and so pushes with the
+  // law's force at q*, as force mode does.
+  Eigen::Vector2d q;
+  for (int i = 0; i < 2; ++i) q[i] = (relaxed[i].decay * memory[i] + lag[i] * slip_velocity[i]) / sigma[i];
+  const double ratio = q.norm(), gain = normal_force * lag[kRolling] / sigma[kRolling];  // (N s/m)
+  const double mu = tractionCoefficient(m, ratio), peak = tractionPeak(m);
+  const double initial = tractionInitialSlope(m);
+  const double along = gain * std::max(tractionSlope(m, ratio), tolerance::kTreadSlopeFloor * initial);
+  TreadRows& rows = f.tread_rows;
+  rows.direction = ratio > 0.0 ? Vector3d(-(q[0] * axes.t[0] + q[1] * axes.t[1]) / ratio) : axes.t[0];
+  const Vector3d across = rows.direction.cross(axes.e), velocity = f.slip_velocity;
+  rows.velocity = {velocity.dot(rows.direction) + normal_force * mu / along, velocity.dot(across)};
+  rows.damping = {along, gain * tractionSecant(m, ratio)};
+  rows.limit = {peak, std::sqrt(std::max(peak * peak - mu * mu, 0.0))};
 }
 
 // Coulomb's law through the same tread spring: elastic up to mu_max R_z,
@@ -165,6 +221,11 @@ void coulombTraction(const Inputs& in, const Material& m, double normal_force, c
   f.mu = force.norm() / normal_force;
   u = (spring[0] / in.tread_stiffness[0]) * axes.t[0] + (spring[1] / in.tread_stiffness[1]) * axes.t[1];
   t.elastic = u;  // capped at the limit: all of it is elastic
+  if (!in.implicit_tread) return;
+  // Implicitly (no relaxation: decay 1, w = h), springRows.
+  const double lag = in.step + in.tread_damping_time[kRolling];  // (s)
+  f.tread_rows = springRows(axes, axes.e, -u / lag, in.tread_stiffness[kRolling] * lag, f.tangential_force, m.mu_max,
+                            f.mu);
 }
 
 template <bool kDamping, Traction kTraction, bool kRolling>
@@ -188,6 +249,7 @@ void contactForces(const Inputs& in, std::span<const WheelContact> contacts, std
     f.tangential_force.setZero();
     f.mu = 0.0;
     f.friction_limit = 0.0;
+    f.tread_rows = TreadRows{};
     if constexpr (kTraction != Traction::kNone) {
       const Material& m = in.materials[c.material];
       TreadState t = inheritTread(tread_in, c.e);

@@ -100,6 +100,7 @@ const WheelForces& TyreModel::forces(std::span<const Material> materials, const 
   in.transport_speed = motion.velocity.norm();
   in.slip_speed_floor = tyre.slip_speed_floor;
   in.sticking = std::max(0.0, 1.0 - in.transport_speed / tyre.slip_speed_floor);
+  in.implicit_tread = mode_ == ContactMode::kImplicit;
   // The mass the tread moves along each axis: along the axle the wheel's,
   // m; along the ground an unbraked wheel's contact moves the wheel and
   // turns it, 1 / (1/m + r_f^2 / I) (m/3 for a disc; 1.7 kg for the robot's
@@ -160,7 +161,7 @@ const WheelForces& TyreModel::forces(std::span<const Material> materials, const 
   const double damping = effects_.has(Effect::kNormalDamping) ? tyre.radial_damping : 0.0;
   result.normal_stability =
       explicitSpringStability(shares * tyre.radial_stiffness, shares * damping, inertia.effective_mass, h);
-  if (mode_ == ContactMode::kConstraint) result.normal_stability.limit = std::numeric_limits<double>::infinity();
+  if (engineSolvesContacts(mode_)) result.normal_stability.limit = std::numeric_limits<double>::infinity();
   ++state.steps_;
   state.first_unstable_ = !result.normal_stability.stable() && state.unstable_steps_ == 0;
   if (!result.normal_stability.stable()) ++state.unstable_steps_;

@@ -26,13 +26,9 @@
 #include <memory>
 #include <string>
 
-#include <BulletDynamics/Featherstone/btMultiBody.h>
-#include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
-#include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
-#include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
-
 #include "bullet_fixture.hpp"
 #include "engine_sim.hpp"
+#include "multibody_wheel_sim.hpp"
 #include "ode_fixture.hpp"
 #include "wheel_sim.hpp"
 
@@ -150,54 +146,6 @@ void expectImplicit(const std::string& what, const Gaps& g, double h, const Tyre
   }
 }
 
-// A wheel link (3.7 kg) on a revolute joint about y at the centre of a
-// floating base (17.3 kg): 21 kg on one contact, in Bullet's multibody
-// solver. The multibody's own velocity damping (0.04 by default) is off:
-// it is the body's, not the contact row's.
-struct MultiBodyWheelSim {
-  static constexpr double kWheelMass = 3.7, kBaseMass = kMass - kWheelMass;
-  MultiBodyWheelSim(const Terrain& terrain, double height, const TyreParameters& tyre) {
-    world.setGravity(btVector3(0, 0, -kGravityMps2));
-    const double across = 0.25 * kWheelMass * kRadius * kRadius + kWheelMass * kWidth * kWidth / 12;
-    const btVector3 inertia(across, 0.5 * kWheelMass * kRadius * kRadius, across);
-    multibody = std::make_unique<btMultiBody>(1, kBaseMass, btVector3(1.0, 1.0, 1.0), false, false);
-    multibody->setBasePos(btVector3(0, 0, height));
-    multibody->setupRevolute(0, kWheelMass, inertia, -1, btQuaternion::getIdentity(), btVector3(0, 1, 0),
-                             btVector3(0, 0, 0), btVector3(0, 0, 0), true);
-    multibody->finalizeMultiDof();
-    multibody->setLinearDamping(0.0);
-    multibody->setAngularDamping(0.0);
-    world.addMultiBody(multibody.get());
-    collider = std::make_unique<btMultiBodyLinkCollider>(multibody.get(), 0);
-    collider->setCollisionShape(&shape);
-    collider->setWorldTransform(btTransform(btQuaternion::getIdentity(), btVector3(0, 0, height)));
-    world.addCollisionObject(collider.get(), btBroadphaseProxy::DefaultFilter, btBroadphaseProxy::AllFilter);
-    multibody->getLink(0).m_collider = collider.get();
-    plugin = std::make_unique<bullet::Plugin>(world, terrain, ContactMode::kConstraint);
-    bullet::MultiBodyWheel spec;
-    spec.multibody = multibody.get();
-    spec.link = 0;
-    spec.description.inertia = {kWheelMass, inertia.y()};
-    spec.description.tyre = tyre;
-    plugin->addWheel(spec);
-  }
-  ~MultiBodyWheelSim() {
-    plugin.reset();
-    world.removeCollisionObject(collider.get());
-    world.removeMultiBody(multibody.get());
-  }
-  Vertical read() const { return {multibody->getBasePos().z(), multibody->getBaseVel().z()}; }
-  btDefaultCollisionConfiguration config;
-  btCollisionDispatcher dispatcher{&config};
-  btDbvtBroadphase broadphase;
-  btMultiBodyConstraintSolver solver;
-  btMultiBodyDynamicsWorld world{&dispatcher, &broadphase, &solver, &config};
-  btCylinderShape shape{btVector3(kRadius, 0.5 * kWidth, kRadius)};
-  std::unique_ptr<btMultiBody> multibody;
-  std::unique_ptr<btMultiBodyLinkCollider> collider;
-  std::unique_ptr<bullet::Plugin> plugin;
-};
-
 // Bullet's rigid-body solver (with the plugin's way around the split
 // impulse for the deep drop) and ODE's two steppers, with their defaults:
 // each step is the implicit Euler step of (c, b) to round-off.
@@ -226,7 +174,10 @@ TEST(ImplicitNormalRowTest, EachStepIsTheImplicitEulerStepInBulletsMultiBodySolv
     for (const double h : kSteps) {
       MultiBodyWheelSim sim(ground, kRadius + tyre->drop, tyreOf(*tyre));
       const Gaps g = compare(
-          *tyre, h, [&] { sim.world.stepSimulation(h, 1, h); }, [&] { return sim.read(); });
+          *tyre, h, [&] { sim.world.stepSimulation(h, 1, h); },
+          [&] {
+            return Vertical{sim.multibody->getBasePos().z(), sim.multibody->getBaseVel().z()};
+          });
       expectImplicit(label("Bullet multibody", *tyre, h), g, h, *tyre);
     }
   }

@@ -125,7 +125,7 @@ TEST(SceneFileTest, BadScenesAreRefusedWithFileLineKeyAndProblem) {
               HasSubstr(":6:9: engine: unknown engine 'physx' (expected bullet, ode"));
   EXPECT_THAT(errorOf(kMinimal + "dt: fast\n"), HasSubstr(":6:5: dt: 'fast' is not a number"));
   EXPECT_THAT(errorOf(kMinimal + "mode: rigid\n"),
-              HasSubstr(":6:7: mode: 'rigid' (expected force, constraint, engine_cylinder or engine_sphere)"));
+              HasSubstr(":6:7: mode: 'rigid' (expected force, constraint, implicit, engine_cylinder or engine_sphere)"));
   EXPECT_THAT(errorOf(kMinimal + "dt: .nan\n"), HasSubstr("dt: '.nan' is not a finite number"));
   EXPECT_THAT(errorOf(kMinimal + "dt: -0.001\n"), HasSubstr("dt: must be > 0 s"));
   EXPECT_THAT(errorOf(kMinimal + "solver_residual: 0\n"), HasSubstr("solver_residual: must be > 0 (m/s)^2"));

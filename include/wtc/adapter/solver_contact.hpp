@@ -18,7 +18,20 @@
 // friction_limit), along the load a vehicle at rest feels (gravity's part
 // in the tangent plane): an empty tread state (a wheel just put down) would
 // otherwise let the first step slide free, g sin(theta) h^2 on a slope.
-// Rolling resistance stays an explicit moment in both modes.
+//
+// Implicit mode: the normal row as in constraint mode, and the tread as two
+// compliant friction rows the tyre model makes (wtc::TreadRows,
+// tyre_kernels.cpp): row i's force is K_i (v_i - V_i+), the implicit step
+// of the tread (its spring, or the slip law linearized about the slip seen
+// now), bounded by mu_i times the normal force: row 0 along the traction up
+// to the law's peak, row 1 across it up to what the cone leaves beside the
+// traction, sqrt(peak^2 - mu^2). Engines take a row as a target velocity and
+// a compliance 1/K_i: ODE's dContactMotion and dContactSlip, a CFM in
+// Bullet's multibody rows (wheel_friction_constraint.hpp).
+//
+// Rolling resistance stays an explicit moment in every mode.
+#include <array>
+
 #include <Eigen/Core>
 
 #include "wtc/tyre/contact_mode.hpp"
@@ -41,6 +54,15 @@ struct SolverContact {
   double damping = 0.0;                                          ///< share x b, 0 without normal damping (N s/m).
   double friction = 0.0;                                         ///< mu for the engine's friction (dimensionless).
   Eigen::Vector3d friction_direction{Eigen::Vector3d::UnitX()};  ///< Unit, normal to `normal`: along the traction.
+  /// Implicit mode's tread rows (wtc::TreadRows; zero in constraint mode:
+  /// rigid friction along friction_direction only). Row 0 runs along
+  /// friction_direction, row 1 along normal x friction_direction; row i
+  /// pushes by K_i (friction_velocity_i - V_i), V_i the tread point's
+  /// velocity along it, within mu_i times the normal force (friction for
+  /// row 0, friction_across for row 1).
+  std::array<double, 2> friction_velocity{};  ///< m/s.
+  std::array<double, 2> friction_damping{};   ///< K_i (N s/m); 0: rigid friction.
+  double friction_across = 0.0;               ///< mu of row 1 (dimensionless); 0: no row 1.
 };
 
 /// The engine contact of one contact of `model`'s result for a wheel with

@@ -84,6 +84,14 @@ namespace wtc::tolerance {
 /// unwinds at most s1 ln(1e4 (1 + s2)) relaxation lengths of tread.
 inline constexpr double kTractionSaturation = 1e-4;
 
+/// Implicit mode's row along the law's force keeps at least this fraction
+/// of the law's initial stiffness (dimensionless) where mu(s) is flat or
+/// falling (saturated, or past a peak): the row then pushes with the law's
+/// force at the start of the step, as force mode does, its target velocity
+/// finite (R_z mu / (1e-3 k (w + tau)): about 4 km/s for the robot's wheel
+/// at 0.4 ms, far from any velocity it meets, so the row stays on its bound).
+inline constexpr double kTreadSlopeFloor = 1e-3;
+
 /// A contact inherits the tread state of the previous step's contact whose
 /// direction e is within 30 deg; this is cos(30 deg) (dimensionless). 30 deg
 /// keeps a seam crossing (same e) and a rolling over an edge (e turns by

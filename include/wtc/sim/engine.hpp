@@ -74,7 +74,7 @@ struct EngineSettings {
 };
 
 /// How the wheels meet the ground, as scenes, summaries and reports name it:
-/// "force", "constraint" (WTC's modes), "engine_cylinder", "engine_sphere".
+/// "force", "constraint", "implicit" (WTC's modes), "engine_cylinder", "engine_sphere".
 std::string_view modeName(const EngineSettings& settings);
 /// Sets mode and native_wheels from such a name; InvalidInputError naming
 /// `where` and the known names otherwise.

@@ -25,6 +25,9 @@ double tractionSecant(const Material& material, double slip_ratio);
 /// d mu / ds at s = 0: mu_max (1 + s2) / s1 (dimensionless).
 double tractionInitialSlope(const Material& material);
 
+/// d mu / ds at s >= 0 (dimensionless): negative past the peak when s2 > 1.
+double tractionSlope(const Material& material, double slip_ratio);
+
 /// sup over s of mu(s): the static coefficient of the vehicles spec
 /// (mu_max if s2 <= 1, else mu_max (1 + s2)^2 / (4 s2)).
 double tractionPeak(const Material& material);

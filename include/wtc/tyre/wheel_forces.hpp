@@ -3,6 +3,7 @@
 // model, sections 3-4). Sign conventions: every force is the ground's
 // action ON THE WHEEL; moments are about the wheel centre O; vectors are in
 // the world frame.
+#include <array>
 #include <span>
 
 #include <Eigen/Core>
@@ -18,6 +19,19 @@ struct WheelMotion {
   Eigen::Vector3d angular_velocity{Eigen::Vector3d::Zero()};  ///< omega of the wheel: spin + carrier (rad/s).
 };
 
+/// The tread's force over a step as two rows of an engine's solver, in the
+/// contact's tangent plane: row i pushes the wheel along its direction by
+///   R_i = damping_i (velocity_i - V_i+),  |R_i| <= limit_i R_z,
+/// V_i+ the tread point's velocity along the row at the end of the step.
+/// Row 0 runs along `direction` (the traction's), row 1 along
+/// direction x e.
+struct TreadRows {
+  Eigen::Vector3d direction{Eigen::Vector3d::UnitX()};  ///< Unit, normal to e.
+  std::array<double, 2> velocity{};                     ///< Target velocity (m/s).
+  std::array<double, 2> damping{};                      ///< K_i (N s/m); 0: no row.
+  std::array<double, 2> limit{};                        ///< Most |R_i| / R_z (dimensionless).
+};
+
 /// One contact's breakdown, for logging and controllers.
 struct ContactForce {
   WheelContact contact;                                    ///< P, e, Z, piece, material.
@@ -31,6 +45,10 @@ struct ContactForce {
   /// Constraint mode gives it to the engine as its friction coefficient.
   double friction_limit = 0.0;
   Eigen::Vector3d tangential_force{Eigen::Vector3d::Zero()};  ///< R_xy, in the tangent plane (N).
+  /// The tread over the coming step as two engine rows, for an engine that
+  /// solves it (implicit mode; docs/tyre-model.md, "Implicit mode"). Zero
+  /// without traction.
+  TreadRows tread_rows;
   Eigen::Vector3d force{Eigen::Vector3d::Zero()};             ///< R = -R_z e + R_xy, applied at P (N).
   Eigen::Vector3d rolling_moment{Eigen::Vector3d::Zero()};    ///< M_r, along the axle (N m).
 };

@@ -111,7 +111,7 @@ detail::PluginState::PluginState(btDiscreteDynamicsWorld& w, const Terrain& t, C
   // it looks at the cache, so a multibody wheel's friction is its own
   // constraint's (wheel_friction_constraint.hpp). Both flags are world-wide
   // (docs/bullet-plugin.md).
-  if (mode == ContactMode::kConstraint) {
+  if (engineSolvesContacts(mode)) {
     // A split threshold at or above zero splits every penetrating contact:
     // no contact could keep the tyre's spring (wheel_terrain_algorithm.cpp).
     const btContactSolverInfo& info = world.getSolverInfo();
@@ -243,7 +243,7 @@ void detail::PluginState::postTick(double h) {
   const StepClock::Section timed(clock);
   // The step moved every body: the next reader computes the velocities anew.
   for (LinkVelocities& v : link_velocities) v.valid = false;
-  if (mode == ContactMode::kConstraint) {
+  if (engineSolvesContacts(mode)) {
     for (const auto& w : wheels) readSolvedForces(*w, h);
   }
 #ifdef BT_USE_VIRTUAL_CLEARFORCES_AND_GRAVITY
@@ -295,6 +295,14 @@ constexpr double kStaticMass = std::numeric_limits<double>::infinity();
 WheelId Plugin::addWheel(const RigidWheel& spec) {
   static constexpr const char* kWhere = "wtc::bullet::Plugin::addWheel (rigid body)";
   if (spec.body == nullptr) fail(kWhere, "body is null");
+  // Bullet's rigid-body solver takes a friction row's CFM unscaled
+  // (lambda += rhs - cfm lambda - D dV): the tread's soft row needs
+  // cfm = D / (h K), far above 1 at small steps, where that update diverges
+  // (wheel_friction_constraint.hpp). A multibody link's rows are WTC's own.
+  if (state_->mode == ContactMode::kImplicit) {
+    fail(kWhere, "implicit mode needs the wheel as a multibody link (btMultiBody) in Bullet: its rigid-body solver "
+                 "cannot hold the tread's compliant friction rows; use force or constraint mode for a btRigidBody");
+  }
   validateMounting(toEigen(spec.axle_local), toEigen(spec.centre_local), kWhere);
   const double mass = spec.body->getInvMass() > 0.0 ? 1.0 / spec.body->getInvMass() : kStaticMass;
   const WheelDescription description =
@@ -328,10 +336,10 @@ WheelId Plugin::addWheel(const MultiBodyWheel& spec) {
   w->axle_local = spec.axle_local;
   w->centre_local = spec.centre_local;
   auto* multibody_world = dynamic_cast<btMultiBodyDynamicsWorld*>(&state_->world);
-  if (state_->mode == ContactMode::kConstraint) {
+  if (engineSolvesContacts(state_->mode)) {
     if (multibody_world == nullptr) fail(kWhere, "a multibody link's world must be a btMultiBodyDynamicsWorld");
     w->friction =
-        std::make_unique<WheelFrictionConstraint>(spec.multibody, spec.link, static_cast<int>(kReservedContacts));
+        std::make_unique<WheelFrictionConstraint>(spec.multibody, spec.link, static_cast<int>(2 * kReservedContacts));
   }
   const WheelId id = state_->add(std::move(w), kWhere);
   if (WheelFrictionConstraint* friction = state_->wheels.back()->friction.get()) {

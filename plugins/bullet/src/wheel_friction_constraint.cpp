@@ -25,21 +25,38 @@ int WheelFrictionConstraint::getIslandIdA() const {
   return collider != nullptr ? collider->getIslandTag() : -1;
 }
 
+void WheelFrictionConstraint::add(const Row& row) {
+  if (active_.size() >= static_cast<std::size_t>(getNumRows())) return;
+  internalSetAppliedImpulse(static_cast<int>(active_.size()), 0.0);
+  active_.push_back(row);
+}
+
 void WheelFrictionConstraint::set(std::span<const SolverContact> contacts, std::span<const ContactForce> model,
                                   double h) {
   active_.clear();
-  const std::size_t n = std::min({contacts.size(), model.size(), static_cast<std::size_t>(getNumRows())});
+  const std::size_t n = std::min(contacts.size(), model.size());
   for (std::size_t i = 0; i < n; ++i) {
     const SolverContact& c = contacts[i];
-    active_.push_back(
-        {toBt(c.tread_point), toBt(c.friction_direction), std::max(c.friction * model[i].normal_force * h, 0.0)});
-    internalSetAppliedImpulse(static_cast<int>(i), 0.0);
+    const double load = model[i].normal_force;  // R_z (N)
+    const auto compliance = [&](int row) {
+      return c.friction_damping[row] > 0.0 ? 1.0 / (h * c.friction_damping[row]) : 0.0;
+    };
+    const btVector3 point = toBt(c.tread_point);
+    add({point, toBt(c.friction_direction), std::max(c.friction * load * h, 0.0), c.friction_velocity[0],
+         compliance(0), i});
+    if (c.friction_across > 0.0) {
+      add({point, toBt(c.normal.cross(c.friction_direction)), std::max(c.friction_across * load * h, 0.0),
+           c.friction_velocity[1], compliance(1), i});
+    }
   }
 }
 
 btVector3 WheelFrictionConstraint::appliedForce(std::size_t i, double h) {
-  if (i >= active_.size()) return {0, 0, 0};
-  return active_[i].direction * (getAppliedImpulse(static_cast<int>(i)) / h);
+  btVector3 force(0, 0, 0);
+  for (std::size_t k = 0; k < active_.size(); ++k) {
+    if (active_[k].contact == i) force += active_[k].direction * (getAppliedImpulse(static_cast<int>(k)) / h);
+  }
+  return force;
 }
 
 void WheelFrictionConstraint::createConstraintRows(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data,
@@ -60,8 +77,14 @@ void WheelFrictionConstraint::createConstraintRows(btMultiBodyConstraintArray& r
     row.m_solverBodyIdB = data.m_fixedBodyId;
     // The link's velocity at P along the direction, to zero (a friction
     // row: no positional error), within the Coulomb bound.
-    fillMultiBodyConstraint(row, data, nullptr, nullptr, none, r.direction, r.point, r.point, 0.0, info, -r.limit,
-                            r.limit, false, 1.0, true);
+    const double velocity = fillMultiBodyConstraint(row, data, nullptr, nullptr, none, r.direction, r.point, r.point,
+                                                    0.0, info, -r.limit, r.limit, false, 1.0, true, r.velocity);
+    if (r.compliance > 0.0) {  // the tread's soft row (header)
+      const double soft = 1.0 / (1.0 / row.m_jacDiagABInv + r.compliance);
+      row.m_jacDiagABInv = soft;
+      row.m_rhs = (r.velocity - velocity) * soft;
+      row.m_cfm = r.compliance * soft;
+    }
   }
 }
 

@@ -15,6 +15,15 @@
 // tread point P along it driven to zero within +-mu R_z h. R_z is the tyre
 // model's normal force at the start of the step (the multibody solver
 // cannot couple a constraint's bound to a contact's normal impulse).
+//
+// Implicit mode (solver_contact.hpp): the tread's rows, soft. A row whose
+// impulse is lambda = h K (v - V+) is, in Bullet's Gauss-Seidel
+// (lambda += rhs - cfm lambda - D' dV, D' the row's jacDiagABInv), the
+// soft row of Box2D and Bullet's own contacts: D' = 1 / (1/D + 1/(h K)),
+// rhs = D' (v - V), cfm = D' / (h K), D the row's effective mass; its fixed
+// point is lambda = h K (v - V+) and each update contracts (cfm < 1) at any
+// step. A contact's second row runs across the first, bounded by
+// friction_across.
 #include <span>
 #include <vector>
 
@@ -27,14 +36,15 @@ namespace wtc::bullet {
 
 class WheelFrictionConstraint final : public btMultiBodyConstraint {
  public:
-  /// At most `rows` contacts of the link get friction; more are left free.
+  /// At most `rows` rows (a contact has one, or two in implicit mode); the
+  /// contacts beyond are left free.
   WheelFrictionConstraint(btMultiBody* multibody, int link, int rows);
 
   /// This step's rows: contacts[i] with the normal force of model[i]
   /// (same order), step h.
   void set(std::span<const SolverContact> contacts, std::span<const ContactForce> model, double h);
   /// The force (N, world) the solver applied on the wheel at contact i of
-  /// the last set(), along its direction; zero for a contact without a row.
+  /// the last set(), along its rows; zero for a contact without a row.
   /// (Not const: this Bullet's getAppliedImpulse is not.)
   btVector3 appliedForce(std::size_t i, double h);
 
@@ -48,8 +58,12 @@ class WheelFrictionConstraint final : public btMultiBodyConstraint {
  private:
   struct Row {
     btVector3 point, direction;
-    double limit;  // impulse (N s)
+    double limit;       // impulse (N s)
+    double velocity;    // v along direction (m/s); 0 for rigid friction
+    double compliance;  // 1 / (h K) (1/kg); 0 for rigid friction
+    std::size_t contact;
   };
+  void add(const Row& row);
   std::vector<Row> active_;
 };
 

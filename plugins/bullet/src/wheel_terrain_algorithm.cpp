@@ -57,7 +57,12 @@ void WheelTerrainAlgorithm::writeWtcContacts(int wheel, bool wheel_is_body0, con
   w.manifold = manifold_;
   w.wheel_is_body0 = manifold_->getBody0() == (wheel_is_body0 ? body0 : body1)->getCollisionObject();
   w.manifold_point.clear();
-  for (const SolverContact& c : w.mounted.last().contacts) {
+  // Bullet adds its linear slop to every contact's distance, which moves
+  // the spring's zero by it (docs/tyre-model.md); implicit mode, the tyre
+  // model solved by Bullet, hands it Z + slop so that the row's error is Z.
+  const double slop = state_.mode == ContactMode::kImplicit ? state_.world.getSolverInfo().m_linearSlop : 0.0;
+  for (SolverContact c : w.mounted.last().contacts) {
+    c.depth += slop;
     // Bullet's normal on B points from B to A; the point is on B; a
     // negative distance is a penetration.
     const btVector3 normal_on_b = toBt(wheel_is_body0 ? c.normal : Eigen::Vector3d(-c.normal));
