@@ -55,7 +55,7 @@ void stepScene(benchmark::State& state, const char* engine, const char* mode, bo
 
 int main(int argc, char** argv) {
   for (const char* engine : {"bullet", "ode", "ode_quick"}) {
-    for (const char* mode : {"force", "constraint", "engine_cylinder", "engine_sphere"}) {
+    for (const char* mode : {"force", "constraint", "implicit", "engine_cylinder", "engine_sphere"}) {
       benchmark::RegisterBenchmark((std::string("robot_rough/") + engine + "/" + mode).c_str(),
                                    [=](benchmark::State& s) { stepScene(s, engine, mode, false); })
           ->Unit(benchmark::kMicrosecond)

@@ -308,6 +308,18 @@ double largestSettlingStep(ContactMode mode) {
 // the explicit spring: its measured limit is the analytic one,
 // 2 (sqrt(1 + zeta^2) - zeta) / sqrt(c/m) = 3.05 ms. Constraint mode hands
 // the spring to Bullet's implicit solver: stable far beyond.
+// Implicit mode needs soft friction rows, which Bullet's rigid-body solver
+// cannot hold (its friction CFM is unscaled: wheel_friction_constraint.hpp):
+// a btRigidBody wheel is refused, with what to use instead; a multibody
+// link's rows are WTC's own (ImplicitTreadRowTest).
+TEST(BulletPluginTest, ImplicitModeRefusesARigidBodyWheelAndSaysWhatToUse) {
+  const Terrain ground = flatGround();
+  BulletWorld w(ground, ContactMode::kImplicit);
+  WheelBody& wheel = w.addWheelBody(21.0, btVector3(0, 0, 0.19));
+  EXPECT_THAT([&] { testing::addWheel(w, wheel); },
+              ::testing::ThrowsMessage<InvalidInputError>(::testing::HasSubstr("multibody link")));
+}
+
 TEST(BulletStabilityTest, LargestStableStepOfEachModeForAStiffTyre) {
   const double predicted = largestStableStep(1e6, 900.0, 3.7);
   const double force = largestSettlingStep(ContactMode::kForce);

@@ -281,5 +281,25 @@ TEST(ImplicitNormalRowTest, BulletsLinearSlopMovesTheSpringsZeroAndDeparts) {
   }
 }
 
+// Implicit mode hands Bullet Z + m_linearSlop (wheel_terrain_algorithm.cpp),
+// so that with a slop the row is the implicit step of c Z again: the
+// multibody wheel with a 1 mm slop against the recursion without one.
+TEST(ImplicitNormalRowTest, ImplicitModeTakesBulletsLinearSlopBackOut) {
+  constexpr double kSlopM = 0.001;
+  const Terrain ground = flatGround();
+  for (const Tyre* tyre : {&kShallow, &kDeep}) {
+    for (const double h : kSteps) {
+      MultiBodyWheelSim sim(ground, kRadius + tyre->drop, tyreOf(*tyre), ContactMode::kImplicit);
+      sim.world.getSolverInfo().m_linearSlop = kSlopM;
+      const Gaps g = compare(
+          *tyre, h, [&] { sim.world.stepSimulation(h, 1, h); },
+          [&] {
+            return Vertical{sim.multibody->getBasePos().z(), sim.multibody->getBaseVel().z()};
+          });
+      expectImplicit(label("Bullet multibody, implicit mode, 1 mm linear slop", *tyre, h), g, h, *tyre);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace wtc::testing

@@ -264,6 +264,20 @@ TEST(OdePluginTest, CorrectingVelocityCapThatCutsTheSpringIsCounted) {
   EXPECT_EQ(w.plugin->diagnostics(id).capped_contacts, 1u);
 }
 
+// Implicit mode is the tyre's spring solved by ODE: a cap on the rows'
+// correcting velocity would cut it, so beginStep refuses a finite cap and
+// says which setting (issue 41; the departure: docs/tyre-model.md).
+TEST(OdePluginTest, ImplicitModeRefusesACorrectingVelocityCap) {
+  const Terrain ground = testing::flatGround();
+  OdeWorld w(ground, ContactMode::kImplicit);
+  const WheelBody wheel = w.addWheelBody(21.0, {0, 0, kRadius - 21.0 * kGravityMps2 / kStiffness});
+  testing::addWheel(w, wheel);
+  EXPECT_NO_THROW(w.step(kStepSeconds)) << "default cap: infinity";
+  dWorldSetContactMaxCorrectingVel(w.world, 0.1);
+  EXPECT_THAT([&] { w.plugin->beginStep(kStepSeconds); },
+              ::testing::ThrowsMessage<InvalidInputError>(::testing::HasSubstr("dWorldSetContactMaxCorrectingVel")));
+}
+
 // Case: rolling resistance opposes the wheel's rolling over the ground,
 // its absolute spin about the axle, whatever carries it: f_r R_z r_0
 // against the spin in either direction.
