@@ -169,8 +169,8 @@ void slipLawTraction(const Inputs& in, const Material& m, double normal_force, c
   if (!loading) {  // unloading: the spring (springRows)
     Vector3d target = Vector3d::Zero();
     for (int i = 0; i < 2; ++i) target -= (relaxed[i].decay * elastic[i] / lag[i]) * axes.t[i];
-    f.tread_rows = springRows(axes, axes.e, target, in.tread_stiffness[kRolling] * lag[kRolling],
-                              f.tangential_force, law_mu, f.mu);
+    f.tread_rows = springRows(axes, axes.e, target, in.tread_stiffness[kRolling] * lag[kRolling], f.tangential_force,
+                              law_mu, f.mu);
     return;
   }
   // Loading: the law at the end's slip q+ = (decay u + (w + tau) V+) / sigma,
@@ -224,8 +224,8 @@ void coulombTraction(const Inputs& in, const Material& m, double normal_force, c
   if (!in.implicit_tread) return;
   // Implicitly (no relaxation: decay 1, w = h), springRows.
   const double lag = in.step + in.tread_damping_time[kRolling];  // (s)
-  f.tread_rows = springRows(axes, axes.e, -u / lag, in.tread_stiffness[kRolling] * lag, f.tangential_force, m.mu_max,
-                            f.mu);
+  f.tread_rows =
+      springRows(axes, axes.e, -u / lag, in.tread_stiffness[kRolling] * lag, f.tangential_force, m.mu_max, f.mu);
 }
 
 template <bool kDamping, Traction kTraction, bool kRolling>

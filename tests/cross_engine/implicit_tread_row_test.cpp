@@ -97,7 +97,8 @@ TEST(ImplicitTreadRowTest, OdeSolvesTheRowsTheModelGave) {
         sim->push(kPush, 0.0);
         sim->step(h);
         const Eigen::Vector3d v = sim->velocity();
-        checkRows(sim->forces(), sim->applied(), [&](const Eigen::Vector3d&) { return v; }, gaps);
+        checkRows(
+            sim->forces(), sim->applied(), [&](const Eigen::Vector3d&) { return v; }, gaps);
       }
       const std::string what = engineName(engine) + ", h = " + std::to_string(h * 1e3) + " ms";
       report(what, gaps);
@@ -127,12 +128,13 @@ TEST(ImplicitTreadRowTest, BulletsMultiBodySolverSolvesTheRowsTheModelGave) {
       const btVector3 centre = body.getBasePos();
       step();
       const btVector3 velocity = body.getBaseVel(), spin = body.getBaseOmega() + btVector3(0, body.getJointVel(0), 0);
-      checkRows(sim.plugin->forces(0), sim.plugin->applied(0),
-                [&](const Eigen::Vector3d& p) {
-                  const btVector3 v = velocity + spin.cross(btVector3(p.x(), p.y(), p.z()) - centre);
-                  return Eigen::Vector3d(v.x(), v.y(), v.z());
-                },
-                gaps);
+      checkRows(
+          sim.plugin->forces(0), sim.plugin->applied(0),
+          [&](const Eigen::Vector3d& p) {
+            const btVector3 v = velocity + spin.cross(btVector3(p.x(), p.y(), p.z()) - centre);
+            return Eigen::Vector3d(v.x(), v.y(), v.z());
+          },
+          gaps);
     }
     const std::string what = "Bullet multibody, h = " + std::to_string(h * 1e3) + " ms";
     report(what, gaps);
@@ -162,7 +164,8 @@ void expectTendsToForceMode(const std::string& engine, Run run) {
     const double force_gap = std::abs(force.travel - reference.travel) / reference.travel;
     const std::string what = engine + ", h = " + std::to_string(h * 1e3) + " ms";
     std::cout << what << ": travel " << implicit.travel << " m (force mode " << force.travel << ", reference "
-              << reference.travel << "); gap to the reference " << gap * 100 << " % (force mode " << force_gap * 100 << " %)\n";
+              << reference.travel << "); gap to the reference " << gap * 100 << " % (force mode " << force_gap * 100
+              << " %)\n";
     ::testing::Test::RecordProperty(what + " travel_gap_percent", std::to_string(gap * 100));
     EXPECT_TRUE(std::isfinite(implicit.travel)) << what;
     if (h <= 2e-3) {

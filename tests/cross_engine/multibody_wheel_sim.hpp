@@ -7,18 +7,18 @@
 #include <memory>
 
 #include <BulletDynamics/Featherstone/btMultiBody.h>
-#include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 #include <btBulletDynamicsCommon.h>
 
-#include "wtc/bullet/plugin.hpp"
 #include "wheel_sim.hpp"
+#include "wtc/bullet/contact_solver.hpp"
+#include "wtc/bullet/plugin.hpp"
 
 namespace wtc::testing {
 
 struct MultiBodyWheelSim {
-  static constexpr double kRadius = 0.19, kWidth = 0.12;  // r_f, tread width (m)
+  static constexpr double kRadius = 0.19, kWidth = 0.12;                                   // r_f, tread width (m)
   static constexpr double kMass = 21.0, kWheelMass = 3.7, kBaseMass = kMass - kWheelMass;  // kg
 
   /// The base's principal moments of inertia (kg m^2): 1 by default; a huge
@@ -29,8 +29,8 @@ struct MultiBodyWheelSim {
     world.setGravity(btVector3(0, 0, -kGravityMps2));
     const double across = 0.25 * kWheelMass * kRadius * kRadius + kWheelMass * kWidth * kWidth / 12;
     const btVector3 inertia(across, 0.5 * kWheelMass * kRadius * kRadius, across);
-    multibody = std::make_unique<btMultiBody>(1, kBaseMass, btVector3(base_inertia, base_inertia, base_inertia),
-                                              false, false);
+    multibody =
+        std::make_unique<btMultiBody>(1, kBaseMass, btVector3(base_inertia, base_inertia, base_inertia), false, false);
     multibody->setBasePos(btVector3(0, 0, height));
     multibody->setupRevolute(0, kWheelMass, inertia, -1, btQuaternion::getIdentity(), btVector3(0, 1, 0),
                              btVector3(0, 0, 0), btVector3(0, 0, 0), true);
@@ -62,7 +62,7 @@ struct MultiBodyWheelSim {
   btDefaultCollisionConfiguration config;
   btCollisionDispatcher dispatcher{&config};
   btDbvtBroadphase broadphase;
-  btMultiBodyConstraintSolver solver;
+  bullet::ContactSolver solver;  // as btMultiBodyConstraintSolver, with implicit mode's bounds
   btMultiBodyDynamicsWorld world{&dispatcher, &broadphase, &solver, &config};
   btCylinderShape shape{btVector3(kRadius, 0.5 * kWidth, kRadius)};
   std::unique_ptr<btMultiBody> multibody;

@@ -49,8 +49,8 @@ struct ContactForce {
   /// solves it (implicit mode; docs/tyre-model.md, "Implicit mode"). Zero
   /// without traction.
   TreadRows tread_rows;
-  Eigen::Vector3d force{Eigen::Vector3d::Zero()};             ///< R = -R_z e + R_xy, applied at P (N).
-  Eigen::Vector3d rolling_moment{Eigen::Vector3d::Zero()};    ///< M_r, along the axle (N m).
+  Eigen::Vector3d force{Eigen::Vector3d::Zero()};           ///< R = -R_z e + R_xy, applied at P (N).
+  Eigen::Vector3d rolling_moment{Eigen::Vector3d::Zero()};  ///< M_r, along the axle (N m).
 };
 
 /// The wheel's totals. force and torque are the wrench on the wheel body

@@ -3,6 +3,8 @@
 // note in include/wtc/bullet/plugin.hpp.
 #include "wtc/bullet/plugin.hpp"
 
+#include "wtc/bullet/contact_solver.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -300,8 +302,9 @@ WheelId Plugin::addWheel(const RigidWheel& spec) {
   // cfm = D / (h K), far above 1 at small steps, where that update diverges
   // (wheel_friction_constraint.hpp). A multibody link's rows are WTC's own.
   if (state_->mode == ContactMode::kImplicit) {
-    fail(kWhere, "implicit mode needs the wheel as a multibody link (btMultiBody) in Bullet: its rigid-body solver "
-                 "cannot hold the tread's compliant friction rows; use force or constraint mode for a btRigidBody");
+    fail(kWhere,
+         "implicit mode needs the wheel as a multibody link (btMultiBody) in Bullet: its rigid-body solver "
+         "cannot hold the tread's compliant friction rows; use force or constraint mode for a btRigidBody");
   }
   validateMounting(toEigen(spec.axle_local), toEigen(spec.centre_local), kWhere);
   const double mass = spec.body->getInvMass() > 0.0 ? 1.0 / spec.body->getInvMass() : kStaticMass;
@@ -338,8 +341,15 @@ WheelId Plugin::addWheel(const MultiBodyWheel& spec) {
   auto* multibody_world = dynamic_cast<btMultiBodyDynamicsWorld*>(&state_->world);
   if (engineSolvesContacts(state_->mode)) {
     if (multibody_world == nullptr) fail(kWhere, "a multibody link's world must be a btMultiBodyDynamicsWorld");
+    if (state_->mode == ContactMode::kImplicit &&
+        dynamic_cast<ContactSolver*>(multibody_world->getConstraintSolver()) == nullptr) {
+      fail(kWhere,
+           "implicit mode needs the world's solver to be a wtc::bullet::ContactSolver (wtc/bullet/contact_solver.hpp), "
+           "which bounds the tread's rows by the normal impulse it solves");
+    }
     w->friction =
         std::make_unique<WheelFrictionConstraint>(spec.multibody, spec.link, static_cast<int>(2 * kReservedContacts));
+    w->friction->setContactPoints(&w->manifold, &w->manifold_point);
   }
   const WheelId id = state_->add(std::move(w), kWhere);
   if (WheelFrictionConstraint* friction = state_->wheels.back()->friction.get()) {

@@ -42,13 +42,27 @@ void WheelFrictionConstraint::set(std::span<const SolverContact> contacts, std::
       return c.friction_damping[row] > 0.0 ? 1.0 / (h * c.friction_damping[row]) : 0.0;
     };
     const btVector3 point = toBt(c.tread_point);
-    add({point, toBt(c.friction_direction), std::max(c.friction * load * h, 0.0), c.friction_velocity[0],
-         compliance(0), i});
+    add({point, toBt(c.friction_direction), std::max(c.friction * load * h, 0.0), c.friction_velocity[0], compliance(0),
+         c.friction, i});
     if (c.friction_across > 0.0) {
       add({point, toBt(c.normal.cross(c.friction_direction)), std::max(c.friction_across * load * h, 0.0),
-           c.friction_velocity[1], compliance(1), i});
+           c.friction_velocity[1], compliance(1), c.friction_across, i});
     }
   }
+}
+
+void WheelFrictionConstraint::setContactPoints(btPersistentManifold* const* manifold, const std::vector<int>* points) {
+  manifold_ = manifold;
+  points_ = points;
+}
+
+const btManifoldPoint* WheelFrictionConstraint::contactPoint(int row) const {
+  if (manifold_ == nullptr || *manifold_ == nullptr || points_ == nullptr) return nullptr;
+  const std::size_t contact = active_[static_cast<std::size_t>(row)].contact;
+  if (contact >= points_->size()) return nullptr;
+  const int index = (*points_)[contact];
+  if (index < 0 || index >= (*manifold_)->getNumContacts()) return nullptr;
+  return &(*manifold_)->getContactPoint(index);
 }
 
 btVector3 WheelFrictionConstraint::appliedForce(std::size_t i, double h) {

@@ -27,6 +27,7 @@
 #include <span>
 #include <vector>
 
+#include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraint.h>
 
 #include "wtc/adapter/solver_contact.hpp"
@@ -48,6 +49,19 @@ class WheelFrictionConstraint final : public btMultiBodyConstraint {
   /// (Not const: this Bullet's getAppliedImpulse is not.)
   btVector3 appliedForce(std::size_t i, double h);
 
+  /// Where a contact's manifold point is once Bullet has collided the wheel
+  /// (the wheel's manifold and, per contact, the point's index or -1;
+  /// plugin_state.hpp): ContactSolver bounds a row by that point's normal
+  /// impulse.
+  void setContactPoints(btPersistentManifold* const* manifold, const std::vector<int>* points);
+  /// Row r's contact's manifold point, or null.
+  const btManifoldPoint* contactPoint(int row) const;
+  /// Row r's mu: its bound over its contact's normal force (dimensionless).
+  double friction(int row) const { return active_[static_cast<std::size_t>(row)].mu; }
+  /// Whether ContactSolver bounds row r by its contact's normal impulse
+  /// (implicit mode's rows; constraint mode's keep the start-of-step bound).
+  bool followsNormal(int row) const { return active_[static_cast<std::size_t>(row)].compliance > 0.0; }
+
   void finalizeMultiDof() override;
   int getIslandIdA() const override;
   int getIslandIdB() const override { return -1; }  // the static terrain
@@ -61,10 +75,13 @@ class WheelFrictionConstraint final : public btMultiBodyConstraint {
     double limit;       // impulse (N s)
     double velocity;    // v along direction (m/s); 0 for rigid friction
     double compliance;  // 1 / (h K) (1/kg); 0 for rigid friction
+    double mu;          // the bound over the normal force
     std::size_t contact;
   };
   void add(const Row& row);
   std::vector<Row> active_;
+  btPersistentManifold* const* manifold_ = nullptr;
+  const std::vector<int>* points_ = nullptr;
 };
 
 }  // namespace wtc::bullet

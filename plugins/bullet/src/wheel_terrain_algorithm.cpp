@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <new>
+#include <span>
 
 #include "plugin_state.hpp"
 
@@ -61,7 +62,9 @@ void WheelTerrainAlgorithm::writeWtcContacts(int wheel, bool wheel_is_body0, con
   // the spring's zero by it (docs/tyre-model.md); implicit mode, the tyre
   // model solved by Bullet, hands it Z + slop so that the row's error is Z.
   const double slop = state_.mode == ContactMode::kImplicit ? state_.world.getSolverInfo().m_linearSlop : 0.0;
-  for (SolverContact c : w.mounted.last().contacts) {
+  const std::span<const SolverContact> contacts = w.mounted.last().contacts;
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    SolverContact c = contacts[i];
     c.depth += slop;
     // Bullet's normal on B points from B to A; the point is on B; a
     // negative distance is a penetration.
@@ -79,10 +82,12 @@ void WheelTerrainAlgorithm::writeWtcContacts(int wheel, bool wheel_is_body0, con
       if (d < nearest) nearest = d, index = k;
     }
     // A point another contact of this step already took (Bullet merged
-    // the two): its impulse is reported once.
-    const bool taken = std::find(w.manifold_point.begin(), w.manifold_point.end(), index) != w.manifold_point.end();
+    // the two): its impulse is reported once, and it holds both springs.
+    const auto first = std::find(w.manifold_point.begin(), w.manifold_point.end(), index);
+    const bool taken = first != w.manifold_point.end();
     w.manifold_point.push_back(index < 0 || taken ? -1 : index);
     if (index < 0) continue;
+    if (taken) c = mergedContact(contacts[static_cast<std::size_t>(first - w.manifold_point.begin())], c);
     btManifoldPoint& p = manifold_->getContactPoint(index);
     // A multibody link's friction is its own constraint's
     // (wheel_friction_constraint.hpp): Bullet's would not keep the direction.
@@ -102,6 +107,26 @@ void WheelTerrainAlgorithm::writeWtcContacts(int wheel, bool wheel_is_body0, con
     }
     setSpring(p, c, dispatch_info.m_timeStep);
   }
+}
+
+// Bullet merges a contact into a point of its manifold that lies within its
+// contact breaking threshold (btManifoldResult::addContactPoint), keeping
+// the later contact's geometry. Two WTC contacts that close are two
+// contacts of one shallow crease, whose springs act in parallel (their load
+// shares add, wheel_contact.hpp): the merged point holds both stiffnesses and
+// dampings, and the stiffer one's friction. Keeping the later one's alone
+// dropped a crease's full contact for its partner's small share: the towed
+// system's 5 t body sank its nose wheel 13 cm through the rough ground in
+// 0.4 s on a 1.5 % share (Bullet, implicit mode).
+SolverContact WheelTerrainAlgorithm::mergedContact(const SolverContact& earlier, const SolverContact& later) {
+  SolverContact merged = earlier.stiffness > later.stiffness ? earlier : later;
+  merged.ground_point = later.ground_point;
+  merged.tread_point = later.tread_point;
+  merged.normal = later.normal;
+  merged.depth = later.depth;
+  merged.stiffness = earlier.stiffness + later.stiffness;
+  merged.damping = earlier.damping + later.damping;
+  return merged;
 }
 
 // The tyre's spring-damper on a contact point: Bullet derives ERP and CFM

@@ -24,6 +24,7 @@
 #include "warm_started_motor.hpp"
 #include "wtc/base/constants.hpp"
 #include "wtc/base/error.hpp"
+#include "wtc/bullet/contact_solver.hpp"
 #include "wtc/bullet/plugin.hpp"
 #include "wtc/bullet/terrain_object.hpp"
 #include "wtc/sim/sim_constants.hpp"
@@ -426,7 +427,7 @@ class SimEngine final : public sim::EngineBase {
   btDefaultCollisionConfiguration config_;
   btCollisionDispatcher dispatcher_{&config_};
   btDbvtBroadphase broadphase_;
-  btMultiBodyConstraintSolver solver_;
+  ContactSolver solver_;  // implicit mode's rows follow their normal impulses (contact_solver.hpp)
   btMultiBodyDynamicsWorld world_{&dispatcher_, &broadphase_, &solver_, &config_};
   std::vector<std::unique_ptr<btCollisionShape>> shapes_;
   std::vector<std::unique_ptr<btMultiBody>> trees_;

@@ -1,0 +1,42 @@
+#pragma once
+// wtc::bullet::ContactSolver: Bullet's multibody constraint solver with
+// implicit mode's tread rows bounded by the normal impulse the solver has
+// reached for their contact, at every iteration, as Bullet bounds its own
+// friction rows (|lambda_i| <= mu_i lambda_n). A btMultiBodyConstraint's
+// rows have fixed bounds, and with the tyre model's R_z at the start of the
+// step a tread row whose contact the solver had unloaded (a wheel wedged
+// between two faces, held up by its own tread rows) could still push with
+// mu R_z: the towed system's nose wheel did, and its energy grew by 2.2 kJ
+// (docs/tyre-model.md). Implicit mode refuses a multibody world whose
+// solver is not one of these.
+//
+// Usage: construct it in place of btMultiBodyConstraintSolver:
+//   wtc::bullet::ContactSolver solver;
+//   btMultiBodyDynamicsWorld world(&dispatcher, &broadphase, &solver, &config);
+// Constraint mode's rows keep their bounds from the start of the step.
+#include <vector>
+
+#include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
+
+namespace wtc::bullet {
+
+class ContactSolver : public btMultiBodyConstraintSolver {
+ protected:
+  btScalar solveGroupCacheFriendlySetup(btCollisionObject** bodies, int num_bodies, btPersistentManifold** manifolds,
+                                        int num_manifolds, btTypedConstraint** constraints, int num_constraints,
+                                        const btContactSolverInfo& info, btIDebugDraw* debug_drawer) override;
+  btScalar solveSingleIteration(int iteration, btCollisionObject** bodies, int num_bodies,
+                                btPersistentManifold** manifolds, int num_manifolds, btTypedConstraint** constraints,
+                                int num_constraints, const btContactSolverInfo& info,
+                                btIDebugDraw* debug_drawer) override;
+
+ private:
+  struct Bound {
+    int row;     // in m_multiBodyNonContactConstraints
+    int normal;  // in m_multiBodyNormalContactConstraints
+    double mu;   // dimensionless
+  };
+  std::vector<Bound> bounds_;
+};
+
+}  // namespace wtc::bullet
