@@ -2,13 +2,12 @@
 // wtc::bullet::ContactSolver: Bullet's multibody constraint solver with
 // implicit mode's tread rows bounded by the normal impulse the solver has
 // reached for their contact, at every iteration, as Bullet bounds its own
-// friction rows (|lambda_i| <= mu_i lambda_n). A btMultiBodyConstraint's
-// rows have fixed bounds, and with the tyre model's R_z at the start of the
-// step a tread row whose contact the solver had unloaded (a wheel wedged
-// between two faces, held up by its own tread rows) could still push with
-// mu R_z: the towed system's nose wheel did, and its energy grew by 2.2 kJ
-// (docs/tyre-model.md). Implicit mode refuses a multibody world whose
-// solver is not one of these.
+// friction rows (|lambda_i| <= mu_i lambda_n), and as ODE bounds them
+// (dContactApprox1). A btMultiBodyConstraint's rows have fixed bounds: with
+// the tyre model's R_z at the start of the step, a tread row could push
+// with mu R_z at a contact the solver unloads within the step (a wheel
+// leaving the ground, a load moving to another contact). Implicit mode
+// refuses a multibody world whose solver is not one of these.
 //
 // Usage: construct it in place of btMultiBodyConstraintSolver:
 //   wtc::bullet::ContactSolver solver;
