@@ -12,6 +12,8 @@
 #include <wtc/base/error.hpp>
 #include <wtc/contact/wheel_contact.hpp>
 
+#include "wheel_sim.hpp"
+
 namespace {
 
 using Eigen::Vector3d;
@@ -156,25 +158,6 @@ TEST(WheelContactTest, ConcaveValleyOfOneSurfaceKeepsBothSides) {
   EXPECT_NEAR(contacts[1].deflection, kDeflection, 1e-12);
 }
 
-// Two prisms meeting in a V whose flanks rise at `slope_rad` on each side.
-wtc::Terrain valley(double slope_rad) {
-  wtc::TerrainBuilder builder;
-  const auto material = builder.addMaterial({});
-  const double rise = std::tan(slope_rad);
-  for (const double side : {-1.0, 1.0}) {
-    builder.addPiece(wtc::ConvexPolyhedron::fromPoints({{side, -1, rise},
-                                                        {0, -1, 0},
-                                                        {side, 1, rise},
-                                                        {0, 1, 0},
-                                                        {side, -1, -1},
-                                                        {0, -1, -1},
-                                                        {side, 1, -1},
-                                                        {0, 1, -1}}),
-                     material);
-  }
-  return std::move(builder).build();
-}
-
 TEST(WheelContactTest, ShallowConcaveCreaseLoadsLikeTheFlatGroundItNearlyIs) {
   // Case: the centre over the crease, the deepest contact kDeflection deep.
   // Flat (slope 0) is one contact; as the valley bends, the second side's
@@ -183,7 +166,7 @@ TEST(WheelContactTest, ShallowConcaveCreaseLoadsLikeTheFlatGroundItNearlyIs) {
   const double patch = std::sqrt(2 * kRadius * kDeflection);  // L (m)
   double previous = kDeflection;
   for (const double slope : {0.0, 1e-9, 1e-7, 1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 0.05, 0.1, 0.2, 0.3}) {
-    const wtc::Terrain terrain = valley(slope);
+    const wtc::Terrain terrain = wtc::testing::valley(slope);
     const double height = (kRadius - kDeflection) / std::cos(slope);  // centre above the crease
     wtc::WheelContactFinder finder;
     const auto contacts = finder.find(terrain, {kRadius, 0.12}, {{0, 0, height}, Vector3d::UnitY()});

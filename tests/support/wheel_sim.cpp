@@ -1,5 +1,7 @@
 #include "wheel_sim.hpp"
 
+#include <cmath>
+
 #include <Eigen/Geometry>
 
 #include "wtc/terrain/terrain_primitives.hpp"
@@ -23,6 +25,24 @@ Terrain flatGround(int tiles, const Material& material) {
   slab.size_x = slab.size_y = 40.0;
   slab.tiles_x = slab.tiles_y = tiles;
   addSlab(builder, slab, builder.addMaterial(material));
+  return std::move(builder).build();
+}
+
+Terrain valley(double slope_rad) {
+  TerrainBuilder builder;
+  const MaterialId material = builder.addMaterial({});
+  const double rise = std::tan(slope_rad);
+  for (const double side : {-1.0, 1.0}) {
+    builder.addPiece(ConvexPolyhedron::fromPoints({{side, -1, rise},
+                                                   {0, -1, 0},
+                                                   {side, 1, rise},
+                                                   {0, 1, 0},
+                                                   {side, -1, -1},
+                                                   {0, -1, -1},
+                                                   {side, 1, -1},
+                                                   {0, 1, -1}}),
+                     material);
+  }
   return std::move(builder).build();
 }
 

@@ -34,6 +34,10 @@ Terrain tiltedSlab(double slope_rad, const Material& material = {});
 /// boxes (the engine tests' ground).
 Terrain flatGround(int tiles = 1, const Material& material = {});
 
+/// Two prisms meeting in a V along y through the origin, whose flanks rise
+/// at `slope_rad` on each side (a shallow concave crease for small slopes).
+Terrain valley(double slope_rad);
+
 /// The unit normal of tiltedSlab's top and its downhill unit direction.
 Eigen::Vector3d slabNormal(double slope_rad);
 Eigen::Vector3d downhill(double slope_rad);
