@@ -26,7 +26,7 @@ constexpr int kCountedSteps = 5000;
 
 TEST(StepAllocationTest, AWarmStepOfTheLedgeClimbAllocatesNothingInAnyEngineOrMode) {
   for (const char* engine : {"bullet", "ode", "ode_quick"}) {
-    for (const char* mode : {"force", "constraint"}) {
+    for (const char* mode : {"force", "constraint", "implicit"}) {
       const sim::Scene s = sim::loadScene(fs::path(WTC_SOURCE_DIR) / "scenes" / "robot_ledge.yaml",
                                          std::vector<sim::Override>{{"engine", engine}, {"mode", mode}});
       const auto e = sim::makeEngine(s.engine, *s.terrain, s.vehicle, s.placement);

@@ -16,19 +16,28 @@ btScalar ContactSolver::solveGroupCacheFriendlySetup(btCollisionObject** bodies,
   const btScalar result = btMultiBodyConstraintSolver::solveGroupCacheFriendlySetup(
       bodies, num_bodies, manifolds, num_manifolds, constraints, num_constraints, info, debug_drawer);
   bounds_.clear();
-  std::vector<std::pair<const void*, int>> normals;
-  for (int j = 0; j < m_multiBodyNormalContactConstraints.size(); ++j) {
-    normals.emplace_back(m_multiBodyNormalContactConstraints[j].m_originalContactPoint, j);
-  }
-  std::sort(normals.begin(), normals.end());
-  for (int k = 0; k < m_multiBodyNonContactConstraints.size(); ++k) {
+  const auto tread = [&](int k) -> const WheelFrictionConstraint* {
     const btMultiBodySolverConstraint& row = m_multiBodyNonContactConstraints[k];
-    const auto* tread = dynamic_cast<const WheelFrictionConstraint*>(row.m_orgConstraint);
-    if (tread == nullptr || !tread->followsNormal(row.m_orgDofIndex)) continue;
-    const void* point = tread->contactPoint(row.m_orgDofIndex);
-    const auto found = std::lower_bound(normals.begin(), normals.end(), std::make_pair(point, -1));
-    if (point == nullptr || found == normals.end() || found->first != point) continue;
-    bounds_.push_back({k, found->second, tread->friction(row.m_orgDofIndex)});
+    const auto* constraint = dynamic_cast<const WheelFrictionConstraint*>(row.m_orgConstraint);
+    return constraint != nullptr && constraint->followsNormal(row.m_orgDofIndex) ? constraint : nullptr;
+  };
+  bool any = false;
+  for (int k = 0; k < m_multiBodyNonContactConstraints.size() && !any; ++k) any = tread(k) != nullptr;
+  if (!any) return result;  // constraint mode: nothing to pair
+  // Kept from step to step (members): no allocation once warm.
+  normals_.clear();
+  for (int j = 0; j < m_multiBodyNormalContactConstraints.size(); ++j) {
+    normals_.emplace_back(m_multiBodyNormalContactConstraints[j].m_originalContactPoint, j);
+  }
+  std::sort(normals_.begin(), normals_.end());
+  for (int k = 0; k < m_multiBodyNonContactConstraints.size(); ++k) {
+    const WheelFrictionConstraint* constraint = tread(k);
+    if (constraint == nullptr) continue;
+    const int row = m_multiBodyNonContactConstraints[k].m_orgDofIndex;
+    const void* point = constraint->contactPoint(row);
+    const auto found = std::lower_bound(normals_.begin(), normals_.end(), std::make_pair(point, -1));
+    if (point == nullptr || found == normals_.end() || found->first != point) continue;
+    bounds_.push_back({k, found->second, constraint->friction(row)});
   }
   return result;
 }

@@ -13,6 +13,7 @@
 //   wtc::bullet::ContactSolver solver;
 //   btMultiBodyDynamicsWorld world(&dispatcher, &broadphase, &solver, &config);
 // Constraint mode's rows keep their bounds from the start of the step.
+#include <utility>
 #include <vector>
 
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
@@ -36,6 +37,7 @@ class ContactSolver : public btMultiBodyConstraintSolver {
     double mu;   // dimensionless
   };
   std::vector<Bound> bounds_;
+  std::vector<std::pair<const void*, int>> normals_;  // manifold point -> normal row, sorted
 };
 
 }  // namespace wtc::bullet
