@@ -301,15 +301,6 @@ class SimEngine final : public sim::EngineBase {
     WheelId wheel = -1;  // the plugin's
   };
 
-  // Whether the body's drive is a wheel's solved in closed form, as ODE's
-  // sim engine decides it: force mode with WTC's wheels (no contact rows in
-  // the solver), a revolute joint about the wheel's own axle.
-  bool solvesWheelDrive(const Body& b) const {
-    constexpr double kParallel = 1e-9;  // |axle x axis| of a wheel on its own axle
-    return b.wheel && b.joint.type == JointType::kRevolute && settings().mode == ContactMode::kForce &&
-           !settings().native_wheels && (b.pose.linear() * b.wheel->axle).cross(b.joint.axis).norm() < kParallel;
-  }
-
   // The wheels' drives in force mode (vehicle::wheelDriveTorque), in the
   // plugin's post-wheels callback: the tyre's wrench of the step is on each
   // wheel by then, so the torque that holds the wheel's rate is known
@@ -438,7 +429,7 @@ class SimEngine final : public sim::EngineBase {
       world_.addMultiBodyConstraint(limit.get());
       constraints_.push_back(std::move(limit));
     }
-    if (b.joint.actuator && solvesWheelDrive(b)) {
+    if (solvesWheelDrive(i)) {
       r.wheel_drive = true;
       r.spin_inertia = sim::wheelDescription(b).inertia.axial_inertia;
     } else if (b.joint.actuator) {
