@@ -25,4 +25,12 @@ void EngineBase::requireOnePerBody(std::size_t count) const {
   }
 }
 
+bool EngineBase::solvesWheelDrive(int body) const {
+  constexpr double kParallel = 1e-9;  // |axle x axis| of a wheel on its own axle
+  const vehicle::Body& b = vehicle().bodies.at(body);
+  return b.wheel && b.joint.actuator && b.joint.type == vehicle::JointType::kRevolute &&
+         settings().mode == ContactMode::kForce && !settings().native_wheels &&
+         (b.pose.linear() * b.wheel->axle).cross(b.joint.axis).norm() < kParallel;
+}
+
 }  // namespace wtc::sim

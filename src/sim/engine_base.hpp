@@ -38,6 +38,13 @@ class EngineBase : public Engine {
   /// (setVelocities).
   void requireOnePerBody(std::size_t count) const;
 
+  /// Whether the drive of body `body` is a wheel's that the engine solves
+  /// in closed form (vehicle::wheelDriveTorque) instead of as a row of its
+  /// solver: force mode with WTC's wheels (the tyre's torque is on the wheel
+  /// before the step, and the solver adds no contact to it), a revolute
+  /// joint about the wheel's own axle. One rule for every engine.
+  bool solvesWheelDrive(int body) const;
+
  private:
   std::string name_;
   std::vector<int> wheel_of_body_;  // per body: its index in vehicle().wheels(), or -1

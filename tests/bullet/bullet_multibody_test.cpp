@@ -1,6 +1,7 @@
 // The Bullet plugin in a btMultiBodyDynamicsWorld: an axle (a floating base)
 // with two wheel links on revolute joints, 42 kg in all, so each wheel
 // carries 21 kg like the robot's; both contact modes.
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -8,9 +9,11 @@
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include "bullet_fixture.hpp"
+#include "wtc/base/error.hpp"
 
 namespace wtc {
 namespace {
@@ -104,6 +107,67 @@ TEST_P(BulletMultiBodyTest, DrivenAxleAcceleratesAsRollingPredicts) {
   const double expected = (2 * torque / kRadius - 0.018 * total * testing::kGravityMps2 * 0.97) /
                           (total + 2 * inertia / (kRadius * kRadius));
   EXPECT_NEAR(acceleration, expected, 0.05 * expected);
+}
+
+// Case: the wheels' drives solved in closed form through the post-wheels
+// callback (docs/bullet-plugin.md, Wheel drives), 4 substeps per
+// stepSimulation. At every substep the callback comes after the wheels:
+// axleTorque is the tyre's torque of that substep about the axle, with
+// nothing of the last substep's drive torque left in it (addAxleTorque's is
+// taken back after its substep); the drives bring the wheels from rest to
+// their rate, at the cap first, and hold it against the tyres.
+TEST(BulletMultiBodyDriveTest, WheelDrivesSolvedAfterTheWheelsHoldTheirRate) {
+  constexpr double kRateRadps = 6.0, kCapNm = 20.0;
+  constexpr double kTorqueTolerance = 1e-12;  // N m: the same sum, read back
+  constexpr double kRateTolerance = 5e-3;  // rad/s (0.1 % of the rate): the carrier's share the closed form leaves out
+  constexpr double kCarrierPitchInertia = 10.0;  // kg m^2
+  const Terrain ground = testing::flatGround();
+  const double total = kBaseMass + 2 * kWheelMass;
+  Axle axle(ground, ContactMode::kForce, kRadius - 0.5 * total * testing::kGravityMps2 / kStiffness);
+  // A carrier that resists pitching as a chassis does: the closed form
+  // leaves out the carrier's share of the spin, I / I_carrier (here 0.7 %;
+  // on the axle's own 0.1 kg m^2 the drives' reaction would tumble it).
+  axle.multibody->setBaseInertia(btVector3(1.0, kCarrierPitchInertia, 1.0));
+  const double inertia = 0.5 * kWheelMass * kRadius * kRadius;
+  int calls = 0, capped = 0;
+  double worst = 0.0, peak_tyre = 0.0;
+  axle.plugin->setPostWheelsCallback([&](double h) {
+    ++calls;
+    for (int i = 0; i < 2; ++i) {
+      const btVector3 axle_W = axle.colliders[i]->getWorldTransform().getBasis() * btVector3(0, 1, 0);
+      const Eigen::Vector3d& t = axle.plugin->forces(i).torque;  // about the centre, on the axle
+      const double tyre = axle_W.x() * t.x() + axle_W.y() * t.y() + axle_W.z() * t.z();
+      worst = std::max(worst, std::abs(axle.plugin->axleTorque(i) - tyre));
+      peak_tyre = std::max(peak_tyre, std::abs(tyre));
+      const double wanted = inertia * (kRateRadps - axle.multibody->getJointVel(i)) / h - tyre;
+      const double torque = std::clamp(wanted, -kCapNm, kCapNm);
+      if (torque != wanted) ++capped;
+      axle.plugin->addAxleTorque(i, torque);
+    }
+  });
+  for (int k = 0; k < 250; ++k) axle.world.stepSimulation(4e-3, 4, 1e-3);
+  EXPECT_EQ(calls, 1000);
+  EXPECT_LT(worst, kTorqueTolerance);
+  EXPECT_GT(peak_tyre, 1.0) << "the tyres must load the wheels (N m)";
+  EXPECT_GT(capped, 0) << "the drives must start at their cap";
+  for (int i = 0; i < 2; ++i) EXPECT_NEAR(axle.multibody->getJointVel(i), kRateRadps, kRateTolerance);
+  EXPECT_GT(axle.multibody->getBaseVel().x(), 0.5 * kRateRadps * kRadius) << "the axle rolls";
+}
+
+// Case: the drive's torque belongs to a wheel that is a link on a revolute
+// joint; anything else is refused by name.
+TEST(BulletMultiBodyDriveTest, AxleTorqueRefusesAWheelItDoesNotHave) {
+  const Terrain ground = testing::flatGround();
+  Axle axle(ground, ContactMode::kForce, kRadius);
+  EXPECT_THAT(
+      [&] { (void)axle.plugin->axleTorque(2); },
+      ::testing::ThrowsMessage<InvalidInputError>(::testing::HasSubstr("wheel 2 is not registered (2 wheels)")));
+  EXPECT_THAT([&] { axle.plugin->addAxleTorque(-1, 1.0); },
+              ::testing::ThrowsMessage<InvalidInputError>(::testing::HasSubstr("wheel -1 is not registered")));
+  testing::BulletWorld rigid(ground, ContactMode::kForce);
+  const bullet::WheelId id = testing::addWheel(rigid, rigid.addWheelBody(kWheelMass, btVector3(0, 0, kRadius)));
+  EXPECT_THAT([&] { (void)rigid.plugin->axleTorque(id); },
+              ::testing::ThrowsMessage<InvalidInputError>(::testing::HasSubstr("wheel 0 is a rigid body")));
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, BulletMultiBodyTest, ::testing::Values(ContactMode::kForce, ContactMode::kConstraint),

@@ -4,6 +4,7 @@
 // engines' own wheel contact.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -13,6 +14,7 @@
 #include "wtc/sim/run.hpp"
 #include "wtc/terrain/terrain_primitives.hpp"
 #include "wtc/vehicle/controllers/schedule_controller.hpp"
+#include "wtc/vehicle/drive.hpp"
 
 namespace wtc::testing {
 namespace {
@@ -29,6 +31,9 @@ constexpr double kSlideTolerance = 0.01;  // of g (measured: 2e-5 g in every eng
 
 class SimEngineTest : public ::testing::TestWithParam<sim::EngineSettings> {};
 class NativeWheelsTest : public ::testing::TestWithParam<sim::EngineSettings> {};
+// WTC's wheels alone: the engines' own wheels report the forces of their own
+// contacts, which do not close Newton's balance about the axle.
+class WtcWheelDriveTest : public ::testing::TestWithParam<sim::EngineSettings> {};
 
 // The wheels hold zero rate, the sections their reference positions.
 std::vector<vehicle::DriveSchedule> holdStill(const vehicle::VehicleDescription& v) {
@@ -139,6 +144,63 @@ TEST_P(SimEngineTest, AWheelDriveSpinsAWheelInTheAirAsNewtonSays) {
   EXPECT_FALSE(run.nonFinite());
 }
 
+// A wheel drive on the ground, where the tyre loads the wheel: each step the
+// wheel turns as Newton says about its axle a,
+//   I (w_W' - w_W) . a = (T + tau_ground . a) h,
+// T the effort the engine reports and tau_ground the torque about the
+// wheel's centre of what the ground applied (the tyre's forces in force
+// mode, the solver's at WTC's contacts in constraint mode). In force mode
+// with WTC's wheels the tyre's torque is on the wheel before the step, and
+// both engines solve the drive by one law, vehicle::wheelDriveTorque of the
+// step's target, the joint's rate before it and that torque: the effort is
+// that law to roundoff (an engine whose motor row solves the drive, with the
+// carrier's share in it, is 1e-3 of the cap or more away from it).
+TEST_P(WtcWheelDriveTest, AWheelDriveOnTheGroundTurnsItsWheelAsNewtonSays) {
+  constexpr double kRateRadps = 3.0;         // from rest: capped first, then holding against the tyre
+  constexpr int kSteps = 1000;               // 0.4 s at the default step
+  constexpr double kNewtonTolerance = 1e-6;  // of the cap's impulse, cap h (the axle turns in the step: O(h^2))
+  constexpr double kLawTolerance = 1e-9;     // of the cap: roundoff
+  const double h = GetParam().step_seconds;
+  const Terrain ground = flatGround();
+  const vehicle::VehicleDescription robot = shippedVehicle("six_wheel_robot.yaml");
+  const auto engine = sim::makeEngine(GetParam(), ground, robot, Eigen::Isometry3d::Identity());
+  std::vector<vehicle::DriveSchedule> schedules = holdStill(robot);
+  schedules[0].points = {{0.0, kRateRadps}};
+  vehicle::ScheduleController drive(robot, schedules, "test");
+  sim::Run run(*engine, &drive);
+  const bool closed_form = GetParam().mode == ContactMode::kForce;
+  double worst_newton = 0.0, worst_law = 0.0, peak_ground = 0.0;
+  for (int k = 0; k < kSteps; ++k) {
+    std::vector<double> spin(robot.bodies.size()), rate(robot.bodies.size());
+    for (const int w : robot.wheels()) {
+      const vehicle::Body& b = robot.bodies[w];
+      spin[w] = engine->body(w).angular_velocity.dot(engine->body(w).pose.linear() * b.wheel->axle);
+      rate[w] = engine->jointRate(w);
+    }
+    run.step();
+    for (const int w : robot.wheels()) {
+      const vehicle::Body& b = robot.bodies[w];
+      const double cap = b.joint.actuator->max_effort;
+      const double inertia = sim::wheelDescription(b).inertia.axial_inertia;
+      // The effort is about the joint's axis, the spin about the wheel's axle (parallel, maybe opposed).
+      const Eigen::Vector3d axle_W = engine->body(w).pose.linear() * b.wheel->axle;
+      const double sense = b.joint.axis.dot(b.pose.linear() * b.wheel->axle) > 0.0 ? 1.0 : -1.0;
+      const double ground_torque = engine->wheelForces(w).torque.dot(axle_W);
+      peak_ground = std::max(peak_ground, std::abs(ground_torque));
+      const double turned = inertia * (engine->body(w).angular_velocity.dot(axle_W) - spin[w]);
+      const double newton = std::abs(turned - (sense * engine->motorEffort(w) + ground_torque) * h) / (cap * h);
+      worst_newton = std::max(worst_newton, newton);
+      if (!closed_form) continue;
+      const double law = vehicle::wheelDriveTorque(run.targets()[w], rate[w], sense * ground_torque, inertia, h);
+      worst_law = std::max(worst_law, std::abs(engine->motorEffort(w) - law) / cap);
+    }
+  }
+  EXPECT_GT(peak_ground, 1.0) << "the tyres must load the wheels (N m)";
+  EXPECT_LT(worst_newton, kNewtonTolerance);
+  EXPECT_LT(worst_law, kLawTolerance);
+  EXPECT_FALSE(run.nonFinite());
+}
+
 // The fold drives' efforts are the torques statics asks of them, not only
 // some torques that keep the robot still: ODE's direct solver and Bullet's
 // iterative one run to a tight residual give the same torque on each fold
@@ -239,6 +301,8 @@ INSTANTIATE_TEST_SUITE_P(NativeWheels, NativeWheelsTest, ::testing::ValuesIn(eve
                          [](const auto& info) { return label(info.param); });
 
 INSTANTIATE_TEST_SUITE_P(EveryEngine, SimEngineTest, ::testing::ValuesIn(everyEngine()),
+                         [](const auto& info) { return label(info.param); });
+INSTANTIATE_TEST_SUITE_P(EveryEngine, WtcWheelDriveTest, ::testing::ValuesIn(everyEngine()),
                          [](const auto& info) { return label(info.param); });
 // The engines' own wheel contact, the study's baseline: its wheels report
 // what the engine's solver did, so the same statics hold.

@@ -215,6 +215,11 @@ const LinkVelocities& detail::PluginState::linkVelocities(const btMultiBody& mul
 
 void detail::PluginState::preTick(double h) {
   if (pre_tick) pre_tick(h);
+  stepWheels(h);
+  if (post_wheels) post_wheels(h);
+}
+
+void detail::PluginState::stepWheels(double h) {
   const StepClock::Section timed(clock);
   const Terrain& ground = terrain.terrain();
   const Eigen::Vector3d gravity = toEigen(world.getGravity());
@@ -256,10 +261,14 @@ void detail::PluginState::postTick(double h) {
     if (w->multibody == nullptr) continue;
     w->multibody->addLinkForce(w->link, -w->link_force);
     w->multibody->addLinkTorque(w->link, -w->link_torque);
-    w->link_force.setZero();
-    w->link_torque.setZero();
+    w->multibody->addJointTorque(w->link, -w->joint_torque);
   }
 #endif
+  for (const auto& w : wheels) {
+    w->link_force.setZero();
+    w->link_torque.setZero();
+    w->joint_torque = 0.0;
+  }
 }
 
 // What Bullet's solver applied at each WTC contact this substep, on the
@@ -284,6 +293,22 @@ void detail::PluginState::readSolvedForces(Wheel& w, double h) {
     for (std::size_t i = 0; i < n; ++i) w.solved_forces[i] += toEigen(w.friction->appliedForce(i, h));
   }
   w.mounted.setSolvedForces(w.solved_forces);
+}
+
+// The wheel `id` as a link on a revolute joint (axleTorque, addAxleTorque).
+Wheel& detail::PluginState::revoluteLink(WheelId id, const char* where) const {
+  if (id < 0 || static_cast<std::size_t>(id) >= wheels.size()) {
+    fail(where, "wheel " + std::to_string(id) + " is not registered (" + std::to_string(wheels.size()) + " wheels)");
+  }
+  Wheel& w = *wheels[static_cast<std::size_t>(id)];
+  if (w.multibody == nullptr) {
+    fail(where, "wheel " + std::to_string(id) + " is a rigid body: its axle torque is a multibody link's joint's");
+  }
+  if (w.multibody->getLink(w.link).m_jointType != btMultibodyLink::eRevolute) {
+    fail(where, "wheel " + std::to_string(id) + " (link " + std::to_string(w.link) +
+                    ") is not on a revolute joint: its joint has no one axis to turn about");
+  }
+  return w;
 }
 
 Plugin::Plugin(btDiscreteDynamicsWorld& world, const Terrain& terrain, ContactMode mode)
@@ -376,5 +401,19 @@ btCollisionObject& Plugin::terrainObject() { return state_->terrain.object(); }
 const TerrainObject& Plugin::terrainShapes() const { return state_->terrain; }
 void Plugin::setListener(WheelListener* listener) { state_->listener = listener; }
 void Plugin::setPreTickCallback(std::function<void(double)> callback) { state_->pre_tick = std::move(callback); }
+void Plugin::setPostWheelsCallback(std::function<void(double)> callback) { state_->post_wheels = std::move(callback); }
+
+double Plugin::axleTorque(WheelId wheel) const {
+  const Wheel& w = state_->revoluteLink(wheel, "wtc::bullet::Plugin::axleTorque");
+  // The link's frame is its collider's; its joint axis is fixed in it.
+  const btVector3 axis_W = w.collider->getWorldTransform().getBasis() * w.multibody->getLink(w.link).getAxisTop(0);
+  return w.multibody->getLinkTorque(w.link).dot(axis_W) + w.multibody->getJointTorque(w.link);
+}
+
+void Plugin::addAxleTorque(WheelId wheel, double torque) {
+  Wheel& w = state_->revoluteLink(wheel, "wtc::bullet::Plugin::addAxleTorque");
+  w.multibody->addJointTorque(w.link, torque);
+  w.joint_torque += torque;
+}
 
 }  // namespace wtc::bullet

@@ -31,6 +31,7 @@ struct Wheel {
   std::unique_ptr<btCylinderShape> cap_cylinder;        // the cut sphere's caps (wheel_terrain_algorithm.cpp)
   std::unique_ptr<btCompoundShape> cap_shape;           // cap_cylinder at the wheel's centre, along its axle
   btVector3 link_force{0, 0, 0}, link_torque{0, 0, 0};  // multibody: what this substep added
+  double joint_torque = 0.0;                            // multibody: Plugin::addAxleTorque's this substep (N m)
   // Constraint mode: the manifold the collision algorithm wrote this
   // substep's contacts into (null until it runs), and the manifold point of
   // each of mounted.last().contacts (-1: none, or one an earlier contact
@@ -65,9 +66,14 @@ struct PluginState {
 
   WheelId add(std::unique_ptr<Wheel> wheel, const char* where);
   void preTick(double step_seconds);
+  /// Every wheel's tyre model and wrench for the step (timed: clock).
+  void stepWheels(double step_seconds);
   void postTick(double step_seconds);
   void readSolvedForces(Wheel& wheel, double step_seconds);
   int wheelOf(const btCollisionObject* object) const;
+  /// Wheel `id`, which must be a multibody link on a revolute joint
+  /// (InvalidInputError naming `where` and the wheel otherwise).
+  Wheel& revoluteLink(WheelId id, const char* where) const;
   /// `multibody`'s link velocities now, computed at most once per internal
   /// step (the post-tick marks them stale).
   const LinkVelocities& linkVelocities(const btMultiBody& multibody);
@@ -81,6 +87,7 @@ struct PluginState {
   std::unique_ptr<btCollisionAlgorithmCreateFunc> create;
   WheelListener* listener = nullptr;
   std::function<void(double)> pre_tick;
+  std::function<void(double)> post_wheels;
   std::vector<LinkVelocities> link_velocities;  // per multibody asked for
   StepClock clock;                              // preTick and postTick, the caller's callback not included
 };

@@ -28,6 +28,7 @@
 #include "wtc/bullet/plugin.hpp"
 #include "wtc/bullet/terrain_object.hpp"
 #include "wtc/sim/sim_constants.hpp"
+#include "wtc/vehicle/drive.hpp"
 #include "wtc_wheels.hpp"
 
 namespace wtc::bullet {
@@ -124,6 +125,11 @@ class SimEngine final : public sim::EngineBase {
       wheels_ = std::make_unique<WtcWheels>(*plugin_, v, links, settings.tyre_effects);
     }
     useWheels(*wheels_);
+    const std::vector<int> wheels = v.wheels();
+    for (std::size_t k = 0; k < wheels.size(); ++k) {
+      if (refs_[wheels[k]].wheel_drive) driven_wheels_.push_back({.body = wheels[k], .wheel = static_cast<WheelId>(k)});
+    }
+    if (!driven_wheels_.empty()) plugin_->setPostWheelsCallback([this](double h) { driveWheels(h); });
   }
 
   ~SimEngine() override {
@@ -135,7 +141,12 @@ class SimEngine final : public sim::EngineBase {
   }
 
   void setMotorTarget(int body, const vehicle::MotorTarget& target) override {
-    WarmStartedMotor* motor = refs_.at(body).motor;
+    Ref& r = refs_.at(body);
+    if (r.wheel_drive) {
+      r.target = target;
+      return;
+    }
+    WarmStartedMotor* motor = r.motor;
     if (motor == nullptr) return;
     motor->setTarget(target.rate, target.max_effort, target.active, settings().step_seconds);
   }
@@ -237,8 +248,9 @@ class SimEngine final : public sim::EngineBase {
     return hasCoordinate(body) ? r.multibody->getJointVel(r.link) : 0.0;
   }
   double motorEffort(int body) const override {
-    WarmStartedMotor* motor = refs_.at(body).motor;
-    return motor == nullptr ? 0.0 : motor->effort();
+    const Ref& r = refs_.at(body);
+    if (r.wheel_drive) return r.effort;
+    return r.motor == nullptr ? 0.0 : r.motor->effort();
   }
 
  private:
@@ -280,7 +292,29 @@ class SimEngine final : public sim::EngineBase {
     int link = -1;  // -1: the tree's base
     WarmStartedMotor* motor = nullptr;
     btMultiBodyLinkCollider* collider = nullptr;
+    bool wheel_drive = false;     // solved in closed form (driveWheels), not a motor row in Bullet's solver
+    double spin_inertia = 0.0;    // the wheel's moment about its axle (kg m^2)
+    vehicle::MotorTarget target;  // the wheel drive's, this step
+    double effort = 0.0;          // the wheel drive's torque, this step (N m)
   };
+  struct DrivenWheel {
+    int body = -1;
+    WheelId wheel = -1;  // the plugin's
+  };
+
+  // The wheels' drives in force mode (vehicle::wheelDriveTorque), in the
+  // plugin's post-wheels callback: the tyre's wrench of the step is on each
+  // wheel by then, so the torque that holds the wheel's rate is known
+  // before the step, and the drive needs no row of Bullet's solver (ODE's
+  // sim engine solves its wheels' drives by the same law).
+  void driveWheels(double h) {
+    for (const DrivenWheel& d : driven_wheels_) {
+      Ref& r = refs_[d.body];
+      const double tau_axle = plugin_->axleTorque(d.wheel);
+      r.effort = vehicle::wheelDriveTorque(r.target, r.multibody->getJointVel(r.link), tau_axle, r.spin_inertia, h);
+      plugin_->addAxleTorque(d.wheel, r.effort);
+    }
+  }
 
   bool hasCoordinate(int body) const {
     const Body& b = vehicle().bodies.at(body);
@@ -396,7 +430,10 @@ class SimEngine final : public sim::EngineBase {
       world_.addMultiBodyConstraint(limit.get());
       constraints_.push_back(std::move(limit));
     }
-    if (b.joint.actuator) {
+    if (solvesWheelDrive(i)) {
+      r.wheel_drive = true;
+      r.spin_inertia = sim::wheelDescription(b).inertia.axial_inertia;
+    } else if (b.joint.actuator) {
       auto motor = std::make_unique<WarmStartedMotor>(&mb, r.link);
       r.motor = motor.get();
       world_.addMultiBodyConstraint(motor.get());
@@ -435,6 +472,7 @@ class SimEngine final : public sim::EngineBase {
   std::vector<std::unique_ptr<btMultiBodyConstraint>> constraints_;
   std::vector<WarmStartedJointLimit*> limits_;  // in constraints_
   std::vector<Ref> refs_;
+  std::vector<DrivenWheel> driven_wheels_;  // the bodies whose drive driveWheels solves
   std::unique_ptr<Plugin> plugin_;
   std::unique_ptr<sim::WheelContacts> wheels_;   // WtcWheels or NativeWheels
   mutable std::vector<LinkFrames> link_frames_;  // per tree

@@ -5,7 +5,10 @@
 // must), in a btMultiBodyDynamicsWorld; wheels are WTC wheels through
 // wtc::bullet (wtc_wheels.hpp) or Bullet's own (native_wheels.hpp); drives
 // are btMultiBodyJointMotor (an implicit velocity motor capped at the
-// drive's effort), travel limits btMultiBodyJointLimitConstraint. Bodies of
+// drive's effort; warm_started_motor.hpp), but a WTC wheel's in force mode,
+// solved in closed form through the plugin's post-wheels callback
+// (vehicle::wheelDriveTorque, as ODE's sim engine does), travel limits
+// btMultiBodyJointLimitConstraint. Bodies of
 // one tree do not collide with each other; every other body collides with
 // the ground through its shape (friction kBodyGroundFriction).
 #include <memory>

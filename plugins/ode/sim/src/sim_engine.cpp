@@ -346,15 +346,6 @@ class SimEngine final : public sim::EngineBase {
     if (b.parent >= 0) buildJoint(i, placement);
   }
 
-  // Whether the body's drive is a wheel's solved in closed form: force mode
-  // with WTC's wheels (no contact rows in the solver), a revolute joint
-  // about the wheel's own axle.
-  bool solvesWheelDrive(const Body& b) const {
-    constexpr double kParallel = 1e-9;  // |axle x axis| of a wheel on its own axle
-    return b.wheel && b.joint.type == JointType::kRevolute && settings().mode == ContactMode::kForce &&
-           !settings().native_wheels && (b.pose.linear() * b.wheel->axle).cross(b.joint.axis).norm() < kParallel;
-  }
-
   // The joint to the parent, at the start pose (where its coordinate is 0).
   void buildJoint(int i, const Eigen::Isometry3d& placement) {
     const Body& b = vehicle().bodies[i];
@@ -394,7 +385,7 @@ class SimEngine final : public sim::EngineBase {
         break;
     }
     if (!b.joint.actuator) return;
-    if (solvesWheelDrive(b)) {
+    if (solvesWheelDrive(i)) {
       r.wheel_drive = true;
       r.spin_inertia = sim::wheelDescription(b).inertia.axial_inertia;
       return;

@@ -25,8 +25,17 @@
 // Rolling resistance is an explicit moment in both modes.
 //
 // The plugin owns the world's internal pre-tick callback and its world user
-// info; chain your own per-step code through setPreTickCallback. Wheels are
-// kept awake (DISABLE_DEACTIVATION): the tread state needs every step.
+// info; chain your own per-step code through setPreTickCallback (before the
+// wheels) and setPostWheelsCallback (after them). Wheels are kept awake
+// (DISABLE_DEACTIVATION): the tread state needs every step.
+//
+// Wheel drives in closed form (force mode): after the wheels, the tyre's
+// wrench of the step is on each wheel, so a velocity drive with an effort
+// cap needs no solver row: its torque for the step is
+//   T = I (rate* - rate) / h - tau_axle,  |T| <= cap
+// (wtc::vehicle::wheelDriveTorque), with tau_axle from axleTorque() and T
+// applied with addAxleTorque(), both in the post-wheels callback. The sim
+// engine drives its wheels so (docs/bullet-plugin.md, Wheel drives).
 #include <functional>
 #include <memory>
 
@@ -106,6 +115,26 @@ class Plugin {
   void setListener(WheelListener* listener);
   /// Called at the start of every internal step, before the wheels.
   void setPreTickCallback(std::function<void(double step_seconds)> callback);
+  /// Called at every internal step after every wheel's tyre model ran and
+  /// its wrench is on its body (after the listener), before Bullet solves
+  /// and integrates the step; null: none. Call order in a step: pre-tick
+  /// callback, wheels, this, Bullet's solve and integration.
+  void setPostWheelsCallback(std::function<void(double step_seconds)> callback);
+
+  /// For a wheel that is a multibody link on a revolute joint (its axle):
+  /// the torque about the joint's axis on the link now (N m, the sense of
+  /// btMultiBody::getJointVel), the link's external torque about its axis
+  /// plus the joint's own torque. In the post-wheels callback that is the
+  /// tyre's torque of this step and whatever else was added: tau_axle of
+  /// vehicle::wheelDriveTorque. InvalidInputError for a rigid wheel or a
+  /// link whose joint is not revolute.
+  double axleTorque(WheelId wheel) const;
+  /// Adds `torque` (N m) about the wheel link's joint axis for this internal
+  /// step alone: on the wheel, and its opposite on the parent link
+  /// (btMultiBody::addJointTorque), taken back after the step as the tyre's
+  /// wrench is (this Bullet clears multibody forces once per stepSimulation,
+  /// not per substep). Same preconditions as axleTorque.
+  void addAxleTorque(WheelId wheel, double torque);
 
  private:
   // The plugin's state, shared with its collision algorithm and its sim
