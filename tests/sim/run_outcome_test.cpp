@@ -137,13 +137,13 @@ TEST(EnergyBalanceTest, ATyreFarTooStiffForItsStepFailsTheRunOnEnergy) {
   EXPECT_GT(*energy->measured, 1e6 * *energy->limit);
 }
 
-// Shipped scenes, shortened, in both engines and modes: no energy from
-// nothing, no terrain left (the whole runs: bench/energy_survey.cpp).
+// Shipped scenes, shortened, in both engines and every WTC mode: no energy
+// from nothing, no terrain left (the whole runs: bench/energy_survey.cpp).
 TEST(EnergyBalanceTest, ShippedScenesPassBothChecksInEveryEngineAndMode) {
   for (const auto& entry : fs::directory_iterator(fs::path(WTC_SOURCE_DIR) / "scenes")) {
     if (entry.path().extension() != ".yaml") continue;
     for (const char* engine : {"bullet", "ode"}) {
-      for (const char* mode : {"force", "constraint"}) {
+      for (const char* mode : {"force", "constraint", "implicit"}) {
         const RunSummary r = run(sim::loadScene(
             entry.path(), std::vector<sim::Override>{{"engine", engine}, {"mode", mode}, {"duration", "2"}}));
         EXPECT_EQ(find(r, "energy"), nullptr) << entry.path().stem() << " " << engine << " " << mode;
