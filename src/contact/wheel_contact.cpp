@@ -4,9 +4,9 @@
 #include <cmath>
 #include <optional>
 
+#include "base/scratch_capacity.hpp"
 #include "wtc/base/checks.hpp"
 #include "wtc/base/error.hpp"
-#include "base/scratch_capacity.hpp"
 
 namespace wtc {
 
@@ -23,6 +23,7 @@ WheelContactFinder::WheelContactFinder() {
   contacts_.reserve(kReservedCandidates);
   caps_.reserve(kReservedCandidates);
   shares_.reserve(kReservedCandidates);
+  through_edge_.reserve(kReservedCandidates);
   exits_.reserve(kReservedCandidates);
   next_exits_.reserve(kReservedCandidates);
   candidate_pieces_.reserve(kReservedCandidates);
@@ -214,17 +215,29 @@ void WheelContactFinder::applySeamRule(double gap, double radius) {
     const double patch = std::sqrt(2.0 * radius * b.deflection);
     double least = 1.0;
     bool covered = false;  // B's ground point lies on another touching piece: a seam, not a real edge
-    for (const WheelContact& a : contacts_) {
+    for (std::size_t k = 0; k < contacts_.size(); ++k) {
+      const WheelContact& a = contacts_[k];
       if (a.piece == b.piece) continue;
       const double outside = candidatePiece(a.piece).planeBound(b.ground_point) - gap;  // (m)
       covered = covered || outside <= 0.0;
       const bool nearer =
           a.signed_distance < b.signed_distance || (a.signed_distance == b.signed_distance && a.piece < b.piece);
-      if (nearer) least = std::min(least, outside <= 0.0 ? 0.0 : std::min(1.0, outside / patch));
+      if (!nearer) continue;
+      double cut = outside <= 0.0 ? 0.0 : std::min(1.0, outside / patch);
+      // A nearer real edge standing less than its deflection off the ground
+      // presses Z_A - clear of B's own ground through it: B adds the rest,
+      // Z_B - (Z_A - clear), not the crease's share (issue 40, item 6).
+      if (cut > 0.0) cut = std::min(cut, std::max(0.0, 1.0 - groundThroughEdge(k, gap) / b.deflection));
+      least = std::min(least, cut);
     }
-    return least < 1.0 && !covered ? std::max(least, realEdgeShare(b, gap)) : least;
+    if (least < 1.0 && !covered) {
+      const double clear = realEdgeClearance(b, gap);
+      if (clear >= 0.0) least = std::max(least, clear / b.deflection);
+    }
+    return least;
   };
   // Decide on the unfiltered set, then erase: the rule is symmetric in order.
+  through_edge_.assign(contacts_.size(), kNotMeasured);
   shares_.resize(contacts_.size());
   for (std::size_t k = 0; k < contacts_.size(); ++k) shares_[k] = share(contacts_[k]);
   std::size_t out = 0;
@@ -246,17 +259,18 @@ void WheelContactFinder::applySeamRule(double gap, double radius) {
 // on every seam (so flat tessellated ground is untouched, bit for bit) and
 // continuous as contacts come and go: a piece that starts touching the wheel
 // is at least Z_B from B's ground point (triangle inequality), so distances
-// below Z_B are measured exactly, not by the plane bound. Called for a
-// contact that no other touching piece covers (applySeamRule knows).
-double WheelContactFinder::realEdgeShare(const WheelContact& b, double gap) const {
+// below Z_B are measured exactly, not by the plane bound. Returns
+// min(Z_B, clear) (m), or kNotAnEdge when B's ground point is on a face.
+// Called for a contact that no other touching piece covers.
+double WheelContactFinder::realEdgeClearance(const WheelContact& b, double gap) const {
   const ConvexPolyhedron& piece = candidatePiece(b.piece);
   const Eigen::Vector3d& p = b.ground_point;
   int planes_through = 0;
   for (int f = 0; f < piece.faceCount() && planes_through < 2; ++f) {
     if (std::abs(piece.faceNormal(f).dot(p) - piece.faceOffset(f)) <= gap) ++planes_through;
   }
-  if (planes_through < 2) return 0.0;  // a face: the crease rule alone
-  double clear = b.deflection;         // only clearances below Z_B matter
+  if (planes_through < 2) return kNotAnEdge;  // a face: the crease rule alone
+  double clear = b.deflection;                // only clearances below Z_B matter
   for (const WheelContact& a : contacts_) {
     if (a.piece == b.piece) continue;
     const ConvexPolyhedron& other = candidatePiece(a.piece);
@@ -264,7 +278,27 @@ double WheelContactFinder::realEdgeShare(const WheelContact& b, double gap) cons
     if (outside < clear) outside = queryPoint(other, p).signed_distance - gap;
     clear = std::min(clear, outside);
   }
-  return clear / b.deflection;
+  return clear;
+}
+
+// A step lower than the tread's deflection (issue 40, item 6): contact k on
+// a real edge pressed Z_A into the tread, standing clear < Z_A off the
+// ground below it, presses Z_A - clear of that ground's own deflection
+// through the step (the bristles over the step are pressed by the ground's
+// patch and the step's height on top of it). Returns that part, Z_A - clear
+// (m), 0 for a face, a covered edge (a seam's or a crease's) or an edge at
+// least Z_A high. Measured once per call, when a farther contact asks.
+double WheelContactFinder::groundThroughEdge(std::size_t k, double gap) {
+  double& through = through_edge_[k];
+  if (through != kNotMeasured) return through;
+  const WheelContact& a = contacts_[k];
+  through = 0.0;
+  for (const WheelContact& other : contacts_) {
+    if (other.piece != a.piece && candidatePiece(other.piece).planeBound(a.ground_point) - gap <= 0.0) return through;
+  }
+  const double clear = realEdgeClearance(a, gap);
+  if (clear >= 0.0) through = a.deflection - clear;
+  return through;
 }
 
 }  // namespace wtc

@@ -78,7 +78,8 @@ struct WheelContact {
   double signed_distance = 0.0;                           ///< From O to the piece (m); < 0 inside.
   double load_share = 1.0;  ///< Fraction of this contact's normal force the wheel feels, (0, 1]: below 1 only
                             ///< next to a nearer piece at a shallow concave crease, or on an edge
-                            ///< standing less than Z off the rest of the ground (seam rule).
+                            ///< standing less than Z off the rest of the ground, or on the ground
+                            ///< below a nearer such edge (seam rule).
   PieceId piece = -1;
   MaterialId material = -1;
 };
@@ -110,7 +111,10 @@ class WheelContactFinder {
 
  private:
   void applySeamRule(double gap, double radius);
-  double realEdgeShare(const WheelContact& b, double gap) const;
+  double realEdgeClearance(const WheelContact& b, double gap) const;
+  double groundThroughEdge(std::size_t k, double gap);
+  static constexpr double kNotAnEdge = -1.0;    // realEdgeClearance of a contact on a face
+  static constexpr double kNotMeasured = -1.0;  // through_edge_ before groundThroughEdge measures it
   // The piece of candidate `id` (stored, or formed and kept in formed_).
   const ConvexPolyhedron& candidatePiece(PieceId id) const;
   void exitWhereEntered(const ConvexPolyhedron& piece, PieceId id, const Eigen::Vector3d& centre, double radius,
@@ -119,6 +123,7 @@ class WheelContactFinder {
   std::vector<WheelContact> contacts_, caps_;
   std::vector<std::pair<PieceId, QueryCache>> caches_, next_caches_;
   std::vector<double> shares_;
+  std::vector<double> through_edge_;  // per contact of this call: groundThroughEdge's answer, or kNotMeasured
   // This call's candidates' pieces (candidates_ order), and the pieces
   // formed for them (compact parts'), kept for the next call. Held by
   // pointer: a kept prism moves from call to call as one pointer, not as
