@@ -110,13 +110,13 @@ class WheelContactFinder {
   std::span<const WheelContact> capContacts() const { return caps_; }
 
  private:
+  // The seam rule's parts; a contact is named by its index in contacts_
+  // (and contact_pieces_), before the rule erases any.
   void applySeamRule(double gap, double radius);
-  double realEdgeClearance(const WheelContact& b, double gap) const;
-  double groundThroughEdge(std::size_t k, double gap);
-  static constexpr double kNotAnEdge = -1.0;    // realEdgeClearance of a contact on a face
-  static constexpr double kNotMeasured = -1.0;  // through_edge_ before groundThroughEdge measures it
-  // The piece of candidate `id` (stored, or formed and kept in formed_).
-  const ConvexPolyhedron& candidatePiece(PieceId id) const;
+  bool onAnEdge(std::size_t b, double gap) const;
+  double realEdgeClearance(std::size_t b, double gap) const;
+  double groundThroughEdge(std::size_t a, double gap);
+  static constexpr double kNotMeasured = -1.0;  // through_edge_ before groundThroughEdge measures it (m)
   void exitWhereEntered(const ConvexPolyhedron& piece, PieceId id, const Eigen::Vector3d& centre, double radius,
                         WheelContact& c);
   std::vector<PieceId> candidates_;
@@ -124,13 +124,14 @@ class WheelContactFinder {
   std::vector<std::pair<PieceId, QueryCache>> caches_, next_caches_;
   std::vector<double> shares_;
   std::vector<double> through_edge_;  // per contact of this call: groundThroughEdge's answer, or kNotMeasured
-  // This call's candidates' pieces (candidates_ order), and the pieces
-  // formed for them (compact parts'), kept for the next call. Held by
+  // The piece of each of this call's contacts (contacts_ order: stored, or
+  // formed and kept in formed_), and the pieces formed for this call's
+  // candidates (compact parts'), kept for the next call. Held by
   // pointer: a kept prism moves from call to call as one pointer, not as
   // its dozen buffers; the prisms dropped wait in spare_ to be formed into
   // again. Shared, so that a copied finder shares its formed prisms (never
   // changed while shared: only a spare held by no one else is reused).
-  std::vector<const ConvexPolyhedron*> candidate_pieces_;
+  std::vector<const ConvexPolyhedron*> contact_pieces_;
   std::vector<std::pair<PieceId, std::shared_ptr<ConvexPolyhedron>>> formed_, next_formed_;
   std::vector<std::shared_ptr<ConvexPolyhedron>> spare_;
   // The centre of the last call, and for each piece the centre was inside
