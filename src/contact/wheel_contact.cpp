@@ -4,9 +4,9 @@
 #include <cmath>
 #include <optional>
 
+#include "base/scratch_capacity.hpp"
 #include "wtc/base/checks.hpp"
 #include "wtc/base/error.hpp"
-#include "base/scratch_capacity.hpp"
 
 namespace wtc {
 
@@ -23,9 +23,10 @@ WheelContactFinder::WheelContactFinder() {
   contacts_.reserve(kReservedCandidates);
   caps_.reserve(kReservedCandidates);
   shares_.reserve(kReservedCandidates);
+  through_edge_.reserve(kReservedCandidates);
   exits_.reserve(kReservedCandidates);
   next_exits_.reserve(kReservedCandidates);
-  candidate_pieces_.reserve(kReservedCandidates);
+  contact_pieces_.reserve(kReservedCandidates);
   formed_.reserve(kReservedCandidates);
   next_formed_.reserve(kReservedCandidates);
 }
@@ -57,6 +58,7 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
   const double cap_reach = caps_last_ ? r * (1.0 + tolerance::kCapHysteresisRelative) : r;
   query.max_distance = cap_reach;
   contacts_.clear();
+  contact_pieces_.clear();
   next_caches_.clear();
   next_exits_.clear();
   // Candidates in piece order, so that caches_ (last call's, in the same
@@ -69,7 +71,6 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
   // few hundred steps.
   auto previous_formed = formed_.begin();
   next_formed_.clear();
-  candidate_pieces_.clear();
   for (const PieceId id : candidates_) {
     QueryCache cache;
     while (previous != caches_.end() && previous->first < id) ++previous;
@@ -85,7 +86,6 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
         // the reach is beyond, its cache untouched, exactly as queryPoint
         // decides for a stored one.
         if (terrain.formedPieceBeyond(id, o, cap_reach)) {
-          candidate_pieces_.push_back(nullptr);  // never a contact's piece
           next_caches_.emplace_back(id, cache);
           continue;
         }
@@ -107,7 +107,6 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
     } else {
       piece = &terrain.piece(id);
     }
-    candidate_pieces_.push_back(piece);
     const PointQuery q = queryPoint(*piece, o, query, cache);
     next_caches_.emplace_back(id, cache);
     if (q.status == QueryStatus::kBeyond || !(q.signed_distance < cap_reach)) continue;
@@ -125,6 +124,7 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
       continue;
     }
     contacts_.push_back(c);
+    contact_pieces_.push_back(piece);
   }
   std::swap(caches_, next_caches_);
   std::swap(exits_, next_exits_);
@@ -201,32 +201,37 @@ void WheelContactFinder::exitWhereEntered(const ConvexPolyhedron& piece, PieceId
   next_exits_.emplace_back(id, -c.e);
 }
 
-const ConvexPolyhedron& WheelContactFinder::candidatePiece(PieceId id) const {
-  const auto at = std::lower_bound(candidates_.begin(), candidates_.end(), id);
-  return *candidate_pieces_[static_cast<std::size_t>(at - candidates_.begin())];
-}
-
 void WheelContactFinder::applySeamRule(double gap, double radius) {
   // Contacts are ranked strictly by (distance, piece id): the nearest one
   // keeps its whole load, and no two contacts can shadow each other.
-  auto share = [&](const WheelContact& b) {
+  auto share = [&](std::size_t kb) {
+    const WheelContact& b = contacts_[kb];
     // L = sqrt(2 r Z): half the chord the ground cuts from the undeformed tread.
     const double patch = std::sqrt(2.0 * radius * b.deflection);
     double least = 1.0;
     bool covered = false;  // B's ground point lies on another touching piece: a seam, not a real edge
-    for (const WheelContact& a : contacts_) {
+    for (std::size_t ka = 0; ka < contacts_.size(); ++ka) {
+      const WheelContact& a = contacts_[ka];
       if (a.piece == b.piece) continue;
-      const double outside = candidatePiece(a.piece).planeBound(b.ground_point) - gap;  // (m)
+      const double outside = contact_pieces_[ka]->planeBound(b.ground_point) - gap;  // (m)
       covered = covered || outside <= 0.0;
       const bool nearer =
           a.signed_distance < b.signed_distance || (a.signed_distance == b.signed_distance && a.piece < b.piece);
-      if (nearer) least = std::min(least, outside <= 0.0 ? 0.0 : std::min(1.0, outside / patch));
+      if (!nearer) continue;
+      double cut = outside <= 0.0 ? 0.0 : std::min(1.0, outside / patch);
+      // A nearer real edge standing less than its deflection off the ground
+      // presses Z_A - clear of B's own ground through it: B adds the rest,
+      // Z_B - (Z_A - clear), not the crease's share (issue 40, item 6).
+      if (cut > 0.0) cut = std::min(cut, std::max(0.0, 1.0 - groundThroughEdge(ka, gap) / b.deflection));
+      least = std::min(least, cut);
     }
-    return least < 1.0 && !covered ? std::max(least, realEdgeShare(b, gap)) : least;
+    return least < 1.0 && !covered && onAnEdge(kb, gap) ? std::max(least, realEdgeClearance(kb, gap) / b.deflection)
+                                                        : least;
   };
   // Decide on the unfiltered set, then erase: the rule is symmetric in order.
+  through_edge_.assign(contacts_.size(), kNotMeasured);
   shares_.resize(contacts_.size());
-  for (std::size_t k = 0; k < contacts_.size(); ++k) shares_[k] = share(contacts_[k]);
+  for (std::size_t k = 0; k < contacts_.size(); ++k) shares_[k] = share(k);
   std::size_t out = 0;
   for (std::size_t k = 0; k < contacts_.size(); ++k) {
     if (shares_[k] == 0.0) continue;
@@ -246,25 +251,52 @@ void WheelContactFinder::applySeamRule(double gap, double radius) {
 // on every seam (so flat tessellated ground is untouched, bit for bit) and
 // continuous as contacts come and go: a piece that starts touching the wheel
 // is at least Z_B from B's ground point (triangle inequality), so distances
-// below Z_B are measured exactly, not by the plane bound. Called for a
-// contact that no other touching piece covers (applySeamRule knows).
-double WheelContactFinder::realEdgeShare(const WheelContact& b, double gap) const {
-  const ConvexPolyhedron& piece = candidatePiece(b.piece);
-  const Eigen::Vector3d& p = b.ground_point;
+// below Z_B are measured exactly, not by the plane bound.
+bool WheelContactFinder::onAnEdge(std::size_t b, double gap) const {
+  const ConvexPolyhedron& piece = *contact_pieces_[b];
+  const Eigen::Vector3d p = contacts_[b].ground_point - piece.origin();  // in the piece's frame (m)
   int planes_through = 0;
   for (int f = 0; f < piece.faceCount() && planes_through < 2; ++f) {
-    if (std::abs(piece.faceNormal(f).dot(p) - piece.faceOffset(f)) <= gap) ++planes_through;
+    if (std::abs(piece.faceNormal(f).dot(p) - piece.faceOffsetLocal(f)) <= gap) ++planes_through;
   }
-  if (planes_through < 2) return 0.0;  // a face: the crease rule alone
-  double clear = b.deflection;         // only clearances below Z_B matter
-  for (const WheelContact& a : contacts_) {
-    if (a.piece == b.piece) continue;
-    const ConvexPolyhedron& other = candidatePiece(a.piece);
-    double outside = other.planeBound(p) - gap;  // (m), > 0 (not covered), a lower bound
-    if (outside < clear) outside = queryPoint(other, p).signed_distance - gap;
+  return planes_through >= 2;  // else a face: the crease rule alone
+}
+
+// min(Z_B, clear) (m) of contact b, on an edge that no other touching piece
+// covers (above).
+double WheelContactFinder::realEdgeClearance(std::size_t b, double gap) const {
+  const WheelContact& edge = contacts_[b];
+  double clear = edge.deflection;  // only clearances below Z_B matter
+  for (std::size_t k = 0; k < contacts_.size(); ++k) {
+    if (contacts_[k].piece == edge.piece) continue;
+    const ConvexPolyhedron& other = *contact_pieces_[k];
+    double outside = other.planeBound(edge.ground_point) - gap;  // (m), > 0 (not covered), a lower bound
+    if (outside < clear) outside = queryPoint(other, edge.ground_point).signed_distance - gap;
     clear = std::min(clear, outside);
   }
-  return clear / b.deflection;
+  return clear;
+}
+
+// A step lower than the tread's deflection (issue 40, item 6): contact a on
+// a real edge pressed Z_A into the tread, standing clear < Z_A off the
+// ground below it, presses Z_A - clear of that ground's own deflection
+// through the step (the bristles over the step are pressed by the ground's
+// patch and the step's height on top of it). Returns that part, Z_A - clear
+// (m), 0 for a face, a covered edge (a seam's or a crease's) or an edge at
+// least Z_A high. Measured once per call, when a farther contact asks.
+double WheelContactFinder::groundThroughEdge(std::size_t a, double gap) {
+  double& through = through_edge_[a];
+  if (through != kNotMeasured) return through;
+  through = 0.0;
+  if (!onAnEdge(a, gap)) return through;  // first: most contacts a farther one asks about are on a face
+  const WheelContact& edge = contacts_[a];
+  for (std::size_t k = 0; k < contacts_.size(); ++k) {
+    if (contacts_[k].piece != edge.piece && contact_pieces_[k]->planeBound(edge.ground_point) - gap <= 0.0) {
+      return through;  // covered: a seam's or a crease's edge
+    }
+  }
+  through = edge.deflection - std::max(0.0, realEdgeClearance(a, gap));
+  return through;
 }
 
 }  // namespace wtc

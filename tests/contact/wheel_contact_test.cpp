@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <wtc/base/error.hpp>
+#include <wtc/base/tolerances.hpp>
 #include <wtc/contact/wheel_contact.hpp>
 
 #include "wheel_sim.hpp"
@@ -259,6 +260,73 @@ TEST(WheelContactTest, LoadChangesContinuouslyAcrossKerbsAndCracks) {
     const double change = sweepAcross(0.0, gap, kStep).largest_load_change;
     std::printf("crack %.0f mm: largest load change %.3g x the step\n", gap * 1e3, change / kStep);
     EXPECT_LT(change, 2.5 * kStep) << "crack " << gap;
+  }
+}
+
+// Issue 40, item 6: steps lower than the tread's deflection (0.5, 1, 1.5 mm
+// under the 2 mm deflection). The clearance is measured less the seam gap
+// (kSeamGapRelative r_f), so shares and loads are exact to that gap.
+constexpr double kLowSteps[] = {0.0005, 0.001, 0.0015};  // m
+const double kSeamGap = wtc::tolerance::kSeamGapRelative * kRadius;
+
+TEST(WheelContactTest, StepsLowerThanTheDeflectionAddTheirHeightToTheWholeGroundPatch) {
+  // Case: a kerb of height H < Z. The tread feels the lower ground's whole
+  // patch and the step on top of it: Z_G + min(Z_K, H), whichever contact
+  // is nearer (docs/wheel-contact.md, "Steps lower than the deflection").
+  // While the ground was nearer, that was so; once the edge became the
+  // nearer contact the crease rule cut the ground's patch to x / L, as if
+  // the edge were a seam, and the load jumped to about Z_G + sqrt(H Z_G).
+  constexpr double kStep = 1e-4;  // m
+  for (const double rise : kLowSteps) {
+    const wtc::Terrain terrain = stepOrCrack(rise, 0.0);
+    wtc::WheelContactFinder finder;
+    int both = 0, edge_nearer = 0;
+    double worst = 0.0;
+    for (double x = -0.25; x <= 0.25; x += kStep) {
+      const auto contacts = finder.find(terrain, {kRadius, 0.12}, {{x, 0, kRadius - kDeflection}, Vector3d::UnitY()});
+      const wtc::WheelContact* ground = nullptr;  // the lower block's top face, off the kerb's foot
+      const wtc::WheelContact* edge = nullptr;    // the kerb's top edge
+      for (const auto& c : contacts) {
+        if (c.ground_point.x() < -kSeamGap && std::abs(c.ground_point.z()) < 1e-12) ground = &c;
+        if (std::abs(c.ground_point.x()) < 1e-9 && std::abs(c.ground_point.z() - rise) < 1e-9) edge = &c;
+      }
+      if (ground == nullptr || edge == nullptr) continue;
+      ++both;
+      if (edge->signed_distance < ground->signed_distance) {
+        ++edge_nearer;
+        EXPECT_EQ(edge->load_share, 1.0) << "the nearer edge presses by its whole deflection, x = " << x;
+      }
+      const double expected = ground->deflection + std::min(edge->deflection, rise);
+      worst = std::max(worst, std::abs(totalDeflection(contacts) - expected));
+    }
+    std::printf(
+        "kerb %.1f mm: %d positions with both contacts (%d with the edge nearer), "
+        "largest |load - (Z_G + min(Z_K, H))| = %.3g m\n",
+        rise * 1e3, both, edge_nearer, worst);
+    EXPECT_GT(edge_nearer, 50) << "kerb " << rise;
+    EXPECT_GT(both - edge_nearer, 50) << "kerb " << rise;
+    EXPECT_LE(worst, 2 * kSeamGap) << "kerb " << rise;
+  }
+}
+
+TEST(WheelContactTest, LoadChangesContinuouslyAcrossStepsLowerThanTheDeflection) {
+  // Case: kerbs and cracks of 0.5-1.5 mm swept like the taller ones
+  // (LoadChangesContinuouslyAcrossKerbsAndCracks). Before, the load jumped
+  // by c (sqrt(H Z) - H) when a low kerb's edge became the nearer contact:
+  // 41 times the 10 um step on a 1 mm kerb. Every real edge still carries
+  // at least min(1, clear / Z) (RealEdgesOfKerbsAndCracksCarryTheirWholeLoad).
+  constexpr double kStep = 1e-5;  // m
+  for (const bool crack : {false, true}) {
+    for (const double size : kLowSteps) {
+      const RealEdgeSweep sweep = crack ? sweepAcross(0.0, size, kStep) : sweepAcross(size, 0.0, kStep);
+      const char* what = crack ? "crack" : "kerb";
+      std::printf("%s %.1f mm: largest load change %.3g x the step, least edge share - min(1, clear / Z) = %.3g\n",
+                  what, size * 1e3, sweep.largest_load_change / kStep, sweep.least_edge_margin);
+      EXPECT_LT(sweep.largest_load_change, 2.5 * kStep) << what << " " << size;
+      EXPECT_GT(sweep.edge_contacts, 1000) << what << " " << size;
+      // An edge's share is (clear - gap) / Z once Z exceeds clear - gap.
+      EXPECT_GE(sweep.least_edge_margin, -kSeamGap / (size - kSeamGap)) << what << " " << size;
+    }
   }
 }
 

@@ -78,7 +78,8 @@ struct WheelContact {
   double signed_distance = 0.0;                           ///< From O to the piece (m); < 0 inside.
   double load_share = 1.0;  ///< Fraction of this contact's normal force the wheel feels, (0, 1]: below 1 only
                             ///< next to a nearer piece at a shallow concave crease, or on an edge
-                            ///< standing less than Z off the rest of the ground (seam rule).
+                            ///< standing less than Z off the rest of the ground, or on the ground
+                            ///< below a nearer such edge (seam rule).
   PieceId piece = -1;
   MaterialId material = -1;
 };
@@ -109,23 +110,28 @@ class WheelContactFinder {
   std::span<const WheelContact> capContacts() const { return caps_; }
 
  private:
+  // The seam rule's parts; a contact is named by its index in contacts_
+  // (and contact_pieces_), before the rule erases any.
   void applySeamRule(double gap, double radius);
-  double realEdgeShare(const WheelContact& b, double gap) const;
-  // The piece of candidate `id` (stored, or formed and kept in formed_).
-  const ConvexPolyhedron& candidatePiece(PieceId id) const;
+  bool onAnEdge(std::size_t b, double gap) const;
+  double realEdgeClearance(std::size_t b, double gap) const;
+  double groundThroughEdge(std::size_t a, double gap);
+  static constexpr double kNotMeasured = -1.0;  // through_edge_ before groundThroughEdge measures it (m)
   void exitWhereEntered(const ConvexPolyhedron& piece, PieceId id, const Eigen::Vector3d& centre, double radius,
                         WheelContact& c);
   std::vector<PieceId> candidates_;
   std::vector<WheelContact> contacts_, caps_;
   std::vector<std::pair<PieceId, QueryCache>> caches_, next_caches_;
   std::vector<double> shares_;
-  // This call's candidates' pieces (candidates_ order), and the pieces
-  // formed for them (compact parts'), kept for the next call. Held by
+  std::vector<double> through_edge_;  // per contact of this call: groundThroughEdge's answer, or kNotMeasured
+  // The piece of each of this call's contacts (contacts_ order: stored, or
+  // formed and kept in formed_), and the pieces formed for this call's
+  // candidates (compact parts'), kept for the next call. Held by
   // pointer: a kept prism moves from call to call as one pointer, not as
   // its dozen buffers; the prisms dropped wait in spare_ to be formed into
   // again. Shared, so that a copied finder shares its formed prisms (never
   // changed while shared: only a spare held by no one else is reused).
-  std::vector<const ConvexPolyhedron*> candidate_pieces_;
+  std::vector<const ConvexPolyhedron*> contact_pieces_;
   std::vector<std::pair<PieceId, std::shared_ptr<ConvexPolyhedron>>> formed_, next_formed_;
   std::vector<std::shared_ptr<ConvexPolyhedron>> spare_;
   // The centre of the last call, and for each piece the centre was inside
