@@ -22,7 +22,11 @@
 // Constraint mode: the algorithm writes WTC's contacts into the pair's
 // manifold with the tyre's stiffness and damping (Bullet's soft contact, an
 // implicit spring) and the slip law's friction coefficient and direction.
-// Rolling resistance is an explicit moment in both modes.
+// Implicit mode: as constraint mode, and the tread as two compliant friction
+// rows per contact (docs/tyre-model.md): multibody links only, in a world
+// whose solver is a wtc::bullet::ContactSolver (contact_solver.hpp); a
+// btRigidBody wheel is refused.
+// Rolling resistance is an explicit moment in every mode.
 //
 // The plugin owns the world's internal pre-tick callback and its world user
 // info; chain your own per-step code through setPreTickCallback (before the
@@ -93,7 +97,7 @@ class Plugin {
   /// The last internal step's result and state of a wheel.
   const WheelForces& forces(WheelId wheel) const;
   /// What acted on the wheel in the last internal step: forces() in force
-  /// mode; in constraint mode the forces Bullet's solver applied at each
+  /// mode; in the engine-solved modes the forces Bullet's solver applied at each
   /// contact (impulse / h), their wrench and the rolling moment
   /// (wtc::MountedWheel::applied). Report these, not forces(), as the
   /// contact forces of a constraint-mode run.

@@ -99,7 +99,7 @@ struct WheelDiagnostics {
   std::uint64_t unhandled_steps = 0;
   /// Constraint-mode contacts whose spring ODE's correcting-velocity cap
   /// cut: ERP Z / h above dWorldGetContactMaxCorrectingVel (leave the cap at
-  /// its default, infinity, for WTC's wheels).
+  /// its default, infinity, for WTC's wheels; implicit mode refuses a cap).
   std::uint64_t capped_contacts = 0;
 };
 
