@@ -19,6 +19,15 @@ SolverContact toSolverContact(const ContactForce& f, const TyreParameters& tyre,
   c.depth = f.contact.deflection;
   c.stiffness = f.contact.load_share * stiffness;
   c.damping = f.contact.load_share * damping;
+  if (model.mode() == ContactMode::kImplicit) {  // the tread's rows, as the model made them
+    const TreadRows& rows = f.tread_rows;
+    c.friction = rows.damping[0] > 0.0 ? rows.limit[0] : 0.0;
+    c.friction_direction = rows.direction;
+    c.friction_velocity = rows.velocity;
+    c.friction_damping = rows.damping;
+    c.friction_across = rows.damping[1] > 0.0 ? rows.limit[1] : 0.0;
+    return c;
+  }
   c.friction = f.friction_limit;
   // Sticking: along the rest load's tangential part. Else along the
   // traction if there is one, else against the slip, else any.
@@ -32,14 +41,6 @@ SolverContact toSolverContact(const ContactForce& f, const TyreParameters& tyre,
     c.friction_direction = -f.slip_velocity / slip;
   } else {
     c.friction_direction = c.normal.unitOrthogonal();
-  }
-  if (model.mode() == ContactMode::kImplicit) {  // the tread's rows, as the model made them
-    const TreadRows& rows = f.tread_rows;
-    c.friction = rows.damping[0] > 0.0 ? rows.limit[0] : 0.0;
-    c.friction_direction = rows.direction;
-    c.friction_velocity = rows.velocity;
-    c.friction_damping = rows.damping;
-    c.friction_across = rows.damping[1] > 0.0 ? rows.limit[1] : 0.0;
   }
   return c;
 }

@@ -75,15 +75,19 @@ TreadAxes treadAxes(const Vector3d& axle, const Vector3d& e) {
 // V seen now), G+ = -k (d+ + tau V+) = K (v - V+), K = k (w + tau),
 // v = -decay d / (w + tau): the same K along both axes, so any frame will do;
 // row 0 along the spring's force. `target` is v (m/s), `force` the force now.
-TreadRows springRows(const TreadAxes& axes, const Vector3d& e, const Vector3d& target, double damping,
-                     const Vector3d& force, double limit, double mu_now) {
+// What the cone leaves across a row 0 bounded by `limit` that carries
+// `mu_now` (both over R_z): sqrt(limit^2 - mu_now^2).
+double acrossLimit(double limit, double mu_now) { return std::sqrt(std::max(limit * limit - mu_now * mu_now, 0.0)); }
+
+TreadRows springRows(const TreadAxes& axes, const Vector3d& target, double damping, const Vector3d& force, double limit,
+                     double mu_now) {
   TreadRows rows;
   const double norm = force.norm();
   rows.direction = norm > 0.0 ? Vector3d(force / norm) : axes.t[0];
-  const Vector3d across = rows.direction.cross(e);
+  const Vector3d across = rows.direction.cross(axes.e);
   rows.velocity = {target.dot(rows.direction), target.dot(across)};
   rows.damping = {damping, damping};
-  rows.limit = {limit, std::sqrt(std::max(limit * limit - mu_now * mu_now, 0.0))};
+  rows.limit = {limit, acrossLimit(limit, mu_now)};
   return rows;
 }
 
@@ -148,8 +152,8 @@ void slipLawTraction(const Inputs& in, const Material& m, double normal_force, c
     memory = elastic;
     force = law(memory);
   }
-  const bool loading = tread.squaredNorm() >= force.squaredNorm();
-  const double law_mu = force.norm() / normal_force;
+  const double law_squared = force.squaredNorm();  // the law's force at the memory (N^2)
+  const bool loading = tread.squaredNorm() >= law_squared;
   if (loading) {
     for (int i = 0; i < 2; ++i) {  // held at the law
       elastic[i] = -force[i] / in.tread_stiffness[i] - in.tread_damping_time[i] * slip_velocity[i];
@@ -169,8 +173,8 @@ void slipLawTraction(const Inputs& in, const Material& m, double normal_force, c
   if (!loading) {  // unloading: the spring (springRows)
     Vector3d target = Vector3d::Zero();
     for (int i = 0; i < 2; ++i) target -= (relaxed[i].decay * elastic[i] / lag[i]) * axes.t[i];
-    f.tread_rows = springRows(axes, axes.e, target, in.tread_stiffness[kRolling] * lag[kRolling], f.tangential_force,
-                              law_mu, f.mu);
+    f.tread_rows = springRows(axes, target, in.tread_stiffness[kRolling] * lag[kRolling], f.tangential_force,
+                              std::sqrt(law_squared) / normal_force, f.mu);
     return;
   }
   // Loading: the law at the end's slip q+ = (decay u + (w + tau) V+) / sigma,
@@ -194,7 +198,7 @@ void slipLawTraction(const Inputs& in, const Material& m, double normal_force, c
   const Vector3d across = rows.direction.cross(axes.e), velocity = f.slip_velocity;
   rows.velocity = {velocity.dot(rows.direction) + normal_force * mu / along, velocity.dot(across)};
   rows.damping = {along, gain * tractionSecant(m, ratio)};
-  rows.limit = {peak, std::sqrt(std::max(peak * peak - mu * mu, 0.0))};
+  rows.limit = {peak, acrossLimit(peak, mu)};
 }
 
 // Coulomb's law through the same tread spring: elastic up to mu_max R_z,
@@ -224,8 +228,7 @@ void coulombTraction(const Inputs& in, const Material& m, double normal_force, c
   if (!in.implicit_tread) return;
   // Implicitly (no relaxation: decay 1, w = h), springRows.
   const double lag = in.step + in.tread_damping_time[kRolling];  // (s)
-  f.tread_rows =
-      springRows(axes, axes.e, -u / lag, in.tread_stiffness[kRolling] * lag, f.tangential_force, m.mu_max, f.mu);
+  f.tread_rows = springRows(axes, -u / lag, in.tread_stiffness[kRolling] * lag, f.tangential_force, m.mu_max, f.mu);
 }
 
 template <bool kDamping, Traction kTraction, bool kRolling>

@@ -24,8 +24,8 @@ struct KernelInputs {
   double transport_speed = 0.0;                    ///< V_t = |V_O| (m/s).
   double slip_speed_floor = 0.0;                   ///< eps (m/s).
   double sticking = 0.0;                           ///< (1 - V_t / eps)+: 1 at rest, 0 from V_t = eps.
-  /// The engine solves the tread (implicit mode): friction_limit is the
-  /// law's mu at the tread's memory, not the mu applied.
+  /// The engine solves the tread (implicit mode): the kernel also makes
+  /// the tread's rows (ContactForce::tread_rows).
   bool implicit_tread = false;
   /// The tread's spring along its two axes, the rolling direction and the
   /// axle's (index kRolling, kLateral): each capped for the mass its

@@ -16,23 +16,27 @@ btScalar ContactSolver::solveGroupCacheFriendlySetup(btCollisionObject** bodies,
   const btScalar result = btMultiBodyConstraintSolver::solveGroupCacheFriendlySetup(
       bodies, num_bodies, manifolds, num_manifolds, constraints, num_constraints, info, debug_drawer);
   bounds_.clear();
-  const auto tread = [&](int k) -> const WheelFrictionConstraint* {
+  // The tread rows, in one pass: a constraint's rows are contiguous, so a
+  // constraint is cast once. Kept from step to step (members): no allocation
+  // once warm.
+  treads_.clear();
+  const btMultiBodyConstraint* seen = nullptr;
+  const WheelFrictionConstraint* tread = nullptr;
+  for (int k = 0; k < m_multiBodyNonContactConstraints.size(); ++k) {
     const btMultiBodySolverConstraint& row = m_multiBodyNonContactConstraints[k];
-    const auto* constraint = dynamic_cast<const WheelFrictionConstraint*>(row.m_orgConstraint);
-    return constraint != nullptr && constraint->followsNormal(row.m_orgDofIndex) ? constraint : nullptr;
-  };
-  bool any = false;
-  for (int k = 0; k < m_multiBodyNonContactConstraints.size() && !any; ++k) any = tread(k) != nullptr;
-  if (!any) return result;  // constraint mode: nothing to pair
-  // Kept from step to step (members): no allocation once warm.
+    if (row.m_orgConstraint != seen) {
+      seen = row.m_orgConstraint;
+      tread = dynamic_cast<const WheelFrictionConstraint*>(seen);
+    }
+    if (tread != nullptr && tread->followsNormal(row.m_orgDofIndex)) treads_.emplace_back(k, tread);
+  }
+  if (treads_.empty()) return result;
   normals_.clear();
   for (int j = 0; j < m_multiBodyNormalContactConstraints.size(); ++j) {
     normals_.emplace_back(m_multiBodyNormalContactConstraints[j].m_originalContactPoint, j);
   }
   std::sort(normals_.begin(), normals_.end());
-  for (int k = 0; k < m_multiBodyNonContactConstraints.size(); ++k) {
-    const WheelFrictionConstraint* constraint = tread(k);
-    if (constraint == nullptr) continue;
+  for (const auto& [k, constraint] : treads_) {
     const int row = m_multiBodyNonContactConstraints[k].m_orgDofIndex;
     const void* point = constraint->contactPoint(row);
     const auto found = std::lower_bound(normals_.begin(), normals_.end(), std::make_pair(point, -1));

@@ -105,11 +105,22 @@ btCollisionShape* makeShape(const Body& body, const sim::EngineSettings& setting
   return partShape(body.shape, keep);
 }
 
+// Implicit mode's tread rows follow their contacts' normal impulses
+// (ContactSolver, which the plugin requires for it); the other modes keep
+// Bullet's own solver, with nothing to pair at each step.
+std::unique_ptr<btMultiBodyConstraintSolver> makeSolver(ContactMode mode) {
+  if (mode == ContactMode::kImplicit) return std::make_unique<ContactSolver>();
+  return std::make_unique<btMultiBodyConstraintSolver>();
+}
+
 class SimEngine final : public sim::EngineBase {
  public:
   SimEngine(const sim::EngineSettings& settings, const Terrain& terrain, const vehicle::VehicleDescription& v,
             const Eigen::Isometry3d& placement)
-      : sim::EngineBase("wtc::bullet sim engine", settings, v), refs_(v.bodies.size()) {
+      : sim::EngineBase("wtc::bullet sim engine", settings, v),
+        solver_(makeSolver(settings.mode)),
+        world_(&dispatcher_, &broadphase_, solver_.get(), &config_),
+        refs_(v.bodies.size()) {
     world_.setGravity(btVector3(0, 0, -kGravityMps2));
     world_.getSolverInfo().m_numIterations = settings.solver_iterations;
     world_.getSolverInfo().m_leastSquaresResidualThreshold = settings.solver_residual;
@@ -464,8 +475,8 @@ class SimEngine final : public sim::EngineBase {
   btDefaultCollisionConfiguration config_;
   btCollisionDispatcher dispatcher_{&config_};
   btDbvtBroadphase broadphase_;
-  ContactSolver solver_;  // implicit mode's rows follow their normal impulses (contact_solver.hpp)
-  btMultiBodyDynamicsWorld world_{&dispatcher_, &broadphase_, &solver_, &config_};
+  std::unique_ptr<btMultiBodyConstraintSolver> solver_;
+  btMultiBodyDynamicsWorld world_;
   std::vector<std::unique_ptr<btCollisionShape>> shapes_;
   std::vector<std::unique_ptr<btMultiBody>> trees_;
   std::vector<std::unique_ptr<btMultiBodyLinkCollider>> colliders_;

@@ -20,6 +20,8 @@
 
 namespace wtc::bullet {
 
+class WheelFrictionConstraint;  // the plugin's own rows (internal)
+
 class ContactSolver : public btMultiBodyConstraintSolver {
  protected:
   btScalar solveGroupCacheFriendlySetup(btCollisionObject** bodies, int num_bodies, btPersistentManifold** manifolds,
@@ -37,7 +39,8 @@ class ContactSolver : public btMultiBodyConstraintSolver {
     double mu;   // dimensionless
   };
   std::vector<Bound> bounds_;
-  std::vector<std::pair<const void*, int>> normals_;  // manifold point -> normal row, sorted
+  std::vector<std::pair<const void*, int>> normals_;                    // manifold point -> normal row, sorted
+  std::vector<std::pair<int, const WheelFrictionConstraint*>> treads_;  // tread row -> its constraint
 };
 
 }  // namespace wtc::bullet
