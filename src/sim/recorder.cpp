@@ -1,28 +1,62 @@
 #include "recorder.hpp"
 
 #include <algorithm>
+#include <charconv>
 
 #include "wtc/base/error.hpp"
 
 namespace wtc::sim {
 
+namespace {
+// When held rows go out: a write a row cost more than a large step
+// (docs/accuracy-study.md, "What a run's output costs").
+constexpr std::size_t kFlushBytes = 1 << 16;
+constexpr std::chrono::milliseconds kFlushInterval{250};
+// Enough for %.9g of any double ("-1.23456789e-308") and any integer.
+constexpr int kNumberChars = 32;
+constexpr int kPrecision = 9;
+
+void endRow(detail::CsvFile& out) { out.endRow(); }
+}  // namespace
+
 void detail::CsvFile::open(const std::filesystem::path& path) {
   file_.reset(std::fopen(path.c_str(), "w"));
   if (!file_) throw InvalidInputError("wtc::sim::Recorder: cannot write " + path.string());
-  row_.precision(9);
+  last_write_ = std::chrono::steady_clock::now();
+}
+
+detail::CsvFile& detail::CsvFile::operator<<(double value) {
+  char text[kNumberChars];
+  const std::to_chars_result r =
+      std::to_chars(text, text + kNumberChars, value, std::chars_format::general, kPrecision);
+  row_.append(text, r.ptr);
+  return *this;
+}
+
+detail::CsvFile& detail::CsvFile::operator<<(std::size_t value) {
+  char text[kNumberChars];
+  row_.append(text, std::to_chars(text, text + kNumberChars, value).ptr);
+  return *this;
+}
+
+detail::CsvFile& detail::CsvFile::operator<<(int value) {
+  char text[kNumberChars];
+  row_.append(text, std::to_chars(text, text + kNumberChars, value).ptr);
+  return *this;
 }
 
 void detail::CsvFile::endRow() {
-  row_ << '\n';
-  const std::string row = row_.str();
-  std::fwrite(row.data(), 1, row.size(), file_.get());
-  std::fflush(file_.get());  // a killed run keeps every complete row
-  row_.str({});
+  row_.push_back('\n');
+  if (row_.size() >= kFlushBytes || std::chrono::steady_clock::now() - last_write_ >= kFlushInterval) flush();
 }
 
-namespace {
-void endRow(detail::CsvFile& out) { out.endRow(); }
-}  // namespace
+void detail::CsvFile::flush() {
+  if (!file_) return;
+  std::fwrite(row_.data(), 1, row_.size(), file_.get());
+  std::fflush(file_.get());  // whole rows on disk: a killed run keeps them
+  row_.clear();
+  last_write_ = std::chrono::steady_clock::now();
+}
 
 Recorder::Recorder(const std::filesystem::path& dir, const Run& run)
     : actuated_(run.engine().vehicle().actuated()), wheel_bodies_(run.engine().vehicle().wheels()) {
@@ -103,6 +137,10 @@ void Recorder::record(const Run& run) {
     drawbar_ << s.time << ',' << d.pull_N << ',' << d.extension_m << ',' << d.point_speed_mps;
     endRow(drawbar_);
   }
+}
+
+void Recorder::flush() {
+  for (detail::CsvFile* f : {&bodies_, &drives_, &wheels_, &hitch_, &drawbar_}) f->flush();
 }
 
 }  // namespace wtc::sim

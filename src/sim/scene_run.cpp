@@ -196,7 +196,10 @@ SceneRun::SceneRun(const Scene& scene, Engine& engine, const RunOptions& options
   x.touching.assign(v.bodies.size(), 0);
   const auto t0 = std::chrono::steady_clock::now();
   x.wtc0 = engine.contactSeconds();
-  if (x.recorder) x.recorder->record(run);
+  if (x.recorder) {
+    x.recorder->record(run);
+    x.recorder->flush();  // the headers and the start on disk before the first step
+  }
   if (options.observer != nullptr) options.observer->observe(run);
   x.wall_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -249,6 +252,7 @@ std::uint64_t SceneRun::advance(std::uint64_t n) {
       options.progress(static_cast<double>(run.steps()) / static_cast<double>(steps));
     }
   }
+  if (x.recorder) x.recorder->flush();  // every row of the stretch on disk when it returns
   x.wall_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return run.steps() - first;
 }
