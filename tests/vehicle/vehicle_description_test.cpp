@@ -14,32 +14,62 @@ namespace {
 using ::testing::HasSubstr;
 constexpr double kTolerance = 1e-12;
 
+// Shapes by their members (a designated initializer would leave the others
+// to -Wmissing-field-initializers).
+Shape boxShape(const Eigen::Vector3d& size) {
+  Shape s;
+  s.kind = Shape::Kind::kBox;
+  s.box_size = size;
+  return s;
+}
+
+// A 0.12 m wide disc about y, of `radius` (m).
+Shape discShape(double radius) {
+  Shape s;
+  s.kind = Shape::Kind::kCylinder;
+  s.radius = radius;
+  s.length = 0.12;
+  s.cylinder_axis = 1;
+  return s;
+}
+
 TEST(VehicleDescriptionTest, SolidInertiaMatchesTextbookFormulas) {
   // Case: box a x b x c: m (b^2 + c^2) / 12, ...
-  Shape box{.kind = Shape::Kind::kBox, .box_size = {0.5, 0.4, 0.2}};
+  const Shape box = boxShape({0.5, 0.4, 0.2});
   const Eigen::Vector3d ib = solidInertia(box, 12.0);
   EXPECT_NEAR(ib.x(), 0.16 + 0.04, kTolerance);
   EXPECT_NEAR(ib.y(), 0.25 + 0.04, kTolerance);
   EXPECT_NEAR(ib.z(), 0.25 + 0.16, kTolerance);
   // Case: the robot's wheel as a disc about y: m r^2 / 2 = 0.0668 kg m^2.
-  Shape disc{.kind = Shape::Kind::kCylinder, .radius = 0.19, .length = 0.12, .cylinder_axis = 1};
+  const Shape disc = discShape(0.19);
   const Eigen::Vector3d iw = solidInertia(disc, 3.7);
   EXPECT_NEAR(iw.y(), 0.5 * 3.7 * 0.19 * 0.19, kTolerance);
   EXPECT_NEAR(iw.x(), 3.7 * (3 * 0.19 * 0.19 + 0.12 * 0.12) / 12, kTolerance);
   // Case: sphere 2 m r^2 / 5.
-  Shape ball{.kind = Shape::Kind::kSphere, .radius = 0.15};
+  Shape ball;
+  ball.kind = Shape::Kind::kSphere;
+  ball.radius = 0.15;
   EXPECT_NEAR(solidInertia(ball, 10.0).z(), 0.4 * 10 * 0.0225, kTolerance);
 }
 
 VehicleDescription twoBodies() {
   VehicleDescription v;
   v.name = "test";
-  Body root{.name = "root", .mass = 10.0, .inertia = {1, 1, 1}};
-  Body child{.name = "child", .mass = 2.0, .inertia = {0.1, 0.1, 0.1}, .parent = 0};
-  child.joint = Joint{.type = JointType::kRevolute,
-                      .axis = {0, 2, 0},
-                      .limits = JointLimits{-1, 1},
-                      .actuator = ActuatorLimits{.max_effort = 10, .max_speed = 1}};
+  Body root;
+  root.name = "root";
+  root.mass = 10.0;
+  root.inertia = {1, 1, 1};
+  Body child;
+  child.name = "child";
+  child.mass = 2.0;
+  child.inertia = {0.1, 0.1, 0.1};
+  child.parent = 0;
+  Joint hinge;
+  hinge.type = JointType::kRevolute;
+  hinge.axis = {0, 2, 0};
+  hinge.limits = JointLimits{-1, 1};
+  hinge.actuator = ActuatorLimits{.max_effort = 10, .max_speed = 1};
+  child.joint = hinge;
   v.bodies = {root, child};
   return v;
 }
@@ -108,14 +138,14 @@ TEST(VehicleDescriptionTest, SizesAreNamedBeforeTheInertiaTheyMake) {
     Body& wheel = v.bodies[1];
     wheel.wheel = Wheel{};
     wheel.wheel->geometry.free_radius = radius;
-    wheel.shape = Shape{.kind = Shape::Kind::kCylinder, .radius = radius, .length = 0.12, .cylinder_axis = 1};
+    wheel.shape = discShape(radius);
     wheel.inertia = solidInertia(wheel.shape, wheel.mass);
     EXPECT_THAT(errorOf(v),
                 testing::AllOf(HasSubstr("body 'child': wheel free_radius = "), testing::Not(HasSubstr("inertia"))))
         << radius;
   }
   VehicleDescription v = twoBodies();
-  v.bodies[0].shape = Shape{.kind = Shape::Kind::kBox, .box_size = {1e300, 1, 1}};
+  v.bodies[0].shape = boxShape({1e300, 1, 1});
   v.bodies[0].inertia = solidInertia(v.bodies[0].shape, v.bodies[0].mass);
   EXPECT_THAT(errorOf(v), HasSubstr("body 'root': shape box[0]: 1e+300 m is beyond the largest length a description "
                                     "may give, 1e+06 m (wtc::kMaxLengthM)"));
