@@ -308,16 +308,34 @@ double largestSettlingStep(ContactMode mode) {
 // the explicit spring: its measured limit is the analytic one,
 // 2 (sqrt(1 + zeta^2) - zeta) / sqrt(c/m) = 3.05 ms. Constraint mode hands
 // the spring to Bullet's implicit solver: stable far beyond.
-// Implicit mode needs soft friction rows, which Bullet's rigid-body solver
-// cannot hold (its friction CFM is unscaled: wheel_friction_constraint.hpp):
-// a btRigidBody wheel is refused, with what to use instead; a multibody
-// link's rows are WTC's own (ImplicitTreadRowTest).
-TEST(BulletPluginTest, ImplicitModeRefusesARigidBodyWheelAndSaysWhatToUse) {
+// Implicit mode's tread rows are compliant friction rows, which Bullet's own
+// solvers cannot hold (they take a friction row's CFM unscaled:
+// rigid_tread_rows.hpp): a btRigidBody wheel in a world whose solver is
+// Bullet's is refused, naming the solver to use; with WTC's
+// (wtc::bullet::RigidContactSolver, the fixture's) it is taken
+// (ImplicitTreadRowTest checks its rows).
+TEST(BulletPluginTest, ImplicitModeRefusesARigidWheelWhoseWorldsSolverIsBulletsAndSaysWhatToUse) {
   const Terrain ground = flatGround();
-  BulletWorld w(ground, ContactMode::kImplicit);
-  WheelBody& wheel = w.addWheelBody(21.0, btVector3(0, 0, 0.19));
-  EXPECT_THAT([&] { testing::addWheel(w, wheel); },
-              ::testing::ThrowsMessage<InvalidInputError>(::testing::HasSubstr("multibody link")));
+  // Case: a btDiscreteDynamicsWorld with Bullet's sequential-impulse solver.
+  {
+    btDefaultCollisionConfiguration config;
+    btCollisionDispatcher dispatcher(&config);
+    btDbvtBroadphase broadphase;
+    btSequentialImpulseConstraintSolver solver;
+    btDiscreteDynamicsWorld world(&dispatcher, &broadphase, &solver, &config);
+    bullet::Plugin plugin(world, ground, ContactMode::kImplicit);
+    WheelBody wheel(world, 21.0, btVector3(0, 0, 0.19));
+    bullet::RigidWheel spec;
+    spec.body = wheel.body.get();
+    EXPECT_THAT([&] { plugin.addWheel(spec); },
+                ::testing::ThrowsMessage<InvalidInputError>(::testing::HasSubstr("wtc::bullet::RigidContactSolver")));
+  }
+  // Case: the same world with WTC's solver takes the wheel.
+  {
+    BulletWorld w(ground, ContactMode::kImplicit);
+    WheelBody& wheel = w.addWheelBody(21.0, btVector3(0, 0, 0.19));
+    EXPECT_EQ(testing::addWheel(w, wheel), 0);
+  }
 }
 
 TEST(BulletStabilityTest, LargestStableStepOfEachModeForAStiffTyre) {
