@@ -261,7 +261,7 @@ std::string sceneName(const ::testing::TestParamInfo<NamedScene>& info) {
 // steppers) in each mode.
 TEST_P(CrossEngineTest, BulletAndOdeAgree) {
   const NamedScene& s = GetParam();
-  for (const ContactMode mode : {ContactMode::kForce, ContactMode::kConstraint}) {
+  for (const ContactMode mode : {ContactMode::kForce, ContactMode::kConstraint, ContactMode::kImplicit}) {
     const bool force = mode == ContactMode::kForce;
     const double tolerance = force ? kForceModeRelative : kConstraintModeRelative;
     const double bullet = s.scene(Engine::kBullet, mode);
@@ -270,9 +270,9 @@ TEST_P(CrossEngineTest, BulletAndOdeAgree) {
       const double scale = std::max(std::abs(bullet), std::abs(ode));
       const bool within_floor = std::abs(bullet - ode) <= s.agreement_floor;
       const double difference = !within_floor && scale > 0 ? std::abs(bullet - ode) / scale : 0.0;
-      std::printf("| %s | %s | %s | %.6g | %.6g | %.2g |\n", s.name, force ? "force" : "constraint",
-                  engineName(other).c_str(), bullet, ode, difference);
-      EXPECT_LE(difference, tolerance) << s.name << " (" << s.unit << ") in " << (force ? "force" : "constraint")
+      std::printf("| %s | %s | %s | %.6g | %.6g | %.2g |\n", s.name, std::string(contactModeName(mode)).c_str(), engineName(other).c_str(),
+                  bullet, ode, difference);
+      EXPECT_LE(difference, tolerance) << s.name << " (" << s.unit << ") in " << contactModeName(mode)
                                        << " mode: Bullet " << bullet << ", " << engineName(other) << " " << ode;
     }
   }
@@ -294,10 +294,12 @@ class CrossEngineAnalyticTest : public CrossEngineTest {};
 TEST_P(CrossEngineAnalyticTest, EveryEngineMeetsTheAnalyticValue) {
   const NamedScene& s = GetParam();
   for (const Engine engine : {Engine::kBullet, Engine::kOde, Engine::kOdeQuick}) {
-    for (const ContactMode mode : {ContactMode::kForce, ContactMode::kConstraint}) {
-      EXPECT_NEAR(s.scene(engine, mode), s.expected, s.tolerance)
-          << s.name << " (" << s.unit << "), " << engineName(engine) << ", "
-          << (mode == ContactMode::kForce ? "force" : "constraint") << " mode";
+    for (const ContactMode mode : {ContactMode::kForce, ContactMode::kConstraint, ContactMode::kImplicit}) {
+      const double value = s.scene(engine, mode);
+      std::printf("| %s | %s | %s | %.6g | %.6g |\n", s.name, std::string(contactModeName(mode)).c_str(), engineName(engine).c_str(), value,
+                  s.expected);
+      EXPECT_NEAR(value, s.expected, s.tolerance)
+          << s.name << " (" << s.unit << "), " << engineName(engine) << ", " << contactModeName(mode) << " mode";
     }
   }
 }

@@ -11,7 +11,7 @@
 // reached, or the force on its bound. Checked every step for ODE's two
 // steppers (the wheel's rotation locked: V_P = V_O), Bullet's multibody
 // solver (a wheel link spinning on a base too heavy to turn:
-// V_P = V_O + omega x OP), and a btRigidBody wheel (rotation locked) in
+// V_P = V_O + omega x OP), and a driven btRigidBody wheel (upright) in
 // Bullet's two solvers as WTC's (wtc::bullet::RigidContactSolver, and
 // wtc::bullet::ContactSolver in a multibody world). Run:
 //   build/tests/cross_engine/wtc_cross_engine_tests --gtest_filter='ImplicitTreadRow*'
@@ -148,7 +148,7 @@ TEST(ImplicitTreadRowTest, BulletsMultiBodySolverSolvesTheRowsTheModelGave) {
   }
 }
 
-// A btRigidBody wheel, its rotation locked (V_P = V_O), in a World whose
+// A btRigidBody wheel, upright (it spins about its axle, y, only), in a World whose
 // solver is Solver; the plugin in implicit mode. The body added to the world
 // first is the manifold's body 0 (Bullet orders a pair by its proxies'
 // ids): `wheel_first` puts the wheel there, else the terrain. Members in
@@ -160,7 +160,7 @@ struct RigidWheelWorld {
     if (wheel_first) wheel = std::make_unique<BulletWheel>(world, kMass, btVector3(0, 0, kRadius));
     plugin = std::make_unique<bullet::Plugin>(world, ground, ContactMode::kImplicit);
     if (!wheel_first) wheel = std::make_unique<BulletWheel>(world, kMass, btVector3(0, 0, kRadius));
-    wheel->body->setAngularFactor(btVector3(0, 0, 0));
+    wheel->body->setAngularFactor(btVector3(0, 1, 0));
     bullet::RigidWheel spec;
     spec.body = wheel->body.get();
     plugin->addWheel(spec);
@@ -173,6 +173,11 @@ struct RigidWheelWorld {
   std::unique_ptr<BulletWheel> wheel;
   std::unique_ptr<bullet::Plugin> plugin;
 };
+
+// The rigid wheel is driven too: Bullet measures a friction row's velocity
+// without the torque's impulse (rigid_tread_rows.cpp), which the rows must
+// take in (N m).
+constexpr double kRigidDriveTorqueNm = 20.0;
 
 template <class Solver, class World>
 void expectBulletSolvesTheRigidWheelsRows(const std::string& name) {
@@ -190,11 +195,17 @@ void expectBulletSolvesTheRigidWheelsRows(const std::string& name) {
       RowGaps gaps;
       for (long k = 0; k < std::lround(kRunSeconds / h); ++k) {
         body.applyCentralForce(btVector3(kPush.x(), kPush.y(), kPush.z()));
+        body.applyTorque(btVector3(0, kRigidDriveTorqueNm, 0));
+        const btVector3 centre = body.getCenterOfMassPosition();
         step();
-        const btVector3 v = body.getLinearVelocity();
+        const btVector3 velocity = body.getLinearVelocity(), spin = body.getAngularVelocity();
         checkRows(
             sim.plugin->forces(0), sim.plugin->applied(0),
-            [&](const Eigen::Vector3d&) { return Eigen::Vector3d(v.x(), v.y(), v.z()); }, gaps);
+            [&](const Eigen::Vector3d& p) {
+              const btVector3 v = velocity + spin.cross(btVector3(p.x(), p.y(), p.z()) - centre);
+              return Eigen::Vector3d(v.x(), v.y(), v.z());
+            },
+            gaps);
       }
       const std::string what =
           name + (wheel_first ? ", wheel as body 0" : ", wheel as body 1") + ", h = " + std::to_string(h * 1e3) + " ms";

@@ -21,7 +21,7 @@ btScalar ContactSolver::solveGroupCacheFriendlySetup(btCollisionObject** bodies,
   const btScalar result = btMultiBodyConstraintSolver::solveGroupCacheFriendlySetup(
       bodies, num_bodies, manifolds, num_manifolds, constraints, num_constraints, info, debug_drawer);
   // The rigid wheels' rows are Bullet's (rigid_tread_rows.hpp).
-  tread_rows_->soften(m_tmpSolverContactConstraintPool, m_tmpSolverContactFrictionConstraintPool,
+  tread_rows_->soften(m_tmpSolverContactConstraintPool, m_tmpSolverContactFrictionConstraintPool, m_tmpSolverBodyPool,
                       (info.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS) != 0);
   bounds_.clear();
   // The tread rows, in one pass: a constraint's rows are contiguous, so a

@@ -14,7 +14,7 @@ btScalar RigidContactSolver::solveGroupCacheFriendlySetup(btCollisionObject** bo
                                                           const btContactSolverInfo& info, btIDebugDraw* debug_drawer) {
   const btScalar result = btSequentialImpulseConstraintSolver::solveGroupCacheFriendlySetup(
       bodies, num_bodies, manifolds, num_manifolds, constraints, num_constraints, info, debug_drawer);
-  tread_rows_->soften(m_tmpSolverContactConstraintPool, m_tmpSolverContactFrictionConstraintPool,
+  tread_rows_->soften(m_tmpSolverContactConstraintPool, m_tmpSolverContactFrictionConstraintPool, m_tmpSolverBodyPool,
                       (info.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS) != 0);
   return result;
 }

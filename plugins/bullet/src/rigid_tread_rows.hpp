@@ -25,6 +25,7 @@
 #include <vector>
 
 #include <BulletCollision/NarrowPhaseCollision/btManifoldPoint.h>
+#include <BulletDynamics/ConstraintSolver/btSolverBody.h>
 #include <BulletDynamics/ConstraintSolver/btSolverConstraint.h>
 
 namespace wtc::bullet {
@@ -49,8 +50,9 @@ class RigidTreadRows {
   /// After Bullet's setup made the rows of a group: each listed point's
   /// normal row in `contacts` and its friction rows in `frictions` (the
   /// first at the normal row's m_frictionIndex, the second next to it when
-  /// `two_directions`) become the soft rows.
-  void soften(btConstraintArray& contacts, btConstraintArray& frictions, bool two_directions);
+  /// `two_directions`) become the soft rows; `bodies` the solver's bodies.
+  void soften(btConstraintArray& contacts, btConstraintArray& frictions,
+              const btAlignedObjectArray<btSolverBody>& bodies, bool two_directions);
 
  private:
   static constexpr int kReservedPoints = 64;  // no allocation in the step loop for up to 16 wheels
