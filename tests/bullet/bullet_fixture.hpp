@@ -9,6 +9,7 @@
 
 #include "wheel_sim.hpp"
 #include "wtc/bullet/plugin.hpp"
+#include "wtc/bullet/rigid_contact_solver.hpp"
 #include "wtc/terrain/terrain.hpp"
 
 namespace wtc::testing {
@@ -33,7 +34,7 @@ struct BulletWorld {
   btDefaultCollisionConfiguration config;
   btCollisionDispatcher dispatcher{&config};
   btDbvtBroadphase broadphase;
-  btSequentialImpulseConstraintSolver solver;
+  bullet::RigidContactSolver solver;  // Bullet's, with implicit mode's tread rows (identical in the other modes)
   btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &config};
   std::vector<std::unique_ptr<BulletWheel>> bodies;
   std::unique_ptr<bullet::Plugin> plugin;

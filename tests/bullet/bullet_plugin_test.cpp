@@ -6,6 +6,7 @@
 // tests/cross_engine. docs/bullet-plugin.md.
 #include "wtc/bullet/plugin.hpp"
 
+#include <cctype>
 #include <cmath>
 
 #include <gmock/gmock.h>
@@ -30,7 +31,11 @@ constexpr double kStiffness = 1e5;  // c (N/m), the default tyre
 constexpr double kDegree = 0.017453292519943295;
 constexpr double kStillMps = 1e-6;  // speeds below this are standing still (m/s)
 
-std::string modeName(ContactMode mode) { return mode == ContactMode::kForce ? "Force" : "Constraint"; }
+std::string modeName(ContactMode mode) {
+  std::string name(contactModeName(mode));
+  name[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(name[0])));
+  return name;
+}
 
 class BulletModeTest : public ::testing::TestWithParam<ContactMode> {};
 
@@ -52,7 +57,8 @@ TEST_P(BulletModeTest, UndampedBounceDoesNotGainEnergy) {
 }
 
 // Case: the wheel pressed into the foot of the 0.65 m ledge touches the
-// ground and the face: two contacts, both in the engine in constraint mode.
+// ground and the face: two contacts, both in the engine in the engine-solved
+// modes.
 TEST_P(BulletModeTest, LedgeCornerGivesTwoContacts) {
   TerrainBuilder builder;
   addLedge(builder, {}, builder.addMaterial({}));
@@ -67,7 +73,7 @@ TEST_P(BulletModeTest, LedgeCornerGivesTwoContacts) {
     w.world.stepSimulation(1e-3, 1, 1e-3);
   }
   ASSERT_EQ(w.plugin->forces(id).contacts.size(), 2u);
-  if (GetParam() == ContactMode::kConstraint) {
+  if (GetParam() != ContactMode::kForce) {
     int points = 0;
     for (int m = 0; m < w.dispatcher.getNumManifolds(); ++m)
       points += w.dispatcher.getManifoldByIndexInternal(m)->getNumContacts();
@@ -129,7 +135,8 @@ TEST_P(BulletModeTest, SubstepsMoveTheWheelAsSingleSteps) {
   EXPECT_GT(ends[0].x(), 0.1) << "the spinning wheel drove off";
 }
 
-INSTANTIATE_TEST_SUITE_P(Modes, BulletModeTest, ::testing::Values(ContactMode::kForce, ContactMode::kConstraint),
+INSTANTIATE_TEST_SUITE_P(Modes, BulletModeTest,
+                         ::testing::Values(ContactMode::kForce, ContactMode::kConstraint, ContactMode::kImplicit),
                          [](const auto& info) { return modeName(info.param); });
 
 struct SlopeCase {
@@ -171,7 +178,7 @@ TEST_P(BulletParkedTest, HoldsWithinAMicrometreForTenSeconds) {
 
 std::vector<SlopeCase> parkedCases() {
   std::vector<SlopeCase> cases;
-  for (const ContactMode mode : {ContactMode::kForce, ContactMode::kConstraint}) {
+  for (const ContactMode mode : {ContactMode::kForce, ContactMode::kConstraint, ContactMode::kImplicit}) {
     for (const double h : {1e-4, 5e-4, 1e-3, 2e-3}) cases.push_back({mode, h});
   }
   return cases;
@@ -306,32 +313,54 @@ double largestSettlingStep(ContactMode mode) {
 
 // Case: the largest stable step of each mode for a stiff tyre. Force mode is
 // the explicit spring: its measured limit is the analytic one,
-// 2 (sqrt(1 + zeta^2) - zeta) / sqrt(c/m) = 3.05 ms. Constraint mode hands
-// the spring to Bullet's implicit solver: stable far beyond.
-// Implicit mode needs soft friction rows, which Bullet's rigid-body solver
-// cannot hold (its friction CFM is unscaled: wheel_friction_constraint.hpp):
-// a btRigidBody wheel is refused, with what to use instead; a multibody
-// link's rows are WTC's own (ImplicitTreadRowTest).
-TEST(BulletPluginTest, ImplicitModeRefusesARigidBodyWheelAndSaysWhatToUse) {
+// 2 (sqrt(1 + zeta^2) - zeta) / sqrt(c/m) = 3.05 ms. Constraint and implicit
+// modes hand the spring (implicit mode: the tread too) to Bullet's solver,
+// which integrates it implicitly: stable far beyond.
+// Implicit mode's tread rows are compliant friction rows, which Bullet's own
+// solvers cannot hold (they take a friction row's CFM unscaled:
+// rigid_tread_rows.hpp): a btRigidBody wheel in a world whose solver is
+// Bullet's is refused, naming the solver to use; with WTC's
+// (wtc::bullet::RigidContactSolver, the fixture's) it is taken
+// (ImplicitTreadRowTest checks its rows).
+TEST(BulletPluginTest, ImplicitModeRefusesARigidWheelWhoseWorldsSolverIsBulletsAndSaysWhatToUse) {
   const Terrain ground = flatGround();
-  BulletWorld w(ground, ContactMode::kImplicit);
-  WheelBody& wheel = w.addWheelBody(21.0, btVector3(0, 0, 0.19));
-  EXPECT_THAT([&] { testing::addWheel(w, wheel); },
-              ::testing::ThrowsMessage<InvalidInputError>(::testing::HasSubstr("multibody link")));
+  // Case: a btDiscreteDynamicsWorld with Bullet's sequential-impulse solver.
+  {
+    btDefaultCollisionConfiguration config;
+    btCollisionDispatcher dispatcher(&config);
+    btDbvtBroadphase broadphase;
+    btSequentialImpulseConstraintSolver solver;
+    btDiscreteDynamicsWorld world(&dispatcher, &broadphase, &solver, &config);
+    bullet::Plugin plugin(world, ground, ContactMode::kImplicit);
+    WheelBody wheel(world, 21.0, btVector3(0, 0, 0.19));
+    bullet::RigidWheel spec;
+    spec.body = wheel.body.get();
+    EXPECT_THAT([&] { plugin.addWheel(spec); },
+                ::testing::ThrowsMessage<InvalidInputError>(::testing::HasSubstr("wtc::bullet::RigidContactSolver")));
+  }
+  // Case: the same world with WTC's solver takes the wheel.
+  {
+    BulletWorld w(ground, ContactMode::kImplicit);
+    WheelBody& wheel = w.addWheelBody(21.0, btVector3(0, 0, 0.19));
+    EXPECT_EQ(testing::addWheel(w, wheel), 0);
+  }
 }
 
 TEST(BulletStabilityTest, LargestStableStepOfEachModeForAStiffTyre) {
   const double predicted = largestStableStep(1e6, 900.0, 3.7);
   const double force = largestSettlingStep(ContactMode::kForce);
   const double constraint = largestSettlingStep(ContactMode::kConstraint);
+  const double implicit = largestSettlingStep(ContactMode::kImplicit);
   RecordProperty("force_mode_largest_step_ms", std::to_string(force * 1e3));
   RecordProperty("constraint_mode_largest_step_ms", std::to_string(constraint * 1e3));
+  RecordProperty("implicit_mode_largest_step_ms", std::to_string(implicit * 1e3));
   std::printf(
       "stiff tyre c = 1e6 N/m on 3.7 kg: largest stable step, force mode %.3g ms (analytic %.3g ms), "
-      "constraint mode %.3g ms\n",
-      force * 1e3, predicted * 1e3, constraint * 1e3);
+      "constraint mode %.3g ms, implicit mode %.3g ms\n",
+      force * 1e3, predicted * 1e3, constraint * 1e3, implicit * 1e3);
   EXPECT_NEAR(force, predicted, 0.1 * predicted);
   EXPECT_GE(constraint, 10 * predicted);
+  EXPECT_GE(implicit, 10 * predicted);
 }
 
 // Case: every pair but wheel-terrain keeps Bullet's own collision with the

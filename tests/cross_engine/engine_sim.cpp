@@ -6,6 +6,9 @@
 namespace wtc::testing {
 namespace {
 
+// A btRigidBody wheel in a btDiscreteDynamicsWorld whose solver is
+// wtc::bullet::RigidContactSolver (the fixture's): implicit mode's tread rows
+// need it; the other modes are Bullet's own solver's.
 class BulletSim : public EngineSim {
  public:
   BulletSim(ContactMode mode, const Terrain& terrain, double mass, const Eigen::Vector3d& c, Hold hold,

@@ -283,10 +283,26 @@ TEST(ImplicitNormalRowTest, BulletsLinearSlopMovesTheSpringsZeroAndDeparts) {
 
 // Implicit mode hands Bullet Z + m_linearSlop (wheel_terrain_algorithm.cpp),
 // so that with a slop the row is the implicit step of c Z again: the
-// multibody wheel with a 1 mm slop against the recursion without one.
+// multibody wheel and the rigid one (its deep drop past the split impulse's
+// threshold too) with a 1 mm slop against the recursion without one.
 TEST(ImplicitNormalRowTest, ImplicitModeTakesBulletsLinearSlopBackOut) {
   constexpr double kSlopM = 0.001;
   const Terrain ground = flatGround();
+  for (const Tyre* tyre : {&kShallow, &kDeep}) {
+    for (const double h : kSteps) {
+      BulletWorld w(ground, ContactMode::kImplicit);
+      w.world.getSolverInfo().m_linearSlop = kSlopM;
+      BulletWheel& wheel = w.addWheelBody(kMass, btVector3(0, 0, kRadius + tyre->drop));
+      wheel.body->setAngularFactor(btVector3(0, 0, 0));
+      addWheel(w, wheel, EffectSet::full(), tyreOf(*tyre));
+      const Gaps rigid = compare(
+          *tyre, h, [&] { w.world.stepSimulation(h, 1, h); },
+          [&] {
+            return Vertical{wheel.body->getCenterOfMassPosition().z(), wheel.body->getLinearVelocity().z()};
+          });
+      expectImplicit(label("Bullet rigid body, implicit mode, 1 mm linear slop", *tyre, h), rigid, h, *tyre);
+    }
+  }
   for (const Tyre* tyre : {&kShallow, &kDeep}) {
     for (const double h : kSteps) {
       MultiBodyWheelSim sim(ground, kRadius + tyre->drop, tyreOf(*tyre), ContactMode::kImplicit);

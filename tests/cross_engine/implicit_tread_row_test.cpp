@@ -9,9 +9,11 @@
 // a push, the normal row, the other row), a solver that solved the row
 // leaves that relation between the force it applied and the velocity it
 // reached, or the force on its bound. Checked every step for ODE's two
-// steppers (the wheel's rotation locked: V_P = V_O) and Bullet's multibody
+// steppers (the wheel's rotation locked: V_P = V_O), Bullet's multibody
 // solver (a wheel link spinning on a base too heavy to turn:
-// V_P = V_O + omega x OP). Run:
+// V_P = V_O + omega x OP), and a driven btRigidBody wheel (upright) in
+// Bullet's two solvers as WTC's (wtc::bullet::RigidContactSolver, and
+// wtc::bullet::ContactSolver in a multibody world). Run:
 //   build/tests/cross_engine/wtc_cross_engine_tests --gtest_filter='ImplicitTreadRow*'
 #include <gtest/gtest.h>
 
@@ -22,9 +24,11 @@
 #include <limits>
 #include <string>
 
+#include "bullet_fixture.hpp"
 #include "engine_sim.hpp"
 #include "multibody_wheel_sim.hpp"
 #include "wheel_sim.hpp"
+#include "wtc/bullet/rigid_contact_solver.hpp"
 
 namespace wtc::testing {
 namespace {
@@ -52,8 +56,9 @@ void checkRows(const WheelForces& model, const WheelForces& applied,
   for (std::size_t k = 0; k < model.contacts.size(); ++k) {
     const ContactForce& c = model.contacts[k];
     const TreadRows& rows = c.tread_rows;
-    // ODE bounds a row by the solved normal force; Bullet's multibody rows,
-    // by the model's at the start of the step (solver_contact.hpp).
+    // Every solver bounds a row by the solved normal force (Bullet's
+    // multibody rows through wtc::bullet::ContactSolver); a row at the
+    // smaller of that and the model's is counted as on its bound.
     const double load = applied.contacts[k].normal_force;
     if (!(load > 0.0)) continue;
     const double bounding_load = std::min(load, c.normal_force);
@@ -141,6 +146,84 @@ TEST(ImplicitTreadRowTest, BulletsMultiBodySolverSolvesTheRowsTheModelGave) {
     EXPECT_GT(gaps.free, 0) << what;
     EXPECT_LT(gaps.worst, 1e-6) << what;
   }
+}
+
+// A btRigidBody wheel, upright (it spins about its axle, y, only), in a World whose
+// solver is Solver; the plugin in implicit mode. The body added to the world
+// first is the manifold's body 0 (Bullet orders a pair by its proxies'
+// ids): `wheel_first` puts the wheel there, else the terrain. Members in
+// construction order: the plugin goes first, then the wheel, then the world.
+template <class Solver, class World>
+struct RigidWheelWorld {
+  RigidWheelWorld(const Terrain& ground, bool wheel_first) {
+    world.setGravity(btVector3(0, 0, -kGravityMps2));
+    if (wheel_first) wheel = std::make_unique<BulletWheel>(world, kMass, btVector3(0, 0, kRadius));
+    plugin = std::make_unique<bullet::Plugin>(world, ground, ContactMode::kImplicit);
+    if (!wheel_first) wheel = std::make_unique<BulletWheel>(world, kMass, btVector3(0, 0, kRadius));
+    wheel->body->setAngularFactor(btVector3(0, 1, 0));
+    bullet::RigidWheel spec;
+    spec.body = wheel->body.get();
+    plugin->addWheel(spec);
+  }
+  btDefaultCollisionConfiguration config;
+  btCollisionDispatcher dispatcher{&config};
+  btDbvtBroadphase broadphase;
+  Solver solver;
+  World world{&dispatcher, &broadphase, &solver, &config};
+  std::unique_ptr<BulletWheel> wheel;
+  std::unique_ptr<bullet::Plugin> plugin;
+};
+
+// The rigid wheel is driven too: Bullet measures a friction row's velocity
+// without the torque's impulse (rigid_tread_rows.cpp), which the rows must
+// take in (N m).
+constexpr double kRigidDriveTorqueNm = 20.0;
+
+template <class Solver, class World>
+void expectBulletSolvesTheRigidWheelsRows(const std::string& name) {
+  const Terrain ground = flatGround();
+  for (const bool wheel_first : {false, true}) {
+    for (const double h : {4e-4, 2e-3, 1e-2}) {
+      RigidWheelWorld<Solver, World> sim(ground, wheel_first);
+      // Gauss-Seidel to convergence: the row's fixed point is what is checked.
+      sim.world.getSolverInfo().m_numIterations = 2000;
+      sim.world.getSolverInfo().m_leastSquaresResidualThreshold = 0.0;
+      btRigidBody& body = *sim.wheel->body;
+      const auto step = [&] { sim.world.stepSimulation(h, 1, h); };
+      for (long k = 0; k < std::lround(kSettleSeconds / h); ++k) step();
+      body.setLinearVelocity(btVector3(0.05, 0.03, body.getLinearVelocity().z()));
+      RowGaps gaps;
+      for (long k = 0; k < std::lround(kRunSeconds / h); ++k) {
+        body.applyCentralForce(btVector3(kPush.x(), kPush.y(), kPush.z()));
+        body.applyTorque(btVector3(0, kRigidDriveTorqueNm, 0));
+        const btVector3 centre = body.getCenterOfMassPosition();
+        step();
+        const btVector3 velocity = body.getLinearVelocity(), spin = body.getAngularVelocity();
+        checkRows(
+            sim.plugin->forces(0), sim.plugin->applied(0),
+            [&](const Eigen::Vector3d& p) {
+              const btVector3 v = velocity + spin.cross(btVector3(p.x(), p.y(), p.z()) - centre);
+              return Eigen::Vector3d(v.x(), v.y(), v.z());
+            },
+            gaps);
+      }
+      const std::string what =
+          name + (wheel_first ? ", wheel as body 0" : ", wheel as body 1") + ", h = " + std::to_string(h * 1e3) + " ms";
+      report(what, gaps);
+      EXPECT_GT(gaps.free, 0) << what;
+      EXPECT_LT(gaps.worst, 1e-6) << what;
+    }
+  }
+}
+
+TEST(ImplicitTreadRowTest, BulletsRigidBodySolverSolvesTheRowsTheModelGave) {
+  expectBulletSolvesTheRigidWheelsRows<bullet::RigidContactSolver, btDiscreteDynamicsWorld>(
+      "Bullet rigid body (RigidContactSolver)");
+}
+
+TEST(ImplicitTreadRowTest, BulletsMultiBodySolverSolvesARigidWheelsRows) {
+  expectBulletSolvesTheRigidWheelsRows<bullet::ContactSolver, btMultiBodyDynamicsWorld>(
+      "Bullet rigid body in a multibody world (ContactSolver)");
 }
 
 // A driven wheel: 21 kg on one contact, its spin free about its axle,

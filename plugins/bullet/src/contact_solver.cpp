@@ -3,9 +3,14 @@
 #include <algorithm>
 #include <utility>
 
+#include "rigid_tread_rows.hpp"
 #include "wheel_friction_constraint.hpp"
 
 namespace wtc::bullet {
+
+ContactSolver::ContactSolver() : tread_rows_(std::make_unique<RigidTreadRows>()) {}
+
+ContactSolver::~ContactSolver() = default;
 
 // After Bullet has made every row: each tread row that follows its normal
 // is paired with the normal row of its contact's manifold point.
@@ -15,6 +20,9 @@ btScalar ContactSolver::solveGroupCacheFriendlySetup(btCollisionObject** bodies,
                                                      const btContactSolverInfo& info, btIDebugDraw* debug_drawer) {
   const btScalar result = btMultiBodyConstraintSolver::solveGroupCacheFriendlySetup(
       bodies, num_bodies, manifolds, num_manifolds, constraints, num_constraints, info, debug_drawer);
+  // The rigid wheels' rows are Bullet's (rigid_tread_rows.hpp).
+  tread_rows_->soften(m_tmpSolverContactConstraintPool, m_tmpSolverContactFrictionConstraintPool, m_tmpSolverBodyPool,
+                      (info.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS) != 0);
   bounds_.clear();
   // The tread rows, in one pass: a constraint's rows are contiguous, so a
   // constraint is cast once. Kept from step to step (members): no allocation

@@ -4,6 +4,7 @@
 #include "wtc/bullet/plugin.hpp"
 
 #include "wtc/bullet/contact_solver.hpp"
+#include "wtc/bullet/rigid_contact_solver.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -37,6 +38,14 @@ void preTickCallback(btDynamicsWorld* world, btScalar step_seconds) {
 
 void postTickCallback(btDynamicsWorld* world, btScalar step_seconds) {
   static_cast<detail::PluginState*>(world->getWorldUserInfo())->postTick(step_seconds);
+}
+
+// The table of rigid wheels' tread rows of `solver`, if it is WTC's
+// (rigid_tread_rows.hpp); null for any other solver.
+RigidTreadRows* rigidTreadRowsOf(btConstraintSolver* solver) {
+  if (auto* rigid = dynamic_cast<RigidContactSolver*>(solver)) return &rigid->treadRows();
+  if (auto* multibody = dynamic_cast<ContactSolver*>(solver)) return &multibody->treadRows();
+  return nullptr;
 }
 
 // Where the wheel is and how it moves, in the world frame.
@@ -125,7 +134,8 @@ detail::PluginState::PluginState(btDiscreteDynamicsWorld& w, const Terrain& t, C
                " m): a split contact loses the tyre's spring");
     }
     world.getSolverInfo().m_solverMode |= SOLVER_ENABLE_FRICTION_DIRECTION_CACHING;
-    if (dynamic_cast<btMultiBodyDynamicsWorld*>(&world) == nullptr) {
+    // Implicit mode's rigid wheels need both directions (addWheel sets it).
+    if (mode == ContactMode::kConstraint && dynamic_cast<btMultiBodyDynamicsWorld*>(&world) == nullptr) {
       world.getSolverInfo().m_solverMode &= ~SOLVER_USE_2_FRICTION_DIRECTIONS;
     }
   }
@@ -214,6 +224,10 @@ const LinkVelocities& detail::PluginState::linkVelocities(const btMultiBody& mul
 }
 
 void detail::PluginState::preTick(double h) {
+  // This step's rigid tread rows go to the solver the world has now; the
+  // collision writes them (wheel_terrain_algorithm.cpp).
+  tread_rows = mode == ContactMode::kImplicit ? rigidTreadRowsOf(world.getConstraintSolver()) : nullptr;
+  if (tread_rows != nullptr) tread_rows->clear();
   if (pre_tick) pre_tick(h);
   stepWheels(h);
   if (post_wheels) post_wheels(h);
@@ -250,6 +264,9 @@ void detail::PluginState::postTick(double h) {
   const StepClock::Section timed(clock);
   // The step moved every body: the next reader computes the velocities anew.
   for (LinkVelocities& v : link_velocities) v.valid = false;
+  // The manifold points the table names live only until the next collision.
+  if (tread_rows != nullptr) tread_rows->clear();
+  tread_rows = nullptr;
   if (engineSolvesContacts(mode)) {
     for (const auto& w : wheels) readSolvedForces(*w, h);
   }
@@ -322,14 +339,20 @@ constexpr double kStaticMass = std::numeric_limits<double>::infinity();
 WheelId Plugin::addWheel(const RigidWheel& spec) {
   static constexpr const char* kWhere = "wtc::bullet::Plugin::addWheel (rigid body)";
   if (spec.body == nullptr) fail(kWhere, "body is null");
-  // Bullet's rigid-body solver takes a friction row's CFM unscaled
-  // (lambda += rhs - cfm lambda - D dV): the tread's soft row needs
-  // cfm = D / (h K), far above 1 at small steps, where that update diverges
-  // (wheel_friction_constraint.hpp). A multibody link's rows are WTC's own.
+  // Bullet's own solvers take a friction row's CFM unscaled
+  // (lambda += rhs - cfm lambda - D dV): the tread's compliance needs WTC's
+  // solver, which makes the wheel's friction rows soft (rigid_tread_rows.hpp).
   if (state_->mode == ContactMode::kImplicit) {
-    fail(kWhere,
-         "implicit mode needs the wheel as a multibody link (btMultiBody) in Bullet: its rigid-body solver "
-         "cannot hold the tread's compliant friction rows; use force or constraint mode for a btRigidBody");
+    if (rigidTreadRowsOf(state_->world.getConstraintSolver()) == nullptr) {
+      fail(kWhere,
+           "implicit mode needs the world's solver to be a wtc::bullet::RigidContactSolver "
+           "(wtc/bullet/rigid_contact_solver.hpp; in a btMultiBodyDynamicsWorld, a wtc::bullet::ContactSolver), "
+           "which makes the tread's friction rows soft: Bullet's own solver takes their compliance unscaled and "
+           "diverges");
+    }
+    // Row 1, across the traction: Bullet's second friction direction
+    // (world-wide; docs/bullet-plugin.md).
+    state_->world.getSolverInfo().m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
   }
   validateMounting(toEigen(spec.axle_local), toEigen(spec.centre_local), kWhere);
   const double mass = spec.body->getInvMass() > 0.0 ? 1.0 / spec.body->getInvMass() : kStaticMass;

@@ -10,6 +10,7 @@
 #include "adapter/mounted_wheel.hpp"
 #include "adapter/step_clock.hpp"
 #include "conversions.hpp"
+#include "rigid_tread_rows.hpp"
 #include "wheel_friction_constraint.hpp"
 #include "wheel_shape.hpp"
 #include "wtc/bullet/plugin.hpp"
@@ -89,7 +90,10 @@ struct PluginState {
   std::function<void(double)> pre_tick;
   std::function<void(double)> post_wheels;
   std::vector<LinkVelocities> link_velocities;  // per multibody asked for
-  StepClock clock;                              // preTick and postTick, the caller's callback not included
+  // Implicit mode: the world's solver's table of rigid wheels' tread rows
+  // (rigid_tread_rows.hpp), during an internal step; null otherwise.
+  RigidTreadRows* tread_rows = nullptr;
+  StepClock clock;  // preTick and postTick, the caller's callback not included
 };
 
 }  // namespace detail

@@ -6,6 +6,7 @@
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 
 #include "conversions.hpp"
+#include "soft_row.hpp"
 
 namespace wtc::bullet {
 
@@ -93,11 +94,11 @@ void WheelFrictionConstraint::createConstraintRows(btMultiBodyConstraintArray& r
     // row: no positional error), within the Coulomb bound.
     const double velocity = fillMultiBodyConstraint(row, data, nullptr, nullptr, none, r.direction, r.point, r.point,
                                                     0.0, info, -r.limit, r.limit, false, 1.0, true, r.velocity);
-    if (r.compliance > 0.0) {  // the tread's soft row (header)
-      const double soft = 1.0 / (1.0 / row.m_jacDiagABInv + r.compliance);
-      row.m_jacDiagABInv = soft;
-      row.m_rhs = (r.velocity - velocity) * soft;
-      row.m_cfm = r.compliance * soft;
+    if (r.compliance > 0.0) {  // the tread's soft row (soft_row.hpp)
+      const SoftRow soft = softRow(row.m_jacDiagABInv, r.velocity - velocity, r.compliance);
+      row.m_jacDiagABInv = soft.jac_diag_inv;
+      row.m_rhs = soft.rhs;
+      row.m_cfm = soft.cfm;
     }
   }
 }

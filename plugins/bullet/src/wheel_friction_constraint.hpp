@@ -16,14 +16,9 @@
 // model's normal force at the start of the step (the multibody solver
 // cannot couple a constraint's bound to a contact's normal impulse).
 //
-// Implicit mode (solver_contact.hpp): the tread's rows, soft. A row whose
-// impulse is lambda = h K (v - V+) is, in Bullet's Gauss-Seidel
-// (lambda += rhs - cfm lambda - D' dV, D' the row's jacDiagABInv), the
-// soft row of Box2D and Bullet's own contacts: D' = 1 / (1/D + 1/(h K)),
-// rhs = D' (v - V), cfm = D' / (h K), D the row's effective mass; its fixed
-// point is lambda = h K (v - V+) and each update contracts (cfm < 1) at any
-// step. A contact's second row runs across the first, bounded by
-// friction_across.
+// Implicit mode (solver_contact.hpp): the tread's rows, soft (soft_row.hpp:
+// lambda = h K (v - V+) at the fixed point, a contraction at any step). A
+// contact's second row runs across the first, bounded by friction_across.
 #include <span>
 #include <vector>
 

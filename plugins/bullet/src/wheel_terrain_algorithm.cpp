@@ -95,6 +95,11 @@ void WheelTerrainAlgorithm::writeWtcContacts(int wheel, bool wheel_is_body0, con
     p.m_combinedRestitution = 0;
     p.m_combinedRollingFriction = 0;
     p.m_combinedSpinningFriction = 0;
+    if (state_.tread_rows != nullptr && w.friction == nullptr) {
+      setTreadRows(p, c, w.wheel_is_body0, dispatch_info.m_timeStep);
+      setSpring(p, c, dispatch_info.m_timeStep);
+      continue;
+    }
     const btVector3 normal = p.m_normalWorldOnB;
     btVector3 direction = toBt(c.friction_direction);
     direction -= normal * normal.dot(direction);  // the manifold's normal may be flipped: stay tangent
@@ -127,6 +132,44 @@ SolverContact WheelTerrainAlgorithm::mergedContact(const SolverContact& earlier,
   merged.stiffness = earlier.stiffness + later.stiffness;
   merged.damping = earlier.damping + later.damping;
   return merged;
+}
+
+// Implicit mode, a rigid wheel: the tread's two rows as Bullet's friction
+// rows of the point (rigid_tread_rows.hpp). Bullet's row k pushes body A
+// along its direction d_k to the target m_contactMotion_k of
+// d_k . (v_A - v_B): with d_k = +-t_k (+ when the wheel is body A) that is
+// t_k . v_wheel = V_k, and the force on the wheel is lambda_k t_k in both
+// cases. Row 0 runs along the traction t_0, row 1 along t_1 = e x t_0
+// (WheelFrictionConstraint's rows); the solver softens them with these
+// compliances and bounds them by mu_k times the point's normal impulse.
+void WheelTerrainAlgorithm::setTreadRows(btManifoldPoint& p, const SolverContact& c, bool wheel_is_body0,
+                                         double step_seconds) const {
+  const btVector3 normal = toBt(c.normal);
+  btVector3 along = toBt(c.friction_direction);
+  along -= normal * normal.dot(along);
+  if (along.length2() > 0) {
+    along.normalize();
+  } else {
+    btVector3 unused;
+    btPlaneSpace1(normal, along, unused);
+  }
+  const double sign = wheel_is_body0 ? 1.0 : -1.0;
+  p.m_lateralFrictionDir1 = sign * along;
+  p.m_lateralFrictionDir2 = sign * normal.cross(along);
+  p.m_contactMotion1 = c.friction_velocity[0];
+  p.m_contactMotion2 = c.friction_velocity[1];
+  p.m_frictionCFM = 0.0;
+  p.m_contactPointFlags |= BT_CONTACT_FLAG_LATERAL_FRICTION_INITIALIZED;
+  p.m_contactPointFlags &= ~BT_CONTACT_FLAG_FRICTION_ANCHOR;  // no positional term in the rows' rhs
+  RigidTreadRows::Point rows;
+  rows.point = &p;
+  for (int k = 0; k < 2; ++k) {
+    const double stiffness = c.friction_damping[static_cast<std::size_t>(k)];  // K_k (N s/m)
+    rows.compliance[k] = stiffness > 0.0 ? 1.0 / (step_seconds * stiffness) : 0.0;
+  }
+  rows.mu[0] = c.friction;
+  rows.mu[1] = c.friction_across;
+  state_.tread_rows->set(rows);
 }
 
 // The tyre's spring-damper on a contact point: Bullet derives ERP and CFM

@@ -43,6 +43,8 @@ class WheelTerrainAlgorithm : public btCollisionAlgorithm {
                         const btCollisionObjectWrapper* body1, const btDispatcherInfo& dispatch_info,
                         btManifoldResult* result);
   void setSpring(btManifoldPoint& point, const SolverContact& contact, double step_seconds) const;
+  void setTreadRows(btManifoldPoint& point, const SolverContact& contact, bool wheel_is_body0,
+                    double step_seconds) const;
   static SolverContact mergedContact(const SolverContact& earlier, const SolverContact& later);
   void writeCapContacts(const Wheel& wheel, const btCollisionObjectWrapper* body0,
                         const btCollisionObjectWrapper* body1, const btDispatcherInfo& dispatch_info,

@@ -9,10 +9,15 @@
 // leaving the ground, a load moving to another contact). Implicit mode
 // refuses a multibody world whose solver is not one of these.
 //
+// Its rigid wheels' tread rows (btRigidBody wheels in the multibody world)
+// are Bullet's own friction rows made soft, as RigidContactSolver makes
+// them (rigid_contact_solver.hpp).
+//
 // Usage: construct it in place of btMultiBodyConstraintSolver:
 //   wtc::bullet::ContactSolver solver;
 //   btMultiBodyDynamicsWorld world(&dispatcher, &broadphase, &solver, &config);
 // Constraint mode's rows keep their bounds from the start of the step.
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -21,8 +26,15 @@
 namespace wtc::bullet {
 
 class WheelFrictionConstraint;  // the plugin's own rows (internal)
+class RigidTreadRows;           // the plugin's table of a rigid wheel's rows (internal)
 
 class ContactSolver : public btMultiBodyConstraintSolver {
+ public:
+  ContactSolver();
+  ~ContactSolver() override;
+  /// The rows the plugin hands this solver for the step's rigid wheels (internal).
+  RigidTreadRows& treadRows() { return *tread_rows_; }
+
  protected:
   btScalar solveGroupCacheFriendlySetup(btCollisionObject** bodies, int num_bodies, btPersistentManifold** manifolds,
                                         int num_manifolds, btTypedConstraint** constraints, int num_constraints,
@@ -41,6 +53,7 @@ class ContactSolver : public btMultiBodyConstraintSolver {
   std::vector<Bound> bounds_;
   std::vector<std::pair<const void*, int>> normals_;                    // manifold point -> normal row, sorted
   std::vector<std::pair<int, const WheelFrictionConstraint*>> treads_;  // tread row -> its constraint
+  std::unique_ptr<RigidTreadRows> tread_rows_;
 };
 
 }  // namespace wtc::bullet

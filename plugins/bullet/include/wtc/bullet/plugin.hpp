@@ -23,9 +23,13 @@
 // manifold with the tyre's stiffness and damping (Bullet's soft contact, an
 // implicit spring) and the slip law's friction coefficient and direction.
 // Implicit mode: as constraint mode, and the tread as two compliant friction
-// rows per contact (docs/tyre-model.md): multibody links only, in a world
-// whose solver is a wtc::bullet::ContactSolver (contact_solver.hpp); a
-// btRigidBody wheel is refused.
+// rows per contact (docs/tyre-model.md). The world's solver must be WTC's: a
+// wtc::bullet::RigidContactSolver (rigid_contact_solver.hpp) in a
+// btDiscreteDynamicsWorld, a wtc::bullet::ContactSolver (contact_solver.hpp)
+// in a btMultiBodyDynamicsWorld; addWheel refuses a wheel otherwise. A
+// multibody link's rows are WTC's own constraint's; a btRigidBody's are
+// Bullet's two friction rows of its manifold point, made soft by the solver
+// (the plugin then sets SOLVER_USE_2_FRICTION_DIRECTIONS, world-wide).
 // Rolling resistance is an explicit moment in every mode.
 //
 // The plugin owns the world's internal pre-tick callback and its world user
@@ -90,7 +94,8 @@ class Plugin {
   Plugin(const Plugin&) = delete;
   Plugin& operator=(const Plugin&) = delete;
 
-  /// Registers a wheel (validated: InvalidInputError names the problem).
+  /// Registers a wheel (validated: InvalidInputError names the problem;
+  /// in implicit mode, a world whose solver is not WTC's).
   WheelId addWheel(const RigidWheel& wheel);
   WheelId addWheel(const MultiBodyWheel& wheel);
 
