@@ -46,6 +46,25 @@ Terrain valley(double slope_rad) {
   return std::move(builder).build();
 }
 
+Terrain trough(double slope_rad, double floor_width) {
+  TerrainBuilder builder;
+  const MaterialId material = builder.addMaterial({});
+  const double rise = std::tan(slope_rad), edge = 0.5 * floor_width;
+  builder.addPiece(ConvexPolyhedron::box({-edge, -1, -1}, {edge, 1, 0}), material);
+  for (const double side : {-1.0, 1.0}) {
+    builder.addPiece(ConvexPolyhedron::fromPoints({{side, -1, rise},
+                                                   {side * edge, -1, 0},
+                                                   {side, 1, rise},
+                                                   {side * edge, 1, 0},
+                                                   {side, -1, -1},
+                                                   {side * edge, -1, -1},
+                                                   {side, 1, -1},
+                                                   {side * edge, 1, -1}}),
+                     material);
+  }
+  return std::move(builder).build();
+}
+
 Eigen::Vector3d slabNormal(double slope_rad) { return {-std::sin(slope_rad), 0.0, std::cos(slope_rad)}; }
 Eigen::Vector3d downhill(double slope_rad) { return {-std::cos(slope_rad), 0.0, -std::sin(slope_rad)}; }
 

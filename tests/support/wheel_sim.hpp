@@ -38,6 +38,11 @@ Terrain flatGround(int tiles = 1, const Material& material = {});
 /// at `slope_rad` on each side (a shallow concave crease for small slopes).
 Terrain valley(double slope_rad);
 
+/// A flat floor `floor_width` wide (m) along y through the origin, with a
+/// flank rising at `slope_rad` from each of its edges: a shallow trough, in
+/// which a resting wheel has three contacts a few millimetres apart.
+Terrain trough(double slope_rad, double floor_width);
+
 /// The unit normal of tiltedSlab's top and its downhill unit direction.
 Eigen::Vector3d slabNormal(double slope_rad);
 Eigen::Vector3d downhill(double slope_rad);

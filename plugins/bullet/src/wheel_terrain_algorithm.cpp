@@ -1,6 +1,7 @@
 #include "wheel_terrain_algorithm.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <new>
 #include <span>
@@ -63,6 +64,8 @@ void WheelTerrainAlgorithm::writeWtcContacts(int wheel, bool wheel_is_body0, con
   // model solved by Bullet, hands it Z + slop so that the row's error is Z.
   const double slop = state_.mode == ContactMode::kImplicit ? state_.world.getSolverInfo().m_linearSlop : 0.0;
   const std::span<const SolverContact> contacts = w.mounted.last().contacts;
+  // What each manifold point holds this step: every contact merged into it.
+  std::array<SolverContact, MANIFOLD_CACHE_SIZE> held;
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     SolverContact c = contacts[i];
     c.depth += slop;
@@ -81,13 +84,14 @@ void WheelTerrainAlgorithm::writeWtcContacts(int wheel, bool wheel_is_body0, con
               .distance2(point_on_b);
       if (d < nearest) nearest = d, index = k;
     }
-    // A point another contact of this step already took (Bullet merged
-    // the two): its impulse is reported once, and it holds both springs.
+    // A point other contacts of this step already took (Bullet merged
+    // them): its impulse is reported once, and it holds all their springs.
     const auto first = std::find(w.manifold_point.begin(), w.manifold_point.end(), index);
     const bool taken = first != w.manifold_point.end();
     w.manifold_point.push_back(index < 0 || taken ? -1 : index);
     if (index < 0) continue;
-    if (taken) c = mergedContact(contacts[static_cast<std::size_t>(first - w.manifold_point.begin())], c);
+    if (taken) c = mergedContact(held[static_cast<std::size_t>(index)], c);
+    held[static_cast<std::size_t>(index)] = c;
     btManifoldPoint& p = manifold_->getContactPoint(index);
     // A multibody link's friction is its own constraint's
     // (wheel_friction_constraint.hpp): Bullet's would not keep the direction.
@@ -122,7 +126,8 @@ void WheelTerrainAlgorithm::writeWtcContacts(int wheel, bool wheel_is_body0, con
 // dampings, and the stiffer one's friction. Keeping the later one's alone
 // dropped a crease's full contact for its partner's small share: the towed
 // system's 5 t body sank its nose wheel 13 cm through the rough ground in
-// 0.4 s on a 1.5 % share (Bullet, implicit mode).
+// 0.4 s on a 1.5 % share (Bullet, implicit mode). A third contact merges
+// with what the point already holds, the first two (writeWtcContacts).
 SolverContact WheelTerrainAlgorithm::mergedContact(const SolverContact& earlier, const SolverContact& later) {
   SolverContact merged = earlier.stiffness > later.stiffness ? earlier : later;
   merged.ground_point = later.ground_point;
