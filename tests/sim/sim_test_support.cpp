@@ -28,7 +28,7 @@ Terrain flatGround() {
 std::vector<sim::EngineSettings> everyEngine() {
   std::vector<sim::EngineSettings> all;
   for (const std::string_view engine : sim::engineNames()) {
-    for (const ContactMode mode : {ContactMode::kForce, ContactMode::kConstraint}) {
+    for (const ContactMode mode : {ContactMode::kForce, ContactMode::kConstraint, ContactMode::kImplicit}) {
       all.push_back({.engine = std::string(engine), .mode = mode});
     }
   }

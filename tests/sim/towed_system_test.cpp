@@ -29,8 +29,9 @@ sim::RunSummary run(const sim::Scene& s) {
   return sim::runScene(s, *engine);
 }
 
-const std::vector<std::pair<const char*, const char*>> kEngines = {
-    {"bullet", "force"}, {"bullet", "constraint"}, {"ode", "force"}, {"ode", "constraint"}};
+const std::vector<std::pair<const char*, const char*>> kEngines = {{"bullet", "force"},    {"bullet", "constraint"},
+                                                                   {"bullet", "implicit"}, {"ode", "force"},
+                                                                   {"ode", "constraint"},  {"ode", "implicit"}};
 
 // A free-rolling wheel at steady speed carries no torque about its axle, so
 // its ground force F along the path balances its rolling-resistance moment

@@ -84,7 +84,7 @@ void expectSameSeries(const fs::path& a, const fs::path& b, const std::string& l
 
 TEST(UrdfEquivalenceTest, RobotLedgeSeriesFromUrdfEqualTheYamlRobotsInBothEnginesAndModes) {
   for (const char* engine : {"bullet", "ode"}) {
-    for (const char* mode : {"force", "constraint"}) {
+    for (const char* mode : {"force", "constraint", "implicit"}) {
       const std::string label = std::string(engine) + ", " + mode;
       const fs::path yaml = runScene("robot_ledge", engine, mode, "../vehicles/six_wheel_robot.yaml");
       const fs::path urdf = runScene("robot_ledge", engine, mode, "../vehicles/six_wheel_robot_urdf.yaml");
@@ -97,7 +97,7 @@ TEST(UrdfEquivalenceTest, RobotLedgeSeriesFromUrdfEqualTheYamlRobotsInBothEngine
 // (vehicles/towed_system_urdf.yaml): towed_path's series, 3 s.
 TEST(UrdfEquivalenceTest, TowedPathSeriesFromUrdfEqualTheYamlSystemsInBothEnginesAndModes) {
   for (const char* engine : {"bullet", "ode"}) {
-    for (const char* mode : {"force", "constraint"}) {
+    for (const char* mode : {"force", "constraint", "implicit"}) {
       const std::string label = std::string(engine) + ", " + mode;
       const fs::path yaml = runScene("towed_path", engine, mode, "../vehicles/towed_system.yaml");
       const fs::path urdf = runScene("towed_path", engine, mode, "../vehicles/towed_system_urdf.yaml");
