@@ -172,31 +172,33 @@ TEST(OdePluginTest, OnlyTheModesOdeSolvesCreateContactJoints) {
   }
 }
 
-// Case: in constraint mode applied() is assembled from the contact joints'
-// feedback once ODE has solved the step, and kept: asked between the near
+// Case: in constraint and implicit mode applied() is assembled from the
+// contact joints' feedback once ODE has solved the step, and kept: asked between the near
 // callback and the world step it counts the joints as no force and keeps
 // nothing, so the same step's answer after the world step is ODE's; asked
 // again, it is the same.
 TEST(OdePluginTest, AppliedForcesAreTheSolvedStepsWhenEverAsked) {
   const Terrain ground = testing::flatGround();
-  OdeWorld w(ground, ContactMode::kConstraint);
-  const double weight = 21.0 * kGravityMps2;
-  const WheelBody wheel = w.addWheelBody(21.0, {0, 0, kRadius - weight / kStiffness});
-  const ode::WheelId id = testing::addWheel(w, wheel);
-  for (int k = 0; k < 1000; ++k) w.step(kStepSeconds);
-  w.plugin->beginStep(kStepSeconds);
-  w.collide();
-  ASSERT_EQ(w.plugin->solvedContacts(id).size(), 1u);
-  EXPECT_EQ(w.plugin->applied(id).contacts.size(), 1u);
-  EXPECT_EQ(w.plugin->applied(id).force, Eigen::Vector3d::Zero()) << "before the world step: not solved yet";
-  dWorldStep(w.world, kStepSeconds);
-  dJointGroupEmpty(w.contacts);
-  const Eigen::Vector3d solved = w.plugin->solvedContacts(id)[0].force();
-  const WheelForces& after = w.plugin->applied(id);
-  EXPECT_EQ(after.force, solved);
-  EXPECT_NEAR(after.force.z(), weight, 1e-6 * weight);
-  EXPECT_EQ(w.plugin->applied(id).force, solved) << "asked again";
-  EXPECT_EQ(&w.plugin->applied(id), &after);
+  for (const ContactMode mode : {ContactMode::kConstraint, ContactMode::kImplicit}) {
+    OdeWorld w(ground, mode);
+    const double weight = 21.0 * kGravityMps2;
+    const WheelBody wheel = w.addWheelBody(21.0, {0, 0, kRadius - weight / kStiffness});
+    const ode::WheelId id = testing::addWheel(w, wheel);
+    for (int k = 0; k < 1000; ++k) w.step(kStepSeconds);
+    w.plugin->beginStep(kStepSeconds);
+    w.collide();
+    ASSERT_EQ(w.plugin->solvedContacts(id).size(), 1u) << contactModeName(mode);
+    EXPECT_EQ(w.plugin->applied(id).contacts.size(), 1u) << contactModeName(mode);
+    EXPECT_EQ(w.plugin->applied(id).force, Eigen::Vector3d::Zero()) << "before the world step: not solved yet";
+    dWorldStep(w.world, kStepSeconds);
+    dJointGroupEmpty(w.contacts);
+    const Eigen::Vector3d solved = w.plugin->solvedContacts(id)[0].force();
+    const WheelForces& after = w.plugin->applied(id);
+    EXPECT_EQ(after.force, solved) << contactModeName(mode);
+    EXPECT_NEAR(after.force.z(), weight, 1e-6 * weight) << contactModeName(mode);
+    EXPECT_EQ(w.plugin->applied(id).force, solved) << "asked again";
+    EXPECT_EQ(&w.plugin->applied(id), &after);
+  }
 }
 
 // Case: force mode relies on ODE clearing the accumulated forces at the end
@@ -239,16 +241,19 @@ TEST(OdePluginTest, StepsWhoseContactsNeverReachOdeAreCounted) {
 }
 
 // Case: ODE subtracts its contact surface layer from every depth; the plugin
-// adds it back, so the wheel still settles at m g / c (2 %).
+// adds it back, so the wheel still settles at m g / c (2 %), in both modes
+// whose contacts are ODE's joints.
 TEST(OdePluginTest, ContactSurfaceLayerDoesNotSoftenTheTyre) {
   const Terrain ground = testing::flatGround();
-  OdeWorld w(ground, ContactMode::kConstraint);
-  dWorldSetContactSurfaceLayer(w.world, 0.001);  // ODE's demos' value (m)
-  const WheelBody wheel = w.addWheelBody(21.0, {0, 0, kRadius + 0.01});
-  testing::addWheel(w, wheel);
-  for (int k = 0; k < 3000; ++k) w.step(kStepSeconds);
-  const double expected = 21.0 * kGravityMps2 / kStiffness;
-  EXPECT_NEAR(kRadius - testing::position(wheel.body).z(), expected, 0.02 * expected);
+  for (const ContactMode mode : {ContactMode::kConstraint, ContactMode::kImplicit}) {
+    OdeWorld w(ground, mode);
+    dWorldSetContactSurfaceLayer(w.world, 0.001);  // ODE's demos' value (m)
+    const WheelBody wheel = w.addWheelBody(21.0, {0, 0, kRadius + 0.01});
+    testing::addWheel(w, wheel);
+    for (int k = 0; k < 3000; ++k) w.step(kStepSeconds);
+    const double expected = 21.0 * kGravityMps2 / kStiffness;
+    EXPECT_NEAR(kRadius - testing::position(wheel.body).z(), expected, 0.02 * expected) << contactModeName(mode);
+  }
 }
 
 // Case: a correcting-velocity cap below ERP Z / h cuts the tyre's spring;

@@ -47,4 +47,11 @@ std::vector<sim::EngineSettings> everyNativeWheelBaseline() {
 
 std::string label(const sim::EngineSettings& s) { return s.engine + "_" + std::string(sim::modeName(s)); }
 
+std::vector<sim::Override> atImplicitModeStep(std::vector<sim::Override> overrides) {
+  bool implicit = false;
+  for (const sim::Override& o : overrides) implicit = implicit || (o.path == "mode" && o.value == "implicit");
+  if (implicit) overrides.push_back({"dt", kImplicitModeStep});
+  return overrides;
+}
+
 }  // namespace wtc::testing

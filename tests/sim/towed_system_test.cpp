@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "sim_test_support.hpp"
 #include "wtc/base/constants.hpp"
 #include "wtc/sim/engine_table.hpp"
 #include "wtc/sim/run.hpp"
@@ -20,8 +21,9 @@ namespace {
 namespace fs = std::filesystem;
 const fs::path kScenes = fs::path(WTC_SOURCE_DIR) / "scenes";
 
+// Implicit mode at kImplicitModeStep, the others at the scene's step.
 sim::Scene scene(const std::string& name, std::vector<sim::Override> overrides) {
-  return sim::loadScene(kScenes / (name + ".yaml"), overrides);
+  return sim::loadScene(kScenes / (name + ".yaml"), atImplicitModeStep(std::move(overrides)));
 }
 
 sim::RunSummary run(const sim::Scene& s) {

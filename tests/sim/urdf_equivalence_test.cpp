@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "scratch_path.hpp"
+#include "sim_test_support.hpp"
 #include "wtc/sim/engine_table.hpp"
 #include "wtc/sim/scene_file.hpp"
 #include "wtc/sim/scene_run.hpp"
@@ -31,10 +32,9 @@ fs::path runScene(const std::string& scene, const std::string& engine, const std
                                               fs::path(vehicle_file).stem().string());
   fs::remove_all(out);
   fs::create_directories(out);
-  const sim::Scene s =
-      sim::loadScene(kRoot / "scenes" / (scene + ".yaml"),
-                     std::vector<sim::Override>{
-                         {"engine", engine}, {"mode", mode}, {"duration", "3"}, {"vehicle.file", vehicle_file}});
+  const sim::Scene s = sim::loadScene(
+      kRoot / "scenes" / (scene + ".yaml"),
+      atImplicitModeStep({{"engine", engine}, {"mode", mode}, {"duration", "3"}, {"vehicle.file", vehicle_file}}));
   const auto e = sim::makeEngine(s.engine, *s.terrain, s.vehicle, s.placement);
   sim::runScene(s, *e, {.out_dir = out});
   return out;

@@ -155,13 +155,15 @@ TEST(VehicleScenesTest, DrivesReachCommandedPositionsAndCountSaturationPastTheir
 
 // The same scene in Bullet and ODE: the same tyre model on the same ground,
 // two integrators (Featherstone's reduced coordinates and ODE's maximal
-// ones, both semi-implicit at 0.4 ms). Over 4 s of rough ground their paths
-// agree within kAgreementM.
+// ones, both semi-implicit at 0.4 ms; implicit mode at kImplicitModeStep).
+// Over 4 s of rough ground their paths agree within kAgreementM.
 TEST(VehicleScenesTest, BulletAndOdeAgreeOnTheDistanceDrivenOverRoughGround) {
   constexpr double kAgreementM = 0.01;  // 0.4 % of the 2.6 m driven
   for (const char* mode : {"force", "constraint", "implicit"}) {
-    const sim::RunSummary bullet = run(scene("robot_rough", {{"engine", "bullet"}, {"mode", mode}, {"duration", "4"}}));
-    const sim::RunSummary ode = run(scene("robot_rough", {{"engine", "ode"}, {"mode", mode}, {"duration", "4"}}));
+    const sim::RunSummary bullet =
+        run(scene("robot_rough", atImplicitModeStep({{"engine", "bullet"}, {"mode", mode}, {"duration", "4"}})));
+    const sim::RunSummary ode =
+        run(scene("robot_rough", atImplicitModeStep({{"engine", "ode"}, {"mode", mode}, {"duration", "4"}})));
     EXPECT_GT(bullet.fields.at("distance_m"), 2.0) << mode;
     EXPECT_NEAR(bullet.fields.at("distance_m"), ode.fields.at("distance_m"), kAgreementM) << mode;
   }
