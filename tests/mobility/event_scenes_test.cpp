@@ -148,7 +148,7 @@ TEST(EventScenesTest, TheRobotTurnsInPlaceAtTheSlipLawsYawRateInEveryEngine) {
   const double expected = rate * (settings.turn.duration_s - 0.5) * 180.0 / std::numbers::pi;
   const sim::Scene base = load(eventScene(v, "turn", 0.0, settings));
   for (const std::string_view engine : sim::engineNames()) {
-    for (const char* mode : {"force", "constraint"}) {
+    for (const char* mode : {"force", "constraint", "implicit"}) {
       sim::Scene scene = base;
       scene.engine.engine = std::string(engine);
       sim::parseMode(mode, scene.engine, "test");

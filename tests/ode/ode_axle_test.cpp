@@ -1,14 +1,16 @@
 // The ODE plugin on a vehicle's axle: a body carrying two wheel bodies on
 // hinge joints (the joints carry the bearing loads, the motors drive through
 // them, the axle is each wheel's hub), 42 kg in all so that each wheel
-// carries 21 kg like the robot's; both contact modes. The Bullet plugin's
+// carries 21 kg like the robot's; every contact mode. The Bullet plugin's
 // multibody axle scenes.
+#include <cctype>
 #include <cmath>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "ode_fixture.hpp"
+#include "wtc/tyre/contact_mode.hpp"
 
 namespace wtc {
 namespace {
@@ -91,8 +93,13 @@ TEST_P(OdeAxleTest, DrivenAxleAcceleratesAsRollingPredicts) {
   EXPECT_NEAR(acceleration, expected, 0.05 * expected);
 }
 
-INSTANTIATE_TEST_SUITE_P(Modes, OdeAxleTest, ::testing::Values(ContactMode::kForce, ContactMode::kConstraint),
-                         [](const auto& info) { return info.param == ContactMode::kForce ? "Force" : "Constraint"; });
+INSTANTIATE_TEST_SUITE_P(Modes, OdeAxleTest,
+                         ::testing::Values(ContactMode::kForce, ContactMode::kConstraint, ContactMode::kImplicit),
+                         [](const auto& info) {
+                           std::string name(contactModeName(info.param));
+                           name[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(name[0])));
+                           return name;
+                         });
 
 }  // namespace
 }  // namespace wtc

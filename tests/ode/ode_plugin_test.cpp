@@ -12,6 +12,7 @@
 #include "ode_fixture.hpp"
 #include "wtc/base/error.hpp"
 #include "wtc/terrain/terrain_primitives.hpp"
+#include "wtc/tyre/contact_mode.hpp"
 
 namespace wtc {
 namespace {
@@ -26,6 +27,7 @@ constexpr double kRadius = 0.19;       // r_f (m)
 constexpr double kStiffness = 1e5;     // c (N/m)
 constexpr double kStepSeconds = 1e-3;  // (s)
 constexpr double kLedgeTop = 0.65;     // the spec's ledge (m)
+constexpr ContactMode kModes[] = {ContactMode::kForce, ContactMode::kConstraint, ContactMode::kImplicit};
 
 Terrain ledgeTerrain() {
   TerrainBuilder builder;
@@ -74,21 +76,20 @@ TEST_P(OdeTerrainShapeTest, ChassisRestsOnTheTerrainThroughOdesColliders) {
 
 // Case: a wheel lying on its side touches the ground with a cut cap, which
 // carries no tyre force (spec section 1); ODE collides the wheel's own
-// cylinder there, so it rests on its side instead of sinking, in both modes
+// cylinder there, so it rests on its side instead of sinking, in every mode
 // and on both terrain shapes.
 TEST_P(OdeTerrainShapeTest, WheelLyingOnItsSideRestsOnItsCap) {
   constexpr double kHalfTreadM = 0.06;  // the cylinder's half width (m)
   constexpr double kRestM = 0.005;      // ODE's rigid contact sinks a few mm at most (m)
   const Terrain ground = testing::flatGround();
-  for (const ContactMode mode : {ContactMode::kForce, ContactMode::kConstraint}) {
+  for (const ContactMode mode : kModes) {
     OdeWorld w(ground, mode, testing::Stepper::kStep, GetParam());
     const WheelBody wheel = w.addWheelBody(3.7, {0, 0, kHalfTreadM + 0.05});
     const dQuaternion upright_axis = {1, 0, 0, 0};  // the cylinder's axis (the axle, local z) vertical
     dBodySetQuaternion(wheel.body, upright_axis);
     const ode::WheelId id = testing::addWheel(w, wheel);
     for (int k = 0; k < 2000; ++k) w.step(kStepSeconds);
-    EXPECT_NEAR(testing::position(wheel.body).z(), kHalfTreadM, kRestM)
-        << (mode == ContactMode::kForce ? "force" : "constraint");
+    EXPECT_NEAR(testing::position(wheel.body).z(), kHalfTreadM, kRestM) << contactModeName(mode);
     EXPECT_EQ(w.plugin->forces(id).contacts.size(), 0u) << "no tyre contact on a cap";
     EXPECT_FALSE(w.plugin->state(id).capContacts().empty());
   }
@@ -146,11 +147,11 @@ TEST(OdePluginTest, WheelAgainstAnotherGeomCollidesAsItsOwnShape) {
   EXPECT_TRUE(w.plugin->forces(id).contacts.empty()) << "the block is not terrain";
 }
 
-// Case: force mode hands ODE forces, no joints; constraint mode one joint per
-// contact, whose feedback holds the weight at rest.
-TEST(OdePluginTest, OnlyConstraintModeCreatesContactJoints) {
+// Case: force mode hands ODE forces, no joints; constraint and implicit mode
+// one joint per contact, whose feedback holds the weight at rest.
+TEST(OdePluginTest, OnlyTheModesOdeSolvesCreateContactJoints) {
   const Terrain ground = testing::flatGround();
-  for (const ContactMode mode : {ContactMode::kForce, ContactMode::kConstraint}) {
+  for (const ContactMode mode : kModes) {
     OdeWorld w(ground, mode);
     const WheelBody wheel = w.addWheelBody(21.0, {0, 0, kRadius - 21.0 * kGravityMps2 / kStiffness});
     const ode::WheelId id = testing::addWheel(w, wheel);
@@ -163,38 +164,41 @@ TEST(OdePluginTest, OnlyConstraintModeCreatesContactJoints) {
     if (mode == ContactMode::kForce) {
       EXPECT_TRUE(w.plugin->solvedContacts(id).empty());
     } else {
-      ASSERT_EQ(w.plugin->solvedContacts(id).size(), 1u);
-      EXPECT_NEAR(w.plugin->solvedContacts(id)[0].normalForce(), 21.0 * kGravityMps2, 1e-6 * 21.0 * kGravityMps2);
+      ASSERT_EQ(w.plugin->solvedContacts(id).size(), 1u) << contactModeName(mode);
+      EXPECT_NEAR(w.plugin->solvedContacts(id)[0].normalForce(), 21.0 * kGravityMps2, 1e-6 * 21.0 * kGravityMps2)
+          << contactModeName(mode);
     }
     EXPECT_EQ(w.plugin->diagnostics(id).unhandled_steps, 0u);
   }
 }
 
-// Case: in constraint mode applied() is assembled from the contact joints'
-// feedback once ODE has solved the step, and kept: asked between the near
+// Case: in constraint and implicit mode applied() is assembled from the
+// contact joints' feedback once ODE has solved the step, and kept: asked between the near
 // callback and the world step it counts the joints as no force and keeps
 // nothing, so the same step's answer after the world step is ODE's; asked
 // again, it is the same.
 TEST(OdePluginTest, AppliedForcesAreTheSolvedStepsWhenEverAsked) {
   const Terrain ground = testing::flatGround();
-  OdeWorld w(ground, ContactMode::kConstraint);
-  const double weight = 21.0 * kGravityMps2;
-  const WheelBody wheel = w.addWheelBody(21.0, {0, 0, kRadius - weight / kStiffness});
-  const ode::WheelId id = testing::addWheel(w, wheel);
-  for (int k = 0; k < 1000; ++k) w.step(kStepSeconds);
-  w.plugin->beginStep(kStepSeconds);
-  w.collide();
-  ASSERT_EQ(w.plugin->solvedContacts(id).size(), 1u);
-  EXPECT_EQ(w.plugin->applied(id).contacts.size(), 1u);
-  EXPECT_EQ(w.plugin->applied(id).force, Eigen::Vector3d::Zero()) << "before the world step: not solved yet";
-  dWorldStep(w.world, kStepSeconds);
-  dJointGroupEmpty(w.contacts);
-  const Eigen::Vector3d solved = w.plugin->solvedContacts(id)[0].force();
-  const WheelForces& after = w.plugin->applied(id);
-  EXPECT_EQ(after.force, solved);
-  EXPECT_NEAR(after.force.z(), weight, 1e-6 * weight);
-  EXPECT_EQ(w.plugin->applied(id).force, solved) << "asked again";
-  EXPECT_EQ(&w.plugin->applied(id), &after);
+  for (const ContactMode mode : {ContactMode::kConstraint, ContactMode::kImplicit}) {
+    OdeWorld w(ground, mode);
+    const double weight = 21.0 * kGravityMps2;
+    const WheelBody wheel = w.addWheelBody(21.0, {0, 0, kRadius - weight / kStiffness});
+    const ode::WheelId id = testing::addWheel(w, wheel);
+    for (int k = 0; k < 1000; ++k) w.step(kStepSeconds);
+    w.plugin->beginStep(kStepSeconds);
+    w.collide();
+    ASSERT_EQ(w.plugin->solvedContacts(id).size(), 1u) << contactModeName(mode);
+    EXPECT_EQ(w.plugin->applied(id).contacts.size(), 1u) << contactModeName(mode);
+    EXPECT_EQ(w.plugin->applied(id).force, Eigen::Vector3d::Zero()) << "before the world step: not solved yet";
+    dWorldStep(w.world, kStepSeconds);
+    dJointGroupEmpty(w.contacts);
+    const Eigen::Vector3d solved = w.plugin->solvedContacts(id)[0].force();
+    const WheelForces& after = w.plugin->applied(id);
+    EXPECT_EQ(after.force, solved) << contactModeName(mode);
+    EXPECT_NEAR(after.force.z(), weight, 1e-6 * weight) << contactModeName(mode);
+    EXPECT_EQ(w.plugin->applied(id).force, solved) << "asked again";
+    EXPECT_EQ(&w.plugin->applied(id), &after);
+  }
 }
 
 // Case: force mode relies on ODE clearing the accumulated forces at the end
@@ -237,16 +241,19 @@ TEST(OdePluginTest, StepsWhoseContactsNeverReachOdeAreCounted) {
 }
 
 // Case: ODE subtracts its contact surface layer from every depth; the plugin
-// adds it back, so the wheel still settles at m g / c (2 %).
+// adds it back, so the wheel still settles at m g / c (2 %), in both modes
+// whose contacts are ODE's joints.
 TEST(OdePluginTest, ContactSurfaceLayerDoesNotSoftenTheTyre) {
   const Terrain ground = testing::flatGround();
-  OdeWorld w(ground, ContactMode::kConstraint);
-  dWorldSetContactSurfaceLayer(w.world, 0.001);  // ODE's demos' value (m)
-  const WheelBody wheel = w.addWheelBody(21.0, {0, 0, kRadius + 0.01});
-  testing::addWheel(w, wheel);
-  for (int k = 0; k < 3000; ++k) w.step(kStepSeconds);
-  const double expected = 21.0 * kGravityMps2 / kStiffness;
-  EXPECT_NEAR(kRadius - testing::position(wheel.body).z(), expected, 0.02 * expected);
+  for (const ContactMode mode : {ContactMode::kConstraint, ContactMode::kImplicit}) {
+    OdeWorld w(ground, mode);
+    dWorldSetContactSurfaceLayer(w.world, 0.001);  // ODE's demos' value (m)
+    const WheelBody wheel = w.addWheelBody(21.0, {0, 0, kRadius + 0.01});
+    testing::addWheel(w, wheel);
+    for (int k = 0; k < 3000; ++k) w.step(kStepSeconds);
+    const double expected = 21.0 * kGravityMps2 / kStiffness;
+    EXPECT_NEAR(kRadius - testing::position(wheel.body).z(), expected, 0.02 * expected) << contactModeName(mode);
+  }
 }
 
 // Case: a correcting-velocity cap below ERP Z / h cuts the tyre's spring;
@@ -329,7 +336,7 @@ TEST(OdePluginTest, ListenerHearsEveryWheelOncePerStep) {
 
 // Case: a wheel whose body state goes NaN: beginStep applies nothing for it
 // (no force, no contact joint), counts it and tells the listener, and
-// throws nothing; the other wheel keeps its tyre force. Both modes.
+// throws nothing; the other wheel keeps its tyre force. Every mode.
 TEST(OdePluginTest, NonFiniteWheelIsSkippedCountedAndReportedWithoutThrowing) {
   struct Recorder : ode::WheelListener {
     void onWheelStep(ode::WheelId wheel, const WheelForces&, double) override { ++steps[wheel]; }
@@ -337,7 +344,7 @@ TEST(OdePluginTest, NonFiniteWheelIsSkippedCountedAndReportedWithoutThrowing) {
     int steps[2] = {0, 0}, skipped[2] = {0, 0};
   };
   const Terrain ground = testing::flatGround();
-  for (const ContactMode mode : {ContactMode::kForce, ContactMode::kConstraint}) {
+  for (const ContactMode mode : kModes) {
     Recorder recorder;
     OdeWorld w(ground, mode);
     const WheelBody good = w.addWheelBody(3.7, {0, 0, kRadius - 0.001});
@@ -354,10 +361,10 @@ TEST(OdePluginTest, NonFiniteWheelIsSkippedCountedAndReportedWithoutThrowing) {
       EXPECT_EQ(dBodyGetNumJoints(bad.body), 0);
       dJointGroupEmpty(w.contacts);
     }
-    EXPECT_EQ(recorder.skipped[1], 5);
-    EXPECT_EQ(recorder.steps[1], 1);
-    EXPECT_EQ(recorder.skipped[0], 0);
-    EXPECT_EQ(recorder.steps[0], 6);
+    EXPECT_EQ(recorder.skipped[1], 5) << contactModeName(mode);
+    EXPECT_EQ(recorder.steps[1], 1) << contactModeName(mode);
+    EXPECT_EQ(recorder.skipped[0], 0) << contactModeName(mode);
+    EXPECT_EQ(recorder.steps[0], 6) << contactModeName(mode);
     EXPECT_EQ(w.plugin->state(1).nonFiniteSteps(), 5u);
     EXPECT_TRUE(w.plugin->forces(1).contacts.empty());
     EXPECT_FALSE(w.plugin->forces(0).contacts.empty());

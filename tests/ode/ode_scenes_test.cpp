@@ -3,9 +3,10 @@
 // force for every engine): settling on both terrain shapes, the bounce, the
 // traction seen through the contact joints' feedback, the spinning wheel in
 // the friction cone, the ledge foot, tiles, the parked sweep over steps; in
-// both contact modes and with dWorldQuickStep where the solver matters.
+// every contact mode and with dWorldQuickStep where the solver matters.
 // docs/ode-plugin.md has the measured numbers.
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -15,6 +16,7 @@
 
 #include "ode_fixture.hpp"
 #include "wtc/terrain/terrain_primitives.hpp"
+#include "wtc/tyre/contact_mode.hpp"
 #include "wtc/tyre/traction_law.hpp"
 
 namespace wtc {
@@ -47,16 +49,21 @@ struct ModeCase {
   Stepper stepper;
 };
 
+// "Force_Step", "Implicit_QuickStep": the mode's name, capitalised, and the stepper.
 std::string caseName(const ModeCase& c) {
-  return std::string(c.mode == ContactMode::kForce ? "Force" : "Constraint") +
-         (c.stepper == Stepper::kStep ? "_Step" : "_QuickStep");
+  std::string mode(contactModeName(c.mode));
+  mode[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(mode[0])));
+  return mode + (c.stepper == Stepper::kStep ? "_Step" : "_QuickStep");
 }
 
-const ModeCase kStepModes[] = {{ContactMode::kForce, Stepper::kStep}, {ContactMode::kConstraint, Stepper::kStep}};
-const ModeCase kAllModes[] = {{ContactMode::kForce, Stepper::kStep},
-                              {ContactMode::kConstraint, Stepper::kStep},
-                              {ContactMode::kForce, Stepper::kQuickStep},
-                              {ContactMode::kConstraint, Stepper::kQuickStep}};
+constexpr ContactMode kModes[] = {ContactMode::kForce, ContactMode::kConstraint, ContactMode::kImplicit};
+const ModeCase kStepModes[] = {{ContactMode::kForce, Stepper::kStep},
+                               {ContactMode::kConstraint, Stepper::kStep},
+                               {ContactMode::kImplicit, Stepper::kStep}};
+const ModeCase kAllModes[] = {
+    {ContactMode::kForce, Stepper::kStep},           {ContactMode::kConstraint, Stepper::kStep},
+    {ContactMode::kImplicit, Stepper::kStep},        {ContactMode::kForce, Stepper::kQuickStep},
+    {ContactMode::kConstraint, Stepper::kQuickStep}, {ContactMode::kImplicit, Stepper::kQuickStep}};
 
 class OdeSceneTest : public ::testing::TestWithParam<ModeCase> {
  protected:
@@ -97,7 +104,8 @@ INSTANTIATE_TEST_SUITE_P(ModesAndSolvers, OdeSettleTest, ::testing::ValuesIn(kAl
 // energy on average, but each contact begins and ends between steps, and
 // the rebound wanders by that order (the core's own Euler loop,
 // tests/support/wheel_sim, wanders by +-2.3 mm over 200 s at 1 ms, 0.03 mm
-// at 0.2 ms). The implicit spring (constraint mode) can only lose energy.
+// at 0.2 ms). The implicit spring (constraint and implicit mode) can only
+// lose energy.
 TEST_P(OdeSceneTest, UndampedBounceDoesNotGainEnergy) {
   const Terrain ground = testing::flatGround();
   OdeWorld w(ground, GetParam().mode, GetParam().stepper);
@@ -118,7 +126,8 @@ TEST_P(OdeSceneTest, UndampedBounceDoesNotGainEnergy) {
 }
 
 // The largest |R_xy| / R_z over the wheel's contacts in the last step: the
-// tyre model's forces in force mode, the contact joints' in constraint mode.
+// tyre model's forces in force mode, the contact joints' in the modes ODE
+// solves (constraint and implicit).
 double tractionRatio(const OdeWorld& w, ode::WheelId id) {
   double ratio = 0.0;
   if (w.plugin->mode() == ContactMode::kForce) {
@@ -185,8 +194,8 @@ TEST_P(OdeSceneTest, SpinningWheelTractionStaysInTheFrictionCone) {
 }
 
 // Case: the wheel pushed (100 N) into the foot of the 0.65 m ledge touches
-// the ground and the face: two contacts, two contact joints in constraint
-// mode. Without traction the split is determinate: the face carries the
+// the ground and the face: two contacts, two contact joints in the modes
+// ODE solves. Without traction the split is determinate: the face carries the
 // push, the ground the weight, each within 1 %.
 TEST_P(OdeSceneTest, LedgeCornerGivesTwoContacts) {
   TerrainBuilder builder;
@@ -203,10 +212,11 @@ TEST_P(OdeSceneTest, LedgeCornerGivesTwoContacts) {
     w.step(kStepSeconds);
   }
   // Each contact's normal force, as ODE applied it: the model's (force
-  // mode) or the joint's (constraint mode); sorted face (e along +x) first.
+  // mode) or the joint's (constraint and implicit mode); sorted face (e
+  // along +x) first.
   std::vector<std::pair<Vector3d, double>> normals;
   for (const ContactForce& c : w.plugin->forces(id).contacts) normals.push_back({c.contact.e, c.normal_force});
-  if (GetParam().mode == ContactMode::kConstraint) {
+  if (engineSolvesContacts(GetParam().mode)) {
     ASSERT_EQ(w.plugin->solvedContacts(id).size(), 2u) << "one joint per contact";
     normals.clear();
     for (const ode::SolvedContact& c : w.plugin->solvedContacts(id))
@@ -297,9 +307,7 @@ std::vector<ParkedCase> parkedCases() {
   for (const ModeCase& solver : kStepModes) {
     for (const double h : {1e-4, 5e-4, 1e-3, 2e-3}) cases.push_back({solver, h});
   }
-  for (const ContactMode mode : {ContactMode::kForce, ContactMode::kConstraint}) {
-    cases.push_back({{mode, Stepper::kQuickStep}, 1e-3});
-  }
+  for (const ContactMode mode : kModes) cases.push_back({{mode, Stepper::kQuickStep}, 1e-3});
   return cases;
 }
 

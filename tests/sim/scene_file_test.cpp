@@ -12,6 +12,7 @@
 #include "vehicle/controllers/controller_types.hpp"
 #include "wtc/base/error.hpp"
 #include "wtc/sim/engine_table.hpp"
+#include "wtc/tyre/contact_mode.hpp"
 #include "wtc/tyre/traction_law.hpp"
 
 namespace wtc::sim {
@@ -100,6 +101,19 @@ TEST(SceneFileTest, CasesPickParametersAndMuPeakSetsS2) {
     EXPECT_EQ(m.mu_max, dynamic) << which;
     EXPECT_NEAR(tractionPeak(m), peak, 1e-9) << which;
     EXPECT_NEAR(m.s2, 4.44, 0.01) << which;  // the spec's s2 for a static/dynamic ratio of 5/3
+  }
+}
+
+// Case: every WTC contact mode is a scene's mode, by the name summaries and
+// run directories use.
+TEST(SceneFileTest, EveryWtcContactModeIsASceneModeByItsName) {
+  const fs::path file = kScenes / "robot_straight.yaml";
+  for (const ContactMode mode : {ContactMode::kForce, ContactMode::kConstraint, ContactMode::kImplicit}) {
+    const std::string name(contactModeName(mode));
+    const sim::Scene s = loadScene(file, std::vector<Override>{parseOverride("mode=" + name)});
+    EXPECT_EQ(s.engine.mode, mode) << name;
+    EXPECT_FALSE(s.engine.native_wheels) << name;
+    EXPECT_EQ(sim::modeName(s.engine), name);
   }
 }
 

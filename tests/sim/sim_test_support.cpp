@@ -28,7 +28,7 @@ Terrain flatGround() {
 std::vector<sim::EngineSettings> everyEngine() {
   std::vector<sim::EngineSettings> all;
   for (const std::string_view engine : sim::engineNames()) {
-    for (const ContactMode mode : {ContactMode::kForce, ContactMode::kConstraint}) {
+    for (const ContactMode mode : {ContactMode::kForce, ContactMode::kConstraint, ContactMode::kImplicit}) {
       all.push_back({.engine = std::string(engine), .mode = mode});
     }
   }
@@ -46,5 +46,12 @@ std::vector<sim::EngineSettings> everyNativeWheelBaseline() {
 }
 
 std::string label(const sim::EngineSettings& s) { return s.engine + "_" + std::string(sim::modeName(s)); }
+
+std::vector<sim::Override> atImplicitModeStep(std::vector<sim::Override> overrides) {
+  bool implicit = false;
+  for (const sim::Override& o : overrides) implicit = implicit || (o.path == "mode" && o.value == "implicit");
+  if (implicit) overrides.push_back({"dt", kImplicitModeStep});
+  return overrides;
+}
 
 }  // namespace wtc::testing

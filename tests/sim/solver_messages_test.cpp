@@ -21,15 +21,18 @@ namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
 constexpr double kWheelRateRadps = 0.5;  // the free fall's wheels, within their drives' cap
+// The modes whose contacts are rows of the engine's solver.
+constexpr const char* kSolvedModes[] = {"constraint", "implicit"};
 
 // The robot of robot_straight dropped from 2 m with its six wheels commanded
 // to 0.5 rad/s from the start (within their drives' cap: no other warning),
-// for 5 steps of 0.4 ms, in constraint mode: every drive a row of ODE's LCP.
-// ODE's direct solver (dWorldStep) gave up on the first step: the robot's
-// sliders rest exactly on their lower stops (docs/hard-cases.md).
-sim::Scene freeFallWithSpunUpWheels(const std::string& engine) {
+// for 5 steps of 0.4 ms, in constraint or implicit mode: every drive a row
+// of ODE's LCP. ODE's direct solver (dWorldStep) gave up on the first step
+// in constraint mode: the robot's sliders rest exactly on their lower stops
+// (docs/hard-cases.md).
+sim::Scene freeFallWithSpunUpWheels(const std::string& engine, const std::string& mode) {
   const sim::Override overrides[] = {{"engine", engine},
-                                     {"mode", "constraint"},
+                                     {"mode", mode},
                                      {"duration", "0.002"},
                                      {"vehicle.translation", "[-3, 0, 2]"},
                                      {"controller.schedules.0.points", "[[0, 0.5]]"}};
@@ -56,25 +59,31 @@ sim::Scene standingOnASlabGivenTwice() {
 
 // The free fall's first step, which ODE's direct solver gave up on (1 step,
 // at t = 0.0004 s, before issue 40), is solved: no message, and the drives
-// hold the wheels at their rate from the first step on.
+// hold the wheels at their rate from the first step on; in implicit mode
+// too, whose tread rows are compliant friction rows of the same LCP.
 TEST(SolverMessagesTest, OdesDirectSolverSolvesTheFreeFallWithSpunUpWheelsFromItsFirstStep) {
-  const sim::Scene scene = freeFallWithSpunUpWheels("ode");
-  const auto engine = sim::makeEngine(scene.engine, *scene.terrain, scene.vehicle, scene.placement);
-  const auto controller = scene.make_controller();
-  sim::Run run(*engine, controller.get(), scene.vehicle_effects);
-  run.step();
-  for (const int w : scene.vehicle.wheels()) EXPECT_NEAR(engine->jointRate(w), kWheelRateRadps, 1e-6);
-  EXPECT_TRUE(engine->solverMessages().empty());
+  for (const char* mode : kSolvedModes) {
+    const sim::Scene scene = freeFallWithSpunUpWheels("ode", mode);
+    const auto engine = sim::makeEngine(scene.engine, *scene.terrain, scene.vehicle, scene.placement);
+    const auto controller = scene.make_controller();
+    sim::Run run(*engine, controller.get(), scene.vehicle_effects);
+    run.step();
+    for (const int w : scene.vehicle.wheels()) EXPECT_NEAR(engine->jointRate(w), kWheelRateRadps, 1e-6) << mode;
+    EXPECT_TRUE(engine->solverMessages().empty()) << mode;
+  }
 }
 
 TEST(SolverMessagesTest, AnEngineWhoseSolverSaidNothingAddsNoWarning) {
   for (const char* engine_name : {"bullet", "ode", "ode_quick"}) {
-    const sim::Scene scene = freeFallWithSpunUpWheels(engine_name);
-    const auto engine = sim::makeEngine(scene.engine, *scene.terrain, scene.vehicle, scene.placement);
-    const sim::RunSummary summary = sim::runScene(scene, *engine);
-    EXPECT_EQ(summary.steps, 5u);
-    EXPECT_TRUE(engine->solverMessages().empty()) << engine_name;
-    for (const std::string& w : summary.warnings) EXPECT_THAT(w, ::testing::Not(HasSubstr("ODE:"))) << engine_name;
+    for (const char* mode : kSolvedModes) {
+      const std::string label = std::string(engine_name) + ", " + mode;
+      const sim::Scene scene = freeFallWithSpunUpWheels(engine_name, mode);
+      const auto engine = sim::makeEngine(scene.engine, *scene.terrain, scene.vehicle, scene.placement);
+      const sim::RunSummary summary = sim::runScene(scene, *engine);
+      EXPECT_EQ(summary.steps, 5u) << label;
+      EXPECT_TRUE(engine->solverMessages().empty()) << label;
+      for (const std::string& w : summary.warnings) EXPECT_THAT(w, ::testing::Not(HasSubstr("ODE:"))) << label;
+    }
   }
 }
 

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "sim_test_support.hpp"
 #include "wtc/base/constants.hpp"
 #include "wtc/sim/engine_table.hpp"
 #include "wtc/sim/run.hpp"
@@ -20,8 +21,9 @@ namespace {
 namespace fs = std::filesystem;
 const fs::path kScenes = fs::path(WTC_SOURCE_DIR) / "scenes";
 
+// Implicit mode at kImplicitModeStep, the others at the scene's step.
 sim::Scene scene(const std::string& name, std::vector<sim::Override> overrides) {
-  return sim::loadScene(kScenes / (name + ".yaml"), overrides);
+  return sim::loadScene(kScenes / (name + ".yaml"), atImplicitModeStep(std::move(overrides)));
 }
 
 sim::RunSummary run(const sim::Scene& s) {
@@ -29,8 +31,9 @@ sim::RunSummary run(const sim::Scene& s) {
   return sim::runScene(s, *engine);
 }
 
-const std::vector<std::pair<const char*, const char*>> kEngines = {
-    {"bullet", "force"}, {"bullet", "constraint"}, {"ode", "force"}, {"ode", "constraint"}};
+const std::vector<std::pair<const char*, const char*>> kEngines = {{"bullet", "force"},    {"bullet", "constraint"},
+                                                                   {"bullet", "implicit"}, {"ode", "force"},
+                                                                   {"ode", "constraint"},  {"ode", "implicit"}};
 
 // A free-rolling wheel at steady speed carries no torque about its axle, so
 // its ground force F along the path balances its rolling-resistance moment

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "scratch_path.hpp"
+#include "sim_test_support.hpp"
 #include "wtc/sim/engine_table.hpp"
 #include "wtc/sim/scene_file.hpp"
 #include "wtc/sim/scene_run.hpp"
@@ -31,10 +32,9 @@ fs::path runScene(const std::string& scene, const std::string& engine, const std
                                               fs::path(vehicle_file).stem().string());
   fs::remove_all(out);
   fs::create_directories(out);
-  const sim::Scene s =
-      sim::loadScene(kRoot / "scenes" / (scene + ".yaml"),
-                     std::vector<sim::Override>{
-                         {"engine", engine}, {"mode", mode}, {"duration", "3"}, {"vehicle.file", vehicle_file}});
+  const sim::Scene s = sim::loadScene(
+      kRoot / "scenes" / (scene + ".yaml"),
+      atImplicitModeStep({{"engine", engine}, {"mode", mode}, {"duration", "3"}, {"vehicle.file", vehicle_file}}));
   const auto e = sim::makeEngine(s.engine, *s.terrain, s.vehicle, s.placement);
   sim::runScene(s, *e, {.out_dir = out});
   return out;
@@ -84,7 +84,7 @@ void expectSameSeries(const fs::path& a, const fs::path& b, const std::string& l
 
 TEST(UrdfEquivalenceTest, RobotLedgeSeriesFromUrdfEqualTheYamlRobotsInBothEnginesAndModes) {
   for (const char* engine : {"bullet", "ode"}) {
-    for (const char* mode : {"force", "constraint"}) {
+    for (const char* mode : {"force", "constraint", "implicit"}) {
       const std::string label = std::string(engine) + ", " + mode;
       const fs::path yaml = runScene("robot_ledge", engine, mode, "../vehicles/six_wheel_robot.yaml");
       const fs::path urdf = runScene("robot_ledge", engine, mode, "../vehicles/six_wheel_robot_urdf.yaml");
@@ -97,7 +97,7 @@ TEST(UrdfEquivalenceTest, RobotLedgeSeriesFromUrdfEqualTheYamlRobotsInBothEngine
 // (vehicles/towed_system_urdf.yaml): towed_path's series, 3 s.
 TEST(UrdfEquivalenceTest, TowedPathSeriesFromUrdfEqualTheYamlSystemsInBothEnginesAndModes) {
   for (const char* engine : {"bullet", "ode"}) {
-    for (const char* mode : {"force", "constraint"}) {
+    for (const char* mode : {"force", "constraint", "implicit"}) {
       const std::string label = std::string(engine) + ", " + mode;
       const fs::path yaml = runScene("towed_path", engine, mode, "../vehicles/towed_system.yaml");
       const fs::path urdf = runScene("towed_path", engine, mode, "../vehicles/towed_system_urdf.yaml");

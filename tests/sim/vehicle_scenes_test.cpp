@@ -4,15 +4,17 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <numbers>
 
 #include "sim_test_support.hpp"
-#include "wtc/sim/scene_file.hpp"
 #include "wtc/sim/engine_table.hpp"
 #include "wtc/sim/run.hpp"
+#include "wtc/sim/scene_file.hpp"
 #include "wtc/sim/scene_run.hpp"
 #include "wtc/terrain/terrain_primitives.hpp"
+#include "wtc/tyre/contact_mode.hpp"
 #include "wtc/tyre/traction_law.hpp"
 #include "wtc/vehicle/controllers/schedule_controller.hpp"
 
@@ -75,7 +77,9 @@ TEST(VehicleScenesTest, EveryShippedSceneRunsShortenedInEveryEngineWithoutNaN) {
 // carry the weight's slope component: mu(s) sum R_z = m g sin(theta) with
 // sum R_z = m g cos(theta), i.e. mu(s) = tan(theta) (rolling resistance is
 // a moment the drives take, not a force). With s = |V_P| / |V_O| and
-// V_P = v - r_f omega (spec), the speed is v = r_f omega / (1 + s).
+// V_P = v - r_f omega (spec), the speed is v = r_f omega / (1 + s). In
+// force mode, and in implicit mode, which is the same tyre model solved by
+// the engine.
 TEST(VehicleScenesTest, DrivingUpAnInclineReachesTheSpeedTheSlipLawPredicts) {
   constexpr double kSlope = 8.0 * std::numbers::pi / 180.0, kRate = 3.0;  // rad, rad/s
   constexpr double kSpeedTolerance = 1e-4;  // relative: a two-hundredth of the slip's effect (s is about 0.02)
@@ -94,24 +98,30 @@ TEST(VehicleScenesTest, DrivingUpAnInclineReachesTheSpeedTheSlipLawPredicts) {
   const double expected = r_f * kRate / (1.0 + lo);
   const Eigen::Isometry3d placement =
       Eigen::Translation3d(3.0, 0.0, 3.0 * std::tan(kSlope)) * Eigen::AngleAxisd(-kSlope, Eigen::Vector3d::UnitY());
+  EXPECT_LT(expected, r_f * kRate * (1.0 - 5.0 * kSpeedTolerance));  // the slip is visible at this tolerance
   for (const std::string_view name : sim::engineNames()) {
-    const auto engine = sim::makeEngine({.engine = std::string(name)}, ground, robot, placement);
-    std::vector<vehicle::DriveSchedule> schedules(2);
-    schedules[0] = {.drives = {}, .mode = vehicle::DriveMode::kVelocity, .points = {{0.0, 0.0}, {1.0, kRate}}};
-    schedules[1] = {.drives = {}, .mode = vehicle::DriveMode::kPosition, .points = {{0.0, 0.0}}};
-    for (const int b : robot.actuated())
-      schedules[robot.bodies[b].wheel ? 0 : 1].drives.push_back(robot.bodies[b].name);
-    vehicle::ScheduleController drive(robot, schedules, "test");
-    sim::Run run(*engine, &drive);
-    while (run.time() < 3.0) run.step();
-    // The speed along the slope, averaged over one more second.
-    const Eigen::Vector3d along(std::cos(kSlope), 0.0, std::sin(kSlope));
-    const Eigen::Vector3d from = run.state().bodies.front().pose.translation();
-    const double t0 = run.time();
-    while (run.time() < 4.0) run.step();
-    const double speed = (run.state().bodies.front().pose.translation() - from).dot(along) / (run.time() - t0);
-    EXPECT_NEAR(speed, expected, kSpeedTolerance * expected) << name << ", slip " << lo;
-    EXPECT_LT(expected, r_f * kRate * (1.0 - 5.0 * kSpeedTolerance));  // the slip is visible at this tolerance
+    for (const ContactMode mode : {ContactMode::kForce, ContactMode::kImplicit}) {
+      const std::string label = std::string(name) + "_" + std::string(contactModeName(mode));
+      const auto engine = sim::makeEngine({.engine = std::string(name), .mode = mode}, ground, robot, placement);
+      std::vector<vehicle::DriveSchedule> schedules(2);
+      schedules[0] = {.drives = {}, .mode = vehicle::DriveMode::kVelocity, .points = {{0.0, 0.0}, {1.0, kRate}}};
+      schedules[1] = {.drives = {}, .mode = vehicle::DriveMode::kPosition, .points = {{0.0, 0.0}}};
+      for (const int b : robot.actuated())
+        schedules[robot.bodies[b].wheel ? 0 : 1].drives.push_back(robot.bodies[b].name);
+      vehicle::ScheduleController drive(robot, schedules, "test");
+      sim::Run run(*engine, &drive);
+      while (run.time() < 3.0) run.step();
+      // The speed along the slope, averaged over one more second.
+      const Eigen::Vector3d along(std::cos(kSlope), 0.0, std::sin(kSlope));
+      const Eigen::Vector3d from = run.state().bodies.front().pose.translation();
+      const double t0 = run.time();
+      while (run.time() < 4.0) run.step();
+      const double speed = (run.state().bodies.front().pose.translation() - from).dot(along) / (run.time() - t0);
+      char error[32];
+      std::snprintf(error, sizeof error, "%.3g", speed / expected - 1.0);
+      RecordProperty(label + "_speed_error", error);
+      EXPECT_NEAR(speed, expected, kSpeedTolerance * expected) << label << ", slip " << lo;
+    }
   }
 }
 
@@ -145,13 +155,15 @@ TEST(VehicleScenesTest, DrivesReachCommandedPositionsAndCountSaturationPastTheir
 
 // The same scene in Bullet and ODE: the same tyre model on the same ground,
 // two integrators (Featherstone's reduced coordinates and ODE's maximal
-// ones, both semi-implicit at 0.4 ms). Over 4 s of rough ground their paths
-// agree within kAgreementM.
+// ones, both semi-implicit at 0.4 ms; implicit mode at kImplicitModeStep).
+// Over 4 s of rough ground their paths agree within kAgreementM.
 TEST(VehicleScenesTest, BulletAndOdeAgreeOnTheDistanceDrivenOverRoughGround) {
   constexpr double kAgreementM = 0.01;  // 0.4 % of the 2.6 m driven
-  for (const char* mode : {"force", "constraint"}) {
-    const sim::RunSummary bullet = run(scene("robot_rough", {{"engine", "bullet"}, {"mode", mode}, {"duration", "4"}}));
-    const sim::RunSummary ode = run(scene("robot_rough", {{"engine", "ode"}, {"mode", mode}, {"duration", "4"}}));
+  for (const char* mode : {"force", "constraint", "implicit"}) {
+    const sim::RunSummary bullet =
+        run(scene("robot_rough", atImplicitModeStep({{"engine", "bullet"}, {"mode", mode}, {"duration", "4"}})));
+    const sim::RunSummary ode =
+        run(scene("robot_rough", atImplicitModeStep({{"engine", "ode"}, {"mode", mode}, {"duration", "4"}})));
     EXPECT_GT(bullet.fields.at("distance_m"), 2.0) << mode;
     EXPECT_NEAR(bullet.fields.at("distance_m"), ode.fields.at("distance_m"), kAgreementM) << mode;
   }
@@ -175,19 +187,24 @@ double turned(const char* engine, const char* mode, const char* dt) {
 // speed of the middle wheels (near the pivot) is nearly zero. The turn is
 // set by the slip law at the scrubbing wheels; it must not depend on the
 // step or the engine: ODE force mode at 0.4 ms is the reference (273.37 deg
-// in 6 s), and ODE at 2 ms, ODE constraint mode and Bullet in both modes at
-// 0.4 and 2 ms agree within 1 % (measured: within 0.03 %). Bullet's
-// multibody constraint mode turned 90.8 deg before its wheels got their own
+// in 6 s), and ODE at 2 ms, ODE constraint and implicit mode and Bullet in
+// every mode at 0.4 and 2 ms agree within 1 % (measured: within 0.03 %).
+// Bullet's multibody constraint mode turned 90.8 deg before its wheels got their own
 // friction rows (wheel_friction_constraint.hpp): its solver replaced every
 // contact's friction directions with a fixed frame (btPlaneSpace1) and
 // capped each at mu N; now 273.39 deg at 0.4 ms, 273.35 at 2 ms.
 TEST(VehicleScenesTest, ASkidSteerTurnsInPlaceAlikeAtEveryStepInEveryEngine) {
   const double reference = turned("ode", "force", "0.0004");
+  RecordProperty("reference_yaw_deg", std::to_string(reference));
   for (const char* dt : {"0.0004", "0.002"}) {
-    EXPECT_NEAR(turned("ode", "force", dt), reference, 0.01 * std::abs(reference)) << dt;
-    EXPECT_NEAR(turned("ode", "constraint", dt), reference, 0.01 * std::abs(reference)) << dt;
-    EXPECT_NEAR(turned("bullet", "force", dt), reference, 0.01 * std::abs(reference)) << dt;
-    EXPECT_NEAR(turned("bullet", "constraint", dt), reference, 0.01 * std::abs(reference)) << dt;
+    for (const char* engine : {"ode", "bullet"}) {
+      for (const char* mode : {"force", "constraint", "implicit"}) {
+        if (engine == std::string("ode") && mode == std::string("force") && dt == std::string("0.0004")) continue;
+        const double yaw = turned(engine, mode, dt);
+        RecordProperty(std::string(engine) + "_" + mode + "_" + dt + "_yaw_deg", std::to_string(yaw));
+        EXPECT_NEAR(yaw, reference, 0.01 * std::abs(reference)) << engine << "/" << mode << " at " << dt << " s";
+      }
+    }
   }
 }
 

@@ -251,16 +251,19 @@ TEST(TyreDynamicsTest, StepBeyondTheExplicitSpringLimitIsReported) {
   restOnSlab(soft, 0.0);
   EXPECT_TRUE(step(model, flat, 2e-3, soft).normal_stability.stable());
   EXPECT_EQ(soft.state.unstableSteps(), 0u);
-  // Case: in constraint mode the engine solves the spring implicitly: the
-  // same stiff tyre is reported with its step number but never unstable.
-  const TyreModel implicit(EffectSet::full(), ContactMode::kConstraint);
-  SimWheel engine;
-  engine.description.tyre.radial_stiffness = 1e7;
-  restOnSlab(engine, 0.0);
-  const WheelForces& g = step(implicit, flat, 2e-3, engine);
-  EXPECT_TRUE(g.normal_stability.stable());
-  EXPECT_NEAR(g.normal_stability.step_number, 2e-3 * std::sqrt(1e7 / 3.7), 1e-12);
-  EXPECT_EQ(engine.state.unstableSteps(), 0u);
+  // Case: in constraint and implicit mode the engine solves the spring
+  // implicitly: the same stiff tyre is reported with its step number but
+  // never unstable.
+  for (const ContactMode mode : {ContactMode::kConstraint, ContactMode::kImplicit}) {
+    const TyreModel solved(EffectSet::full(), mode);
+    SimWheel engine;
+    engine.description.tyre.radial_stiffness = 1e7;
+    restOnSlab(engine, 0.0);
+    const WheelForces& g = step(solved, flat, 2e-3, engine);
+    EXPECT_TRUE(g.normal_stability.stable()) << contactModeName(mode);
+    EXPECT_NEAR(g.normal_stability.step_number, 2e-3 * std::sqrt(1e7 / 3.7), 1e-12) << contactModeName(mode);
+    EXPECT_EQ(engine.state.unstableSteps(), 0u) << contactModeName(mode);
+  }
 }
 
 }  // namespace
