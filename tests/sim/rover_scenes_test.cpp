@@ -66,7 +66,9 @@ Outcome run(const std::string& scene, const std::string& engine, const std::stri
   const auto e = sim::makeEngine(s.engine, *s.terrain, s.vehicle, s.placement);
   DifferentialWatch watch(s.vehicle);
   Outcome out;
-  out.summary = sim::runScene(s, *e, {.observer = &watch});
+  sim::RunOptions options;
+  options.observer = &watch;
+  out.summary = sim::runScene(s, *e, options);
   out.mimic_error = watch.error();
   out.bar_travel = watch.travel();
   return out;

@@ -131,7 +131,9 @@ TEST(SolverMessagesTest, AStepOdeGaveUpOnLeavesNoDriveWithoutForce) {
       ++failed;
       for (const int b : drives) {
         const std::string& name = scene.vehicle.bodies[b].name;
-        if (std::abs(effort[b]) > kCarriedNm) EXPECT_GT(std::abs(engine->motorEffort(b)), kWithoutForceNm) << name;
+        if (std::abs(effort[b]) > kCarriedNm) {
+          EXPECT_GT(std::abs(engine->motorEffort(b)), kWithoutForceNm) << name;
+        }
         EXPECT_TRUE(std::isfinite(engine->jointRate(b))) << name;
         EXPECT_LT(std::abs(engine->jointRate(b)), kLargestRate) << name;
       }

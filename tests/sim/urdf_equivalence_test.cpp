@@ -36,7 +36,9 @@ fs::path runScene(const std::string& scene, const std::string& engine, const std
       kRoot / "scenes" / (scene + ".yaml"),
       atImplicitModeStep({{"engine", engine}, {"mode", mode}, {"duration", "3"}, {"vehicle.file", vehicle_file}}));
   const auto e = sim::makeEngine(s.engine, *s.terrain, s.vehicle, s.placement);
-  sim::runScene(s, *e, {.out_dir = out});
+  sim::RunOptions options;
+  options.out_dir = out;
+  sim::runScene(s, *e, options);
   return out;
 }
 
