@@ -1,5 +1,7 @@
 #include "frictionless_contact_solver.hpp"
 
+#include <tuple>
+
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 
@@ -26,8 +28,10 @@ bool frictionless(const btPersistentManifold& manifold) {
 
 void FrictionlessContactSolver::convertContacts(btPersistentManifold** manifolds, int count,
                                                 const btContactSolverInfo& info) {
-  frictionless_rows_.resize(0);
+  last_.swap(points_);
+  points_.clear();
   skipped_ = 0;
+  warm_started_ = 0;
   // One manifold at a time, in order, so that the normal rows keep
   // Bullet's order; the multibody constraints' rows once, at the end.
   const int constraints = m_tmpNumMultiBodyConstraints;
@@ -63,7 +67,7 @@ void FrictionlessContactSolver::convertNormalRows(btPersistentManifold& manifold
       p.m_prevRHS = 0;
       continue;
     }
-    frictionless_rows_.push_back(m_multiBodyNormalContactConstraints.size());
+    points_.push_back({&manifold, j, m_multiBodyNormalContactConstraints.size(), 0, 0});
     btMultiBodySolverConstraint& row = m_multiBodyNormalContactConstraints.expandNonInitializing();
     row.m_orgConstraint = nullptr;
     row.m_orgDofIndex = -1;
@@ -76,6 +80,14 @@ void FrictionlessContactSolver::convertNormalRows(btPersistentManifold& manifold
     row.m_originalContactPoint = &p;
     btScalar relaxation = 1;
     setupMultiBodyContactConstraint(row, p.m_normalWorldOnB, p.m_appliedImpulse, p, info, relaxation, false);
+    if (warm_start_) {
+      for (const Point& last : last_) {
+        if (last.manifold == &manifold && last.index == j) {
+          warmStart(row, last.impulse, last.rhs, info);
+          break;
+        }
+      }
+    }
     row.m_frictionIndex = -1;  // the empty pair, in the finish
     btPlaneSpace1(p.m_normalWorldOnB, p.m_lateralFrictionDir1, p.m_lateralFrictionDir2);
     p.m_lateralFrictionDir1.normalize();
@@ -85,7 +97,7 @@ void FrictionlessContactSolver::convertNormalRows(btPersistentManifold& manifold
           (info.m_solverMode & SOLVER_DISABLE_VELOCITY_DEPENDENT_FRICTION_DIRECTION) != 0) {
         p.m_contactPointFlags |= BT_CONTACT_FLAG_LATERAL_FRICTION_INITIALIZED;
       }
-    } else {
+    } else if (!warm_start_) {
       row.m_appliedImpulse = 0;
       row.m_appliedPushImpulse = 0;
     }
@@ -93,9 +105,32 @@ void FrictionlessContactSolver::convertNormalRows(btPersistentManifold& manifold
   }
 }
 
+// Bullet 3.24's articulated warm start of a contact row
+// (setupMultiBodyContactConstraint), without its rigid-body branch (a
+// WTC contact's other body is the static terrain).
+void FrictionlessContactSolver::warmStart(btMultiBodySolverConstraint& row, btScalar impulse_before,
+                                          btScalar rhs_before, const btContactSolverInfo& info) {
+  row.m_appliedImpulse = 0;
+  if (btFabs(rhs_before) > 1e-5 && rhs_before < 2 * row.m_rhs && row.m_rhs < 2 * rhs_before) {
+    row.m_appliedImpulse =
+        btMax(btScalar(0), impulse_before / rhs_before * row.m_rhs * info.m_articulatedWarmstartingFactor);
+  }
+  if (row.m_appliedImpulse == 0) return;
+  ++warm_started_;
+  const btScalar impulse = row.m_appliedImpulse;
+  for (const auto& [body, jacobian, velocities] :
+       {std::tuple{row.m_multiBodyA, row.m_jacAindex, row.m_deltaVelAindex},
+        std::tuple{row.m_multiBodyB, row.m_jacBindex, row.m_deltaVelBindex}}) {
+    if (body == nullptr) continue;
+    btScalar* response = &m_data.m_deltaVelocitiesUnitImpulse[jacobian];
+    body->applyDeltaVeeMultiDof2(response, impulse);  // the velocity change (Bullet applies it after the solve)
+    applyDeltaVee(response, impulse, velocities, body->getNumDofs() + 6);  // what the sweeps see
+  }
+}
+
 btScalar FrictionlessContactSolver::solveGroupCacheFriendlyFinish(btCollisionObject** bodies, int count,
                                                                   const btContactSolverInfo& info) {
-  if (frictionless_rows_.size() > 0) {
+  if (!points_.empty()) {
     const int empty = m_multiBodyFrictionContactConstraints.size();
     for (int k = 0; k < 2; ++k) {
       btMultiBodySolverConstraint& none = m_multiBodyFrictionContactConstraints.expand();  // no body, no constraint
@@ -103,10 +138,12 @@ btScalar FrictionlessContactSolver::solveGroupCacheFriendlyFinish(btCollisionObj
       none.m_appliedPushImpulse = 0;
       none.m_frictionIndex = -1;
     }
-    for (int i = 0; i < frictionless_rows_.size(); ++i) {
-      m_multiBodyNormalContactConstraints[frictionless_rows_[i]].m_frictionIndex = empty;
+    for (Point& point : points_) {
+      btMultiBodySolverConstraint& row = m_multiBodyNormalContactConstraints[point.row];
+      row.m_frictionIndex = empty;
+      point.impulse = row.m_appliedImpulse;  // the warm start's, next solve
+      point.rhs = row.m_rhs;
     }
-    frictionless_rows_.resize(0);
   }
   return btMultiBodyConstraintSolver::solveGroupCacheFriendlyFinish(bodies, count, info);
 }
