@@ -16,6 +16,7 @@
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 #include <btBulletDynamicsCommon.h>
 
+#include "frictionless_contact_solver.hpp"
 #include "native_wheels.hpp"
 #include "sim/engine_base.hpp"
 #include "src/conversions.hpp"
@@ -106,10 +107,15 @@ btCollisionShape* makeShape(const Body& body, const sim::EngineSettings& setting
 }
 
 // Implicit mode's tread rows follow their contacts' normal impulses
-// (ContactSolver, which the plugin requires for it); the other modes keep
-// Bullet's own solver, with nothing to pair at each step.
+// (ContactSolver, which the plugin requires for it). Constraint mode's WTC
+// contacts carry no friction of their own (WheelFrictionConstraint's rows
+// do): FrictionlessContactSolver makes them no friction rows, the same
+// solution without two dead rows per contact, and starts their normal rows
+// from the last step's impulses (fewer sweeps to the same residual). Force
+// mode keeps Bullet's own solver.
 std::unique_ptr<btMultiBodyConstraintSolver> makeSolver(ContactMode mode) {
   if (mode == ContactMode::kImplicit) return std::make_unique<ContactSolver>();
+  if (mode == ContactMode::kConstraint) return std::make_unique<FrictionlessContactSolver>(true);
   return std::make_unique<btMultiBodyConstraintSolver>();
 }
 
