@@ -1,4 +1,4 @@
-// FrictionlessContactSolver (plugins/bullet/sim/src) against Bullet's own
+// FrictionlessContactSolver (wtc/bullet/frictionless_contact_solver.hpp) against Bullet's own
 // btMultiBodyConstraintSolver: a frictionless contact's friction rows are
 // not made, and the motion is bit for bit Bullet's, for a frictionless
 // multibody and, in the same world, one with friction.
@@ -13,7 +13,7 @@
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 #include <btBulletDynamicsCommon.h>
 
-#include "frictionless_contact_solver.hpp"
+#include "wtc/bullet/frictionless_contact_solver.hpp"
 
 namespace {
 

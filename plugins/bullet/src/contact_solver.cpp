@@ -8,7 +8,8 @@
 
 namespace wtc::bullet {
 
-ContactSolver::ContactSolver() : tread_rows_(std::make_unique<RigidTreadRows>()) {}
+ContactSolver::ContactSolver(bool warm_start)
+    : FrictionlessContactSolver(warm_start), tread_rows_(std::make_unique<RigidTreadRows>()) {}
 
 ContactSolver::~ContactSolver() = default;
 
@@ -18,7 +19,7 @@ btScalar ContactSolver::solveGroupCacheFriendlySetup(btCollisionObject** bodies,
                                                      btPersistentManifold** manifolds, int num_manifolds,
                                                      btTypedConstraint** constraints, int num_constraints,
                                                      const btContactSolverInfo& info, btIDebugDraw* debug_drawer) {
-  const btScalar result = btMultiBodyConstraintSolver::solveGroupCacheFriendlySetup(
+  const btScalar result = FrictionlessContactSolver::solveGroupCacheFriendlySetup(
       bodies, num_bodies, manifolds, num_manifolds, constraints, num_constraints, info, debug_drawer);
   // The rigid wheels' rows are Bullet's (rigid_tread_rows.hpp).
   tread_rows_->soften(m_tmpSolverContactConstraintPool, m_tmpSolverContactFrictionConstraintPool, m_tmpSolverBodyPool,
@@ -66,8 +67,8 @@ btScalar ContactSolver::solveSingleIteration(int iteration, btCollisionObject** 
     row.m_lowerLimit = -b.mu * normal;
     row.m_upperLimit = b.mu * normal;
   }
-  return btMultiBodyConstraintSolver::solveSingleIteration(iteration, bodies, num_bodies, manifolds, num_manifolds,
-                                                           constraints, num_constraints, info, debug_drawer);
+  return FrictionlessContactSolver::solveSingleIteration(iteration, bodies, num_bodies, manifolds, num_manifolds,
+                                                         constraints, num_constraints, info, debug_drawer);
 }
 
 }  // namespace wtc::bullet

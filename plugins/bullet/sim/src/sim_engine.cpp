@@ -16,7 +16,6 @@
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 #include <btBulletDynamicsCommon.h>
 
-#include "frictionless_contact_solver.hpp"
 #include "native_wheels.hpp"
 #include "sim/engine_base.hpp"
 #include "src/conversions.hpp"
@@ -26,6 +25,7 @@
 #include "wtc/base/constants.hpp"
 #include "wtc/base/error.hpp"
 #include "wtc/bullet/contact_solver.hpp"
+#include "wtc/bullet/frictionless_contact_solver.hpp"
 #include "wtc/bullet/plugin.hpp"
 #include "wtc/bullet/terrain_object.hpp"
 #include "wtc/sim/sim_constants.hpp"
@@ -114,7 +114,7 @@ btCollisionShape* makeShape(const Body& body, const sim::EngineSettings& setting
 // from the last step's impulses (fewer sweeps to the same residual). Force
 // mode keeps Bullet's own solver.
 std::unique_ptr<btMultiBodyConstraintSolver> makeSolver(ContactMode mode) {
-  if (mode == ContactMode::kImplicit) return std::make_unique<ContactSolver>();
+  if (mode == ContactMode::kImplicit) return std::make_unique<ContactSolver>(true);
   if (mode == ContactMode::kConstraint) return std::make_unique<FrictionlessContactSolver>(true);
   return std::make_unique<btMultiBodyConstraintSolver>();
 }

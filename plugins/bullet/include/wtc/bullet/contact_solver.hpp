@@ -13,6 +13,9 @@
 // are Bullet's own friction rows made soft, as RigidContactSolver makes
 // them (rigid_contact_solver.hpp).
 //
+// It is a FrictionlessContactSolver: it makes no friction rows for the
+// frictionless contacts of WTC's multibody wheels.
+//
 // Usage: construct it in place of btMultiBodyConstraintSolver:
 //   wtc::bullet::ContactSolver solver;
 //   btMultiBodyDynamicsWorld world(&dispatcher, &broadphase, &solver, &config);
@@ -21,16 +24,18 @@
 #include <utility>
 #include <vector>
 
-#include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
+#include "wtc/bullet/frictionless_contact_solver.hpp"
 
 namespace wtc::bullet {
 
 class WheelFrictionConstraint;  // the plugin's own rows (internal)
 class RigidTreadRows;           // the plugin's table of a rigid wheel's rows (internal)
 
-class ContactSolver : public btMultiBodyConstraintSolver {
+class ContactSolver : public FrictionlessContactSolver {
  public:
-  ContactSolver();
+  /// `warm_start`: FrictionlessContactSolver's, for the normal rows of WTC's
+  /// multibody wheels.
+  explicit ContactSolver(bool warm_start = false);
   ~ContactSolver() override;
   /// The rows the plugin hands this solver for the step's rigid wheels (internal).
   RigidTreadRows& treadRows() { return *tread_rows_; }

@@ -1,4 +1,4 @@
-#include "frictionless_contact_solver.hpp"
+#include "wtc/bullet/frictionless_contact_solver.hpp"
 
 #include <tuple>
 

@@ -1,11 +1,13 @@
 #pragma once
-// Bullet's multibody solver without the friction rows of frictionless
-// contacts (internal to the Bullet sim engine).
+// wtc::bullet::FrictionlessContactSolver: Bullet's multibody solver without
+// the friction rows of frictionless contacts, optionally starting their
+// normal rows from the last step's impulses. Use it in place of
+// btMultiBodyConstraintSolver for WTC wheels that are multibody links in
+// constraint mode; ContactSolver (contact_solver.hpp, implicit mode) is one.
 //
-// Why: in constraint mode a WTC wheel that is a multibody link hands
-// Bullet its contacts with no friction (m_combinedFriction = 0): their
-// friction is WheelFrictionConstraint's own rows (the plugin's
-// wheel_friction_constraint.hpp). Bullet's btMultiBodyConstraintSolver::
+// Why: a WTC wheel that is a multibody link hands Bullet its contacts with
+// no friction (m_combinedFriction = 0): their friction is
+// WheelFrictionConstraint's own rows. Bullet's btMultiBodyConstraintSolver::
 // convertMultiBodyContact still makes two friction rows for every contact
 // point (SOLVER_USE_2_FRICTION_DIRECTIONS, which a multibody world keeps),
 // each bounded by mu N = 0: each costs an articulated-body solve to set up
@@ -22,13 +24,17 @@
 // row's two friction rows (their impulses become the point's lateral
 // impulses): those rows point at one pair of empty rows, added after the
 // sweeps, with no body and no impulse.
+//
+// Usage:
+//   wtc::bullet::FrictionlessContactSolver solver(/*warm_start=*/true);
+//   btMultiBodyDynamicsWorld world(&dispatcher, &broadphase, &solver, &config);
 #include <vector>
 
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 
 namespace wtc::bullet {
 
-class FrictionlessContactSolver final : public btMultiBodyConstraintSolver {
+class FrictionlessContactSolver : public btMultiBodyConstraintSolver {
  public:
   /// With `warm_start`, a frictionless manifold's normal rows start from
   /// the impulse its point of the same index had at the last solve
