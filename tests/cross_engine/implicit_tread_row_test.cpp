@@ -79,10 +79,23 @@ void checkRows(const WheelForces& model, const WheelForces& applied,
   }
 }
 
-void report(const std::string& what, const RowGaps& g) {
+// Prints and records a run's gaps, and expects rows off their bounds, each
+// within `tolerance` of R_z.
+void expectRowsHeld(const std::string& what, const RowGaps& g, double tolerance) {
   std::cout << what << ": worst |R - K (v - V+)| / R_z " << g.worst << " over " << g.free << " free row steps ("
             << g.bounded << " on their bound)\n";
   ::testing::Test::RecordProperty(what + " worst_over_load", std::to_string(g.worst));
+  EXPECT_GT(g.free, 0) << what;
+  EXPECT_LT(g.worst, tolerance) << what;
+}
+
+// A rigid body's velocity at a point p (Bullet's vectors): v + w x (p - c).
+std::function<Eigen::Vector3d(const Eigen::Vector3d&)> rigidVelocityAt(const btVector3& velocity, const btVector3& spin,
+                                                                       const btVector3& centre) {
+  return [=](const Eigen::Vector3d& p) {
+    const btVector3 v = velocity + spin.cross(btVector3(p.x(), p.y(), p.z()) - centre);
+    return Eigen::Vector3d(v.x(), v.y(), v.z());
+  };
 }
 
 // The wheel settles on flat ground, then slides off at (0.05, 0.03) m/s
@@ -105,13 +118,11 @@ TEST(ImplicitTreadRowTest, OdeSolvesTheRowsTheModelGave) {
         checkRows(
             sim->forces(), sim->applied(), [&](const Eigen::Vector3d&) { return v; }, gaps);
       }
-      const std::string what = engineName(engine) + ", h = " + std::to_string(h * 1e3) + " ms";
-      report(what, gaps);
-      EXPECT_GT(gaps.free, 0) << what;
       // dWorldStep's Dantzig LCP solves to round-off, but the joint that
       // locks the rotation has ODE's world CFM (1e-10): the wheel turns by
       // what that lets through. QuickStep's 20 iterations leave a residual.
-      EXPECT_LT(gaps.worst, engine == Engine::kOde ? 1e-7 : 1e-4) << what;
+      expectRowsHeld(engineName(engine) + ", h = " + std::to_string(h * 1e3) + " ms", gaps,
+                     engine == Engine::kOde ? 1e-7 : 1e-4);
     }
   }
 }
@@ -133,18 +144,9 @@ TEST(ImplicitTreadRowTest, BulletsMultiBodySolverSolvesTheRowsTheModelGave) {
       const btVector3 centre = body.getBasePos();
       step();
       const btVector3 velocity = body.getBaseVel(), spin = body.getBaseOmega() + btVector3(0, body.getJointVel(0), 0);
-      checkRows(
-          sim.plugin->forces(0), sim.plugin->applied(0),
-          [&](const Eigen::Vector3d& p) {
-            const btVector3 v = velocity + spin.cross(btVector3(p.x(), p.y(), p.z()) - centre);
-            return Eigen::Vector3d(v.x(), v.y(), v.z());
-          },
-          gaps);
+      checkRows(sim.plugin->forces(0), sim.plugin->applied(0), rigidVelocityAt(velocity, spin, centre), gaps);
     }
-    const std::string what = "Bullet multibody, h = " + std::to_string(h * 1e3) + " ms";
-    report(what, gaps);
-    EXPECT_GT(gaps.free, 0) << what;
-    EXPECT_LT(gaps.worst, 1e-6) << what;
+    expectRowsHeld("Bullet multibody, h = " + std::to_string(h * 1e3) + " ms", gaps, 1e-6);
   }
 }
 
@@ -199,19 +201,11 @@ void expectBulletSolvesTheRigidWheelsRows(const std::string& name) {
         const btVector3 centre = body.getCenterOfMassPosition();
         step();
         const btVector3 velocity = body.getLinearVelocity(), spin = body.getAngularVelocity();
-        checkRows(
-            sim.plugin->forces(0), sim.plugin->applied(0),
-            [&](const Eigen::Vector3d& p) {
-              const btVector3 v = velocity + spin.cross(btVector3(p.x(), p.y(), p.z()) - centre);
-              return Eigen::Vector3d(v.x(), v.y(), v.z());
-            },
-            gaps);
+        checkRows(sim.plugin->forces(0), sim.plugin->applied(0), rigidVelocityAt(velocity, spin, centre), gaps);
       }
-      const std::string what =
-          name + (wheel_first ? ", wheel as body 0" : ", wheel as body 1") + ", h = " + std::to_string(h * 1e3) + " ms";
-      report(what, gaps);
-      EXPECT_GT(gaps.free, 0) << what;
-      EXPECT_LT(gaps.worst, 1e-6) << what;
+      expectRowsHeld(
+          name + (wheel_first ? ", wheel as body 0" : ", wheel as body 1") + ", h = " + std::to_string(h * 1e3) + " ms",
+          gaps, 1e-6);
     }
   }
 }
