@@ -28,6 +28,11 @@ namespace detail {
 /// flush(): a killed process leaves whole rows up to its last write.
 class CsvFile {
  public:
+  CsvFile() = default;
+  CsvFile(const CsvFile&) = delete;
+  CsvFile& operator=(const CsvFile&) = delete;
+  /// Writes the rows still held: a run that ends by an exception keeps them.
+  ~CsvFile() { flush(); }
   void open(const std::filesystem::path& path);
   bool isOpen() const { return file_ != nullptr; }
   CsvFile& operator<<(double value);

@@ -30,6 +30,7 @@ void FrictionlessContactSolver::convertContacts(btPersistentManifold** manifolds
                                                 const btContactSolverInfo& info) {
   last_.swap(points_);
   points_.clear();
+  next_last_ = 0;
   skipped_ = 0;
   warm_started_ = 0;
   // One manifold at a time, in order, so that the normal rows keep
@@ -81,12 +82,7 @@ void FrictionlessContactSolver::convertNormalRows(btPersistentManifold& manifold
     btScalar relaxation = 1;
     setupMultiBodyContactConstraint(row, p.m_normalWorldOnB, p.m_appliedImpulse, p, info, relaxation, false);
     if (warm_start_) {
-      for (const Point& last : last_) {
-        if (last.manifold == &manifold && last.index == j) {
-          warmStart(row, last.impulse, last.rhs, info);
-          break;
-        }
-      }
+      if (const Point* last = lastOf(manifold, j)) warmStart(row, last->impulse, last->rhs, info);
     }
     row.m_frictionIndex = -1;  // the empty pair, in the finish
     btPlaneSpace1(p.m_normalWorldOnB, p.m_lateralFrictionDir1, p.m_lateralFrictionDir2);
@@ -103,6 +99,22 @@ void FrictionlessContactSolver::convertNormalRows(btPersistentManifold& manifold
     }
     skipped_ += (info.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS) != 0 ? 2 : 1;
   }
+}
+
+// The points come in the last solve's order while the manifolds do (the
+// wheels refill theirs each step): the search starts after the last match
+// and goes round once, so a step's lookups are linear in its points, not
+// quadratic.
+const FrictionlessContactSolver::Point* FrictionlessContactSolver::lastOf(const btPersistentManifold& manifold,
+                                                                          int index) {
+  for (std::size_t n = 0; n < last_.size(); ++n) {
+    const std::size_t i = (next_last_ + n) % last_.size();
+    if (last_[i].manifold == &manifold && last_[i].index == index) {
+      next_last_ = i + 1;
+      return &last_[i];
+    }
+  }
+  return nullptr;
 }
 
 // Bullet 3.24's articulated warm start of a contact row

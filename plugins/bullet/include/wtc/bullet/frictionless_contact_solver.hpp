@@ -72,7 +72,10 @@ class FrictionlessContactSolver : public btMultiBodyConstraintSolver {
     int index, row;
     btScalar impulse, rhs;
   };
+  // The last solve's entry of a manifold's point, or null.
+  const Point* lastOf(const btPersistentManifold& manifold, int index);
   std::vector<Point> points_, last_;
+  std::size_t next_last_ = 0;  // where lastOf starts looking
   bool warm_start_;
   int skipped_ = 0;
   int warm_started_ = 0;
