@@ -28,40 +28,38 @@ Terrain flatGround(int tiles, const Material& material) {
   return std::move(builder).build();
 }
 
-Terrain valley(double slope_rad) {
-  TerrainBuilder builder;
-  const MaterialId material = builder.addMaterial({});
+namespace {
+// Two flanks along y rising at `slope_rad` from x = -edge and x = +edge
+// (m) to x = -+1 m, each a prism down to z = -1 m.
+void addFlanks(TerrainBuilder& builder, MaterialId material, double slope_rad, double edge) {
   const double rise = std::tan(slope_rad);
   for (const double side : {-1.0, 1.0}) {
+    const double inner = side * edge;
     builder.addPiece(ConvexPolyhedron::fromPoints({{side, -1, rise},
-                                                   {0, -1, 0},
+                                                   {inner, -1, 0},
                                                    {side, 1, rise},
-                                                   {0, 1, 0},
+                                                   {inner, 1, 0},
                                                    {side, -1, -1},
-                                                   {0, -1, -1},
+                                                   {inner, -1, -1},
                                                    {side, 1, -1},
-                                                   {0, 1, -1}}),
+                                                   {inner, 1, -1}}),
                      material);
   }
+}
+}  // namespace
+
+Terrain valley(double slope_rad) {
+  TerrainBuilder builder;
+  addFlanks(builder, builder.addMaterial({}), slope_rad, 0.0);
   return std::move(builder).build();
 }
 
 Terrain trough(double slope_rad, double floor_width) {
   TerrainBuilder builder;
   const MaterialId material = builder.addMaterial({});
-  const double rise = std::tan(slope_rad), edge = 0.5 * floor_width;
+  const double edge = 0.5 * floor_width;
   builder.addPiece(ConvexPolyhedron::box({-edge, -1, -1}, {edge, 1, 0}), material);
-  for (const double side : {-1.0, 1.0}) {
-    builder.addPiece(ConvexPolyhedron::fromPoints({{side, -1, rise},
-                                                   {side * edge, -1, 0},
-                                                   {side, 1, rise},
-                                                   {side * edge, 1, 0},
-                                                   {side, -1, -1},
-                                                   {side * edge, -1, -1},
-                                                   {side, 1, -1},
-                                                   {side * edge, 1, -1}}),
-                     material);
-  }
+  addFlanks(builder, material, slope_rad, edge);
   return std::move(builder).build();
 }
 
