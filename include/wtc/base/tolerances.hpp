@@ -125,6 +125,13 @@ namespace wtc::tolerance {
 /// few ulps), far below any step a user means (1e-9 of a 25 s run is 25 ns).
 inline constexpr double kWholeStepsRelative = 1e-9;
 
+/// A drive whose solved force is within this fraction of its cap is at its
+/// cap (dimensionless): a capped row's force is the cap itself, read back
+/// through the joint's feedback and its unit axis with a few ulps of
+/// roundoff; far below any margin a controller leaves (ODE's drive rows,
+/// plugins/ode/sim/src/drive_rows.hpp).
+inline constexpr double kDriveAtCapRelative = 1e-9;
+
 }  // namespace wtc::tolerance
 
 namespace wtc::tolerance {

@@ -29,10 +29,11 @@ void setStop(dJointID joint, int parameter, double value) {
 }  // namespace
 
 DirectStepper::DirectStepper(dWorldID world, std::vector<dBodyID> bodies, std::vector<StoppedJoint> stopped,
-                             std::function<void(double)> quick_step)
+                             DriveRows drives, std::function<void(double)> quick_step)
     : world_(world),
       bodies_(std::move(bodies)),
       stopped_(std::move(stopped)),
+      drives_(std::move(drives)),
       quick_step_(std::move(quick_step)),
       saved_(bodies_.size()) {
   released_.reserve(stopped_.size());
@@ -40,6 +41,24 @@ DirectStepper::DirectStepper(dWorldID world, std::vector<dBodyID> bodies, std::v
 
 DirectStepOutcome DirectStepper::step(double h, MessageLog& log, std::span<const dJointID> duplicate_contacts) {
   save();
+  if (drives_.release()) {
+    const bool gave_up = gaveUp(h, attempt_);
+    const bool within = drives_.restore();  // every cap back in place
+    attempt_.clear();
+    if (!gave_up && within) {
+      drives_.noteCaps();
+      return DirectStepOutcome::kSolved;
+    }
+    restore();
+  }
+  const DirectStepOutcome outcome = solveCapped(h, log, duplicate_contacts);
+  drives_.noteCaps();
+  return outcome;
+}
+
+// The step with every drive's cap, as dWorldStep alone would solve it, and
+// again where ODE gave up (direct_step.hpp's 1. and 2.).
+DirectStepOutcome DirectStepper::solveCapped(double h, MessageLog& log, std::span<const dJointID> duplicate_contacts) {
   if (!gaveUp(h, attempt_)) return DirectStepOutcome::kSolved;
   restore();
   if (!released_.empty() || !duplicate_contacts.empty()) {

@@ -38,6 +38,11 @@
 //      Gauss-Seidel does not stop early), instead of the rows ODE zeroed.
 //      ODE's messages of that step are counted as before
 //      (Engine::solverMessages, summary.json's warnings).
+//
+// Before all of this, a step is solved with the drives' rows that were
+// within their caps taken as equations (drive_rows.hpp); it stands when
+// ODE solved it and each of those drives came out within its cap, and is
+// otherwise solved as above from the same state.
 #include <ode/ode.h>
 
 #include <array>
@@ -45,6 +50,7 @@
 #include <span>
 #include <vector>
 
+#include "drive_rows.hpp"
 #include "wtc/ode/message_log.hpp"
 
 namespace wtc::ode {
@@ -66,9 +72,10 @@ enum class DirectStepOutcome {
 class DirectStepper {
  public:
   /// Steps `world`, whose bodies are `bodies` (every body of the world) and
-  /// whose joints with stops are `stopped`. `quick_step(h)` runs
-  /// dWorldQuickStep on the world (the caller keeps its random seed).
-  DirectStepper(dWorldID world, std::vector<dBodyID> bodies, std::vector<StoppedJoint> stopped,
+  /// whose joints with stops are `stopped` and whose drives are `drives`.
+  /// `quick_step(h)` runs dWorldQuickStep on the world (the caller keeps
+  /// its random seed).
+  DirectStepper(dWorldID world, std::vector<dBodyID> bodies, std::vector<StoppedJoint> stopped, DriveRows drives,
                 std::function<void(double)> quick_step);
 
   /// One step of `h` seconds. `duplicate_contacts` are contact joints of
@@ -89,6 +96,7 @@ class DirectStepper {
     double value;
   };
 
+  DirectStepOutcome solveCapped(double h, MessageLog& log, std::span<const dJointID> duplicate_contacts);
   void save();
   void restore();
   void findRestingStops();                  // into released_, before the step
@@ -98,6 +106,7 @@ class DirectStepper {
   dWorldID world_;
   std::vector<dBodyID> bodies_;
   std::vector<StoppedJoint> stopped_;
+  DriveRows drives_;
   std::function<void(double)> quick_step_;
   std::vector<BodyState> saved_;        // the bodies before the step (sized once)
   std::vector<ReleasedStop> released_;  // the stops resting at the step's start (sized once)

@@ -240,16 +240,7 @@ class SimEngine final : public sim::EngineBase {
   double motorEffort(int body) const override {
     const Ref& r = refs_.at(body);
     if (r.wheel_drive) return r.effort;
-    if (r.motor == nullptr) return 0.0;
-    Eigen::Vector3d axis;
-    if (dJointGetType(r.motor) == dJointTypeAMotor) {
-      dVector3 a;
-      dJointGetAMotorAxis(r.motor, 0, a);
-      return toEigen(r.feedback.t1).dot(toEigen(a));
-    }
-    dVector3 a;
-    dJointGetLMotorAxis(r.motor, 0, a);
-    return toEigen(r.feedback.f1).dot(toEigen(a));
+    return r.motor == nullptr ? 0.0 : motorForce(r.motor, r.feedback);
   }
   std::vector<sim::SolverMessage> solverMessages() const override {
     std::vector<sim::SolverMessage> said;
@@ -284,20 +275,23 @@ class SimEngine final : public sim::EngineBase {
     quickstep_seed_ = dRandGetSeed();
   }
 
-  // dWorldStep with what it needs to solve a step again: every body, and
-  // the joints with stops (a resting one can make its LCP give up).
+  // dWorldStep with what it needs to solve a step again: every body, the
+  // joints with stops (a resting one can make its LCP give up) and the
+  // drives (solved first without their caps: drive_rows.hpp).
   void makeDirectStepper() {
     std::vector<dBodyID> bodies;
     std::vector<StoppedJoint> stopped;
+    DriveRows drives;
     for (std::size_t i = 0; i < refs_.size(); ++i) {
       bodies.push_back(refs_[i].body);
+      if (refs_[i].motor != nullptr) drives.add(refs_[i].motor, &refs_[i].feedback);
       const Body& b = vehicle().bodies[i];
       if (b.parent < 0 || !b.joint.limits) continue;
       if (b.joint.type == JointType::kRevolute || b.joint.type == JointType::kPrismatic) {
         stopped.push_back({.joint = refs_[i].joint, .lower = b.joint.limits->lower, .upper = b.joint.limits->upper});
       }
     }
-    direct_ = std::make_unique<DirectStepper>(world_, std::move(bodies), std::move(stopped),
+    direct_ = std::make_unique<DirectStepper>(world_, std::move(bodies), std::move(stopped), std::move(drives),
                                               [this](double h) { quickStep(h); });
   }
 
