@@ -4,16 +4,20 @@
 // climb without tipping over.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include "wtc/base/error.hpp"
-#include "wtc/sim/scene_file.hpp"
-#include "wtc/vehicle/vehicle_file.hpp"
 #include "wtc/sim/engine_table.hpp"
+#include "wtc/sim/run.hpp"
+#include "wtc/sim/scene_file.hpp"
 #include "wtc/sim/scene_run.hpp"
+#include "wtc/sim/step_count.hpp"
 #include "wtc/vehicle/controllers/climb_controller.hpp"
+#include "wtc/vehicle/vehicle_file.hpp"
 
 namespace wtc::testing {
 namespace {
@@ -88,6 +92,47 @@ TEST(LedgeClimbTest, AVehicleWithoutTheRobotsSectionsIsRefusedByName) {
   EXPECT_THROW(vehicle::ClimbController(robot, {.approach_speed = 2.0}, "c"),
                InvalidInputError);  // above 5 rad/s x 0.19 m
   EXPECT_THROW(vehicle::ClimbController(robot, {.crawl_speed = -0.1}, "c"), InvalidInputError);
+}
+
+// ODE's direct step solves the drives not at their caps lately first as
+// equations, without the caps (plugins/ode/sim/src/drive_rows.hpp), and
+// the step again with every cap where one came out over it. No drive ever
+// carries more than its cap, and the drives that reach it carry it: the
+// 0.60 m climb in force mode at 0.4 ms, whose folds work at their caps on
+// and off while the front section folds up onto the ledge (the sections'
+// drives are rows; the wheels' are solved in closed form), and in implicit
+// mode at 5 ms, whose middle wheels' drives (rows in that mode) saturate on
+// the top. Keeping a step solved without the caps breaks the first check
+// (a fold's drive then carried 3.9 times its cap, a wheel's 326).
+TEST(LedgeClimbTest, OdesDrivesNeverCarryMoreThanTheirCapAndTheSaturatedOnesCarryIt) {
+  constexpr double kAtCap = 1e-9;  // of the cap: a capped row's force read back through the feedback
+  struct Case {
+    const char *mode, *dt, *duration;
+  };
+  for (const Case& c : {Case{"force", "0.0004", "6"}, Case{"implicit", "0.005", "18"}}) {
+    const sim::Scene s = sim::loadScene(
+        kRoot / "scenes" / "robot_ledge.yaml",
+        std::vector<sim::Override>{
+            {"engine", "ode"}, {"mode", c.mode}, {"dt", c.dt}, {"ledge_height", "0.60"}, {"duration", c.duration}});
+    const auto engine = sim::makeEngine(s.engine, *s.terrain, s.vehicle, s.placement);
+    const auto controller = s.make_controller();
+    sim::Run run(*engine, controller.get(), s.vehicle_effects);
+    double worst = 0.0;  // the largest |effort| / cap of any drive in any step
+    long at_cap = 0;     // drive-steps at the cap
+    const std::uint64_t steps = sim::stepCount(s.duration_seconds, s.engine.step_seconds);
+    while (run.steps() < steps) {
+      run.step();
+      for (const int b : s.vehicle.actuated()) {
+        const vehicle::MotorTarget& target = run.targets()[b];
+        if (!target.active) continue;
+        const double share = std::abs(engine->motorEffort(b)) / target.max_effort;
+        worst = std::max(worst, share);
+        if (share >= 1.0 - kAtCap) ++at_cap;
+      }
+    }
+    EXPECT_LE(worst, 1.0 + kAtCap) << c.mode;
+    EXPECT_GT(at_cap, 0) << c.mode;
+  }
 }
 
 }  // namespace

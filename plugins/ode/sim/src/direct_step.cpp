@@ -46,13 +46,13 @@ DirectStepOutcome DirectStepper::step(double h, MessageLog& log, std::span<const
     const bool within = drives_.restore();  // every cap back in place
     attempt_.clear();
     if (!gave_up && within) {
-      drives_.noteCaps();
+      drives_.noteCaps(h);
       return DirectStepOutcome::kSolved;
     }
     restore();
   }
   const DirectStepOutcome outcome = solveCapped(h, log, duplicate_contacts);
-  drives_.noteCaps();
+  drives_.noteCaps(h);
   return outcome;
 }
 

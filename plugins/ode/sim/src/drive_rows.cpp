@@ -9,6 +9,13 @@
 namespace wtc::ode {
 namespace {
 
+// A drive at its cap stays capped this long after its last step there (s):
+// a drive working at its cap (a fold lifting a section onto the ledge)
+// comes off it for a few milliseconds at a time and back, and each return
+// of a released drive over its cap is a step solved twice. Capped, a drive
+// costs its pivot, as before (what the hold saves: docs/performance.md).
+constexpr double kCappedHoldS = 0.02;
+
 bool isAngular(dJointID motor) { return dJointGetType(motor) == dJointTypeAMotor; }
 
 double cap(dJointID motor) {
@@ -44,7 +51,7 @@ bool DriveRows::release() {
   for (Drive& d : drives_) {
     d.cap = cap(d.motor);
     // Off (fmax 0: ODE adds no row) or at its cap last step: as it is.
-    d.released = d.cap > 0.0 && std::isfinite(d.cap) && !d.capped;
+    d.released = d.cap > 0.0 && std::isfinite(d.cap) && d.capped_for <= 0.0;
     if (!d.released) continue;
     setCap(d.motor, dInfinity);
     any = true;
@@ -59,18 +66,19 @@ bool DriveRows::restore() {
     setCap(d.motor, d.cap);
     d.released = false;
     if (std::abs(motorForce(d.motor, *d.feedback)) > d.cap) {
-      d.capped = true;
+      d.capped_for = kCappedHoldS;
       within = false;
     }
   }
   return within;
 }
 
-void DriveRows::noteCaps() {
+void DriveRows::noteCaps(double h) {
   for (Drive& d : drives_) {
     const double fmax = cap(d.motor);
-    d.capped =
+    const bool at_cap =
         fmax > 0.0 && std::abs(motorForce(d.motor, *d.feedback)) >= fmax * (1.0 - tolerance::kDriveAtCapRelative);
+    d.capped_for = at_cap ? kCappedHoldS : d.capped_for - h;
   }
 }
 

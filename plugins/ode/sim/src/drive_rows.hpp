@@ -19,7 +19,7 @@
 // rows); if any such drive's force came out over its cap, the step is
 // solved again from the same state with every cap in place, exactly as
 // before, and that drive stays capped until a step leaves it below its
-// cap. A drive at its cap on the last step is capped from the start.
+// cap. A drive at its cap lately is capped from the start.
 // What it saves, measured: docs/performance.md ("ODE's drive rows").
 #include <ode/ode.h>
 
@@ -42,18 +42,19 @@ class DriveRows {
   bool release();
   /// After the step solved by release(): every cap back in place, and
   /// whether each released drive's force was within its cap (the step
-  /// stands). A drive found over it stays capped for the next steps.
+  /// stands). A drive found over it is capped for the next steps.
   bool restore();
-  /// After the step kept: which drives are at their cap (capped next step).
-  void noteCaps();
+  /// After a step of `h` seconds kept: which drives are at their cap
+  /// (capped for the next steps).
+  void noteCaps(double h);
 
  private:
   struct Drive {
     dJointID motor = nullptr;
     const dJointFeedback* feedback = nullptr;
-    double cap = 0.0;       // fmax while released (N m or N)
-    bool released = false;  // this step's solve had it unbounded
-    bool capped = false;    // at or over its cap at the last solve: not released
+    double cap = 0.0;         // fmax while released (N m or N)
+    bool released = false;    // this step's solve had it unbounded
+    double capped_for = 0.0;  // s: not released while > 0 (at or over its cap lately)
   };
 
   std::vector<Drive> drives_;
