@@ -70,6 +70,17 @@ TEST(MessageLogTest, CountsTheMessagesOfTheStepsItCapturesAndPassesOnTheRest) {
     }
     EXPECT_EQ(inner.total(), 1u);
     EXPECT_EQ(log.total(), 4u);
+    // Case: a log that keeps the total alone (whether a solve gave up)
+    // counts every message and keeps none of them.
+    MessageLog total_only(MessageLog::Keep::kTotal);
+    {
+      const MessageLog::Capture capture(total_only);
+      dMessage(kLcpNumber, kLcpFormat, 0.0);
+      dMessage(7, "something else (%d)", 4);
+    }
+    EXPECT_EQ(total_only.total(), 2u);
+    EXPECT_TRUE(total_only.counts().empty());
+    EXPECT_EQ(g_received.size(), 1u);
   }
   // Case: the last log gone, the program's handler is ODE's again.
   EXPECT_EQ(dGetMessageHandler(), &programHandler);

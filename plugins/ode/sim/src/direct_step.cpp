@@ -42,9 +42,8 @@ DirectStepper::DirectStepper(dWorldID world, std::vector<dBodyID> bodies, std::v
 DirectStepOutcome DirectStepper::step(double h, MessageLog& log, std::span<const dJointID> duplicate_contacts) {
   save();
   if (drives_.release()) {
-    const bool gave_up = gaveUp(h, attempt_);
+    const bool gave_up = gaveUp(h, drives_said_);
     const bool within = drives_.restore();  // every cap back in place
-    attempt_.clear();
     if (!gave_up && within) {
       drives_.noteCaps(h);
       return DirectStepOutcome::kSolved;

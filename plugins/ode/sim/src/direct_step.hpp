@@ -108,10 +108,11 @@ class DirectStepper {
   std::vector<StoppedJoint> stopped_;
   DriveRows drives_;
   std::function<void(double)> quick_step_;
-  std::vector<BodyState> saved_;        // the bodies before the step (sized once)
-  std::vector<ReleasedStop> released_;  // the stops resting at the step's start (sized once)
-  MessageLog attempt_;                  // ODE's messages of a step's first solve
-  MessageLog retry_;                    // and of its solve without the degenerate rows
+  std::vector<BodyState> saved_;                      // the bodies before the step (sized once)
+  std::vector<ReleasedStop> released_;                // the stops resting at the step's start (sized once)
+  MessageLog drives_said_{MessageLog::Keep::kTotal};  // whether ODE gave up on a solve with drives released
+  MessageLog attempt_;                                // ODE's messages of a step's first solve with every cap
+  MessageLog retry_;                                  // and of its solve without the degenerate rows
 };
 
 }  // namespace wtc::ode

@@ -13,13 +13,15 @@
 // condition as a row without bounds (its residual w = 0), so a solution
 // of the problem with a drive's bounds removed whose force is within the
 // cap solves the problem with them: the step is the same step (up to
-// rounding). So a step is first solved with the drives that were within
-// their cap at the last step unbounded (fmax = dInfinity: ODE adds the row
-// with lo = -inf, hi = inf, and its solver factors it with the equality
-// rows); if any such drive's force came out over its cap, the step is
-// solved again from the same state with every cap in place, exactly as
-// before, and that drive stays capped until a step leaves it below its
-// cap. A drive at its cap lately is capped from the start.
+// rounding). So a step is first solved with the drives not at their caps
+// lately unbounded (fmax = dInfinity: ODE adds the row with lo = -inf,
+// hi = inf, and its solver factors it with the equality rows). If any such
+// drive's force came out over its cap, or ODE gave up on that solve, the
+// step is solved again from the same state with every cap in place,
+// exactly as before. A drive found at or over its cap stays capped for a
+// while (drive_rows.cpp's kCappedHoldS): a drive working at its cap comes
+// off it and back within milliseconds, and each return over it would be a
+// step solved twice.
 // What it saves, measured: docs/performance.md ("ODE's drive rows").
 #include <ode/ode.h>
 

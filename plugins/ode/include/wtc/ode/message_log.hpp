@@ -44,8 +44,14 @@ struct MessageCount {
 
 class MessageLog {
  public:
+  /// What a log keeps of the messages it counts.
+  enum class Keep {
+    kMessages,  ///< each message's text and count (counts())
+    kTotal,     ///< their total alone: never allocates (a solve tried only to see whether ODE gave up)
+  };
+
   /// Installs WTC's message handler if no other log has (thread-safe).
-  MessageLog();
+  explicit MessageLog(Keep keep = Keep::kMessages);
   /// Puts back the handler WTC's replaced when it is the last log.
   ~MessageLog();
   MessageLog(const MessageLog&) = delete;
@@ -85,6 +91,7 @@ class MessageLog {
   std::vector<MessageCount> counts_;
   std::vector<const char*> formats_;  // counts_[k]'s first format, to find it again without allocating
   std::uint64_t total_ = 0;
+  Keep keep_;
 };
 
 /// ODE's message format without its numbers: each parenthesised part that
