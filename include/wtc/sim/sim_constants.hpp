@@ -34,6 +34,19 @@ inline constexpr double kDivergedDistanceM = kMaxLengthM;
 inline constexpr double kDuplicateContactM = 1e-9;
 inline constexpr double kDuplicateContactCos = 1e-12;
 
+/// How far (m) beyond its depth a body's contact point may lie from a
+/// terrain face and still be on it, when ODE's sim engine finds the normals
+/// the terrain's surface can give there (its TerrainNormalCone): ODE's
+/// box-trimesh collider puts a contact on an edge of the terrain a few
+/// micrometres off it (docs/ode-plugin.md); 0.1 mm is well above that and
+/// far below any terrain feature (a heightfield's cell is 1 cm or more).
+inline constexpr double kTerrainFaceReachM = 1e-4;
+/// The same cone's numerical slack (dimensionless): two faces are the two
+/// sides of one wall when their normals' cosine is within it of -1, a unit
+/// normal within it of the cone is in it, and a projection onto the cone
+/// shorter than it vanishes.
+inline constexpr double kTerrainNormalSlack = 1e-9;
+
 /// A vehicle's joints that came apart by more than this over a run (the
 /// largest gap at a joint's anchor, the largest angle off its axis,
 /// vehicle::jointError) did not hold the mechanism the description gives:
