@@ -42,10 +42,15 @@ inline constexpr double kDuplicateContactCos = 1e-12;
 /// far below any terrain feature (a heightfield's cell is 1 cm or more).
 inline constexpr double kTerrainFaceReachM = 1e-4;
 /// The same cone's numerical slack (dimensionless): two faces are the two
-/// sides of one wall when their normals' cosine is within it of -1, a unit
-/// normal within it of the cone is in it, and a projection onto the cone
-/// shorter than it vanishes.
+/// sides of one wall when their normals' cosine is within it of -1, and a
+/// projection onto the cone shorter than it vanishes.
 inline constexpr double kTerrainNormalSlack = 1e-9;
+/// A contact's normal this close to the cone (the sine of the angle, rad)
+/// is in it, and kept as ODE gives it: a body's roll about a terrain edge
+/// from roundoff tilts its face's normal off the edge's cone by up to
+/// 5e-7 rad in the box ledge's climb, a meaningless difference, where the
+/// normals the cone corrects are tens of degrees off.
+inline constexpr double kTerrainNormalToleranceRad = 1e-3;
 
 /// A vehicle's joints that came apart by more than this over a run (the
 /// largest gap at a joint's anchor, the largest angle off its axis,

@@ -68,7 +68,7 @@ std::optional<Eigen::Vector3d> TerrainNormalCone::normal(const Eigen::Vector3d& 
   collectExposedNormals(reach);
   if (generators_.empty()) return n_W;
   const Eigen::Vector3d q = projectOntoCone(n_W, generators_);
-  if ((n_W - q).norm() <= kTerrainNormalSlack) return n_W;  // in the cone: as ODE gave it
+  if ((n_W - q).norm() <= sim::kTerrainNormalToleranceRad) return n_W;  // in the cone: as ODE gave it
   const double length = q.norm();
   if (length <= kTerrainNormalSlack) return std::nullopt;
   return q / length;

@@ -21,10 +21,11 @@
 // (a face of the same plane with the opposite normal through p). On a face
 // N is the face's normal, on a convex edge the normals between the two
 // faces', at a concave crease both faces' (and those between). A contact's
-// normal n in N is kept as it is; one outside N is projected onto it, the
-// nearest normal the surface can give (Moreau: q = argmin |n - q| over N);
-// one whose projection vanishes (n orthogonal to N, or pointing into the
-// terrain) is no contact the surface can make, and is left out. Bullet's
+// normal n in N (to within a milliradian: roundoff) is kept as it is; one
+// outside N is projected onto it, the nearest normal the surface can give
+// (Moreau: q = argmin |n - q| over N); one whose projection vanishes (n
+// orthogonal to N, or pointing into the terrain) is no contact the surface
+// can make, and is left out. Bullet's
 // btAdjustInternalEdgeContacts makes the same correction for one triangle
 // mesh's internal edges; here the pieces are WTC's and so is the cone.
 #include <optional>
@@ -46,7 +47,8 @@ class TerrainNormalCone {
   /// with unit normal n_W pointing out of the terrain (into the body) and
   /// penetration `depth` (m): n_W itself when it is in the cone of the
   /// terrain's exposed faces within max(depth, 0) + kTerrainFaceReachM of
-  /// p_W, or when no face is (nothing to correct it by); its unit
+  /// p_W (to within kTerrainNormalToleranceRad), or when no face is
+  /// (nothing to correct it by); its unit
   /// projection onto the cone when outside; nullopt when that projection
   /// vanishes. Allocates nothing on stored pieces once its scratch has
   /// grown to those around a point (a compact field's are formed anew).
