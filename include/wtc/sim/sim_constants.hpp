@@ -34,13 +34,17 @@ inline constexpr double kDivergedDistanceM = kMaxLengthM;
 inline constexpr double kDuplicateContactM = 1e-9;
 inline constexpr double kDuplicateContactCos = 1e-12;
 
-/// How far (m) beyond its depth a body's contact point may lie from a
-/// terrain face and still be on it, when ODE's sim engine finds the normals
-/// the terrain's surface can give there (its TerrainNormalCone): ODE's
-/// box-trimesh collider puts a contact on an edge of the terrain a few
-/// micrometres off it (docs/ode-plugin.md); 0.1 mm is well above that and
-/// far below any terrain feature (a heightfield's cell is 1 cm or more).
+/// How far beyond its depth a body's contact point may lie from a terrain
+/// face and still be on it, when ODE's sim engine finds the normals the
+/// terrain's surface can give there (its TerrainNormalCone): 0.1 mm (m),
+/// plus 1e-6 of the point's largest coordinate (dimensionless). ODE's
+/// trimesh colliders compute in single precision and put a contact a few
+/// float ulps off the surface (docs/ode-plugin.md, "Terrain shapes": 2e-6 m
+/// at 10 m; a box on a heightfield's edge at 0.6 m: 2.1e-6 m); the reach is
+/// far above that and far below any terrain feature (a heightfield's cell
+/// is 1 cm or more).
 inline constexpr double kTerrainFaceReachM = 1e-4;
+inline constexpr double kTerrainFaceReachPerM = 1e-6;
 /// The same cone's numerical slack (dimensionless): two faces are the two
 /// sides of one wall when their normals' cosine is within it of -1, and a
 /// projection onto the cone shorter than it vanishes.

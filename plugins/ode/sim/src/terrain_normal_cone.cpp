@@ -63,7 +63,8 @@ TerrainNormalCone::TerrainNormalCone(const Terrain& terrain) : terrain_(terrain)
 
 std::optional<Eigen::Vector3d> TerrainNormalCone::normal(const Eigen::Vector3d& p_W, const Eigen::Vector3d& n_W,
                                                          double depth) {
-  const double reach = std::max(depth, 0.0) + sim::kTerrainFaceReachM;
+  const double reach =
+      std::max(depth, 0.0) + sim::kTerrainFaceReachM + sim::kTerrainFaceReachPerM * p_W.cwiseAbs().maxCoeff();
   collectFaces(p_W, reach);
   collectExposedNormals(reach);
   if (generators_.empty()) return n_W;

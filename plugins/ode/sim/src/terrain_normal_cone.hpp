@@ -45,10 +45,11 @@ class TerrainNormalCone {
 
   /// The normal for a contact of a body with the terrain at p_W (world, m)
   /// with unit normal n_W pointing out of the terrain (into the body) and
-  /// penetration `depth` (m): n_W itself when it is in the cone of the
-  /// terrain's exposed faces within max(depth, 0) + kTerrainFaceReachM of
-  /// p_W (to within kTerrainNormalToleranceRad), or when no face is
-  /// (nothing to correct it by); its unit
+  /// penetration `depth` (m). The cone is that of the terrain's exposed
+  /// faces within reach of p_W: max(depth, 0) + kTerrainFaceReachM, plus
+  /// kTerrainFaceReachPerM of p_W's largest coordinate. Returns n_W itself
+  /// when it is in the cone (to within kTerrainNormalToleranceRad) or when
+  /// no face is within reach (nothing to correct it by); its unit
   /// projection onto the cone when outside; nullopt when that projection
   /// vanishes. Allocates nothing on stored pieces once its scratch has
   /// grown to those around a point (a compact field's are formed anew).
