@@ -54,7 +54,7 @@ Eigen::Vector3d projectOntoCone(const Eigen::Vector3d& n, const std::vector<Eige
 }
 
 TerrainNormalCone::TerrainNormalCone(const Terrain& terrain) : terrain_(terrain) {
-  // A heightfield's grid point has 12 prisms around it, each 5 faces.
+  // A heightfield's grid point touches 6 prisms, each of 5 faces; room for more.
   constexpr std::size_t kPiecesAround = 16, kFacesAround = 96;
   pieces_.reserve(kPiecesAround);
   faces_.reserve(kFacesAround);
