@@ -123,8 +123,8 @@ TEST(General9FormatTest, TiesAtTheNinthDigitMatchToChars) {
                                                      (9'999'999'999 / powerOf5 - 1) / 2);
     for (int i = 0; i < 500; ++i) c.checkWithNeighbours(std::ldexp(static_cast<double>(2 * odd(random) + 1), -j));
   }
-  // Powers of two whose digits are ten ending in 5 (2^-14 = 6.103515625e-5),
-  // and the halves the brief of the recorder names.
+  // A power of two whose digits are ten ending in 5 (2^-14 = 6.103515625e-5),
+  // halves of 9-digit integers (odd and even below, and the carry to 1e9).
   c.checkWithNeighbours(std::ldexp(1.0, -14));
   c.checkWithNeighbours(123456789.5);
   c.checkWithNeighbours(123456788.5);
