@@ -55,9 +55,11 @@ constexpr std::array<char, 200> kDigitPairs = [] {
   return d;
 }();
 
-// floor(e2 log10(2)) for |e2| <= 1650: 78913 / 2^18 is log10(2) to 1e-6,
-// and e2 log10(2) is never that close to an integer there (Ryu, Adams 2018,
-// log10Pow2). C++20 defines >> of a negative int as a floor.
+// floor(e2 log10(2)): 78913 / 2^18 is log10(2) to 8e-7 (Ryu, Adams 2018,
+// log10Pow2), equal to it for every binary64 exponent (-1022..1023, checked
+// against a 60-digit log10(2)); were it ever off, the exact check below
+// would send the value to std::to_chars. C++20 defines >> of a negative int
+// as a floor.
 int floorLog10Pow2(int e2) { return (e2 * 78913) >> 18; }
 
 char* fallback(double value, char* out) {
