@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 
+#include "general_9_format.hpp"
 #include "wtc/base/error.hpp"
 
 namespace wtc::sim {
@@ -12,9 +13,8 @@ namespace {
 // (docs/accuracy-study.md, "What a run's output costs").
 constexpr std::size_t kFlushBytes = 1 << 16;
 constexpr std::chrono::milliseconds kFlushInterval{250};
-// Enough for %.9g of any double ("-1.23456789e-308") and any integer.
+// Enough for any integer.
 constexpr int kNumberChars = 32;
-constexpr int kPrecision = 9;
 
 void endRow(detail::CsvFile& out) { out.endRow(); }
 }  // namespace
@@ -26,10 +26,8 @@ void detail::CsvFile::open(const std::filesystem::path& path) {
 }
 
 detail::CsvFile& detail::CsvFile::operator<<(double value) {
-  char text[kNumberChars];
-  const std::to_chars_result r =
-      std::to_chars(text, text + kNumberChars, value, std::chars_format::general, kPrecision);
-  row_.append(text, r.ptr);
+  char text[kGeneral9Chars];
+  row_.append(text, formatGeneral9(value, text));
   return *this;
 }
 

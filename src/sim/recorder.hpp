@@ -22,8 +22,8 @@ namespace wtc::sim {
 
 namespace detail {
 /// A CSV file written whole rows at a time. Numbers come out as an ostream
-/// of precision 9 writes them (printf's %.9g, which std::to_chars with that
-/// precision is specified to match), without the stream. Rows are held in
+/// of precision 9 writes them (printf's %.9g: formatGeneral9, the same bytes
+/// as std::to_chars with that precision), without the stream. Rows are held in
 /// memory and go out in one write every 64 KiB or quarter second, and at
 /// flush(): a killed process leaves whole rows up to its last write.
 class CsvFile {
