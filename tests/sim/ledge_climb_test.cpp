@@ -64,31 +64,6 @@ TEST(LedgeClimbTest, ClimbsTwoHeightsInBothEnginesAndMeasuresEachStep) {
   }
 }
 
-// The study's 0.60 m ledge sampled into a 2 cm heightfield (bench/
-// accuracy_study.yaml, terrain_resolution), ODE force mode at 0.4 ms: the
-// robot climbs it. Its rear carrier lies across the field's top edge with
-// its side faces on grid lines, where ODE's collider, given one prism at a
-// time, pushed it sideways from the walls between prisms until their
-// friction held it in the controller's third phase (lowest wheel 0.415 m
-// at 18 s; plugins/ode/sim/src/terrain_normal_cone.hpp).
-TEST(LedgeClimbTest, OdeClimbsTheLedgeSampledIntoA2cmHeightfield) {
-  const sim::Scene s =
-      sim::loadScene(kRoot / "scenes" / "robot_ledge.yaml",
-                     std::vector<sim::Override>{{"engine", "ode"},
-                                                {"mode", "force"},
-                                                {"ledge_height", "0.60"},
-                                                {"duration", "18"},
-                                                {"terrain.pieces.0",
-                                                 "{type: ledge, material: asphalt_concrete, height: 0.60, "
-                                                 "approach_length: 4.0, top_length: 4.0, width: 4.0, thickness: 0.5, "
-                                                 "heightfield_spacing: 0.02}"}});
-  const auto e = sim::makeEngine(s.engine, *s.terrain, s.vehicle, s.placement);
-  const sim::RunSummary r = sim::runScene(s, *e);
-  EXPECT_TRUE(r.success);
-  EXPECT_EQ(r.fields.at("climbed"), 1.0);
-  EXPECT_GT(r.fields.at("lowest_wheel_height_m"), 0.60);
-}
-
 // A step taller than the front section reaches (0.80 m): the controller
 // stops and says so; the robot stays upright with its wheels on the ground.
 TEST(LedgeClimbTest, AStepOutOfReachFailsCleanly) {

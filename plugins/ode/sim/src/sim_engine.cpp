@@ -4,7 +4,6 @@
 
 #include <array>
 #include <mutex>
-#include <optional>
 #include <span>
 #include <vector>
 
@@ -16,7 +15,6 @@
 #include "native_wheels.hpp"
 #include "sim/engine_base.hpp"
 #include "src/conversions.hpp"
-#include "terrain_normal_cone.hpp"
 #include "wtc/base/constants.hpp"
 #include "wtc/base/error.hpp"
 #include "wtc/ode/message_log.hpp"
@@ -424,28 +422,12 @@ class SimEngine final : public sim::EngineBase {
     std::array<dContact, kMaxContactsPerPair> contact{};
     const int n = dCollide(a, b, kMaxContactsPerPair, &contact[0].geom, sizeof(dContact));
     for (int k = 0; k < n; ++k) {
-      if (!e.onTerrainSurface(contact[k].geom, body_a != nullptr)) continue;
       contact[k].surface.mode = dContactApprox1;
       contact[k].surface.mu = sim::kBodyGroundFriction;
       const dJointID joint = dJointCreateContact(e.world_, e.contacts_, &contact[k]);
       dJointAttach(joint, body_a, body_b);
       e.noteBodyContact(joint, body_a, body_b, contact[k].geom);
     }
-  }
-
-  // Gives a body's contact with the terrain a normal the terrain's surface
-  // can push along (terrain_normal_cone.hpp), or false when there is none:
-  // a piece's wall inside the terrain, or its edge there, is no part of the
-  // surface. ODE's normal points into the first geom of the pair.
-  bool onTerrainSurface(dContactGeom& g, bool body_first) {
-    const double sign = body_first ? 1.0 : -1.0;
-    const Eigen::Vector3d n_W = sign * toEigen(g.normal);
-    const std::optional<Eigen::Vector3d> surface = normal_cone_.normal(toEigen(g.pos), n_W, g.depth);
-    if (!surface) return false;
-    if (*surface != n_W) {
-      for (int i = 0; i < 3; ++i) g.normal[i] = sign * (*surface)[i];
-    }
-    return true;
   }
 
   // Keeps this step's body contacts, and marks `joint` as a duplicate when
@@ -525,7 +507,6 @@ class SimEngine final : public sim::EngineBase {
   }
 
   const Terrain& terrain_;
-  TerrainNormalCone normal_cone_{terrain_};  // the body contacts' normals against the terrain's surface
   Stepper stepper_;
   std::vector<PieceId> near_pieces_;  // scratch
   dWorldID world_ = nullptr;
