@@ -81,8 +81,11 @@ void validateJoint(Joint& joint, const std::string& where) {
     if (!has_coordinate) fail(where, "joint limits", std::string("a ") + jointName(joint.type) + " joint has none");
     const JointLimits& l = *joint.limits;
     if (!std::isfinite(l.lower) || !std::isfinite(l.upper) || l.lower > l.upper) {
-      fail(where, "joint limits",
-           "[" + formatNumber(l.lower) + ", " + formatNumber(l.upper) + "] must be finite with lower <= upper");
+      // Built by appending: GCC 12 warns of an overlapping memcpy in
+      // operator+(const char*, std::string&&), a false positive (its bug 105651).
+      std::string range = "[";
+      range.append(formatNumber(l.lower)).append(", ").append(formatNumber(l.upper));
+      fail(where, "joint limits", range + "] must be finite with lower <= upper");
     }
   }
   if (joint.actuator) {

@@ -50,7 +50,9 @@ void expectEqual(const VehicleDescription& yaml, const VehicleDescription& urdf)
     EXPECT_EQ(b.joint.anchor, a.joint.anchor) << a.name;
     EXPECT_EQ(b.joint.axis, a.joint.axis) << a.name;
     ASSERT_EQ(b.joint.limits.has_value(), a.joint.limits.has_value()) << a.name;
-    if (a.joint.limits) EXPECT_EQ(b.joint.limits->upper, a.joint.limits->upper) << a.name;
+    if (a.joint.limits) {
+      EXPECT_EQ(b.joint.limits->upper, a.joint.limits->upper) << a.name;
+    }
     ASSERT_EQ(b.joint.actuator.has_value(), a.joint.actuator.has_value()) << a.name;
     if (a.joint.actuator) {
       EXPECT_EQ(b.joint.actuator->max_effort, a.joint.actuator->max_effort) << a.name;
