@@ -39,8 +39,8 @@ class DriveRows {
   /// dJointSetFeedback: its force is read after the step).
   void add(dJointID motor, const dJointFeedback* feedback);
 
-  /// Before a step: the drives switched on and within their cap at their
-  /// last step lose their bounds for this solve. Whether any did.
+  /// Before a step: the drives switched on and not at their cap lately
+  /// lose their bounds for this solve. Whether any did.
   bool release();
   /// After the step solved by release(): every cap back in place, and
   /// whether each released drive's force was within its cap (the step
