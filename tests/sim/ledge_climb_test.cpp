@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "wtc/base/error.hpp"
+#include "wtc/base/tolerances.hpp"
 #include "wtc/sim/engine_table.hpp"
 #include "wtc/sim/run.hpp"
 #include "wtc/sim/scene_file.hpp"
@@ -105,7 +106,7 @@ TEST(LedgeClimbTest, AVehicleWithoutTheRobotsSectionsIsRefusedByName) {
 // the top. Keeping a step solved without the caps breaks the first check
 // (a fold's drive then carried 3.9 times its cap, a wheel's 326).
 TEST(LedgeClimbTest, OdesDrivesNeverCarryMoreThanTheirCapAndTheSaturatedOnesCarryIt) {
-  constexpr double kAtCap = 1e-9;  // of the cap: a capped row's force read back through the feedback
+  constexpr double kAtCap = tolerance::kDriveAtCapRelative;  // a capped row's force read back
   struct Case {
     const char *mode, *dt, *duration;
   };

@@ -50,7 +50,7 @@ bool DriveRows::release() {
   bool any = false;
   for (Drive& d : drives_) {
     d.cap = cap(d.motor);
-    // Off (fmax 0: ODE adds no row) or at its cap last step: as it is.
+    // Off (fmax 0: ODE adds no row) or at its cap lately: as it is.
     d.released = d.cap > 0.0 && std::isfinite(d.cap) && d.capped_for <= 0.0;
     if (!d.released) continue;
     setCap(d.motor, dInfinity);
