@@ -175,4 +175,14 @@ inline constexpr double kUrdfAxisAlignment = 1e-9;
 inline constexpr double kUrdfWheelAxisSine = 1e-6;
 inline constexpr double kUrdfWheelCentreM = 1e-6;
 
+/// Bullet's wheel drives: two wheels share one articulated-body solve
+/// (plugins/bullet/sim/src/wheel_drive_responses.hpp) when each wheel's
+/// centre of mass is on its joint's axis, the axis is a principal axis of
+/// its inertia, and the two axles are parallel, each to within this
+/// (dimensionless: a sine, or a length or moment relative to the wheel's
+/// own). Those hold exactly for a wheel built on its axle; 1e-12 admits
+/// the rounding of the frames they are computed in, and the shared solve
+/// then differs from Bullet's own by rounding alone.
+inline constexpr double kSharedDriveSolveRelative = 1e-12;
+
 }  // namespace wtc::tolerance

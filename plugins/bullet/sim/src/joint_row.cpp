@@ -4,12 +4,14 @@
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 #include <BulletDynamics/Featherstone/btMultiBodySolverConstraint.h>
 
+#include "wheel_drive_responses.hpp"
+
 namespace wtc::bullet {
 
 btMultiBodySolverConstraint& appendJointRow(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data,
                                             btMultiBody& body, int link, double sign, double lower, double upper,
-                                            double applied, btMultiBodyConstraint& origin, int origin_row,
-                                            double& rate) {
+                                            double applied, btMultiBodyConstraint& origin, int origin_row, double& rate,
+                                            WheelDriveResponses* shared) {
   const int n = body.getNumDofs() + 6;  // the base's 6, then the joints'
   const btMultibodyLink& l = body.getLink(link);
   const int dof = 6 + l.m_dofOffset;
@@ -31,7 +33,11 @@ btMultiBodySolverConstraint& appendJointRow(btMultiBodyConstraintArray& rows, bt
   data.m_jacobians[row.m_jacAindex + dof] = sign;
   data.m_deltaVelocitiesUnitImpulse.resize(row.m_jacAindex + n);
   btScalar* response = &data.m_deltaVelocitiesUnitImpulse[row.m_jacAindex];
-  body.calcAccelerationDeltasMultiDof(&data.m_jacobians[row.m_jacAindex], response, data.scratch_r, data.scratch_v);
+  if (shared != nullptr) {
+    shared->fill(data, body, link, sign, response);
+  } else {
+    body.calcAccelerationDeltasMultiDof(&data.m_jacobians[row.m_jacAindex], response, data.scratch_r, data.scratch_v);
+  }
 
   const double inverse_mass = sign * response[dof];                             // J M^-1 J^T
   row.m_jacDiagABInv = inverse_mass > SIMD_EPSILON ? 1.0 / inverse_mass : 0.0;  // Bullet's: off when singular

@@ -4,6 +4,8 @@
 
 namespace wtc::bullet {
 
+class WheelDriveResponses;
+
 // Appends the solver row of one joint coordinate of `body` alone, as
 // btMultiBodyConstraint::fillMultiBodyConstraint makes it for Bullet's
 // joint motors and limits but without their body B (the same multibody
@@ -18,11 +20,12 @@ namespace wtc::bullet {
 // total stays in [lower, upper]. The caller sets the right-hand side.
 // `sign` is +1 or -1; `origin` and `origin_row` name the constraint and row
 // the solver writes the impulse back to. Returns the joint rate along the
-// row, J qdot, in `rate`.
+// row, J qdot, in `rate`. With `shared`, the response comes from there
+// (wheel_drive_responses.hpp: a wheel's drive, one solve for two wheels).
 btMultiBodySolverConstraint& appendJointRow(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data,
                                             btMultiBody& body, int link, double sign, double lower, double upper,
-                                            double applied, btMultiBodyConstraint& origin, int origin_row,
-                                            double& rate);
+                                            double applied, btMultiBodyConstraint& origin, int origin_row, double& rate,
+                                            WheelDriveResponses* shared = nullptr);
 
 // The island the solver files a constraint on `body` under: its base
 // collider's, else its first link collider's (Bullet's joint constraints'

@@ -22,6 +22,7 @@
 #include "src/plugin_state.hpp"
 #include "warm_started_joint_limit.hpp"
 #include "warm_started_motor.hpp"
+#include "wheel_drive_responses.hpp"
 #include "wtc/base/constants.hpp"
 #include "wtc/base/error.hpp"
 #include "wtc/bullet/contact_solver.hpp"
@@ -131,6 +132,7 @@ class SimEngine final : public sim::EngineBase {
     world_.getSolverInfo().m_numIterations = settings.solver_iterations;
     world_.getSolverInfo().m_leastSquaresResidualThreshold = settings.solver_residual;
     buildTrees(placement);
+    shareWheelDriveSolves();
     plugin_ = std::make_unique<Plugin>(world_, terrain, settings.mode);
     plugin_->terrainObject().setFriction(1.0);  // combined friction = product: the bodies' own decides
     // The wheels' strategy, chosen once: Bullet's own, or WTC's.
@@ -183,6 +185,7 @@ class SimEngine final : public sim::EngineBase {
   // One internal step of exactly h (maxSubSteps = 0: Bullet's variable step).
   void step() override {
     for (WarmStartedJointLimit* limit : limits_) limit->prepare(settings().step_seconds);
+    drive_responses_.forget();
     world_.stepSimulation(settings().step_seconds, 0, settings().step_seconds);
     for (Ref& r : refs_) {
       if (r.motor != nullptr) r.motor->stepped();
@@ -458,6 +461,19 @@ class SimEngine final : public sim::EngineBase {
     }
   }
 
+  // The wheels' drives that are rows (constraint and implicit modes): two
+  // on one parent share one articulated-body solve a step
+  // (wheel_drive_responses.hpp).
+  void shareWheelDriveSolves() {
+    const std::vector<Body>& bodies = vehicle().bodies;
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      const Ref& r = refs_[i];
+      if (bodies[i].wheel && r.motor != nullptr && WheelDriveResponses::applies(*r.multibody, r.link)) {
+        r.motor->shareResponses(&drive_responses_);
+      }
+    }
+  }
+
   void addCollider(int i, const Eigen::Isometry3d& placement) {
     btCollisionShape* shape = makeShape(vehicle().bodies[i], settings(), shapes_);
     if (shape == nullptr) return;
@@ -486,6 +502,7 @@ class SimEngine final : public sim::EngineBase {
   std::vector<std::unique_ptr<btCollisionShape>> shapes_;
   std::vector<std::unique_ptr<btMultiBody>> trees_;
   std::vector<std::unique_ptr<btMultiBodyLinkCollider>> colliders_;
+  WheelDriveResponses drive_responses_;  // the wheel drives' shared solves; outlives the motors
   std::vector<std::unique_ptr<btMultiBodyConstraint>> constraints_;
   std::vector<WarmStartedJointLimit*> limits_;  // in constraints_
   std::vector<Ref> refs_;

@@ -41,7 +41,7 @@ void WarmStartedMotor::createConstraintRows(btMultiBodyConstraintArray& rows, bt
   if (m_numDofsFinalized != m_jacSizeBoth || getMaxAppliedImpulse() == 0.0) return;  // off
   double rate = 0.0;
   btMultiBodySolverConstraint& row = appendJointRow(rows, data, *m_bodyA, m_linkA, 1.0, -getMaxAppliedImpulse(),
-                                                    getMaxAppliedImpulse(), feedforward_ * h_, *this, 0, rate);
+                                                    getMaxAppliedImpulse(), feedforward_ * h_, *this, 0, rate, shared_);
   row_made_ = true;
   row.m_rhs = (m_desiredVelocity - rate) * row.m_jacDiagABInv;
 }

@@ -4,6 +4,8 @@
 
 namespace wtc::bullet {
 
+class WheelDriveResponses;
+
 // A velocity-controlled drive of one revolute or prismatic joint whose
 // solve starts from the last step's effort, with one articulated-body solve
 // a step.
@@ -39,6 +41,11 @@ class WarmStartedMotor final : public btMultiBodyJointMotor {
 
   double effort() const { return last_effort_; }  // (N m or N)
 
+  // A wheel's drive: its row's response from `shared` (a solve shared with
+  // the wheel on the same parent, wheel_drive_responses.hpp), which must
+  // accept this link (WheelDriveResponses::applies) and outlive the motor.
+  void shareResponses(WheelDriveResponses* shared) { shared_ = shared; }
+
   void createConstraintRows(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data,
                             const btContactSolverInfo& info) override;
   int getIslandIdB() const override { return getIslandIdA(); }  // no body B: A's island
@@ -48,6 +55,7 @@ class WarmStartedMotor final : public btMultiBodyJointMotor {
   double last_effort_ = 0.0;  // (N m or N)
   double h_ = 0.0;            // the step the impulses are over (s)
   bool row_made_ = false;     // this step: the solver has the row and set its impulse
+  WheelDriveResponses* shared_ = nullptr;
 };
 
 }  // namespace wtc::bullet
