@@ -1,5 +1,6 @@
 #include "wtc/geometry/convex_polyhedron.hpp"
 
+#include "piece_kernel.hpp"
 #include "polyhedron_layout.hpp"
 
 #include <algorithm>
@@ -301,6 +302,7 @@ void ConvexPolyhedron::assembleInto(ConvexPolyhedron& poly, const std::vector<Ei
   }
   if (topology == nullptr) twinsAndAdjacency(poly, faces);
   poly.numbers_.shrink_to_fit();
+  poly.kernel_ = static_cast<std::uint8_t>(detail::kernelFor(poly));
 }
 
 void ConvexPolyhedron::faceLists(ConvexPolyhedron& poly, const std::vector<std::vector<int>>& faces) {

@@ -43,41 +43,12 @@ inline std::uint32_t crossedEdges(const double* side, const Eigen::Vector3d& q) 
   return mask;
 }
 
-// Which edges of face `face` the projection of q onto its plane lies beyond.
-// Face vertices run counter-clockwise about the outward normal n, so the
-// projection is on the inner side of edge (a, b) when s . q >= s . a with
-// s = n x (b - a), the edge's stored side plane (the projection along n does
-// not change s . q). Inside every edge, the projection *is* the closest
-// point. Beyond one edge, that edge; beyond two consecutive edges, their
-// shared vertex: the feature to test next and, failing that, to seed GJK.
-//
-// The crossed edges are gathered as a bit mask, one bit per edge set without
-// a branch, and the cases read from it: none crossed; exactly two adjacent
-// (the mask shifted down to its lowest bit is 0b11, or the first and the last
-// edge); otherwise the lowest crossed edge, alone or not. Faces with more
-// edges than the mask holds (hull faces merged from many coplanar
-// triangles) count them one by one, to the same answer.
-inline FaceRegion classify(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, int face) {
-  const std::int32_t* vertices = PolyhedronLayout::faceVertexList(poly, face);
-  const int size = PolyhedronLayout::faceSize(poly, face);
-  const double* side = PolyhedronLayout::faceEdgePlanes(poly, face);
+// The region of face `face` (of `size` edges) from its crossing mask: bit k
+// set when the projection lies beyond edge k (see classify).
+inline FaceRegion regionOfMask(const ConvexPolyhedron& poly, int face, int size, std::uint32_t mask) {
   FaceRegion region;
-  if (size > kMaskEdges) return classifyLarge(poly, q, face);
-  std::uint32_t mask = 0;
-  switch (size) {  // triangles and quads (every face of a prism or a box) unrolled
-    case 3:
-      mask = crossedEdges<3>(side, q);
-      break;
-    case 4:
-      mask = crossedEdges<4>(side, q);
-      break;
-    default:
-      for (int k = 0; k < size; ++k, side += 4) {
-        const bool beyond = side[0] * q.x() + side[1] * q.y() + side[2] * q.z() < side[3];
-        mask |= static_cast<std::uint32_t>(beyond) << k;
-      }
-  }
   if (mask == 0) return region;
+  const std::int32_t* vertices = PolyhedronLayout::faceVertexList(poly, face);
   region.inside = false;
   const int first = std::countr_zero(mask);
   const std::int32_t start = PolyhedronLayout::faceEdgeStart(poly, face);
@@ -96,6 +67,41 @@ inline FaceRegion classify(const ConvexPolyhedron& poly, const Eigen::Vector3d& 
     if ((mask & (mask - 1)) == 0) region.only_edge = start + first;
   }
   return region;
+}
+
+// Which edges of face `face` the projection of q onto its plane lies beyond.
+// Face vertices run counter-clockwise about the outward normal n, so the
+// projection is on the inner side of edge (a, b) when s . q >= s . a with
+// s = n x (b - a), the edge's stored side plane (the projection along n does
+// not change s . q). Inside every edge, the projection *is* the closest
+// point. Beyond one edge, that edge; beyond two consecutive edges, their
+// shared vertex: the feature to test next and, failing that, to seed GJK.
+//
+// The crossed edges are gathered as a bit mask, one bit per edge set without
+// a branch, and the cases read from it: none crossed; exactly two adjacent
+// (the mask shifted down to its lowest bit is 0b11, or the first and the last
+// edge); otherwise the lowest crossed edge, alone or not. Faces with more
+// edges than the mask holds (hull faces merged from many coplanar
+// triangles) count them one by one, to the same answer.
+inline FaceRegion classify(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, int face) {
+  const int size = PolyhedronLayout::faceSize(poly, face);
+  const double* side = PolyhedronLayout::faceEdgePlanes(poly, face);
+  if (size > kMaskEdges) return classifyLarge(poly, q, face);
+  std::uint32_t mask = 0;
+  switch (size) {  // triangles and quads (every face of a prism or a box) unrolled
+    case 3:
+      mask = crossedEdges<3>(side, q);
+      break;
+    case 4:
+      mask = crossedEdges<4>(side, q);
+      break;
+    default:
+      for (int k = 0; k < size; ++k, side += 4) {
+        const bool beyond = side[0] * q.x() + side[1] * q.y() + side[2] * q.z() < side[3];
+        mask |= static_cast<std::uint32_t>(beyond) << k;
+      }
+  }
+  return regionOfMask(poly, face, size, mask);
 }
 
 // The Voronoi region of edge (a, b) shared by faces f and g: q beyond both

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "feature_regions.hpp"
+#include "piece_kernel.hpp"
 #include "signed_volumes.hpp"
 #include "wtc/base/error.hpp"
 
@@ -218,7 +219,10 @@ PointQuery query(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOpt
   // 2. Face planes: exact inside, a lower bound outside.
   const Vector3d q = p - poly.origin();
   int face = 0;
-  const double plane = Layout::planeBoundLocal(poly, q, &face);
+  // The piece's own kernel where one fits (piece_kernel.hpp): the same
+  // decisions and answers, fewer operations.
+  const bool box = Layout::kernel(poly) == static_cast<std::uint8_t>(detail::PieceKernel::kAxisBox);
+  const double plane = box ? detail::boxPlaneBound(poly, q, &face) : Layout::planeBoundLocal(poly, q, &face);
   if (plane <= 0.0 && !poly.isFlat()) {
     if (cache != nullptr) cache->count = 0;
     return fromPlane(poly, p, plane, face, QueryStatus::kInside);
@@ -232,7 +236,7 @@ PointQuery query(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOpt
   }
 
   // 3. The nearest face's region: inside it, the projection is exact.
-  const FaceRegion region = detail::classify(poly, q, face);
+  const FaceRegion region = box ? detail::boxClassify(poly, q, face) : detail::classify(poly, q, face);
   if (region.inside) {
     if (cache != nullptr) cache->count = 0;
     // max: on a flat piece both faces can read -roundoff on the polygon.
@@ -241,7 +245,8 @@ PointQuery query(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOpt
 
   // 4. The crossed edge's or vertex's region: its closest point is exact.
   Vector3d on_feature;
-  if (detail::edgeRegion(poly, q, region, &on_feature) || detail::vertexRegion(poly, q, region, &on_feature)) {
+  if (detail::edgeRegion(poly, q, region, &on_feature) || (box ? detail::boxVertexRegion(poly, q, region, &on_feature)
+                                                               : detail::vertexRegion(poly, q, region, &on_feature))) {
     return fromFeature(poly, p, q, on_feature, plane, face, region, cache);
   }
 
