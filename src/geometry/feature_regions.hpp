@@ -43,15 +43,14 @@ inline std::uint32_t crossedEdges(const double* side, const Eigen::Vector3d& q) 
   return mask;
 }
 
-// The region of face `face` (of `size` edges) from its crossing mask: bit k
-// set when the projection lies beyond edge k (see classify).
-inline FaceRegion regionOfMask(const ConvexPolyhedron& poly, int face, int size, std::uint32_t mask) {
+// The region of a face from its crossing mask (bit k set when the
+// projection lies beyond edge k; see classify): the face's `size` vertex
+// indices `vertices` and its first face-edge `start`.
+inline FaceRegion regionOfMask(const std::int32_t* vertices, std::int32_t start, int size, std::uint32_t mask) {
   FaceRegion region;
   if (mask == 0) return region;
-  const std::int32_t* vertices = PolyhedronLayout::faceVertexList(poly, face);
   region.inside = false;
   const int first = std::countr_zero(mask);
-  const std::int32_t start = PolyhedronLayout::faceEdgeStart(poly, face);
   if ((mask >> first) == 0b11u) {
     region.count = 1;
     region.seed[0] = vertices[first];
@@ -67,6 +66,12 @@ inline FaceRegion regionOfMask(const ConvexPolyhedron& poly, int face, int size,
     if ((mask & (mask - 1)) == 0) region.only_edge = start + first;
   }
   return region;
+}
+
+/// regionOfMask of face `face` of `poly`, its lists read from the piece.
+inline FaceRegion regionOfMask(const ConvexPolyhedron& poly, int face, int size, std::uint32_t mask) {
+  return regionOfMask(PolyhedronLayout::faceVertexList(poly, face), PolyhedronLayout::faceEdgeStart(poly, face), size,
+                      mask);
 }
 
 // Which edges of face `face` the projection of q onto its plane lies beyond.
@@ -109,11 +114,10 @@ inline FaceRegion classify(const ConvexPolyhedron& poly, const Eigen::Vector3d& 
 // two in-face directions) and between the planes through a and b normal to
 // the edge. Inside it the closest point is q's projection on the edge,
 // exactly. `region` crossed only this edge of f, so f's side is known; the
-// twin face-edge gives g's. Returns false when q is not in the region.
-inline bool edgeRegion(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, const FaceRegion& region,
-                       Eigen::Vector3d* closest) {
-  if (region.only_edge < 0) return false;
-  const double* twin = PolyhedronLayout::faceEdgePlane(poly, PolyhedronLayout::faceEdgeTwin(poly, region.only_edge));
+// twin face-edge gives g's side plane, `twin` (4 doubles: s, s . a).
+// Returns false when q is not in the region.
+inline bool edgeRegionBeyond(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, const FaceRegion& region,
+                             const double* twin, Eigen::Vector3d* closest) {
   if (twin[0] * q.x() + twin[1] * q.y() + twin[2] * q.z() > twin[3]) return false;
   const Eigen::Vector3d a = poly.vertexLocal(region.seed[0]);
   const Eigen::Vector3d ab = poly.vertexLocal(region.seed[1]) - a;
@@ -122,6 +126,14 @@ inline bool edgeRegion(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, c
   if (along < 0.0 || along > length2) return false;
   *closest = a + (along / length2) * ab;
   return true;
+}
+
+/// edgeRegionBeyond with the twin's side plane looked up in the piece.
+inline bool edgeRegion(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, const FaceRegion& region,
+                       Eigen::Vector3d* closest) {
+  if (region.only_edge < 0) return false;
+  const double* twin = PolyhedronLayout::faceEdgePlane(poly, PolyhedronLayout::faceEdgeTwin(poly, region.only_edge));
+  return edgeRegionBeyond(poly, q, region, twin, closest);
 }
 
 // The Voronoi region of vertex a: (q - a) . (c - a) <= 0 for every edge

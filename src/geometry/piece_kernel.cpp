@@ -3,6 +3,9 @@
 // kernel's shortened arithmetic is the general arithmetic's to the bit.
 #include "piece_kernel.hpp"
 
+#include "box_kernel.hpp"
+#include "prism_kernel.hpp"
+
 namespace wtc::detail {
 namespace {
 
@@ -50,10 +53,29 @@ bool isAxisBox(const ConvexPolyhedron& poly) {
   return true;
 }
 
+// The terrain builders' prism: its face lists, solid. The twins and the
+// neighbours follow from the face lists of a closed piece (fromMesh and the
+// copied topology of the formed prisms guarantee it).
+bool isBuildersPrism(const ConvexPolyhedron& poly) {
+  if (poly.vertexCount() != 6 || poly.faceCount() != kPrismFaceCount || poly.isFlat()) return false;
+  for (int f = 0; f < kPrismFaceCount; ++f) {
+    if (Layout::faceEdgeStart(poly, f) != kPrismStart[f] ||
+        Layout::faceSize(poly, f) != kPrismStart[f + 1] - kPrismStart[f]) {
+      return false;
+    }
+  }
+  const std::int32_t* list = Layout::faceVertexList(poly, 0);
+  for (int e = 0; e < kPrismFaceEdges; ++e) {
+    if (list[e] != kPrismList[e]) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 PieceKernel kernelFor(const ConvexPolyhedron& poly) {
   if (isAxisBox(poly)) return PieceKernel::kAxisBox;
+  if (isBuildersPrism(poly)) return PieceKernel::kPrism;
   return PieceKernel::kGeneral;
 }
 

@@ -9,8 +9,10 @@
 #include <cmath>
 #include <string>
 
+#include "box_kernel.hpp"
 #include "feature_regions.hpp"
 #include "piece_kernel.hpp"
+#include "prism_kernel.hpp"
 #include "signed_volumes.hpp"
 #include "wtc/base/error.hpp"
 
@@ -221,7 +223,9 @@ PointQuery query(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOpt
   int face = 0;
   // The piece's own kernel where one fits (piece_kernel.hpp): the same
   // decisions and answers, fewer operations.
-  const bool box = Layout::kernel(poly) == static_cast<std::uint8_t>(detail::PieceKernel::kAxisBox);
+  const auto kernel = static_cast<detail::PieceKernel>(Layout::kernel(poly));
+  const bool box = kernel == detail::PieceKernel::kAxisBox;
+  const bool prism = kernel == detail::PieceKernel::kPrism;
   const double plane = box ? detail::boxPlaneBound(poly, q, &face) : Layout::planeBoundLocal(poly, q, &face);
   if (plane <= 0.0 && !poly.isFlat()) {
     if (cache != nullptr) cache->count = 0;
@@ -236,7 +240,9 @@ PointQuery query(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOpt
   }
 
   // 3. The nearest face's region: inside it, the projection is exact.
-  const FaceRegion region = box ? detail::boxClassify(poly, q, face) : detail::classify(poly, q, face);
+  const FaceRegion region = box     ? detail::boxClassify(poly, q, face)
+                            : prism ? detail::prismClassify(poly, q, face)
+                                    : detail::classify(poly, q, face);
   if (region.inside) {
     if (cache != nullptr) cache->count = 0;
     // max: on a flat piece both faces can read -roundoff on the polygon.
@@ -245,8 +251,11 @@ PointQuery query(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOpt
 
   // 4. The crossed edge's or vertex's region: its closest point is exact.
   Vector3d on_feature;
-  if (detail::edgeRegion(poly, q, region, &on_feature) || (box ? detail::boxVertexRegion(poly, q, region, &on_feature)
-                                                               : detail::vertexRegion(poly, q, region, &on_feature))) {
+  const bool on_edge =
+      prism ? detail::prismEdgeRegion(poly, q, region, &on_feature) : detail::edgeRegion(poly, q, region, &on_feature);
+  if (on_edge || (box     ? detail::boxVertexRegion(poly, q, region, &on_feature)
+                  : prism ? detail::prismVertexRegion(poly, q, region, &on_feature)
+                          : detail::vertexRegion(poly, q, region, &on_feature))) {
     return fromFeature(poly, p, q, on_feature, plane, face, region, cache);
   }
 

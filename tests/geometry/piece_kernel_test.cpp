@@ -37,6 +37,35 @@ PieceKernel kernelOf(const ConvexPolyhedron& poly) { return static_cast<PieceKer
 const std::vector<std::vector<int>> kBoxFaces = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4},
                                                  {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
 
+// The terrain builders' prism faces (src/terrain/builder_support.cpp):
+// vertices 0-2 the top, 3-5 the bottom.
+const std::vector<std::vector<int>> kPrismFaces = {{0, 1, 2}, {3, 5, 4}, {0, 3, 4, 1}, {1, 4, 5, 2}, {2, 5, 3, 0}};
+
+// A random heightfield cell or extruded mesh triangle: top corners at a
+// random scale and place, the bottom straight down (a heightfield, a flat
+// cell one time in four) or along the top's normal (an extrusion).
+std::vector<Vector3d> randomPrism(wtc::test::RandomPieces& random) {
+  const double cell = std::pow(10.0, random.uniform(-2, 1));
+  const Vector3d at(random.uniform(-1e4, 1e4), random.uniform(-1e4, 1e4), random.uniform(-100, 100));
+  const bool flat = random.uniformInt(0, 3) == 0;
+  auto height = [&] { return flat ? 0.0 : cell * random.uniform(-1, 1); };
+  std::vector<Vector3d> v = {at + Vector3d(0, 0, height()), at + Vector3d(cell, 0, height()),
+                             at + Vector3d(0, cell, height())};
+  if (random.uniformInt(0, 1) == 0) {  // the cell's other triangle
+    v[0] = at + Vector3d(cell, 0, height());
+    v[1] = at + Vector3d(cell, cell, height());
+  }
+  if (random.uniformInt(0, 1) == 0) {
+    const double floor = at.z() - 2 * cell;
+    for (int i = 0; i < 3; ++i) v.push_back(Vector3d(v[i].x(), v[i].y(), floor));
+  } else {
+    const Vector3d n = (v[1] - v[0]).cross(v[2] - v[0]).normalized();
+    const double thickness = cell * random.uniform(0.05, 1.0);
+    for (int i = 0; i < 3; ++i) v.push_back(v[i] - thickness * n);
+  }
+  return v;
+}
+
 std::vector<Vector3d> boxCorners(const Vector3d& min, const Vector3d& max) {
   std::vector<Vector3d> v(8);
   for (int i = 0; i < 8; ++i)
@@ -143,6 +172,15 @@ TEST(PieceKernelTest, AxisAlignedBoxesGetTheBoxKernel) {
   EXPECT_EQ(kernelOf(wtc::testing::makeShape(wtc::testing::ShapeId::kBox)), PieceKernel::kAxisBox);
 }
 
+TEST(PieceKernelTest, BuildersPrismsGetThePrismKernel) {
+  // Case: a heightfield cell through fromMesh with the builders' faces, and
+  // a prism formed from another's topology (the compact terrains' way).
+  wtc::test::RandomPieces random(7);
+  const ConvexPolyhedron prism = ConvexPolyhedron::fromMesh(randomPrism(random), kPrismFaces);
+  EXPECT_EQ(kernelOf(prism), PieceKernel::kPrism);
+  EXPECT_EQ(kernelOf(PolyhedronLayout::sameTopologyAs(prism, randomPrism(random), kPrismFaces)), PieceKernel::kPrism);
+}
+
 TEST(PieceKernelTest, OtherPiecesGetTheGeneralKernel) {
   // Case: a rotated box, a box whose faces are listed from another corner
   // (the kernel reads box()'s face order), a prism and the hulls.
@@ -154,6 +192,7 @@ TEST(PieceKernelTest, OtherPiecesGetTheGeneralKernel) {
   std::rotate(shifted[0].begin(), shifted[0].begin() + 1, shifted[0].end());
   EXPECT_EQ(kernelOf(ConvexPolyhedron::fromMesh(boxCorners(Vector3d(0, 0, 0), Vector3d(1, 2, 3)), shifted)),
             PieceKernel::kGeneral);
+  // The benchmark's prism is Qhull's, its faces in Qhull's order.
   for (auto shape : {wtc::testing::ShapeId::kPrism, wtc::testing::ShapeId::kHull20, wtc::testing::ShapeId::kHull64}) {
     EXPECT_EQ(kernelOf(wtc::testing::makeShape(shape)), PieceKernel::kGeneral) << wtc::testing::toString(shape);
   }
@@ -182,6 +221,23 @@ TEST(PieceKernelTest, BoxKernelAnswersAsTheGeneralQueryBitForBit) {
   }
   EXPECT_EQ(boxes, kPieces);
   expectSameAsGeneral(wtc::testing::makeShape(wtc::testing::ShapeId::kBox), random);
+}
+
+TEST(PieceKernelTest, PrismKernelAnswersAsTheGeneralQueryBitForBit) {
+  // Case: random heightfield cells and extruded triangles (cells 1 cm to
+  // 10 m, up to 1e4 m from the origin, flat and tilted tops, bottoms straight
+  // down or along the normal), built through fromMesh and formed from a
+  // reference's topology, each queried as the boxes are.
+  wtc::test::RandomPieces random(20261127);
+  const ConvexPolyhedron reference = ConvexPolyhedron::fromMesh(randomPrism(random), kPrismFaces);
+  for (int i = 0; i < kPieces; ++i) {
+    const std::vector<Vector3d> corners = randomPrism(random);
+    const ConvexPolyhedron poly = i % 2 == 0 ? ConvexPolyhedron::fromMesh(corners, kPrismFaces)
+                                             : PolyhedronLayout::sameTopologyAs(reference, corners, kPrismFaces);
+    ASSERT_EQ(kernelOf(poly), PieceKernel::kPrism) << "prism " << i;
+    expectSameAsGeneral(poly, random);
+    if (HasFatalFailure()) return;
+  }
 }
 
 }  // namespace

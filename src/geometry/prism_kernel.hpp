@@ -1,0 +1,92 @@
+#pragma once
+// The point query's kernel for the terrain builders' triangular prism
+// (piece_kernel.hpp): vertices 0-2 the top triangle, 3-5 the bottom one,
+// faces {0, 1, 2}, {3, 5, 4}, {0, 3, 4, 1}, {1, 4, 5, 2}, {2, 5, 3, 0}
+// (src/terrain/builder_support.cpp's kPrismFaces): every heightfield cell
+// and extruded mesh triangle, stored or formed.
+//
+// The arithmetic is the general query's; the topology is constant: a face's
+// size and first face-edge, an edge's twin and a vertex's three neighbours
+// come from the tables below instead of from the piece's lists (the general
+// vertex region walks around the vertex through the twins, a search of the
+// face starts per step; its answer does not depend on the order of the
+// three dot products).
+#include <array>
+#include <cstdint>
+
+#include <Eigen/Core>
+
+#include "feature_regions.hpp"
+#include "polyhedron_layout.hpp"
+#include "wtc/geometry/convex_polyhedron.hpp"
+
+namespace wtc::detail {
+
+/// The prism's faces, flat (face f is kPrismList[kPrismStart[f]] up to
+/// kPrismStart[f + 1]), counter-clockwise from outside.
+inline constexpr std::int32_t kPrismStart[6] = {0, 3, 6, 10, 14, 18};
+inline constexpr std::int32_t kPrismList[18] = {0, 1, 2, 3, 5, 4, 0, 3, 4, 1, 1, 4, 5, 2, 2, 5, 3, 0};
+inline constexpr int kPrismFaceCount = 5;
+inline constexpr int kPrismFaceEdges = 18;
+
+/// The vertex face-edge e starts at (edge k of a face runs from vertex k - 1
+/// to vertex k, cyclically).
+constexpr std::int32_t prismEdgeFrom(int e) {
+  int f = 0;
+  while (kPrismStart[f + 1] <= e) ++f;
+  return kPrismList[e == kPrismStart[f] ? kPrismStart[f + 1] - 1 : e - 1];
+}
+
+/// Face-edge twins: the same edge, run the other way, in the other face.
+inline constexpr std::array<std::int32_t, kPrismFaceEdges> kPrismTwin = [] {
+  std::array<std::int32_t, kPrismFaceEdges> twin{};
+  for (int e = 0; e < kPrismFaceEdges; ++e) {
+    for (int g = 0; g < kPrismFaceEdges; ++g) {
+      if (prismEdgeFrom(g) == kPrismList[e] && kPrismList[g] == prismEdgeFrom(e)) twin[e] = g;
+    }
+  }
+  return twin;
+}();
+
+/// Each vertex's three neighbours: the vertices that precede it in its faces.
+inline constexpr std::array<std::array<std::int32_t, 3>, 6> kPrismNeighbours = [] {
+  std::array<std::array<std::int32_t, 3>, 6> around{};
+  std::array<int, 6> count{};
+  for (int e = 0; e < kPrismFaceEdges; ++e) {
+    const std::int32_t at = kPrismList[e];
+    around[at][count[at]++] = prismEdgeFrom(e);
+  }
+  return around;
+}();
+
+/// classify for the prism: faces 0 and 1 are triangles, 2 to 4 quads.
+inline FaceRegion prismClassify(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, int face) {
+  const std::int32_t start = kPrismStart[face];
+  const double* side = PolyhedronLayout::pd(poly) + kPrismFaceCount + 4 * start;  // faceEdgePlanes(face)
+  if (face < 2) return regionOfMask(kPrismList + start, start, 3, crossedEdges<3>(side, q));
+  return regionOfMask(kPrismList + start, start, 4, crossedEdges<4>(side, q));
+}
+
+/// edgeRegion for the prism: the twin's side plane from the table.
+inline bool prismEdgeRegion(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, const FaceRegion& region,
+                            Eigen::Vector3d* closest) {
+  if (region.only_edge < 0) return false;
+  const double* twin = PolyhedronLayout::pd(poly) + kPrismFaceCount + 4 * kPrismTwin[region.only_edge];
+  return edgeRegionBeyond(poly, q, region, twin, closest);
+}
+
+/// vertexRegion for the prism: the vertex's three edges from the table.
+inline bool prismVertexRegion(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, const FaceRegion& region,
+                              Eigen::Vector3d* closest) {
+  if (region.into_vertex < 0) return false;
+  const std::int32_t at = region.seed[0];
+  const Eigen::Vector3d a = poly.vertexLocal(at);
+  const Eigen::Vector3d d = q - a;
+  for (const std::int32_t c : kPrismNeighbours[at]) {
+    if (d.dot(poly.vertexLocal(c) - a) > 0.0) return false;
+  }
+  *closest = a;
+  return true;
+}
+
+}  // namespace wtc::detail
