@@ -71,11 +71,30 @@ bool isBuildersPrism(const ConvexPolyhedron& poly) {
   return true;
 }
 
+// A builders' prism that stands upright on a flat bottom: side normals with
+// n_z = 0, the bottom's (0, 0, -1), and each side plane zero where
+// kUprightSideTerms drops it.
+bool isUpright(const ConvexPolyhedron& poly) {
+  const double* nx = Layout::nx(poly);
+  const double* ny = Layout::ny(poly);
+  const double* nz = Layout::nz(poly);
+  if (!(nx[1] == 0.0 && ny[1] == 0.0 && nz[1] == -1.0)) return false;
+  for (int f = 2; f < kPrismFaceCount; ++f) {
+    if (nz[f] != 0.0) return false;
+  }
+  const double* side = Layout::faceEdgePlanes(poly, 0);
+  for (int e = 0; e < kPrismFaceEdges; ++e, side += 4) {
+    if (kUprightSideTerms[e] == SideTerms::kXY && side[2] != 0.0) return false;
+    if (kUprightSideTerms[e] == SideTerms::kZ && (side[0] != 0.0 || side[1] != 0.0)) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 PieceKernel kernelFor(const ConvexPolyhedron& poly) {
   if (isAxisBox(poly)) return PieceKernel::kAxisBox;
-  if (isBuildersPrism(poly)) return PieceKernel::kPrism;
+  if (isBuildersPrism(poly)) return isUpright(poly) ? PieceKernel::kUprightPrism : PieceKernel::kPrism;
   return PieceKernel::kGeneral;
 }
 

@@ -17,9 +17,10 @@
 namespace wtc::detail {
 
 enum class PieceKernel : std::uint8_t {
-  kGeneral = 0,  ///< any piece: the general query
-  kAxisBox = 1,  ///< an axis-aligned box in ConvexPolyhedron::box's layout (box_kernel.hpp)
-  kPrism = 2,    ///< a triangular prism in the terrain builders' layout (prism_kernel.hpp)
+  kGeneral = 0,       ///< any piece: the general query
+  kAxisBox = 1,       ///< an axis-aligned box in ConvexPolyhedron::box's layout (box_kernel.hpp)
+  kPrism = 2,         ///< a triangular prism in the terrain builders' layout (prism_kernel.hpp)
+  kUprightPrism = 3,  ///< such a prism with vertical sides on a flat bottom: a heightfield cell
 };
 
 /// The kernel that fits `poly`, whose numbers and topology are complete

@@ -225,8 +225,11 @@ PointQuery query(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOpt
   // decisions and answers, fewer operations.
   const auto kernel = static_cast<detail::PieceKernel>(Layout::kernel(poly));
   const bool box = kernel == detail::PieceKernel::kAxisBox;
-  const bool prism = kernel == detail::PieceKernel::kPrism;
-  const double plane = box ? detail::boxPlaneBound(poly, q, &face) : Layout::planeBoundLocal(poly, q, &face);
+  const bool upright = kernel == detail::PieceKernel::kUprightPrism;
+  const bool prism = upright || kernel == detail::PieceKernel::kPrism;
+  const double plane = box       ? detail::boxPlaneBound(poly, q, &face)
+                       : upright ? detail::uprightPrismPlaneBound(poly, q, &face)
+                                 : Layout::planeBoundLocal(poly, q, &face);
   if (plane <= 0.0 && !poly.isFlat()) {
     if (cache != nullptr) cache->count = 0;
     return fromPlane(poly, p, plane, face, QueryStatus::kInside);
@@ -240,9 +243,10 @@ PointQuery query(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOpt
   }
 
   // 3. The nearest face's region: inside it, the projection is exact.
-  const FaceRegion region = box     ? detail::boxClassify(poly, q, face)
-                            : prism ? detail::prismClassify(poly, q, face)
-                                    : detail::classify(poly, q, face);
+  const FaceRegion region = box       ? detail::boxClassify(poly, q, face)
+                            : upright ? detail::uprightPrismClassify(poly, q, face)
+                            : prism   ? detail::prismClassify(poly, q, face)
+                                      : detail::classify(poly, q, face);
   if (region.inside) {
     if (cache != nullptr) cache->count = 0;
     // max: on a flat piece both faces can read -roundoff on the polygon.

@@ -1,6 +1,7 @@
 // The query kernels chosen per piece (src/geometry/piece_kernel.hpp): which
 // pieces get one, and that a kernel answers every query exactly as the
 // general query does, bit for bit (every field, the cache, every status).
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -20,6 +21,8 @@
 namespace {
 
 using Eigen::Vector3d;
+using testing::AnyOf;
+using testing::Eq;
 using wtc::ConvexPolyhedron;
 using wtc::PointQuery;
 using wtc::QueryCache;
@@ -176,9 +179,18 @@ TEST(PieceKernelTest, BuildersPrismsGetThePrismKernel) {
   // Case: a heightfield cell through fromMesh with the builders' faces, and
   // a prism formed from another's topology (the compact terrains' way).
   wtc::test::RandomPieces random(7);
-  const ConvexPolyhedron prism = ConvexPolyhedron::fromMesh(randomPrism(random), kPrismFaces);
-  EXPECT_EQ(kernelOf(prism), PieceKernel::kPrism);
-  EXPECT_EQ(kernelOf(PolyhedronLayout::sameTopologyAs(prism, randomPrism(random), kPrismFaces)), PieceKernel::kPrism);
+  const std::vector<Vector3d> cell = {{0, 0, 1.2}, {0.5, 0, 1.1}, {0, 0.5, 1.3},
+                                      {0, 0, -1},  {0.5, 0, -1},  {0, 0.5, -1}};
+  const ConvexPolyhedron prism = ConvexPolyhedron::fromMesh(cell, kPrismFaces);
+  EXPECT_EQ(kernelOf(prism), PieceKernel::kUprightPrism);
+  std::vector<Vector3d> tilted = cell;
+  tilted[5].x() = 0.01;  // a side no longer vertical
+  EXPECT_EQ(kernelOf(PolyhedronLayout::sameTopologyAs(prism, tilted, kPrismFaces)), PieceKernel::kPrism);
+  std::vector<Vector3d> raised = cell;
+  raised[4].z() = -0.9;  // the bottom no longer flat
+  EXPECT_EQ(kernelOf(ConvexPolyhedron::fromMesh(raised, kPrismFaces)), PieceKernel::kPrism);
+  EXPECT_THAT(kernelOf(PolyhedronLayout::sameTopologyAs(prism, randomPrism(random), kPrismFaces)),
+              AnyOf(Eq(PieceKernel::kPrism), Eq(PieceKernel::kUprightPrism)));
 }
 
 TEST(PieceKernelTest, OtherPiecesGetTheGeneralKernel) {
@@ -230,14 +242,20 @@ TEST(PieceKernelTest, PrismKernelAnswersAsTheGeneralQueryBitForBit) {
   // reference's topology, each queried as the boxes are.
   wtc::test::RandomPieces random(20261127);
   const ConvexPolyhedron reference = ConvexPolyhedron::fromMesh(randomPrism(random), kPrismFaces);
+  int upright = 0;
+  int tilted = 0;
   for (int i = 0; i < kPieces; ++i) {
     const std::vector<Vector3d> corners = randomPrism(random);
     const ConvexPolyhedron poly = i % 2 == 0 ? ConvexPolyhedron::fromMesh(corners, kPrismFaces)
                                              : PolyhedronLayout::sameTopologyAs(reference, corners, kPrismFaces);
-    ASSERT_EQ(kernelOf(poly), PieceKernel::kPrism) << "prism " << i;
+    ASSERT_THAT(kernelOf(poly), AnyOf(Eq(PieceKernel::kPrism), Eq(PieceKernel::kUprightPrism))) << "prism " << i;
+    ++(kernelOf(poly) == PieceKernel::kUprightPrism ? upright : tilted);
     expectSameAsGeneral(poly, random);
     if (HasFatalFailure()) return;
   }
+  // Both prism kernels were held to the general query, each many times.
+  EXPECT_GT(upright, kPieces / 4);
+  EXPECT_GT(tilted, kPieces / 4);
 }
 
 }  // namespace
