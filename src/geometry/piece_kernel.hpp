@@ -26,5 +26,9 @@ enum class PieceKernel : std::uint8_t {
 /// The kernel that fits `poly`, whose numbers and topology are complete
 /// (convex_polyhedron.cpp calls it last when it builds a piece).
 PieceKernel kernelFor(const ConvexPolyhedron& poly);
+/// kernelFor of a piece whose topology was copied from a piece of kernel
+/// `like` (PolyhedronLayout::sameTopologyAs): a prism's face lists need no
+/// second look, only its numbers (the compact terrains form prisms so).
+PieceKernel kernelForTopologyOf(const ConvexPolyhedron& poly, PieceKernel like);
 
 }  // namespace wtc::detail
