@@ -55,8 +55,8 @@ bool isAxisBox(const ConvexPolyhedron& poly) {
 
 // The terrain builders' prism: its face starts and lists, solid. The twins
 // and the neighbours follow from the face lists of a closed piece (fromMesh
-// and the copied topology of the formed prisms guarantee it). Checked for
-// every prism a compact terrain forms.
+// and the copied topology of the formed prisms guarantee it). A prism
+// formed from another's topology inherits this answer (kernelForTopologyOf).
 bool isBuildersPrism(const ConvexPolyhedron& poly) {
   if (poly.faceCount() != kPrismFaceCount || poly.isFlat()) return false;
   // topology: [face starts (F + 1) | face lists], as kPrismStart then kPrismList.
