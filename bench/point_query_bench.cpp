@@ -5,6 +5,7 @@
 //   PointQuery/<method>/<shape>/<set>      method: wtc, bullet, fcl, brute
 //   PointQuery/wtc_maxdist/<shape>/<set>   max_distance = kWheelRadius, as the wheel queries
 //   PointQuery/wtc_gjk/<shape>/<set>       feature_regions off: the plain modified GJK
+//   PointQuery/wtc*/cell/<set>             the prism's cell as the terrain builders build it
 //   PointQueryTolerance/<shape>/<tol>      plain GJK on the mixed set, relative_tolerance = tol
 //                                          (with the region tests on, most queries never
 //                                          reach GJK and the tolerance cannot act)
@@ -70,11 +71,32 @@ struct Case {
   std::vector<wtc::testing::BruteForceResult> exact;
 };
 
-const Case& getCase(ShapeId shape, QuerySetId set) {
-  static std::map<std::pair<ShapeId, QuerySetId>, std::unique_ptr<Case>> cases;
+// The heightfield cell of ShapeId::kPrism (tests/support/scenarios.cpp),
+// built as the terrain builders build it (fromMesh with their face order,
+// src/terrain/builder_support.cpp) instead of through Qhull: the piece the
+// query's prism kernel serves (src/geometry/prism_kernel.hpp).
+wtc::ConvexPolyhedron makeBuildersCell() {
+  const Eigen::Vector3d origin(3.2, -1.6, 0.0);
+  const double cell = 0.4;
+  const double base = -0.3;
+  const Eigen::Vector3d top[3] = {{0.0, 0.0, 0.12}, {cell, 0.0, 0.05}, {0.0, cell, 0.21}};
+  std::vector<Eigen::Vector3d> vertices;
+  for (const auto& t : top) vertices.push_back(origin + t);
+  for (const auto& t : top) vertices.push_back(origin + Eigen::Vector3d(t.x(), t.y(), base));
+  return wtc::ConvexPolyhedron::fromMesh(vertices, {{0, 1, 2}, {3, 5, 4}, {0, 3, 4, 1}, {1, 4, 5, 2}, {2, 5, 3, 0}});
+}
+
+// A shape by its run name: the shared scenarios' and "cell".
+wtc::ConvexPolyhedron makeNamedShape(const std::string& name) {
+  if (name == "cell") return makeBuildersCell();
+  return wtc::testing::makeShape(*wtc::testing::shapeFromString(name));
+}
+
+const Case& getCase(const std::string& shape, QuerySetId set) {
+  static std::map<std::pair<std::string, QuerySetId>, std::unique_ptr<Case>> cases;
   auto& entry = cases[{shape, set}];
   if (!entry) {
-    wtc::ConvexPolyhedron poly = wtc::testing::makeShape(shape);
+    wtc::ConvexPolyhedron poly = makeNamedShape(shape);
     auto points = wtc::testing::makeQuerySet(poly, set, kPointsPerRun);
     const wtc::testing::BruteForceOracle oracle(poly);
     std::vector<wtc::testing::BruteForceResult> exact;
@@ -219,7 +241,8 @@ Accuracy measure(const Method& method, const Case& c, double max_distance) {
 
 // Registers `name`: `Method(poly, extra...)` timed on the points of (shape, set).
 template <class Method, class... Extra>
-void registerRun(const std::string& name, ShapeId shape, QuerySetId set, double max_distance, Extra... extra) {
+void registerRun(const std::string& name, const std::string& shape, QuerySetId set, double max_distance,
+                 Extra... extra) {
   auto accuracy = std::make_shared<std::optional<Accuracy>>();  // measured on the first call
   benchmark::RegisterBenchmark(name.c_str(), [=](benchmark::State& state) {
     const Case& c = getCase(shape, set);
@@ -244,9 +267,10 @@ void registerRun(const std::string& name, ShapeId shape, QuerySetId set, double 
 
 void registerAll() {
   constexpr double kNoLimit = std::numeric_limits<double>::infinity();
-  for (ShapeId shape : wtc::testing::kAllShapes) {
+  for (ShapeId id : wtc::testing::kAllShapes) {
+    const std::string shape = toString(id);
     for (QuerySetId set : wtc::testing::kAllQuerySets) {
-      const std::string suffix = std::string("/") + toString(shape) + "/" + toString(set);
+      const std::string suffix = "/" + shape + "/" + toString(set);
       registerRun<WtcMethod>("PointQuery/wtc" + suffix, shape, set, kNoLimit);
       registerRun<BulletMethod>("PointQuery/bullet" + suffix, shape, set, kNoLimit);
       registerRun<FclMethod>("PointQuery/fcl" + suffix, shape, set, kNoLimit);
@@ -257,11 +281,20 @@ void registerAll() {
                              wtc::QueryOptions{.feature_regions = false});
     }
   }
-  for (ShapeId shape : wtc::testing::kAllShapes) {
+  // The prism's cell as the terrain builders make it: WTC's runs only (the
+  // other methods see the same vertices as the prism's).
+  for (QuerySetId set : wtc::testing::kAllQuerySets) {
+    const std::string suffix = std::string("/cell/") + toString(set);
+    registerRun<WtcMethod>("PointQuery/wtc" + suffix, "cell", set, kNoLimit);
+    registerRun<WtcMethod>("PointQuery/wtc_maxdist" + suffix, "cell", set, kWheelRadius,
+                           wtc::QueryOptions{.max_distance = kWheelRadius});
+  }
+  for (ShapeId id : wtc::testing::kAllShapes) {
+    const std::string shape = toString(id);
     for (int exponent = 3; exponent <= 12; ++exponent) {
       const double tolerance = std::pow(10.0, -exponent);
-      registerRun<WtcMethod>("PointQueryTolerance/" + std::string(toString(shape)) + "/1e-" + std::to_string(exponent),
-                             shape, QuerySetId::kMixed, kNoLimit,
+      registerRun<WtcMethod>("PointQueryTolerance/" + shape + "/1e-" + std::to_string(exponent), shape,
+                             QuerySetId::kMixed, kNoLimit,
                              wtc::QueryOptions{.relative_tolerance = tolerance, .feature_regions = false});
     }
   }

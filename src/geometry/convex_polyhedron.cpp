@@ -1,5 +1,6 @@
 #include "wtc/geometry/convex_polyhedron.hpp"
 
+#include "piece_kernel.hpp"
 #include "polyhedron_layout.hpp"
 
 #include <algorithm>
@@ -168,13 +169,16 @@ ConvexPolyhedron ConvexPolyhedron::box(const Eigen::Vector3d& min, const Eigen::
 ConvexPolyhedron detail::PolyhedronLayout::sameTopologyAs(const ConvexPolyhedron& like,
                                                           const std::vector<Eigen::Vector3d>& vertices,
                                                           const std::vector<std::vector<int>>& faces) {
-  return ConvexPolyhedron::assemble(vertices, faces, like.flat_, nullptr, &like.topology_);
+  ConvexPolyhedron poly = ConvexPolyhedron::assemble(vertices, faces, like.flat_, nullptr, &like.topology_);
+  poly.kernel_ = static_cast<std::uint8_t>(kernelForTopologyOf(poly, static_cast<PieceKernel>(like.kernel_)));
+  return poly;
 }
 
 void detail::PolyhedronLayout::sameTopologyInto(ConvexPolyhedron& into, const ConvexPolyhedron& like,
                                                 const std::vector<Eigen::Vector3d>& vertices,
                                                 const std::vector<std::vector<int>>& faces) {
   ConvexPolyhedron::assembleInto(into, vertices, faces, like.flat_, nullptr, &like.topology_);
+  into.kernel_ = static_cast<std::uint8_t>(kernelForTopologyOf(into, static_cast<PieceKernel>(like.kernel_)));
 }
 
 ConvexPolyhedron ConvexPolyhedron::assemble(const std::vector<Eigen::Vector3d>& vertices,
@@ -301,6 +305,8 @@ void ConvexPolyhedron::assembleInto(ConvexPolyhedron& poly, const std::vector<Ei
   }
   if (topology == nullptr) twinsAndAdjacency(poly, faces);
   poly.numbers_.shrink_to_fit();
+  // A copied topology's kernel is its caller's to choose (sameTopologyAs).
+  poly.kernel_ = topology == nullptr ? static_cast<std::uint8_t>(detail::kernelFor(poly)) : 0;
 }
 
 void ConvexPolyhedron::faceLists(ConvexPolyhedron& poly, const std::vector<std::vector<int>>& faces) {

@@ -43,44 +43,14 @@ inline std::uint32_t crossedEdges(const double* side, const Eigen::Vector3d& q) 
   return mask;
 }
 
-// Which edges of face `face` the projection of q onto its plane lies beyond.
-// Face vertices run counter-clockwise about the outward normal n, so the
-// projection is on the inner side of edge (a, b) when s . q >= s . a with
-// s = n x (b - a), the edge's stored side plane (the projection along n does
-// not change s . q). Inside every edge, the projection *is* the closest
-// point. Beyond one edge, that edge; beyond two consecutive edges, their
-// shared vertex: the feature to test next and, failing that, to seed GJK.
-//
-// The crossed edges are gathered as a bit mask, one bit per edge set without
-// a branch, and the cases read from it: none crossed; exactly two adjacent
-// (the mask shifted down to its lowest bit is 0b11, or the first and the last
-// edge); otherwise the lowest crossed edge, alone or not. Faces with more
-// edges than the mask holds (hull faces merged from many coplanar
-// triangles) count them one by one, to the same answer.
-inline FaceRegion classify(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, int face) {
-  const std::int32_t* vertices = PolyhedronLayout::faceVertexList(poly, face);
-  const int size = PolyhedronLayout::faceSize(poly, face);
-  const double* side = PolyhedronLayout::faceEdgePlanes(poly, face);
+// The region of a face from its crossing mask (bit k set when the
+// projection lies beyond edge k; see classify): the face's `size` vertex
+// indices `vertices` and its first face-edge `start`.
+inline FaceRegion regionOfMask(const std::int32_t* vertices, std::int32_t start, int size, std::uint32_t mask) {
   FaceRegion region;
-  if (size > kMaskEdges) return classifyLarge(poly, q, face);
-  std::uint32_t mask = 0;
-  switch (size) {  // triangles and quads (every face of a prism or a box) unrolled
-    case 3:
-      mask = crossedEdges<3>(side, q);
-      break;
-    case 4:
-      mask = crossedEdges<4>(side, q);
-      break;
-    default:
-      for (int k = 0; k < size; ++k, side += 4) {
-        const bool beyond = side[0] * q.x() + side[1] * q.y() + side[2] * q.z() < side[3];
-        mask |= static_cast<std::uint32_t>(beyond) << k;
-      }
-  }
   if (mask == 0) return region;
   region.inside = false;
   const int first = std::countr_zero(mask);
-  const std::int32_t start = PolyhedronLayout::faceEdgeStart(poly, face);
   if ((mask >> first) == 0b11u) {
     region.count = 1;
     region.seed[0] = vertices[first];
@@ -98,16 +68,56 @@ inline FaceRegion classify(const ConvexPolyhedron& poly, const Eigen::Vector3d& 
   return region;
 }
 
+/// regionOfMask of face `face` of `poly`, its lists read from the piece.
+inline FaceRegion regionOfMask(const ConvexPolyhedron& poly, int face, int size, std::uint32_t mask) {
+  return regionOfMask(PolyhedronLayout::faceVertexList(poly, face), PolyhedronLayout::faceEdgeStart(poly, face), size,
+                      mask);
+}
+
+// Which edges of face `face` the projection of q onto its plane lies beyond.
+// Face vertices run counter-clockwise about the outward normal n, so the
+// projection is on the inner side of edge (a, b) when s . q >= s . a with
+// s = n x (b - a), the edge's stored side plane (the projection along n does
+// not change s . q). Inside every edge, the projection *is* the closest
+// point. Beyond one edge, that edge; beyond two consecutive edges, their
+// shared vertex: the feature to test next and, failing that, to seed GJK.
+//
+// The crossed edges are gathered as a bit mask, one bit per edge set without
+// a branch, and the cases read from it: none crossed; exactly two adjacent
+// (the mask shifted down to its lowest bit is 0b11, or the first and the last
+// edge); otherwise the lowest crossed edge, alone or not. Faces with more
+// edges than the mask holds (hull faces merged from many coplanar
+// triangles) count them one by one, to the same answer.
+inline FaceRegion classify(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, int face) {
+  const int size = PolyhedronLayout::faceSize(poly, face);
+  const double* side = PolyhedronLayout::faceEdgePlanes(poly, face);
+  if (size > kMaskEdges) return classifyLarge(poly, q, face);
+  std::uint32_t mask = 0;
+  switch (size) {  // triangles and quads (every face of a prism or a box) unrolled
+    case 3:
+      mask = crossedEdges<3>(side, q);
+      break;
+    case 4:
+      mask = crossedEdges<4>(side, q);
+      break;
+    default:
+      for (int k = 0; k < size; ++k, side += 4) {
+        const bool beyond = side[0] * q.x() + side[1] * q.y() + side[2] * q.z() < side[3];
+        mask |= static_cast<std::uint32_t>(beyond) << k;
+      }
+  }
+  return regionOfMask(poly, face, size, mask);
+}
+
 // The Voronoi region of edge (a, b) shared by faces f and g: q beyond both
 // faces' side planes of the edge (the edge's normal cone is the polar of the
 // two in-face directions) and between the planes through a and b normal to
 // the edge. Inside it the closest point is q's projection on the edge,
 // exactly. `region` crossed only this edge of f, so f's side is known; the
-// twin face-edge gives g's. Returns false when q is not in the region.
-inline bool edgeRegion(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, const FaceRegion& region,
-                       Eigen::Vector3d* closest) {
-  if (region.only_edge < 0) return false;
-  const double* twin = PolyhedronLayout::faceEdgePlane(poly, PolyhedronLayout::faceEdgeTwin(poly, region.only_edge));
+// twin face-edge gives g's side plane, `twin` (4 doubles: s, s . a).
+// Returns false when q is not in the region.
+inline bool edgeRegionBeyond(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, const FaceRegion& region,
+                             const double* twin, Eigen::Vector3d* closest) {
   if (twin[0] * q.x() + twin[1] * q.y() + twin[2] * q.z() > twin[3]) return false;
   const Eigen::Vector3d a = poly.vertexLocal(region.seed[0]);
   const Eigen::Vector3d ab = poly.vertexLocal(region.seed[1]) - a;
@@ -116,6 +126,14 @@ inline bool edgeRegion(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, c
   if (along < 0.0 || along > length2) return false;
   *closest = a + (along / length2) * ab;
   return true;
+}
+
+/// edgeRegionBeyond with the twin's side plane looked up in the piece.
+inline bool edgeRegion(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, const FaceRegion& region,
+                       Eigen::Vector3d* closest) {
+  if (region.only_edge < 0) return false;
+  const double* twin = PolyhedronLayout::faceEdgePlane(poly, PolyhedronLayout::faceEdgeTwin(poly, region.only_edge));
+  return edgeRegionBeyond(poly, q, region, twin, closest);
 }
 
 // The Voronoi region of vertex a: (q - a) . (c - a) <= 0 for every edge

@@ -9,7 +9,10 @@
 #include <cmath>
 #include <string>
 
+#include "box_kernel.hpp"
 #include "feature_regions.hpp"
+#include "piece_kernel.hpp"
+#include "prism_kernel.hpp"
 #include "signed_volumes.hpp"
 #include "wtc/base/error.hpp"
 
@@ -46,29 +49,32 @@ void validate(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOption
 
 // Result on or inside face `face` of the plane bound: exact, since inside a
 // convex polyhedron the nearest surface point lies on the nearest face plane.
-PointQuery fromPlane(const ConvexPolyhedron& poly, const Vector3d& p, double bound, int face, QueryStatus status) {
-  PointQuery r;
-  r.signed_distance = bound;
-  r.normal = poly.faceNormal(face);
-  r.closest_point = p - bound * r.normal;
+// Inline and built in one piece: half the mixed set's queries end here, and
+// a call and a default-built result written twice cost more than the body.
+inline PointQuery fromPlane(const ConvexPolyhedron& poly, const Vector3d& p, double bound, int face,
+                            QueryStatus status) {
+  const Vector3d normal(Layout::nx(poly)[face], Layout::ny(poly)[face], Layout::nz(poly)[face]);
   // On the surface (to roundoff) the direction is the limit from outside.
   const bool on_surface = std::abs(bound) <= tolerance::kTouchingRelative * poly.size();
-  r.direction = status == QueryStatus::kInside && !on_surface ? r.normal : Vector3d(-r.normal);
-  r.status = status;
-  return r;
+  const bool outward = status == QueryStatus::kInside && !on_surface;
+  return PointQuery{.signed_distance = bound,
+                    .closest_point = p - bound * normal,
+                    .direction = outward ? normal : Vector3d(-normal),
+                    .normal = normal,
+                    .iterations = 0,
+                    .status = status};
 }
 
 // A result from the vector v = closest point - p, of length dist > 0.
-PointQuery toward(const Vector3d& p, const Vector3d& v, double dist, double signed_distance, QueryStatus status,
-                  int iterations = 0) {
-  PointQuery r;
-  r.signed_distance = signed_distance;
-  r.closest_point = p + v;
-  r.direction = v / dist;
-  r.normal = -r.direction;
-  r.iterations = iterations;
-  r.status = status;
-  return r;
+inline PointQuery toward(const Vector3d& p, const Vector3d& v, double dist, double signed_distance, QueryStatus status,
+                         int iterations = 0) {
+  const Vector3d direction = v / dist;
+  return PointQuery{.signed_distance = signed_distance,
+                    .closest_point = p + v,
+                    .direction = direction,
+                    .normal = -direction,
+                    .iterations = iterations,
+                    .status = status};
 }
 
 PointQuery beyondBox(const ConvexPolyhedron& poly, const Vector3d& p, double distance) {
@@ -215,7 +221,15 @@ PointQuery query(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOpt
   // 2. Face planes: exact inside, a lower bound outside.
   const Vector3d q = p - poly.origin();
   int face = 0;
-  const double plane = Layout::planeBoundLocal(poly, q, &face);
+  // The piece's own kernel where one fits (piece_kernel.hpp): the same
+  // decisions and answers, fewer operations.
+  const auto kernel = static_cast<detail::PieceKernel>(Layout::kernel(poly));
+  const bool box = kernel == detail::PieceKernel::kAxisBox;
+  const bool upright = kernel == detail::PieceKernel::kUprightPrism;
+  const bool prism = upright || kernel == detail::PieceKernel::kPrism;
+  const double plane = box       ? detail::boxPlaneBound(poly, q, &face)
+                       : upright ? detail::uprightPrismPlaneBound(poly, q, &face)
+                                 : Layout::planeBoundLocal(poly, q, &face);
   if (plane <= 0.0 && !poly.isFlat()) {
     if (cache != nullptr) cache->count = 0;
     return fromPlane(poly, p, plane, face, QueryStatus::kInside);
@@ -229,7 +243,10 @@ PointQuery query(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOpt
   }
 
   // 3. The nearest face's region: inside it, the projection is exact.
-  const FaceRegion region = detail::classify(poly, q, face);
+  const FaceRegion region = box       ? detail::boxClassify(poly, q, face)
+                            : upright ? detail::uprightPrismClassify(poly, q, face)
+                            : prism   ? detail::prismClassify(poly, q, face)
+                                      : detail::classify(poly, q, face);
   if (region.inside) {
     if (cache != nullptr) cache->count = 0;
     // max: on a flat piece both faces can read -roundoff on the polygon.
@@ -238,7 +255,11 @@ PointQuery query(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOpt
 
   // 4. The crossed edge's or vertex's region: its closest point is exact.
   Vector3d on_feature;
-  if (detail::edgeRegion(poly, q, region, &on_feature) || detail::vertexRegion(poly, q, region, &on_feature)) {
+  const bool on_edge =
+      prism ? detail::prismEdgeRegion(poly, q, region, &on_feature) : detail::edgeRegion(poly, q, region, &on_feature);
+  if (on_edge || (box     ? detail::boxVertexRegion(poly, q, region, &on_feature)
+                  : prism ? detail::prismVertexRegion(poly, q, region, &on_feature)
+                          : detail::vertexRegion(poly, q, region, &on_feature))) {
     return fromFeature(poly, p, q, on_feature, plane, face, region, cache);
   }
 

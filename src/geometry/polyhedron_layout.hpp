@@ -46,6 +46,11 @@ struct PolyhedronLayout {
   static int faceSize(const P& p, int f) { return p.topology_[f + 1] - p.topology_[f]; }
   static std::int32_t faceEdgeEnd(const P& p, std::int32_t e) { return p.faceEdgeEnd(e); }
   static const double* faceEdgePlane(const P& p, std::int32_t e) { return p.faceEdgePlane(e); }
+  /// The piece's query kernel (detail::PieceKernel), chosen when it was built.
+  static std::uint8_t kernel(const P& p) { return p.kernel_; }
+  /// The same piece answered by the general query: for the tests that hold
+  /// a kernel's answers to the general ones, bit for bit.
+  static void useGeneralKernel(P& p) { p.kernel_ = 0; }
   static int supportLocal(const P& p, const Eigen::Vector3d& dir, int hint) { return p.supportLocal(dir, hint); }
   /// The face-plane bound, inline for the pieces a terrain forms (a
   /// heightfield prism or an extruded triangle has 5 faces, a box 6): the

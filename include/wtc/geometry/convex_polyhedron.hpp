@@ -168,6 +168,10 @@ class ConvexPolyhedron {
   std::int32_t face_count_ = 0;
   bool flat_ = false;
   bool has_adjacency_ = false;
+  // The query kernel that fits this piece, chosen when it is built
+  // (detail::PieceKernel, src/geometry/piece_kernel.hpp); 0: the general one.
+  // In the padding after the flags: no byte more per piece.
+  std::uint8_t kernel_ = 0;
   // [vx vy vz | nx ny nz d | face-edge side planes (sx sy sz s.a)...],
   // local frame.
   std::vector<double> numbers_;

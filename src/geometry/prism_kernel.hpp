@@ -1,0 +1,159 @@
+#pragma once
+// The point query's kernel for the terrain builders' triangular prism
+// (piece_kernel.hpp): vertices 0-2 the top triangle, 3-5 the bottom one,
+// faces {0, 1, 2}, {3, 5, 4}, {0, 3, 4, 1}, {1, 4, 5, 2}, {2, 5, 3, 0}
+// (src/terrain/builder_support.cpp's kPrismFaces): every heightfield cell
+// and extruded mesh triangle, stored or formed.
+//
+// The arithmetic is the general query's; the topology is constant: a face's
+// size and first face-edge, an edge's twin and a vertex's three neighbours
+// come from the tables below instead of from the piece's lists (the general
+// vertex region walks around the vertex through the twins, a search of the
+// face starts per step; its answer does not depend on the order of the
+// three dot products).
+//
+// A heightfield's prism also stands upright on a flat bottom: its side faces'
+// normals have n_z = 0, its bottom's is (0, 0, -1), and the side planes of
+// its vertical and bottom edges have zero components. For it the kernel
+// drops those terms (kVerticalPrism), exactly as the box kernel does
+// (box_kernel.hpp says why that is exact), and where a face value comes out
+// a zero, whose sign the dropped terms could have changed, it takes the
+// general value instead.
+#include <array>
+#include <cstdint>
+
+#include <Eigen/Core>
+
+#include "feature_regions.hpp"
+#include "polyhedron_layout.hpp"
+#include "wtc/geometry/convex_polyhedron.hpp"
+
+namespace wtc::detail {
+
+/// The prism's faces, flat (face f is kPrismList[kPrismStart[f]] up to
+/// kPrismStart[f + 1]), counter-clockwise from outside.
+inline constexpr std::int32_t kPrismStart[6] = {0, 3, 6, 10, 14, 18};
+inline constexpr std::int32_t kPrismList[18] = {0, 1, 2, 3, 5, 4, 0, 3, 4, 1, 1, 4, 5, 2, 2, 5, 3, 0};
+inline constexpr int kPrismFaceCount = 5;
+inline constexpr int kPrismFaceEdges = 18;
+
+/// The vertex face-edge e starts at (edge k of a face runs from vertex k - 1
+/// to vertex k, cyclically).
+constexpr std::int32_t prismEdgeFrom(int e) {
+  int f = 0;
+  while (kPrismStart[f + 1] <= e) ++f;
+  return kPrismList[e == kPrismStart[f] ? kPrismStart[f + 1] - 1 : e - 1];
+}
+
+/// Face-edge twins: the same edge, run the other way, in the other face.
+inline constexpr std::array<std::int32_t, kPrismFaceEdges> kPrismTwin = [] {
+  std::array<std::int32_t, kPrismFaceEdges> twin{};
+  for (int e = 0; e < kPrismFaceEdges; ++e) {
+    for (int g = 0; g < kPrismFaceEdges; ++g) {
+      if (prismEdgeFrom(g) == kPrismList[e] && kPrismList[g] == prismEdgeFrom(e)) twin[e] = g;
+    }
+  }
+  return twin;
+}();
+
+/// Each vertex's three neighbours: the vertices that precede it in its faces.
+inline constexpr std::array<std::array<std::int32_t, 3>, 6> kPrismNeighbours = [] {
+  std::array<std::array<std::int32_t, 3>, 6> around{};
+  std::array<int, 6> count{};
+  for (int e = 0; e < kPrismFaceEdges; ++e) {
+    const std::int32_t at = kPrismList[e];
+    around[at][count[at]++] = prismEdgeFrom(e);
+  }
+  return around;
+}();
+
+/// classify for the prism: faces 0 and 1 are triangles, 2 to 4 quads.
+inline FaceRegion prismClassify(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, int face) {
+  const std::int32_t start = kPrismStart[face];
+  const double* side = PolyhedronLayout::pd(poly) + kPrismFaceCount + 4 * start;  // faceEdgePlanes(face)
+  if (face < 2) return regionOfMask(kPrismList + start, start, 3, crossedEdges<3>(side, q));
+  return regionOfMask(kPrismList + start, start, 4, crossedEdges<4>(side, q));
+}
+
+/// edgeRegion for the prism: the twin's side plane from the table.
+inline bool prismEdgeRegion(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, const FaceRegion& region,
+                            Eigen::Vector3d* closest) {
+  if (region.only_edge < 0) return false;
+  const double* twin = PolyhedronLayout::pd(poly) + kPrismFaceCount + 4 * kPrismTwin[region.only_edge];
+  return edgeRegionBeyond(poly, q, region, twin, closest);
+}
+
+/// vertexRegion for the prism: the vertex's three edges from the table.
+inline bool prismVertexRegion(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, const FaceRegion& region,
+                              Eigen::Vector3d* closest) {
+  if (region.into_vertex < 0) return false;
+  const std::int32_t at = region.seed[0];
+  const Eigen::Vector3d a = poly.vertexLocal(at);
+  const Eigen::Vector3d d = q - a;
+  for (const std::int32_t c : kPrismNeighbours[at]) {
+    if (d.dot(poly.vertexLocal(c) - a) > 0.0) return false;
+  }
+  *closest = a;
+  return true;
+}
+
+/// Which components of a face-edge's side plane an upright prism keeps:
+/// all three (a top edge), x and y (the bottom's edges, vertical edges: s
+/// is horizontal) or z alone (a side face's bottom edge: s is vertical).
+enum class SideTerms : std::uint8_t { kXYZ, kXY, kZ };
+
+/// The upright prism's side-plane terms, by face-edge: the top's three
+/// edges, the bottom's, then each side face's top, vertical, bottom and
+/// vertical edge.
+inline constexpr SideTerms kUprightSideTerms[kPrismFaceEdges] = {
+    SideTerms::kXYZ, SideTerms::kXYZ, SideTerms::kXYZ, SideTerms::kXY, SideTerms::kXY,  SideTerms::kXY,
+    SideTerms::kXYZ, SideTerms::kXY,  SideTerms::kZ,   SideTerms::kXY, SideTerms::kXYZ, SideTerms::kXY,
+    SideTerms::kZ,   SideTerms::kXY,  SideTerms::kXYZ, SideTerms::kXY, SideTerms::kZ,   SideTerms::kXY};
+
+/// The plane bound of an upright prism: the top's value in full, the
+/// bottom's -q_z - d, the sides' n_x q_x + n_y q_y - d; the general scan's
+/// choice; a zero bound recomputed in full (its sign).
+inline double uprightPrismPlaneBound(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, int* face) {
+  const double* a = PolyhedronLayout::nx(poly);
+  const double* b = PolyhedronLayout::ny(poly);
+  const double* c = PolyhedronLayout::nz(poly);
+  const double* d = PolyhedronLayout::pd(poly);
+  const double value[kPrismFaceCount] = {a[0] * q.x() + b[0] * q.y() + c[0] * q.z() - d[0], -q.z() - d[1],
+                                         a[2] * q.x() + b[2] * q.y() - d[2], a[3] * q.x() + b[3] * q.y() - d[3],
+                                         a[4] * q.x() + b[4] * q.y() - d[4]};
+  int best = 0;
+  double best_value = value[0];
+#pragma GCC unroll 5
+  for (int f = 1; f < kPrismFaceCount; ++f) {
+    const bool better = value[f] > best_value;
+    best = better ? f : best;
+    best_value = better ? value[f] : best_value;
+  }
+  if (best_value == 0.0) best_value = a[best] * q.x() + b[best] * q.y() + c[best] * q.z() - d[best];
+  *face = best;
+  return best_value;
+}
+
+/// classify for an upright prism: each side plane by the terms it keeps.
+inline FaceRegion uprightPrismClassify(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, int face) {
+  const std::int32_t start = kPrismStart[face];
+  const double* s = PolyhedronLayout::pd(poly) + kPrismFaceCount + 4 * start;  // faceEdgePlanes(face)
+  auto xyz = [&](int k) { return s[4 * k] * q.x() + s[4 * k + 1] * q.y() + s[4 * k + 2] * q.z() < s[4 * k + 3]; };
+  auto xy = [&](int k) { return s[4 * k] * q.x() + s[4 * k + 1] * q.y() < s[4 * k + 3]; };
+  auto z = [&](int k) { return s[4 * k + 2] * q.z() < s[4 * k + 3]; };
+  std::uint32_t mask = 0;
+  if (face == 0) {
+    mask = crossedEdges<3>(s, q);
+    return regionOfMask(kPrismList + start, start, 3, mask);
+  }
+  if (face == 1) {
+    mask = static_cast<std::uint32_t>(xy(0)) | static_cast<std::uint32_t>(xy(1)) << 1 |
+           static_cast<std::uint32_t>(xy(2)) << 2;
+    return regionOfMask(kPrismList + start, start, 3, mask);
+  }
+  mask = static_cast<std::uint32_t>(xyz(0)) | static_cast<std::uint32_t>(xy(1)) << 1 |
+         static_cast<std::uint32_t>(z(2)) << 2 | static_cast<std::uint32_t>(xy(3)) << 3;
+  return regionOfMask(kPrismList + start, start, 4, mask);
+}
+
+}  // namespace wtc::detail
