@@ -231,16 +231,36 @@ def block(name, bench, data, table):
     return f"<!-- bench:{name} -->\n{stamp}\n\n{body}\n<!-- /bench:{name} -->"
 
 
+def block_pattern(name):
+    return re.compile(rf"<!-- bench:{name} -->.*?<!-- /bench:{name} -->", re.S)
+
+
 def write_blocks(doc_path, blocks):
     with open(doc_path) as f:
         text = f.read()
     for name, content in blocks.items():
-        pattern = re.compile(rf"<!-- bench:{name} -->.*?<!-- /bench:{name} -->", re.S)
-        if not pattern.search(text):
+        if not block_pattern(name).search(text):
             sys.exit(f"bench_tables.py: {doc_path} has no <!-- bench:{name} --> ... <!-- /bench:{name} --> block")
-        text = pattern.sub(lambda _: content, text)
+        text = block_pattern(name).sub(lambda _: content, text)
     with open(doc_path, "w") as f:
         f.write(text)
+
+
+def check_blocks(doc_path, blocks):
+    """Whether each table in the doc is the one its JSON gives (no table edited by hand, none stale)."""
+    with open(doc_path) as f:
+        text = f.read()
+    wrong = []
+    for name, content in blocks.items():
+        found = block_pattern(name).search(text)
+        if not found:
+            wrong.append(f"{doc_path}: no <!-- bench:{name} --> block")
+        elif found.group(0) != content:
+            wrong.append(f"{doc_path}: the table in <!-- bench:{name} --> is not what docs/bench/*.json gives "
+                         f"(edited by hand, or the JSON changed): run python3 tools/bench_tables.py --from-json")
+    for line in wrong:
+        print(line, file=sys.stderr)
+    return not wrong
 
 
 def main():
@@ -248,6 +268,8 @@ def main():
     parser.add_argument("--build", default=os.path.join(ROOT, "build"), help="the build directory (default: build)")
     parser.add_argument("--only", help="comma-separated: " + ", ".join(BENCHES))
     parser.add_argument("--from-json", action="store_true", help="tables from docs/bench/*.json, nothing run")
+    parser.add_argument("--check", action="store_true",
+                        help="only check that the doc's tables are what docs/bench/*.json gives (exit 1 if not)")
     parser.add_argument("--doc", default=os.path.join(ROOT, "docs", "performance.md"))
     args = parser.parse_args()
     names = args.only.split(",") if args.only else list(BENCHES)
@@ -259,13 +281,18 @@ def main():
     blocks = {}
     for name in names:
         programs, time, tables = BENCHES[name]
-        if args.from_json:
-            with open(os.path.join(json_dir, f"{name}.json")) as f:
+        if args.from_json or args.check:
+            path = os.path.join(json_dir, f"{name}.json")
+            if not os.path.exists(path):
+                sys.exit(f"bench_tables.py: {path} is missing: run python3 tools/bench_tables.py --only {name}")
+            with open(path) as f:
                 data = json.load(f)
         else:
             data = run_bench(args.build, name, programs, json_dir)
         for block_name, table in tables(bt.load_runs(data, f"{time}_time")).items():
             blocks[block_name] = block(block_name, name, data, table)
+    if args.check:
+        sys.exit(0 if check_blocks(args.doc, blocks) else 1)
     write_blocks(args.doc, blocks)
 
 
