@@ -94,7 +94,7 @@ def compact_tables(runs):
         build = lambda m: ns("Build", m, s, s)
         step = lambda m, motion: ns("Contacts", m, s, motion, s)
         field.append(
-            f"| {fmt_cells(n)} | " + " / ".join("–" if byte(m) is None else f"{byte(m):.3g}" if byte(m) < 100
+            f"| {fmt_cells(n)} | " + " / ".join("–" if byte(m) is None else f"{byte(m):.2f}" if byte(m) < 100
                                                 else f"{byte(m):.0f}" for m in ("compact", "prisms", "bullet", "fcl"))
             + " | " + " / ".join(fmt_ms(build(m)) for m in ("compact", "prisms", "bullet", "fcl"))
             + f" | {fmt_us(step('compact', 'rolling'))} / {fmt_us(step('prisms', 'rolling'))}"
@@ -213,7 +213,9 @@ def run_bench(build, name, programs, json_dir):
             merged = data
         else:
             merged["benchmarks"] += data["benchmarks"]
-    merged["wtc"] = {"commit": git("rev-parse", "--short", "HEAD"), "dirty": bool(git("status", "--porcelain")),
+    # Changes to the docs (this program writes them) do not change the build.
+    dirty = bool(git("status", "--porcelain", "--", ".", ":!docs", ":!*.md"))
+    merged["wtc"] = {"commit": git("rev-parse", "--short", "HEAD"), "dirty": dirty,
                      "date": datetime.date.today().isoformat(), "cpu": cpu_model(), "cores": os.cpu_count(),
                      "commands": [" ".join(["build/bench/" + p[0], *p[1:]]) for p in programs]}
     with open(os.path.join(json_dir, f"{name}.json"), "w") as f:
