@@ -92,15 +92,14 @@ def compact_tables(runs):
         s = str(n)
         byte = lambda m: counter("bytes_per_cell", "Build", m, s, s)
         build = lambda m: ns("Build", m, s, s)
-        step = lambda m, motion: ns("Contacts", m, s, motion, s)
+        steps = lambda motion, *methods: " / ".join(fmt_us(ns("Contacts", m, s, motion, s)) for m in methods)
         field.append(
             f"| {fmt_cells(n)} | " + " / ".join("–" if byte(m) is None else f"{byte(m):.2f}" if byte(m) < 100
                                                 else f"{byte(m):.0f}" for m in ("compact", "prisms", "bullet", "fcl"))
             + " | " + " / ".join(fmt_ms(build(m)) for m in ("compact", "prisms", "bullet", "fcl"))
-            + f" | {fmt_us(step('compact', 'rolling'))} / {fmt_us(step('prisms', 'rolling'))}"
-            + f" | {fmt_us(step('compact', 'cold'))} / {fmt_us(step('prisms', 'cold'))}"
-            + f" | {fmt_us(step('bullet', 'rolling'))} / {fmt_us(step('bullet', 'cold'))}"
-            + f" · {fmt_us(step('fcl', 'rolling'))} / {fmt_us(step('fcl', 'cold'))} |")
+            + f" | {steps('rolling', 'compact', 'prisms')} | {steps('cold', 'compact', 'prisms')}"
+            + f" | {steps('rolling', 'bullet')} / {steps('cold', 'bullet')}"
+            + f" · {steps('rolling', 'fcl')} / {steps('cold', 'fcl')} |")
     mesh = ["| cells (triangles) | bytes a triangle: compact (triangles + vertices, index) / stored / Bullet | build: compact / stored / Bullet "
             "| contact step rolling: compact / stored | contact step cold: compact / stored "
             "| cylinder contacts rolling / cold: Bullet |", "|---:|---:|---:|---:|---:|---:|"]
@@ -108,16 +107,15 @@ def compact_tables(runs):
         s = str(n)
         byte = lambda m: counter("bytes_per_triangle", "MeshBuild", m, s, s)
         index = counter("index_bytes_per_triangle", "MeshBuild", "compact", s, s)
-        step = lambda m, motion: ns("MeshContacts", m, s, motion, s)
+        steps = lambda motion, *methods: " / ".join(fmt_us(ns("MeshContacts", m, s, motion, s)) for m in methods)
         fmt_b = lambda b: "–" if b is None else f"{b:.1f}" if b < 100 else f"{b:.0f}"
         mesh.append(
             f"| {fmt_cells(n)} ({fmt_cells(2 * n)}) | {fmt_b(byte('compact'))} "
             f"({fmt_b(None if index is None else byte('compact') - index)}, {fmt_b(index)}) / "
             f"{fmt_b(byte('prisms'))} / {fmt_b(byte('bullet'))} | "
             + " / ".join(fmt_ms(ns("MeshBuild", m, s, s)) for m in ("compact", "prisms", "bullet"))
-            + f" | {fmt_us(step('compact', 'rolling'))} / {fmt_us(step('prisms', 'rolling'))}"
-            + f" | {fmt_us(step('compact', 'cold'))} / {fmt_us(step('prisms', 'cold'))}"
-            + f" | {fmt_us(step('bullet', 'rolling'))} / {fmt_us(step('bullet', 'cold'))} |")
+            + f" | {steps('rolling', 'compact', 'prisms')} | {steps('cold', 'compact', 'prisms')}"
+            + f" | {steps('rolling', 'bullet')} / {steps('cold', 'bullet')} |")
     return field, mesh
 
 

@@ -44,16 +44,7 @@ constexpr int boxSideAxis(int f, int k) {
 inline double boxPlaneBound(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, int* face) {
   const double* d = PolyhedronLayout::pd(poly);
   const double value[6] = {-q.x() - d[0], q.x() - d[1], -q.y() - d[2], q.y() - d[3], -q.z() - d[4], q.z() - d[5]};
-  int best = 0;
-  double best_value = value[0];
-#pragma GCC unroll 6
-  for (int f = 1; f < 6; ++f) {
-    const bool better = value[f] > best_value;
-    best = better ? f : best;
-    best_value = better ? value[f] : best_value;
-  }
-  *face = best;
-  return best_value;
+  return PolyhedronLayout::firstLargest(value, face);
 }
 
 /// classify for an axis-aligned box: each side plane s . q < s . a by its

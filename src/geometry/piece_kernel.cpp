@@ -70,7 +70,7 @@ bool isBuildersPrism(const ConvexPolyhedron& poly) {
 // A builders' prism that stands upright on a flat bottom: each top vertex
 // exactly above its bottom one, the bottom's three heights equal, side
 // normals with n_z = 0 and the bottom's (0, 0, -1) exactly. Then the side
-// planes s = n x (b - a) that kUprightSideTerms drops terms of are zero
+// planes s = n x (b - a) that uprightPrismClassify drops terms of are zero
 // there exactly: a vertical edge (0, 0, h) gives s_z = n_x 0 - n_y 0; a
 // horizontal edge (e_x, e_y, 0) of a side face (n_z = 0) gives
 // s_x = n_y 0 - 0 e_y and s_y = 0 e_x - n_x 0; of the bottom

@@ -86,6 +86,23 @@ struct PolyhedronLayout {
     return best_value;
   }
 
+  /// The largest of N face values and the first face that has it: the
+  /// scan planeBoundOf makes, over values a kernel computed its own way
+  /// (box_kernel.hpp, prism_kernel.hpp).
+  template <int N>
+  static double firstLargest(const double (&value)[N], int* face) {
+    int best = 0;
+    double best_value = value[0];
+#pragma GCC unroll 8
+    for (int f = 1; f < N; ++f) {
+      const bool better = value[f] > best_value;  // branch-free, as in planeBoundOf
+      best = better ? f : best;
+      best_value = better ? value[f] : best_value;
+    }
+    *face = best;
+    return best_value;
+  }
+
   /// A piece with the same face list as `like` (and as many vertices), built
   /// from `vertices` with like's topology copied instead of matched anew: the
   /// same piece, bit for bit, as fromMesh(vertices, faces) would build (for

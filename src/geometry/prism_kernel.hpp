@@ -2,7 +2,7 @@
 // The point query's kernel for the terrain builders' triangular prism
 // (piece_kernel.hpp): vertices 0-2 the top triangle, 3-5 the bottom one,
 // faces {0, 1, 2}, {3, 5, 4}, {0, 3, 4, 1}, {1, 4, 5, 2}, {2, 5, 3, 0}
-// (src/terrain/builder_support.cpp's kPrismFaces): every heightfield cell
+// (src/terrain/builder_support.cpp builds every prism from these lists): every heightfield cell
 // and extruded mesh triangle, stored or formed.
 //
 // The arithmetic is the general query's; the topology is constant: a face's
@@ -15,7 +15,7 @@
 // A heightfield's prism also stands upright on a flat bottom: its side faces'
 // normals have n_z = 0, its bottom's is (0, 0, -1), and the side planes of
 // its vertical and bottom edges have zero components. For it the kernel
-// drops those terms (kVerticalPrism), exactly as the box kernel does
+// drops those terms (kUprightPrism), exactly as the box kernel does
 // (box_kernel.hpp says why that is exact), and where a face value comes out
 // a zero, whose sign the dropped terms could have changed, it takes the
 // general value instead.
@@ -97,19 +97,6 @@ inline bool prismVertexRegion(const ConvexPolyhedron& poly, const Eigen::Vector3
   return true;
 }
 
-/// Which components of a face-edge's side plane an upright prism keeps:
-/// all three (a top edge), x and y (the bottom's edges, vertical edges: s
-/// is horizontal) or z alone (a side face's bottom edge: s is vertical).
-enum class SideTerms : std::uint8_t { kXYZ, kXY, kZ };
-
-/// The upright prism's side-plane terms, by face-edge: the top's three
-/// edges, the bottom's, then each side face's top, vertical, bottom and
-/// vertical edge.
-inline constexpr SideTerms kUprightSideTerms[kPrismFaceEdges] = {
-    SideTerms::kXYZ, SideTerms::kXYZ, SideTerms::kXYZ, SideTerms::kXY, SideTerms::kXY,  SideTerms::kXY,
-    SideTerms::kXYZ, SideTerms::kXY,  SideTerms::kZ,   SideTerms::kXY, SideTerms::kXYZ, SideTerms::kXY,
-    SideTerms::kZ,   SideTerms::kXY,  SideTerms::kXYZ, SideTerms::kXY, SideTerms::kZ,   SideTerms::kXY};
-
 /// The plane bound of an upright prism: the top's value in full, the
 /// bottom's -q_z - d, the sides' n_x q_x + n_y q_y - d; the general scan's
 /// choice; a zero bound recomputed in full (its sign).
@@ -121,20 +108,17 @@ inline double uprightPrismPlaneBound(const ConvexPolyhedron& poly, const Eigen::
   const double value[kPrismFaceCount] = {a[0] * q.x() + b[0] * q.y() + c[0] * q.z() - d[0], -q.z() - d[1],
                                          a[2] * q.x() + b[2] * q.y() - d[2], a[3] * q.x() + b[3] * q.y() - d[3],
                                          a[4] * q.x() + b[4] * q.y() - d[4]};
-  int best = 0;
-  double best_value = value[0];
-#pragma GCC unroll 5
-  for (int f = 1; f < kPrismFaceCount; ++f) {
-    const bool better = value[f] > best_value;
-    best = better ? f : best;
-    best_value = better ? value[f] : best_value;
-  }
-  if (best_value == 0.0) best_value = a[best] * q.x() + b[best] * q.y() + c[best] * q.z() - d[best];
-  *face = best;
-  return best_value;
+  const double best_value = PolyhedronLayout::firstLargest(value, face);
+  if (best_value != 0.0) return best_value;
+  const int f = *face;
+  return a[f] * q.x() + b[f] * q.y() + c[f] * q.z() - d[f];
 }
 
-/// classify for an upright prism: each side plane by the terms it keeps.
+/// classify for an upright prism: each side plane by the terms it keeps:
+/// all three on the top's edges; x and y on the bottom's edges and on the
+/// vertical edges (their s is horizontal); z alone on a side face's bottom
+/// edge (its s is vertical). A side face's edges run top, vertical, bottom,
+/// vertical.
 inline FaceRegion uprightPrismClassify(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, int face) {
   const std::int32_t start = kPrismStart[face];
   const double* s = PolyhedronLayout::pd(poly) + kPrismFaceCount + 4 * start;  // faceEdgePlanes(face)

@@ -1,6 +1,7 @@
 #include "builder_support.hpp"
 
 #include "geometry/polyhedron_layout.hpp"
+#include "geometry/prism_kernel.hpp"
 
 #include <cmath>
 #include <sstream>
@@ -16,7 +17,16 @@ namespace {
 // winding, the bottom is reversed (seen from below), and the side quad on
 // edge i -> j runs i, i', j', j: with the top normal up, (i' - i) x (j' - i)
 // points away from the third vertex, i.e. outward.
-const std::vector<std::vector<int>> kPrismFaces = {{0, 1, 2}, {3, 5, 4}, {0, 3, 4, 1}, {1, 4, 5, 2}, {2, 5, 3, 0}};
+// The lists are the point query's prism kernel's (geometry/prism_kernel.hpp,
+// kPrismStart and kPrismList): one definition, so every prism built here
+// takes that kernel.
+const std::vector<std::vector<int>> kPrismFaces = [] {
+  std::vector<std::vector<int>> faces(detail::kPrismFaceCount);
+  for (int f = 0; f < detail::kPrismFaceCount; ++f) {
+    faces[f].assign(detail::kPrismList + detail::kPrismStart[f], detail::kPrismList + detail::kPrismStart[f + 1]);
+  }
+  return faces;
+}();
 
 // One scratch list per thread: a heightfield adds 10^6 prisms, and this
 // keeps the builder to the allocations of the piece itself.
