@@ -227,6 +227,7 @@ PointQuery query(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOpt
   const bool box = kernel == detail::PieceKernel::kAxisBox;
   const bool upright = kernel == detail::PieceKernel::kUprightPrism;
   const bool prism = upright || kernel == detail::PieceKernel::kPrism;
+  const bool labelled = kernel == detail::PieceKernel::kLabelledPrism;
   const double plane = box       ? detail::boxPlaneBound(poly, q, &face)
                        : upright ? detail::uprightPrismPlaneBound(poly, q, &face)
                                  : Layout::planeBoundLocal(poly, q, &face);
@@ -243,10 +244,11 @@ PointQuery query(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOpt
   }
 
   // 3. The nearest face's region: inside it, the projection is exact.
-  const FaceRegion region = box       ? detail::boxClassify(poly, q, face)
-                            : upright ? detail::uprightPrismClassify(poly, q, face)
-                            : prism   ? detail::prismClassify(poly, q, face)
-                                      : detail::classify(poly, q, face);
+  const FaceRegion region = box        ? detail::boxClassify(poly, q, face)
+                            : upright  ? detail::uprightPrismClassify(poly, q, face)
+                            : prism    ? detail::prismClassify(poly, q, face)
+                            : labelled ? detail::labelledPrismClassify(poly, q, face)
+                                       : detail::classify(poly, q, face);
   if (region.inside) {
     if (cache != nullptr) cache->count = 0;
     // max: on a flat piece both faces can read -roundoff on the polygon.
@@ -257,9 +259,10 @@ PointQuery query(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOpt
   Vector3d on_feature;
   const bool on_edge =
       prism ? detail::prismEdgeRegion(poly, q, region, &on_feature) : detail::edgeRegion(poly, q, region, &on_feature);
-  if (on_edge || (box     ? detail::boxVertexRegion(poly, q, region, &on_feature)
-                  : prism ? detail::prismVertexRegion(poly, q, region, &on_feature)
-                          : detail::vertexRegion(poly, q, region, &on_feature))) {
+  if (on_edge || (box        ? detail::boxVertexRegion(poly, q, region, &on_feature)
+                  : prism    ? detail::prismVertexRegion(poly, q, region, &on_feature)
+                  : labelled ? detail::labelledPrismVertexRegion(poly, q, region, &on_feature)
+                             : detail::vertexRegion(poly, q, region, &on_feature))) {
     return fromFeature(poly, p, q, on_feature, plane, face, region, cache);
   }
 

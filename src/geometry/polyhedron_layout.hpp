@@ -44,6 +44,19 @@ struct PolyhedronLayout {
     return p.topology_.data() + p.face_count_ + 1 + p.topology_[f];
   }
   static int faceSize(const P& p, int f) { return p.topology_[f + 1] - p.topology_[f]; }
+  /// The face-edge twins' end: where a piece's kernel data begins
+  /// (storeKernelData, piece_kernel.hpp); a kLabelledPrism keeps vertex i's
+  /// three neighbours at 3 i there.
+  static const std::int32_t* kernelData(const P& p) {
+    return p.topology_.data() + p.face_count_ + 1 + 2 * p.topology_[p.face_count_];
+  }
+  /// Appends `count` entries of kernel data to the topology (the piece has
+  /// no adjacency after its twins: a small piece).
+  static void appendKernelData(P& p, const std::int32_t* data, int count) {
+    p.topology_.insert(p.topology_.end(), data, data + count);
+    p.topology_.shrink_to_fit();
+  }
+  static bool hasAdjacency(const P& p) { return p.has_adjacency_; }
   static std::int32_t faceEdgeEnd(const P& p, std::int32_t e) { return p.faceEdgeEnd(e); }
   static const double* faceEdgePlane(const P& p, std::int32_t e) { return p.faceEdgePlane(e); }
   /// The piece's query kernel (detail::PieceKernel), chosen when it was built.

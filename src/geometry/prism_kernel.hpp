@@ -12,6 +12,13 @@
 // face starts per step; its answer does not depend on the order of the
 // three dot products).
 //
+// A triangular prism in another labelling (Qhull's: ConvexPolyhedron::
+// fromPoints keeps Qhull's order of vertices and faces, which the benchmark
+// and test query sets are drawn in) keeps it: its kernel (kLabelledPrism)
+// reads its face lists and twins from the piece as the general query does,
+// and its vertex neighbours from a table stored with its topology when it is
+// built, instead of the general walk around the vertex.
+//
 // A heightfield's prism also stands upright on a flat bottom: its side faces'
 // normals have n_z = 0, its bottom's is (0, 0, -1), and the side planes of
 // its vertical and bottom edges have zero components. For it the kernel
@@ -92,6 +99,31 @@ inline bool prismVertexRegion(const ConvexPolyhedron& poly, const Eigen::Vector3
   const Eigen::Vector3d d = q - a;
   for (const std::int32_t c : kPrismNeighbours[at]) {
     if (d.dot(poly.vertexLocal(c) - a) > 0.0) return false;
+  }
+  *closest = a;
+  return true;
+}
+
+/// classify for a prism in its own labelling (kLabelledPrism): a face of 3
+/// or 4 edges, its lists read from the piece.
+inline FaceRegion labelledPrismClassify(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, int face) {
+  const int size = PolyhedronLayout::faceSize(poly, face);
+  const double* side = PolyhedronLayout::faceEdgePlanes(poly, face);
+  const std::uint32_t mask = size == 3 ? crossedEdges<3>(side, q) : crossedEdges<4>(side, q);
+  return regionOfMask(poly, face, size, mask);
+}
+
+/// vertexRegion for a prism in its own labelling: the vertex's three
+/// neighbours stored with the piece (storeKernelData, piece_kernel.hpp).
+inline bool labelledPrismVertexRegion(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, const FaceRegion& region,
+                                      Eigen::Vector3d* closest) {
+  if (region.into_vertex < 0) return false;
+  const std::int32_t at = region.seed[0];
+  const std::int32_t* around = PolyhedronLayout::kernelData(poly) + 3 * at;
+  const Eigen::Vector3d a = poly.vertexLocal(at);
+  const Eigen::Vector3d d = q - a;
+  for (int k = 0; k < 3; ++k) {
+    if (d.dot(poly.vertexLocal(around[k]) - a) > 0.0) return false;
   }
   *closest = a;
   return true;

@@ -176,7 +176,9 @@ class ConvexPolyhedron {
   // local frame.
   std::vector<double> numbers_;
   // [face_start (F+1) | face vertices | face-edge twins | adjacency start
-  // (V+1) | neighbours]; adjacency only for pieces that hill-climb.
+  // (V+1) | neighbours]; adjacency only for pieces that hill-climb; a
+  // triangular prism in Qhull's labelling keeps its query kernel's vertex
+  // neighbours there instead (src/geometry/piece_kernel.hpp).
   std::vector<std::int32_t> topology_;
 };
 
