@@ -44,7 +44,7 @@ constexpr int boxSideAxis(int f, int k) {
 inline double boxPlaneBound(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, int* face) {
   const double* d = PolyhedronLayout::pd(poly);
   const double value[6] = {-q.x() - d[0], q.x() - d[1], -q.y() - d[2], q.y() - d[3], -q.z() - d[4], q.z() - d[5]};
-  return PolyhedronLayout::firstLargest(value, face);
+  return PolyhedronLayout::firstLargest<6>(value, face);
 }
 
 /// classify for an axis-aligned box: each side plane s . q < s . a by its

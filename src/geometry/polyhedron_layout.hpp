@@ -7,6 +7,10 @@
 #include <cstdint>
 #include <vector>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include <Eigen/Core>
 
 #include "wtc/geometry/convex_polyhedron.hpp"
@@ -78,37 +82,49 @@ struct PolyhedronLayout {
         return p.planeBoundLocal(q, face);
     }
   }
-  /// max_i (n_i . q - d_i) and its face over exactly N faces, unrolled: the
-  /// same scan and arithmetic as ConvexPolyhedron::planeBoundLocal's.
+  /// max_i (n_i . q - d_i) and its face over exactly N faces: the same
+  /// values and choice as ConvexPolyhedron::planeBoundLocal's scan. Two faces
+  /// per SSE2 operation: a packed product or sum rounds each lane as the
+  /// scalar one does, in the same order ((n_x q_x + n_y q_y) + n_z q_z) - d,
+  /// so every value is the scan's to the bit. For odd N the last pair's
+  /// second lane reads the next array's first number (nx is followed by ny,
+  /// ..., pd by the side planes) and is not used.
   template <int N>
   static double planeBoundOf(const P& p, const Eigen::Vector3d& q, int* face) {
+    static_assert(N >= 2 && N <= 8);
     const double* a = p.nx();
     const double* b = p.ny();
     const double* c = p.nz();
     const double* d = p.pd();
-    int best = 0;
-    double best_value = a[0] * q.x() + b[0] * q.y() + c[0] * q.z() - d[0];
-#pragma GCC unroll 8
-    for (int f = 1; f < N; ++f) {
-      const double value = a[f] * q.x() + b[f] * q.y() + c[f] * q.z() - d[f];
-      const bool better = value > best_value;  // branch-free, as in supportLocal
-      best = better ? f : best;
-      best_value = better ? value : best_value;
+    double value[N + 1];
+#if defined(__SSE2__)
+    const __m128d qx = _mm_set1_pd(q.x());
+    const __m128d qy = _mm_set1_pd(q.y());
+    const __m128d qz = _mm_set1_pd(q.z());
+#pragma GCC unroll 4
+    for (int f = 0; f < N; f += 2) {
+      const __m128d xy = _mm_add_pd(_mm_mul_pd(_mm_loadu_pd(a + f), qx), _mm_mul_pd(_mm_loadu_pd(b + f), qy));
+      _mm_storeu_pd(value + f, _mm_sub_pd(_mm_add_pd(xy, _mm_mul_pd(_mm_loadu_pd(c + f), qz)), _mm_loadu_pd(d + f)));
     }
+#else
+    for (int f = 0; f < N; ++f) value[f] = a[f] * q.x() + b[f] * q.y() + c[f] * q.z() - d[f];
+#endif
+    int best = 0;
+    const double best_value = firstLargest<N>(value, &best);
     if (face != nullptr) *face = best;
     return best_value;
   }
 
-  /// The largest of N face values and the first face that has it: the
-  /// scan planeBoundOf makes, over values a kernel computed its own way
-  /// (box_kernel.hpp, prism_kernel.hpp).
+  /// The largest of the first N values and the first of them that has it:
+  /// the scan planeBoundOf makes, over values a kernel computed its own way
+  /// (box_kernel.hpp, prism_kernel.hpp). Branch-free, as in supportLocal.
   template <int N>
-  static double firstLargest(const double (&value)[N], int* face) {
+  static double firstLargest(const double* value, int* face) {
     int best = 0;
     double best_value = value[0];
 #pragma GCC unroll 8
     for (int f = 1; f < N; ++f) {
-      const bool better = value[f] > best_value;  // branch-free, as in planeBoundOf
+      const bool better = value[f] > best_value;
       best = better ? f : best;
       best_value = better ? value[f] : best_value;
     }

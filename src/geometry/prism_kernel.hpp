@@ -22,10 +22,11 @@
 // A heightfield's prism also stands upright on a flat bottom: its side faces'
 // normals have n_z = 0, its bottom's is (0, 0, -1), and the side planes of
 // its vertical and bottom edges have zero components. For it the kernel
-// drops those terms (kUprightPrism), exactly as the box kernel does
-// (box_kernel.hpp says why that is exact), and where a face value comes out
-// a zero, whose sign the dropped terms could have changed, it takes the
-// general value instead.
+// drops those terms from the side-plane tests (kUprightPrism), exactly as
+// the box kernel does (box_kernel.hpp says why that is exact; a comparison
+// cannot tell a zero's sign). Its face values are the general ones, two
+// faces per operation (PolyhedronLayout::planeBoundOf): as few instructions
+// as the values without their zero terms, and no zero's sign to restore.
 #include <array>
 #include <cstdint>
 
@@ -127,23 +128,6 @@ inline bool labelledPrismVertexRegion(const ConvexPolyhedron& poly, const Eigen:
   }
   *closest = a;
   return true;
-}
-
-/// The plane bound of an upright prism: the top's value in full, the
-/// bottom's -q_z - d, the sides' n_x q_x + n_y q_y - d; the general scan's
-/// choice; a zero bound recomputed in full (its sign).
-inline double uprightPrismPlaneBound(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, int* face) {
-  const double* a = PolyhedronLayout::nx(poly);
-  const double* b = PolyhedronLayout::ny(poly);
-  const double* c = PolyhedronLayout::nz(poly);
-  const double* d = PolyhedronLayout::pd(poly);
-  const double value[kPrismFaceCount] = {a[0] * q.x() + b[0] * q.y() + c[0] * q.z() - d[0], -q.z() - d[1],
-                                         a[2] * q.x() + b[2] * q.y() - d[2], a[3] * q.x() + b[3] * q.y() - d[3],
-                                         a[4] * q.x() + b[4] * q.y() - d[4]};
-  const double best_value = PolyhedronLayout::firstLargest(value, face);
-  if (best_value != 0.0) return best_value;
-  const int f = *face;
-  return a[f] * q.x() + b[f] * q.y() + c[f] * q.z() - d[f];
 }
 
 /// classify for an upright prism: each side plane by the terms it keeps:
