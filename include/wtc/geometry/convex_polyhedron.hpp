@@ -175,10 +175,8 @@ class ConvexPolyhedron {
   // [vx vy vz | nx ny nz d | face-edge side planes (sx sy sz s.a)...],
   // local frame.
   std::vector<double> numbers_;
-  // [face_start (F+1) | face vertices | face-edge twins | adjacency start
-  // (V+1) | neighbours]; adjacency only for pieces that hill-climb; a
-  // triangular prism in Qhull's labelling keeps its query kernel's vertex
-  // neighbours there instead (src/geometry/piece_kernel.hpp).
+  // [face_start (F+1) | face vertices | face-edge twins | adjacency start (V+1) | neighbours]; adjacency
+  // only for pieces that hill-climb; a Qhull prism's kernel keeps its neighbours there (piece_kernel.hpp).
   std::vector<std::int32_t> topology_;
 };
 
