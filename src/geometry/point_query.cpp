@@ -235,7 +235,7 @@ PointQuery queryWith(const ConvexPolyhedron& poly, const Vector3d& p, const Quer
   if constexpr (box) {
     plane = detail::boxPlaneBound(poly, q, &face);
   } else if constexpr (prism || labelled) {
-    plane = Layout::planeBoundOf<detail::kPrismFaceCount>(poly, q, &face);
+    plane = Layout::planeBoundAt<detail::kPrismFaceCount>(detail::PrismLayout(poly).nx(), q, &face);
   } else {
     plane = Layout::planeBoundLocal(poly, q, &face);
   }

@@ -91,11 +91,17 @@ struct PolyhedronLayout {
   /// ..., pd by the side planes) and is not used.
   template <int N>
   static double planeBoundOf(const P& p, const Eigen::Vector3d& q, int* face) {
+    return planeBoundAt<N>(p.nx(), q, face);
+  }
+  /// planeBoundOf from the face arrays [nx | ny | nz | pd] of N faces each
+  /// at `normals` (for a kernel: at a constant offset, Fixed::nx).
+  template <int N>
+  static double planeBoundAt(const double* normals, const Eigen::Vector3d& q, int* face) {
     static_assert(N >= 2 && N <= 8);
-    const double* a = p.nx();
-    const double* b = p.ny();
-    const double* c = p.nz();
-    const double* d = p.pd();
+    const double* a = normals;
+    const double* b = a + N;
+    const double* c = b + N;
+    const double* d = c + N;
     double value[N + 1];
 #if defined(__SSE2__)
     const __m128d qx = _mm_set1_pd(q.x());
@@ -131,6 +137,20 @@ struct PolyhedronLayout {
     *face = best;
     return best_value;
   }
+
+  /// A kernel's view of a piece of V vertices and F faces (counts its kind
+  /// fixes): the stored arrays at constant offsets from the one allocation,
+  /// without reading the counts.
+  template <int V, int F>
+  struct Fixed {
+    explicit Fixed(const P& p) : numbers(p.numbers_.data()) {}
+    const double* nx() const { return numbers + 3 * V; }
+    const double* pd() const { return numbers + 3 * V + 3 * F; }
+    /// Side planes of the face-edges from face-edge `e` on (faceEdgePlane).
+    const double* sides(std::int32_t e) const { return numbers + 3 * V + 4 * F + 4 * e; }
+    Eigen::Vector3d vertex(int i) const { return {numbers[i], numbers[V + i], numbers[2 * V + i]}; }
+    const double* numbers;
+  };
 
   /// A piece with the same face list as `like` (and as many vertices), built
   /// from `vertices` with like's topology copied instead of matched anew: the

@@ -44,6 +44,9 @@ inline constexpr std::int32_t kPrismStart[6] = {0, 3, 6, 10, 14, 18};
 inline constexpr std::int32_t kPrismList[18] = {0, 1, 2, 3, 5, 4, 0, 3, 4, 1, 1, 4, 5, 2, 2, 5, 3, 0};
 inline constexpr int kPrismFaceCount = 5;
 inline constexpr int kPrismFaceEdges = 18;
+inline constexpr int kPrismVertexCount = 6;
+/// A prism's stored arrays at their constant places.
+using PrismLayout = PolyhedronLayout::Fixed<kPrismVertexCount, kPrismFaceCount>;
 
 /// The vertex face-edge e starts at (edge k of a face runs from vertex k - 1
 /// to vertex k, cyclically).
@@ -78,7 +81,7 @@ inline constexpr std::array<std::array<std::int32_t, 3>, 6> kPrismNeighbours = [
 /// classify for the prism: faces 0 and 1 are triangles, 2 to 4 quads.
 inline FaceRegion prismClassify(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, int face) {
   const std::int32_t start = kPrismStart[face];
-  const double* side = PolyhedronLayout::pd(poly) + kPrismFaceCount + 4 * start;  // faceEdgePlanes(face)
+  const double* side = PrismLayout(poly).sides(start);  // faceEdgePlanes(face)
   if (face < 2) return regionOfMask(kPrismList + start, start, 3, crossedEdges<3>(side, q));
   return regionOfMask(kPrismList + start, start, 4, crossedEdges<4>(side, q));
 }
@@ -87,7 +90,7 @@ inline FaceRegion prismClassify(const ConvexPolyhedron& poly, const Eigen::Vecto
 inline bool prismEdgeRegion(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, const FaceRegion& region,
                             Eigen::Vector3d* closest) {
   if (region.only_edge < 0) return false;
-  const double* twin = PolyhedronLayout::pd(poly) + kPrismFaceCount + 4 * kPrismTwin[region.only_edge];
+  const double* twin = PrismLayout(poly).sides(kPrismTwin[region.only_edge]);
   return edgeRegionBeyond(poly, q, region, twin, closest);
 }
 
@@ -96,10 +99,11 @@ inline bool prismVertexRegion(const ConvexPolyhedron& poly, const Eigen::Vector3
                               Eigen::Vector3d* closest) {
   if (region.into_vertex < 0) return false;
   const std::int32_t at = region.seed[0];
-  const Eigen::Vector3d a = poly.vertexLocal(at);
+  const PrismLayout layout(poly);
+  const Eigen::Vector3d a = layout.vertex(at);
   const Eigen::Vector3d d = q - a;
   for (const std::int32_t c : kPrismNeighbours[at]) {
-    if (d.dot(poly.vertexLocal(c) - a) > 0.0) return false;
+    if (d.dot(layout.vertex(c) - a) > 0.0) return false;
   }
   *closest = a;
   return true;
@@ -121,10 +125,11 @@ inline bool labelledPrismVertexRegion(const ConvexPolyhedron& poly, const Eigen:
   if (region.into_vertex < 0) return false;
   const std::int32_t at = region.seed[0];
   const std::int32_t* around = PolyhedronLayout::kernelData(poly) + 3 * at;
-  const Eigen::Vector3d a = poly.vertexLocal(at);
+  const PrismLayout layout(poly);
+  const Eigen::Vector3d a = layout.vertex(at);
   const Eigen::Vector3d d = q - a;
   for (int k = 0; k < 3; ++k) {
-    if (d.dot(poly.vertexLocal(around[k]) - a) > 0.0) return false;
+    if (d.dot(layout.vertex(around[k]) - a) > 0.0) return false;
   }
   *closest = a;
   return true;
@@ -137,7 +142,7 @@ inline bool labelledPrismVertexRegion(const ConvexPolyhedron& poly, const Eigen:
 /// vertical.
 inline FaceRegion uprightPrismClassify(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, int face) {
   const std::int32_t start = kPrismStart[face];
-  const double* s = PolyhedronLayout::pd(poly) + kPrismFaceCount + 4 * start;  // faceEdgePlanes(face)
+  const double* s = PrismLayout(poly).sides(start);  // faceEdgePlanes(face)
   auto xyz = [&](int k) { return s[4 * k] * q.x() + s[4 * k + 1] * q.y() + s[4 * k + 2] * q.z() < s[4 * k + 3]; };
   auto xy = [&](int k) { return s[4 * k] * q.x() + s[4 * k + 1] * q.y() < s[4 * k + 3]; };
   auto z = [&](int k) { return s[4 * k + 2] * q.z() < s[4 * k + 3]; };
