@@ -275,6 +275,8 @@ PointQuery queryWith(const ConvexPolyhedron& poly, const Vector3d& p, const Quer
   bool on_edge = false;
   if constexpr (prism) {
     on_edge = detail::prismEdgeRegion(poly, q, region, &on_feature);
+  } else if constexpr (labelled) {
+    on_edge = detail::labelledPrismEdgeRegion(poly, q, region, &on_feature);
   } else {
     on_edge = detail::edgeRegion(poly, q, region, &on_feature);
   }

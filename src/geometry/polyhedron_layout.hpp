@@ -48,14 +48,10 @@ struct PolyhedronLayout {
     return p.topology_.data() + p.face_count_ + 1 + p.topology_[f];
   }
   static int faceSize(const P& p, int f) { return p.topology_[f + 1] - p.topology_[f]; }
-  /// The face-edge twins' end: where a piece's kernel data begins
-  /// (storeKernelData, piece_kernel.hpp); a kLabelledPrism keeps vertex i's
-  /// three neighbours at 3 i there.
-  static const std::int32_t* kernelData(const P& p) {
-    return p.topology_.data() + p.face_count_ + 1 + 2 * p.topology_[p.face_count_];
-  }
-  /// Appends `count` entries of kernel data to the topology (the piece has
-  /// no adjacency after its twins: a small piece).
+  /// Appends `count` entries of kernel data to the topology, after the
+  /// twins (the piece has no adjacency lists there: a small piece); a
+  /// kLabelledPrism keeps vertex i's three neighbours at 3 i
+  /// (FixedTopology::kernelData).
   static void appendKernelData(P& p, const std::int32_t* data, int count) {
     p.topology_.insert(p.topology_.end(), data, data + count);
     p.topology_.shrink_to_fit();
@@ -150,6 +146,19 @@ struct PolyhedronLayout {
     const double* sides(std::int32_t e) const { return numbers + 3 * V + 4 * F + 4 * e; }
     Eigen::Vector3d vertex(int i) const { return {numbers[i], numbers[V + i], numbers[2 * V + i]}; }
     const double* numbers;
+  };
+
+  /// The topology of a piece of F faces and E face-edges (counts its kind
+  /// fixes), at constant offsets: [face starts (F + 1) | face lists (E) |
+  /// twins (E) | kernel data].
+  template <int F, int E>
+  struct FixedTopology {
+    explicit FixedTopology(const P& p) : topology(p.topology_.data()) {}
+    std::int32_t start(int f) const { return topology[f]; }
+    const std::int32_t* list(std::int32_t start) const { return topology + F + 1 + start; }
+    std::int32_t twin(std::int32_t e) const { return topology[F + 1 + E + e]; }
+    const std::int32_t* kernelData() const { return topology + F + 1 + 2 * E; }
+    const std::int32_t* topology;
   };
 
   /// A piece with the same face list as `like` (and as many vertices), built

@@ -47,6 +47,8 @@ inline constexpr int kPrismFaceEdges = 18;
 inline constexpr int kPrismVertexCount = 6;
 /// A prism's stored arrays at their constant places.
 using PrismLayout = PolyhedronLayout::Fixed<kPrismVertexCount, kPrismFaceCount>;
+/// A prism's topology at its constant places (any labelling: 5 faces, 18 face-edges).
+using PrismTopology = PolyhedronLayout::FixedTopology<kPrismFaceCount, kPrismFaceEdges>;
 
 /// The vertex face-edge e starts at (edge k of a face runs from vertex k - 1
 /// to vertex k, cyclically).
@@ -112,10 +114,21 @@ inline bool prismVertexRegion(const ConvexPolyhedron& poly, const Eigen::Vector3
 /// classify for a prism in its own labelling (kLabelledPrism): a face of 3
 /// or 4 edges, its lists read from the piece.
 inline FaceRegion labelledPrismClassify(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, int face) {
-  const int size = PolyhedronLayout::faceSize(poly, face);
-  const double* side = PolyhedronLayout::faceEdgePlanes(poly, face);
+  const PrismTopology topology(poly);
+  const std::int32_t start = topology.start(face);
+  const int size = topology.start(face + 1) - start;
+  const double* side = PrismLayout(poly).sides(start);  // faceEdgePlanes(face)
   const std::uint32_t mask = size == 3 ? crossedEdges<3>(side, q) : crossedEdges<4>(side, q);
-  return regionOfMask(poly, face, size, mask);
+  return regionOfMask(topology.list(start), start, size, mask);
+}
+
+/// edgeRegion for a prism in its own labelling: the twin's side plane at
+/// its constant place.
+inline bool labelledPrismEdgeRegion(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, const FaceRegion& region,
+                                    Eigen::Vector3d* closest) {
+  if (region.only_edge < 0) return false;
+  const double* twin = PrismLayout(poly).sides(PrismTopology(poly).twin(region.only_edge));
+  return edgeRegionBeyond(poly, q, region, twin, closest);
 }
 
 /// vertexRegion for a prism in its own labelling: the vertex's three
@@ -124,7 +137,7 @@ inline bool labelledPrismVertexRegion(const ConvexPolyhedron& poly, const Eigen:
                                       Eigen::Vector3d* closest) {
   if (region.into_vertex < 0) return false;
   const std::int32_t at = region.seed[0];
-  const std::int32_t* around = PolyhedronLayout::kernelData(poly) + 3 * at;
+  const std::int32_t* around = PrismTopology(poly).kernelData() + 3 * at;
   const PrismLayout layout(poly);
   const Eigen::Vector3d a = layout.vertex(at);
   const Eigen::Vector3d d = q - a;
