@@ -71,24 +71,9 @@ struct Case {
   std::vector<wtc::testing::BruteForceResult> exact;
 };
 
-// The heightfield cell of ShapeId::kPrism (tests/support/scenarios.cpp),
-// built as the terrain builders build it (fromMesh with their face order,
-// src/terrain/builder_support.cpp) instead of through Qhull: the piece the
-// query's prism kernel serves (src/geometry/prism_kernel.hpp).
-wtc::ConvexPolyhedron makeBuildersCell() {
-  const Eigen::Vector3d origin(3.2, -1.6, 0.0);
-  const double cell = 0.4;
-  const double base = -0.3;
-  const Eigen::Vector3d top[3] = {{0.0, 0.0, 0.12}, {cell, 0.0, 0.05}, {0.0, cell, 0.21}};
-  std::vector<Eigen::Vector3d> vertices;
-  for (const auto& t : top) vertices.push_back(origin + t);
-  for (const auto& t : top) vertices.push_back(origin + Eigen::Vector3d(t.x(), t.y(), base));
-  return wtc::ConvexPolyhedron::fromMesh(vertices, {{0, 1, 2}, {3, 5, 4}, {0, 3, 4, 1}, {1, 4, 5, 2}, {2, 5, 3, 0}});
-}
-
 // A shape by its run name: the shared scenarios' and "cell".
 wtc::ConvexPolyhedron makeNamedShape(const std::string& name) {
-  if (name == "cell") return makeBuildersCell();
+  if (name == "cell") return wtc::testing::makeBuildersCell();
   return wtc::testing::makeShape(*wtc::testing::shapeFromString(name));
 }
 

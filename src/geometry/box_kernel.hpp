@@ -31,6 +31,9 @@ namespace wtc::detail {
 inline constexpr int kBoxFaces[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4},
                                         {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
 
+/// A box's stored arrays at their constant places (8 vertices, 6 faces).
+using BoxLayout = PolyhedronLayout::Fixed<8, 6>;
+
 /// The axis of the one non-zero component of the side plane of edge k of
 /// box face f: neither the face's axis nor the edge's (s = n x (b - a)).
 constexpr int boxSideAxis(int f, int k) {
@@ -42,9 +45,9 @@ constexpr int boxSideAxis(int f, int k) {
 /// The plane bound of an axis-aligned box: the general scan's values and
 /// choice (the first face of the largest value).
 inline double boxPlaneBound(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, int* face) {
-  const double* d = PolyhedronLayout::pd(poly);
+  const double* d = BoxLayout(poly).pd();
   const double value[6] = {-q.x() - d[0], q.x() - d[1], -q.y() - d[2], q.y() - d[3], -q.z() - d[4], q.z() - d[5]};
-  return PolyhedronLayout::firstLargest(value, face);
+  return PolyhedronLayout::firstLargest<6>(value, face);
 }
 
 /// classify for an axis-aligned box: each side plane s . q < s . a by its
@@ -57,7 +60,7 @@ inline FaceRegion boxClassify(const ConvexPolyhedron& poly, const Eigen::Vector3
       {boxSideAxis(3, 0), boxSideAxis(3, 1), boxSideAxis(3, 2), boxSideAxis(3, 3)},
       {boxSideAxis(4, 0), boxSideAxis(4, 1), boxSideAxis(4, 2), boxSideAxis(4, 3)},
       {boxSideAxis(5, 0), boxSideAxis(5, 1), boxSideAxis(5, 2), boxSideAxis(5, 3)}};
-  const double* side = PolyhedronLayout::faceEdgePlanes(poly, face);
+  const double* side = BoxLayout(poly).sides(4 * face);  // faceEdgePlanes(face): 4 edges a face
   const std::uint8_t* axis = kAxis[face];
   std::uint32_t mask = 0;
 #pragma GCC unroll 4
@@ -65,7 +68,7 @@ inline FaceRegion boxClassify(const ConvexPolyhedron& poly, const Eigen::Vector3
     const bool beyond = side[axis[k]] * q[axis[k]] < side[3];
     mask |= static_cast<std::uint32_t>(beyond) << k;
   }
-  return regionOfMask(poly, face, 4, mask);
+  return regionOfMask(kBoxFaces[face], 4 * face, 4, mask);  // the lists isAxisBox checked
 }
 
 /// vertexRegion for an axis-aligned box: vertex a's three edges lead to
@@ -74,11 +77,12 @@ inline bool boxVertexRegion(const ConvexPolyhedron& poly, const Eigen::Vector3d&
                             Eigen::Vector3d* closest) {
   if (region.into_vertex < 0) return false;
   const int at = region.seed[0];
-  const Eigen::Vector3d a = poly.vertexLocal(at);
+  const BoxLayout layout(poly);
+  const Eigen::Vector3d a = layout.vertex(at);
   const Eigen::Vector3d d = q - a;
-  if (d.dot(poly.vertexLocal(at ^ 1) - a) > 0.0) return false;
-  if (d.dot(poly.vertexLocal(at ^ 2) - a) > 0.0) return false;
-  if (d.dot(poly.vertexLocal(at ^ 4) - a) > 0.0) return false;
+  if (d.dot(layout.vertex(at ^ 1) - a) > 0.0) return false;
+  if (d.dot(layout.vertex(at ^ 2) - a) > 0.0) return false;
+  if (d.dot(layout.vertex(at ^ 4) - a) > 0.0) return false;
   *closest = a;
   return true;
 }

@@ -307,6 +307,7 @@ void ConvexPolyhedron::assembleInto(ConvexPolyhedron& poly, const std::vector<Ei
   poly.numbers_.shrink_to_fit();
   // A copied topology's kernel is its caller's to choose (sameTopologyAs).
   poly.kernel_ = topology == nullptr ? static_cast<std::uint8_t>(detail::kernelFor(poly)) : 0;
+  if (topology == nullptr) detail::storeKernelData(poly);
 }
 
 void ConvexPolyhedron::faceLists(ConvexPolyhedron& poly, const std::vector<std::vector<int>>& faces) {

@@ -3,6 +3,8 @@
 // kernel's shortened arithmetic is the general arithmetic's to the bit.
 #include "piece_kernel.hpp"
 
+#include <algorithm>
+
 #include "box_kernel.hpp"
 #include "prism_kernel.hpp"
 
@@ -88,6 +90,28 @@ bool isUpright(const ConvexPolyhedron& poly) {
          z[4] == z[5] && nx[1] == 0.0 && ny[1] == 0.0 && nz[1] == -1.0 && nz[2] == 0.0 && nz[3] == 0.0 && nz[4] == 0.0;
 }
 
+// A triangular prism in any labelling (Qhull's order of vertices, faces and
+// each face's first vertex): 6 vertices, two triangles and three quads, each
+// vertex on three faces (three neighbours), solid, no adjacency lists. The
+// twins follow from the face lists of a closed piece, as above.
+bool isLabelledPrism(const ConvexPolyhedron& poly) {
+  if (poly.faceCount() != kPrismFaceCount || poly.isFlat() || Layout::hasAdjacency(poly)) return false;
+  int triangles = 0;
+  int quads = 0;
+  for (int f = 0; f < kPrismFaceCount; ++f) {
+    const int size = Layout::faceSize(poly, f);
+    triangles += size == 3;
+    quads += size == 4;
+  }
+  if (triangles != 2 || quads != 3) return false;
+  int faces_at[6] = {};
+  for (int f = 0; f < kPrismFaceCount; ++f) {
+    const std::int32_t* list = Layout::faceVertexList(poly, f);
+    for (int k = 0; k < Layout::faceSize(poly, f); ++k) ++faces_at[list[k]];
+  }
+  return std::all_of(faces_at, faces_at + 6, [](int n) { return n == 3; });
+}
+
 }  // namespace
 
 PieceKernel kernelFor(const ConvexPolyhedron& poly) {
@@ -95,6 +119,7 @@ PieceKernel kernelFor(const ConvexPolyhedron& poly) {
   switch (poly.vertexCount()) {
     case 6:
       if (isBuildersPrism(poly)) return isUpright(poly) ? PieceKernel::kUprightPrism : PieceKernel::kPrism;
+      if (isLabelledPrism(poly)) return PieceKernel::kLabelledPrism;
       break;
     case 8:
       if (isAxisBox(poly)) return PieceKernel::kAxisBox;
@@ -109,7 +134,28 @@ PieceKernel kernelForTopologyOf(const ConvexPolyhedron& poly, PieceKernel like) 
   if (like == PieceKernel::kPrism || like == PieceKernel::kUprightPrism) {
     return isUpright(poly) ? PieceKernel::kUprightPrism : PieceKernel::kPrism;
   }
-  return kernelFor(poly);
+  // The copied topology holds like's kernel data (storeKernelData) already.
+  if (like == PieceKernel::kLabelledPrism) return like;
+  const PieceKernel kernel = kernelFor(poly);
+  return kernel == PieceKernel::kLabelledPrism ? PieceKernel::kGeneral : kernel;  // no data stored: no kernel
+}
+
+void storeKernelData(ConvexPolyhedron& poly) {
+  if (static_cast<PieceKernel>(Layout::kernel(poly)) != PieceKernel::kLabelledPrism) return;
+  // Each face-edge's end is a neighbour of its start: every vertex's three
+  // neighbours, in face order (the vertex region's answer does not depend on
+  // their order).
+  std::int32_t around[6][3];
+  int count[6] = {};
+  for (int f = 0; f < kPrismFaceCount; ++f) {
+    const std::int32_t* list = Layout::faceVertexList(poly, f);
+    const int size = Layout::faceSize(poly, f);
+    for (int k = 0; k < size; ++k) {
+      const std::int32_t from = list[k == 0 ? size - 1 : k - 1];
+      around[from][count[from]++] = list[k];
+    }
+  }
+  Layout::appendKernelData(poly, around[0], 18);
 }
 
 }  // namespace wtc::detail

@@ -27,7 +27,7 @@ using Eigen::Vector3d;
 // Beyond this the squared norms GJK forms would overflow double (m).
 constexpr double kMaxCoordinateM = 1e150;
 
-void validate(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOptions& o) {
+[[gnu::always_inline]] inline void validate(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOptions& o) {
   // One comparison catches NaN, infinity and overflow (NaN compares false);
   // the message tells them apart off the hot path.
   const Vector3d q = (p - poly.origin()).cwiseAbs();
@@ -108,8 +108,9 @@ void store(const detail::Simplex& s, QueryCache* cache) {
 }
 
 // The exact answer of an edge or vertex region: closest point `on` (local).
-PointQuery fromFeature(const ConvexPolyhedron& poly, const Vector3d& p, const Vector3d& q, const Vector3d& on,
-                       double plane, int face, const FaceRegion& region, QueryCache* cache) {
+[[gnu::always_inline]] inline PointQuery fromFeature(const ConvexPolyhedron& poly, const Vector3d& p, const Vector3d& q,
+                                                     const Vector3d& on, double plane, int face,
+                                                     const FaceRegion& region, QueryCache* cache) {
   const Vector3d v = on - q;
   const double dist = v.norm();
   if (dist <= tolerance::kTouchingRelative * poly.size()) {
@@ -208,7 +209,16 @@ PointQuery gjk(const ConvexPolyhedron& poly, const Vector3d& p, const Vector3d& 
   return toward(p, v, dist, status == QueryStatus::kBeyond ? lower : dist, status, iterations);
 }
 
-PointQuery query(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOptions& options, QueryCache* cache) {
+// The query, compiled once per kernel (piece_kernel.hpp): each piece kind
+// runs its own straight code, its steps chosen when it is compiled. Every
+// kernel's piece is solid (the kernels are chosen only for solid pieces).
+template <detail::PieceKernel K>
+PointQuery queryWith(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOptions& options, QueryCache* cache) {
+  using detail::PieceKernel;
+  constexpr bool box = K == PieceKernel::kAxisBox;
+  constexpr bool upright = K == PieceKernel::kUprightPrism;
+  constexpr bool prism = upright || K == PieceKernel::kPrism;
+  constexpr bool labelled = K == PieceKernel::kLabelledPrism;
   validate(poly, p, options);
   const double max_distance = options.max_distance;
 
@@ -221,16 +231,15 @@ PointQuery query(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOpt
   // 2. Face planes: exact inside, a lower bound outside.
   const Vector3d q = p - poly.origin();
   int face = 0;
-  // The piece's own kernel where one fits (piece_kernel.hpp): the same
-  // decisions and answers, fewer operations.
-  const auto kernel = static_cast<detail::PieceKernel>(Layout::kernel(poly));
-  const bool box = kernel == detail::PieceKernel::kAxisBox;
-  const bool upright = kernel == detail::PieceKernel::kUprightPrism;
-  const bool prism = upright || kernel == detail::PieceKernel::kPrism;
-  const double plane = box       ? detail::boxPlaneBound(poly, q, &face)
-                       : upright ? detail::uprightPrismPlaneBound(poly, q, &face)
-                                 : Layout::planeBoundLocal(poly, q, &face);
-  if (plane <= 0.0 && !poly.isFlat()) {
+  double plane = 0.0;
+  if constexpr (box) {
+    plane = detail::boxPlaneBound(poly, q, &face);
+  } else if constexpr (prism || labelled) {
+    plane = Layout::planeBoundAt<detail::kPrismFaceCount>(detail::PrismLayout(poly).nx(), q, &face);
+  } else {
+    plane = Layout::planeBoundLocal(poly, q, &face);
+  }
+  if (plane <= 0.0 && (K != PieceKernel::kGeneral || !poly.isFlat())) {
     if (cache != nullptr) cache->count = 0;
     return fromPlane(poly, p, plane, face, QueryStatus::kInside);
   }
@@ -243,10 +252,18 @@ PointQuery query(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOpt
   }
 
   // 3. The nearest face's region: inside it, the projection is exact.
-  const FaceRegion region = box       ? detail::boxClassify(poly, q, face)
-                            : upright ? detail::uprightPrismClassify(poly, q, face)
-                            : prism   ? detail::prismClassify(poly, q, face)
-                                      : detail::classify(poly, q, face);
+  FaceRegion region;
+  if constexpr (box) {
+    region = detail::boxClassify(poly, q, face);
+  } else if constexpr (upright) {
+    region = detail::uprightPrismClassify(poly, q, face);
+  } else if constexpr (prism) {
+    region = detail::prismClassify(poly, q, face);
+  } else if constexpr (labelled) {
+    region = detail::labelledPrismClassify(poly, q, face);
+  } else {
+    region = detail::classify(poly, q, face);
+  }
   if (region.inside) {
     if (cache != nullptr) cache->count = 0;
     // max: on a flat piece both faces can read -roundoff on the polygon.
@@ -255,17 +272,44 @@ PointQuery query(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOpt
 
   // 4. The crossed edge's or vertex's region: its closest point is exact.
   Vector3d on_feature;
-  const bool on_edge =
-      prism ? detail::prismEdgeRegion(poly, q, region, &on_feature) : detail::edgeRegion(poly, q, region, &on_feature);
-  if (on_edge || (box     ? detail::boxVertexRegion(poly, q, region, &on_feature)
-                  : prism ? detail::prismVertexRegion(poly, q, region, &on_feature)
-                          : detail::vertexRegion(poly, q, region, &on_feature))) {
-    return fromFeature(poly, p, q, on_feature, plane, face, region, cache);
+  bool on_edge = false;
+  if constexpr (prism) {
+    on_edge = detail::prismEdgeRegion(poly, q, region, &on_feature);
+  } else if constexpr (labelled) {
+    on_edge = detail::labelledPrismEdgeRegion(poly, q, region, &on_feature);
+  } else {
+    on_edge = detail::edgeRegion(poly, q, region, &on_feature);
   }
+  auto onVertex = [&] {
+    if constexpr (box) return detail::boxVertexRegion(poly, q, region, &on_feature);
+    if constexpr (prism) return detail::prismVertexRegion(poly, q, region, &on_feature);
+    if constexpr (labelled) return detail::labelledPrismVertexRegion(poly, q, region, &on_feature);
+    return detail::vertexRegion(poly, q, region, &on_feature);
+  };
+  if (on_edge || onVertex()) return fromFeature(poly, p, q, on_feature, plane, face, region, cache);
 
   // 5. GJK on poly - p, from the crossed edge or vertex.
   detail::Simplex s = simplexOf(poly, q, region.seed, region.count);
   return gjk(poly, p, q, plane, face, options, s, cache);
+}
+
+PointQuery query(const ConvexPolyhedron& poly, const Vector3d& p, const QueryOptions& options, QueryCache* cache) {
+  // The piece's own kernel where one fits (piece_kernel.hpp): the same
+  // decisions and answers, fewer operations.
+  using detail::PieceKernel;
+  switch (static_cast<PieceKernel>(Layout::kernel(poly))) {
+    case PieceKernel::kAxisBox:
+      return queryWith<PieceKernel::kAxisBox>(poly, p, options, cache);
+    case PieceKernel::kPrism:
+      return queryWith<PieceKernel::kPrism>(poly, p, options, cache);
+    case PieceKernel::kUprightPrism:
+      return queryWith<PieceKernel::kUprightPrism>(poly, p, options, cache);
+    case PieceKernel::kLabelledPrism:
+      return queryWith<PieceKernel::kLabelledPrism>(poly, p, options, cache);
+    case PieceKernel::kGeneral:
+      break;
+  }
+  return queryWith<PieceKernel::kGeneral>(poly, p, options, cache);
 }
 
 }  // namespace

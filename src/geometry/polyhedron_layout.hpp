@@ -7,6 +7,10 @@
 #include <cstdint>
 #include <vector>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include <Eigen/Core>
 
 #include "wtc/geometry/convex_polyhedron.hpp"
@@ -44,6 +48,15 @@ struct PolyhedronLayout {
     return p.topology_.data() + p.face_count_ + 1 + p.topology_[f];
   }
   static int faceSize(const P& p, int f) { return p.topology_[f + 1] - p.topology_[f]; }
+  /// Appends `count` entries of kernel data to the topology, after the
+  /// twins (the piece has no adjacency lists there: a small piece); a
+  /// kLabelledPrism keeps vertex i's three neighbours at 3 i
+  /// (FixedTopology::kernelData).
+  static void appendKernelData(P& p, const std::int32_t* data, int count) {
+    p.topology_.insert(p.topology_.end(), data, data + count);
+    p.topology_.shrink_to_fit();
+  }
+  static bool hasAdjacency(const P& p) { return p.has_adjacency_; }
   static std::int32_t faceEdgeEnd(const P& p, std::int32_t e) { return p.faceEdgeEnd(e); }
   static const double* faceEdgePlane(const P& p, std::int32_t e) { return p.faceEdgePlane(e); }
   /// The piece's query kernel (detail::PieceKernel), chosen when it was built.
@@ -65,43 +78,88 @@ struct PolyhedronLayout {
         return p.planeBoundLocal(q, face);
     }
   }
-  /// max_i (n_i . q - d_i) and its face over exactly N faces, unrolled: the
-  /// same scan and arithmetic as ConvexPolyhedron::planeBoundLocal's.
+  /// max_i (n_i . q - d_i) and its face over exactly N faces: the same
+  /// values and choice as ConvexPolyhedron::planeBoundLocal's scan. Two faces
+  /// per SSE2 operation: a packed product or sum rounds each lane as the
+  /// scalar one does, in the same order ((n_x q_x + n_y q_y) + n_z q_z) - d,
+  /// so every value is the scan's to the bit. For odd N the last pair's
+  /// second lane reads the next array's first number (nx is followed by ny,
+  /// ..., pd by the side planes) and is not used.
   template <int N>
   static double planeBoundOf(const P& p, const Eigen::Vector3d& q, int* face) {
-    const double* a = p.nx();
-    const double* b = p.ny();
-    const double* c = p.nz();
-    const double* d = p.pd();
-    int best = 0;
-    double best_value = a[0] * q.x() + b[0] * q.y() + c[0] * q.z() - d[0];
-#pragma GCC unroll 8
-    for (int f = 1; f < N; ++f) {
-      const double value = a[f] * q.x() + b[f] * q.y() + c[f] * q.z() - d[f];
-      const bool better = value > best_value;  // branch-free, as in supportLocal
-      best = better ? f : best;
-      best_value = better ? value : best_value;
+    return planeBoundAt<N>(p.nx(), q, face);
+  }
+  /// planeBoundOf from the face arrays [nx | ny | nz | pd] of N faces each
+  /// at `normals` (for a kernel: at a constant offset, Fixed::nx).
+  template <int N>
+  static double planeBoundAt(const double* normals, const Eigen::Vector3d& q, int* face) {
+    static_assert(N >= 2 && N <= 8);
+    const double* a = normals;
+    const double* b = a + N;
+    const double* c = b + N;
+    const double* d = c + N;
+    double value[N + 1];
+#if defined(__SSE2__)
+    const __m128d qx = _mm_set1_pd(q.x());
+    const __m128d qy = _mm_set1_pd(q.y());
+    const __m128d qz = _mm_set1_pd(q.z());
+#pragma GCC unroll 4
+    for (int f = 0; f < N; f += 2) {
+      const __m128d xy = _mm_add_pd(_mm_mul_pd(_mm_loadu_pd(a + f), qx), _mm_mul_pd(_mm_loadu_pd(b + f), qy));
+      _mm_storeu_pd(value + f, _mm_sub_pd(_mm_add_pd(xy, _mm_mul_pd(_mm_loadu_pd(c + f), qz)), _mm_loadu_pd(d + f)));
     }
+#else
+    for (int f = 0; f < N; ++f) value[f] = a[f] * q.x() + b[f] * q.y() + c[f] * q.z() - d[f];
+#endif
+    int best = 0;
+    const double best_value = firstLargest<N>(value, &best);
     if (face != nullptr) *face = best;
     return best_value;
   }
 
-  /// The largest of N face values and the first face that has it: the
-  /// scan planeBoundOf makes, over values a kernel computed its own way
-  /// (box_kernel.hpp, prism_kernel.hpp).
+  /// The largest of the first N values and the first of them that has it:
+  /// the scan planeBoundOf makes, over values a kernel computed its own way
+  /// (box_kernel.hpp, prism_kernel.hpp). Branch-free, as in supportLocal.
   template <int N>
-  static double firstLargest(const double (&value)[N], int* face) {
+  static double firstLargest(const double* value, int* face) {
     int best = 0;
     double best_value = value[0];
 #pragma GCC unroll 8
     for (int f = 1; f < N; ++f) {
-      const bool better = value[f] > best_value;  // branch-free, as in planeBoundOf
+      const bool better = value[f] > best_value;
       best = better ? f : best;
       best_value = better ? value[f] : best_value;
     }
     *face = best;
     return best_value;
   }
+
+  /// A kernel's view of a piece of V vertices and F faces (counts its kind
+  /// fixes): the stored arrays at constant offsets from the one allocation,
+  /// without reading the counts.
+  template <int V, int F>
+  struct Fixed {
+    explicit Fixed(const P& p) : numbers(p.numbers_.data()) {}
+    const double* nx() const { return numbers + 3 * V; }
+    const double* pd() const { return numbers + 3 * V + 3 * F; }
+    /// Side planes of the face-edges from face-edge `e` on (faceEdgePlane).
+    const double* sides(std::int32_t e) const { return numbers + 3 * V + 4 * F + 4 * e; }
+    Eigen::Vector3d vertex(int i) const { return {numbers[i], numbers[V + i], numbers[2 * V + i]}; }
+    const double* numbers;
+  };
+
+  /// The topology of a piece of F faces and E face-edges (counts its kind
+  /// fixes), at constant offsets: [face starts (F + 1) | face lists (E) |
+  /// twins (E) | kernel data].
+  template <int F, int E>
+  struct FixedTopology {
+    explicit FixedTopology(const P& p) : topology(p.topology_.data()) {}
+    std::int32_t start(int f) const { return topology[f]; }
+    const std::int32_t* list(std::int32_t start) const { return topology + F + 1 + start; }
+    std::int32_t twin(std::int32_t e) const { return topology[F + 1 + E + e]; }
+    const std::int32_t* kernelData() const { return topology + F + 1 + 2 * E; }
+    const std::int32_t* topology;
+  };
 
   /// A piece with the same face list as `like` (and as many vertices), built
   /// from `vertices` with like's topology copied instead of matched anew: the

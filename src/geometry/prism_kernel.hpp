@@ -12,13 +12,21 @@
 // face starts per step; its answer does not depend on the order of the
 // three dot products).
 //
+// A triangular prism in another labelling (Qhull's: ConvexPolyhedron::
+// fromPoints keeps Qhull's order of vertices and faces, which the benchmark
+// and test query sets are drawn in) keeps it: its kernel (kLabelledPrism)
+// reads its face lists and twins from the piece as the general query does,
+// and its vertex neighbours from a table stored with its topology when it is
+// built, instead of the general walk around the vertex.
+//
 // A heightfield's prism also stands upright on a flat bottom: its side faces'
 // normals have n_z = 0, its bottom's is (0, 0, -1), and the side planes of
 // its vertical and bottom edges have zero components. For it the kernel
-// drops those terms (kUprightPrism), exactly as the box kernel does
-// (box_kernel.hpp says why that is exact), and where a face value comes out
-// a zero, whose sign the dropped terms could have changed, it takes the
-// general value instead.
+// drops those terms from the side-plane tests (kUprightPrism), exactly as
+// the box kernel does (box_kernel.hpp says why that is exact; a comparison
+// cannot tell a zero's sign). Its face values are the general ones, two
+// faces per operation (PolyhedronLayout::planeBoundOf): as few instructions
+// as the values without their zero terms, and no zero's sign to restore.
 #include <array>
 #include <cstdint>
 
@@ -36,6 +44,11 @@ inline constexpr std::int32_t kPrismStart[6] = {0, 3, 6, 10, 14, 18};
 inline constexpr std::int32_t kPrismList[18] = {0, 1, 2, 3, 5, 4, 0, 3, 4, 1, 1, 4, 5, 2, 2, 5, 3, 0};
 inline constexpr int kPrismFaceCount = 5;
 inline constexpr int kPrismFaceEdges = 18;
+inline constexpr int kPrismVertexCount = 6;
+/// A prism's stored arrays at their constant places.
+using PrismLayout = PolyhedronLayout::Fixed<kPrismVertexCount, kPrismFaceCount>;
+/// A prism's topology at its constant places (any labelling: 5 faces, 18 face-edges).
+using PrismTopology = PolyhedronLayout::FixedTopology<kPrismFaceCount, kPrismFaceEdges>;
 
 /// The vertex face-edge e starts at (edge k of a face runs from vertex k - 1
 /// to vertex k, cyclically).
@@ -70,7 +83,7 @@ inline constexpr std::array<std::array<std::int32_t, 3>, 6> kPrismNeighbours = [
 /// classify for the prism: faces 0 and 1 are triangles, 2 to 4 quads.
 inline FaceRegion prismClassify(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, int face) {
   const std::int32_t start = kPrismStart[face];
-  const double* side = PolyhedronLayout::pd(poly) + kPrismFaceCount + 4 * start;  // faceEdgePlanes(face)
+  const double* side = PrismLayout(poly).sides(start);  // faceEdgePlanes(face)
   if (face < 2) return regionOfMask(kPrismList + start, start, 3, crossedEdges<3>(side, q));
   return regionOfMask(kPrismList + start, start, 4, crossedEdges<4>(side, q));
 }
@@ -79,7 +92,7 @@ inline FaceRegion prismClassify(const ConvexPolyhedron& poly, const Eigen::Vecto
 inline bool prismEdgeRegion(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, const FaceRegion& region,
                             Eigen::Vector3d* closest) {
   if (region.only_edge < 0) return false;
-  const double* twin = PolyhedronLayout::pd(poly) + kPrismFaceCount + 4 * kPrismTwin[region.only_edge];
+  const double* twin = PrismLayout(poly).sides(kPrismTwin[region.only_edge]);
   return edgeRegionBeyond(poly, q, region, twin, closest);
 }
 
@@ -88,30 +101,51 @@ inline bool prismVertexRegion(const ConvexPolyhedron& poly, const Eigen::Vector3
                               Eigen::Vector3d* closest) {
   if (region.into_vertex < 0) return false;
   const std::int32_t at = region.seed[0];
-  const Eigen::Vector3d a = poly.vertexLocal(at);
+  const PrismLayout layout(poly);
+  const Eigen::Vector3d a = layout.vertex(at);
   const Eigen::Vector3d d = q - a;
   for (const std::int32_t c : kPrismNeighbours[at]) {
-    if (d.dot(poly.vertexLocal(c) - a) > 0.0) return false;
+    if (d.dot(layout.vertex(c) - a) > 0.0) return false;
   }
   *closest = a;
   return true;
 }
 
-/// The plane bound of an upright prism: the top's value in full, the
-/// bottom's -q_z - d, the sides' n_x q_x + n_y q_y - d; the general scan's
-/// choice; a zero bound recomputed in full (its sign).
-inline double uprightPrismPlaneBound(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, int* face) {
-  const double* a = PolyhedronLayout::nx(poly);
-  const double* b = PolyhedronLayout::ny(poly);
-  const double* c = PolyhedronLayout::nz(poly);
-  const double* d = PolyhedronLayout::pd(poly);
-  const double value[kPrismFaceCount] = {a[0] * q.x() + b[0] * q.y() + c[0] * q.z() - d[0], -q.z() - d[1],
-                                         a[2] * q.x() + b[2] * q.y() - d[2], a[3] * q.x() + b[3] * q.y() - d[3],
-                                         a[4] * q.x() + b[4] * q.y() - d[4]};
-  const double best_value = PolyhedronLayout::firstLargest(value, face);
-  if (best_value != 0.0) return best_value;
-  const int f = *face;
-  return a[f] * q.x() + b[f] * q.y() + c[f] * q.z() - d[f];
+/// classify for a prism in its own labelling (kLabelledPrism): a face of 3
+/// or 4 edges, its lists read from the piece.
+inline FaceRegion labelledPrismClassify(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, int face) {
+  const PrismTopology topology(poly);
+  const std::int32_t start = topology.start(face);
+  const int size = topology.start(face + 1) - start;
+  const double* side = PrismLayout(poly).sides(start);  // faceEdgePlanes(face)
+  const std::uint32_t mask = size == 3 ? crossedEdges<3>(side, q) : crossedEdges<4>(side, q);
+  return regionOfMask(topology.list(start), start, size, mask);
+}
+
+/// edgeRegion for a prism in its own labelling: the twin's side plane at
+/// its constant place.
+inline bool labelledPrismEdgeRegion(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, const FaceRegion& region,
+                                    Eigen::Vector3d* closest) {
+  if (region.only_edge < 0) return false;
+  const double* twin = PrismLayout(poly).sides(PrismTopology(poly).twin(region.only_edge));
+  return edgeRegionBeyond(poly, q, region, twin, closest);
+}
+
+/// vertexRegion for a prism in its own labelling: the vertex's three
+/// neighbours stored with the piece (storeKernelData, piece_kernel.hpp).
+inline bool labelledPrismVertexRegion(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, const FaceRegion& region,
+                                      Eigen::Vector3d* closest) {
+  if (region.into_vertex < 0) return false;
+  const std::int32_t at = region.seed[0];
+  const std::int32_t* around = PrismTopology(poly).kernelData() + 3 * at;
+  const PrismLayout layout(poly);
+  const Eigen::Vector3d a = layout.vertex(at);
+  const Eigen::Vector3d d = q - a;
+  for (int k = 0; k < 3; ++k) {
+    if (d.dot(layout.vertex(around[k]) - a) > 0.0) return false;
+  }
+  *closest = a;
+  return true;
 }
 
 /// classify for an upright prism: each side plane by the terms it keeps:
@@ -121,7 +155,7 @@ inline double uprightPrismPlaneBound(const ConvexPolyhedron& poly, const Eigen::
 /// vertical.
 inline FaceRegion uprightPrismClassify(const ConvexPolyhedron& poly, const Eigen::Vector3d& q, int face) {
   const std::int32_t start = kPrismStart[face];
-  const double* s = PolyhedronLayout::pd(poly) + kPrismFaceCount + 4 * start;  // faceEdgePlanes(face)
+  const double* s = PrismLayout(poly).sides(start);  // faceEdgePlanes(face)
   auto xyz = [&](int k) { return s[4 * k] * q.x() + s[4 * k + 1] * q.y() + s[4 * k + 2] * q.z() < s[4 * k + 3]; };
   auto xy = [&](int k) { return s[4 * k] * q.x() + s[4 * k + 1] * q.y() < s[4 * k + 3]; };
   auto z = [&](int k) { return s[4 * k + 2] * q.z() < s[4 * k + 3]; };

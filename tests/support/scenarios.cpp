@@ -149,18 +149,25 @@ class Surface {
 // A heightfield cell as a terrain builder makes it: one ground triangle of a
 // 0.4 m grid (heights 0.12, 0.05, 0.21 m) extruded down to a flat base at
 // z = -0.3 m. Top tilted, sides vertical, so two side edges are acute.
-ConvexPolyhedron makePrism() {
+// Its corners: the top triangle (0-2), then the base below it (3-5).
+std::array<Eigen::Vector3d, 6> prismCorners() {
   const Eigen::Vector3d origin(3.2, -1.6, 0.0);
   const double cell = 0.4;
   const double base = -0.3;
   const std::array<Eigen::Vector3d, 3> top = {Eigen::Vector3d(0.0, 0.0, 0.12), Eigen::Vector3d(cell, 0.0, 0.05),
                                               Eigen::Vector3d(0.0, cell, 0.21)};
-  std::vector<Eigen::Vector3d> points;
-  for (const auto& t : top) {
-    points.push_back(origin + t);
-    points.push_back(origin + Eigen::Vector3d(t.x(), t.y(), base));
+  std::array<Eigen::Vector3d, 6> corners;
+  for (int i = 0; i < 3; ++i) {
+    corners[i] = origin + top[i];
+    corners[i + 3] = origin + Eigen::Vector3d(top[i].x(), top[i].y(), base);
   }
-  return ConvexPolyhedron::fromPoints(points);
+  return corners;
+}
+
+ConvexPolyhedron makePrism() {
+  const std::array<Eigen::Vector3d, 6> c = prismCorners();
+  // Top and base corner by corner: the order Qhull has always been given.
+  return ConvexPolyhedron::fromPoints({c[0], c[3], c[1], c[4], c[2], c[5]});
 }
 
 }  // namespace
@@ -223,6 +230,12 @@ ConvexPolyhedron makeShape(ShapeId shape) {
       return makeEllipsoidHull(64, kDefaultSeed);
   }
   throw std::logic_error("wtc::testing::makeShape: unknown shape id");
+}
+
+ConvexPolyhedron makeBuildersCell() {
+  const std::array<Eigen::Vector3d, 6> c = prismCorners();
+  return ConvexPolyhedron::fromMesh({c.begin(), c.end()},
+                                    {{0, 1, 2}, {3, 5, 4}, {0, 3, 4, 1}, {1, 4, 5, 2}, {2, 5, 3, 0}});
 }
 
 std::vector<Eigen::Vector3d> makeQuerySet(const ConvexPolyhedron& poly, QuerySetId set, int count, std::uint64_t seed) {

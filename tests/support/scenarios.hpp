@@ -76,6 +76,12 @@ std::optional<QuerySetId> querySetFromString(std::string_view name);
 /// callers that need a piece often should keep it.
 ConvexPolyhedron makeShape(ShapeId shape);
 
+/// The heightfield cell of ShapeId::kPrism built as the terrain builders
+/// build it (fromMesh with their face order, src/terrain/builder_support.cpp)
+/// instead of through Qhull: the piece the point query's upright prism
+/// kernel serves (src/geometry/prism_kernel.hpp); "cell" in the benchmarks.
+ConvexPolyhedron makeBuildersCell();
+
 /// The convex hull of points on a slightly irregular ellipsoid (semi-axes
 /// 0.5, 0.35, 0.2 m, radius jittered by up to 3 %, rotated off the axes)
 /// with exactly `vertex_count` hull vertices (>= 4). Points are added one at

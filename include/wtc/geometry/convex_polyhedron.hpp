@@ -175,8 +175,8 @@ class ConvexPolyhedron {
   // [vx vy vz | nx ny nz d | face-edge side planes (sx sy sz s.a)...],
   // local frame.
   std::vector<double> numbers_;
-  // [face_start (F+1) | face vertices | face-edge twins | adjacency start
-  // (V+1) | neighbours]; adjacency only for pieces that hill-climb.
+  // [face_start (F+1) | face vertices | face-edge twins | adjacency start (V+1) | neighbours]; adjacency
+  // only for pieces that hill-climb; a Qhull prism's kernel keeps its neighbours there (piece_kernel.hpp).
   std::vector<std::int32_t> topology_;
 };
 
