@@ -5,6 +5,7 @@
 // frame and the face-edge topology (convex_polyhedron.hpp has the layout).
 // Internal to wtc::core.
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include <Eigen/Core>
@@ -29,7 +30,7 @@ struct PolyhedronLayout {
   /// ConvexPolyhedron::faceEdgeNext, inline: the vertex-region walk takes
   /// it once per edge around the vertex.
   static std::int32_t faceEdgeNext(const P& p, std::int32_t e) {
-    const std::int32_t* start = p.topology_.data();
+    const std::int32_t* start = p.topology_;
     if (p.face_count_ > kScanFaces) return p.faceEdgeNext(e);
     int f = 0;
     while (start[f + 1] <= e) ++f;
@@ -41,11 +42,26 @@ struct PolyhedronLayout {
   /// Face f's vertex indices (faceVertices(f).data()) and their count,
   /// inline for the query kernels.
   static const std::int32_t* faceVertexList(const P& p, int f) {
-    return p.topology_.data() + p.face_count_ + 1 + p.topology_[f];
+    return p.topology_ + p.face_count_ + 1 + p.topology_[f];
   }
   static int faceSize(const P& p, int f) { return p.topology_[f + 1] - p.topology_[f]; }
   static std::int32_t faceEdgeEnd(const P& p, std::int32_t e) { return p.faceEdgeEnd(e); }
   static const double* faceEdgePlane(const P& p, std::int32_t e) { return p.faceEdgePlane(e); }
+  /// The piece's numbers and topology, as stored (a terrain's arena copies
+  /// them: terrain/piece_arena.hpp).
+  static std::span<const double> numbers(const P& p) {
+    return {p.numbers_, static_cast<std::size_t>(p.number_count_)};
+  }
+  static std::span<const std::int32_t> topology(const P& p) {
+    return {p.topology_, static_cast<std::size_t>(p.topology_count_)};
+  }
+  /// Points `p` at copies of its own numbers and topology that outlive it
+  /// (a terrain's arena), freeing its block.
+  static void useStorage(P& p, const double* numbers, const std::int32_t* topology) {
+    p.releaseBlock();
+    p.numbers_ = numbers;
+    p.topology_ = topology;
+  }
   /// The piece's query kernel (detail::PieceKernel), chosen when it was built.
   static std::uint8_t kernel(const P& p) { return p.kernel_; }
   /// The same piece answered by the general query: for the tests that hold
