@@ -109,8 +109,10 @@ double ConvexPolyhedron::planeBoundLocal(const Eigen::Vector3d& q, int* face) co
 }
 
 std::size_t ConvexPolyhedron::memoryBytes() const {
-  // A piece in a terrain's arena owns no block: the terrain counts the arena.
-  return sizeof(*this) + block_bytes_;
+  // Its numbers and topology wherever they are (its own block, or a
+  // terrain's arena, which counts them in Terrain::pieceMemoryBytes).
+  return sizeof(*this) + static_cast<std::size_t>(number_count_) * sizeof(double) +
+         static_cast<std::size_t>(topology_count_) * sizeof(std::int32_t);
 }
 
 }  // namespace wtc

@@ -361,7 +361,8 @@ void Terrain::overlapping(const Aabb& box, std::vector<PieceId>& out) const {
 std::size_t Terrain::pieceMemoryBytes() const {
   std::size_t bytes = piece_material_.capacity() * sizeof(MaterialId) + fields_.capacity() * sizeof(Field);
   for (const Field& f : fields_) bytes += f.formed->memoryBytes();
-  for (const auto& p : pieces_) bytes += p.memoryBytes();
+  // Every stored piece's numbers and topology are in the arena.
+  bytes += pieces_.capacity() * sizeof(ConvexPolyhedron);
   return bytes + (arena_ ? arena_->memoryBytes() : 0);
 }
 

@@ -5,6 +5,8 @@
 // their memory and outlive the terrain they came from.
 #include "terrain/piece_arena.hpp"
 
+#include "geometry/polyhedron_layout.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -130,8 +132,16 @@ TEST(PieceArenaTest, StoresEachDistinctTopologyOnceAndEveryPiecesNumbers) {
   // A box's 3 x 8 + 4 x 6 + 4 x 24 numbers (1152 bytes), on whole lines,
   // plus the tetrahedron's and two topologies: nothing per piece besides.
   EXPECT_LT(arena.memoryBytes(), 501 * 1152 + 4096);
+  const auto* begin = reinterpret_cast<const unsigned char*>(arena.base());
   for (std::size_t k = 0; k < pieces.size(); ++k) {
-    EXPECT_EQ(pieces[k].memoryBytes(), sizeof(ConvexPolyhedron)) << "piece " << k << " still owns a block";
+    const auto numbers = wtc::detail::PolyhedronLayout::numbers(pieces[k]);
+    const auto topology = wtc::detail::PolyhedronLayout::topology(pieces[k]);
+    const auto* at = reinterpret_cast<const unsigned char*>(numbers.data());
+    EXPECT_EQ(at, begin + 64 * std::size_t{first_line[order.size() - 1 - k]}) << "piece " << k;
+    EXPECT_TRUE(reinterpret_cast<const unsigned char*>(topology.data()) >= begin &&
+                reinterpret_cast<const unsigned char*>(topology.data() + topology.size()) <=
+                    begin + arena.memoryBytes())
+        << "piece " << k << "'s topology is not in the arena";
     expectSamePiece(pieces[k], before[k], pointsAround(before[k], rng, 3));
   }
 }
@@ -146,24 +156,20 @@ TEST(PieceArenaTest, CopiesOfPiecesAndTerrainsOutliveTheTerrain) {
   field.spacing_x = field.spacing_y = 0.5;
   field.heights.resize(static_cast<std::size_t>(field.rows) * field.cols);
   for (std::size_t k = 0; k < field.heights.size(); ++k) field.heights[k] = 0.01 * static_cast<double>(k % 37);
-  auto terrain = std::make_unique<wtc::Terrain>([&] {
+  const auto build = [&] {
     wtc::TerrainBuilder builder;
     wtc::addHeightfield(builder, field, builder.addMaterial({}));
     return std::move(builder).build();
-  }());
+  };
+  auto terrain = std::make_unique<wtc::Terrain>(build());
+  const wtc::Terrain reference = build();  // the same pieces, built again
   std::mt19937_64 rng(3);
   const std::vector<wtc::PieceId> ids = {0, 1, 4321, 40000, static_cast<wtc::PieceId>(terrain->pieceCount() - 1)};
   std::vector<ConvexPolyhedron> copies, fresh;
   ConvexPolyhedron assigned = ConvexPolyhedron::box(Vector3d::Zero(), Vector3d::Ones());
   for (const wtc::PieceId id : ids) {
     copies.push_back(terrain->piece(id));
-    // What the piece is, built again from its own vertices and faces.
-    std::vector<Vector3d> v;
-    std::vector<std::vector<int>> faces;
-    const ConvexPolyhedron& p = terrain->piece(id);
-    for (int i = 0; i < p.vertexCount(); ++i) v.push_back(p.vertex(i));
-    for (int f = 0; f < p.faceCount(); ++f) faces.emplace_back(p.faceVertices(f).begin(), p.faceVertices(f).end());
-    fresh.push_back(ConvexPolyhedron::fromMesh(v, faces));
+    fresh.push_back(reference.piece(id));
   }
   assigned = terrain->piece(ids[2]);  // assignment into a box's larger block
   auto copy = std::make_unique<wtc::Terrain>(*terrain);

@@ -99,8 +99,9 @@ class ConvexPolyhedron {
   /// distance when p is inside.
   double planeBound(const Eigen::Vector3d& p, int* face = nullptr) const;
 
-  /// Bytes owned by this piece, heap included (for the per-piece memory
-  /// figures of the terrain).
+  /// Bytes of this piece: the object and its numbers and topology, in its
+  /// own block or in a terrain's arena (which shares one topology among
+  /// many pieces: Terrain::pieceMemoryBytes counts the arena itself).
   std::size_t memoryBytes() const;
 
   // The local frame: coordinates relative to origin() (an engine adapter
