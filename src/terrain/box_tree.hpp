@@ -77,12 +77,6 @@ void BoxTree::visit(const Aabb& box, Leaf&& leaf) const {
       if (hit[c] == 0) continue;
       const std::int32_t child = node.child[c];
       if (child >= 0) {
-        // Fetched now, while the siblings are tested and walked: on a tree
-        // larger than the cache the misses of a level's hit children
-        // overlap instead of waiting their turn on the stack.
-        const char* next = reinterpret_cast<const char*>(&nodes_[child]);
-        __builtin_prefetch(next);
-        __builtin_prefetch(next + sizeof(Node) - 1);
         stack[top++] = child;
         continue;
       }
