@@ -34,7 +34,6 @@ struct alignas(64) PieceLeaf {
   std::int32_t id = 0;       ///< its PieceId
   std::int32_t stored = 0;   ///< its position in the terrain's pieces
   std::uint32_t line = 0;    ///< its numbers' first cache line in the arena
-  std::uint16_t lines = 0;   ///< cache lines its numbers span (at most 65535 fetched)
 };
 
 class PieceArena {

@@ -14,7 +14,6 @@
 #include "box_tree.hpp"
 #include "builder_support.hpp"
 #include "formed_pieces.hpp"
-#include "geometry/polyhedron_layout.hpp"
 #include "piece_arena.hpp"
 #include "wtc/base/error.hpp"
 #include "wtc/geometry/point_query.hpp"
@@ -205,12 +204,7 @@ void Terrain::gatherPieces() {
   for (std::size_t k = 0; k < leaves_.size(); ++k) stored[k] = leaves_[k].stored;
   std::vector<std::uint32_t> first_line;
   arena_ = std::make_shared<const detail::PieceArena>(pieces_, stored, first_line);
-  for (std::size_t k = 0; k < leaves_.size(); ++k) {
-    const std::size_t bytes = detail::PolyhedronLayout::numbers(pieces_[leaves_[k].stored]).size_bytes();
-    leaves_[k].line = first_line[k];
-    leaves_[k].lines = static_cast<std::uint16_t>(
-        std::min<std::size_t>((bytes + kCacheLineBytes - 1) / kCacheLineBytes, std::numeric_limits<std::uint16_t>::max()));
-  }
+  for (std::size_t k = 0; k < leaves_.size(); ++k) leaves_[k].line = first_line[k];
 }
 
 Terrain::Place Terrain::place(PieceId id) const {
@@ -331,7 +325,7 @@ void Terrain::buildIndex() {
   for (const std::int32_t stored : order) {
     // A stored piece's id counts the formed ids of the parts before it.
     const PieceId id = fields_.empty() ? stored : storedId(static_cast<std::size_t>(stored));
-    leaves_.push_back({boxes[stored], id, stored, 0, 0});
+    leaves_.push_back({boxes[stored], id, stored, 0});
   }
   gatherPieces();
 }
