@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
+#include <new>
 #include <limits>
 #include <numeric>
 #include <set>
@@ -169,7 +171,7 @@ ConvexPolyhedron ConvexPolyhedron::box(const Eigen::Vector3d& min, const Eigen::
 ConvexPolyhedron detail::PolyhedronLayout::sameTopologyAs(const ConvexPolyhedron& like,
                                                           const std::vector<Eigen::Vector3d>& vertices,
                                                           const std::vector<std::vector<int>>& faces) {
-  ConvexPolyhedron poly = ConvexPolyhedron::assemble(vertices, faces, like.flat_, nullptr, &like.topology_);
+  ConvexPolyhedron poly = ConvexPolyhedron::assemble(vertices, faces, like.flat_, nullptr, &like);
   poly.kernel_ = static_cast<std::uint8_t>(kernelForTopologyOf(poly, static_cast<PieceKernel>(like.kernel_)));
   return poly;
 }
@@ -177,23 +179,49 @@ ConvexPolyhedron detail::PolyhedronLayout::sameTopologyAs(const ConvexPolyhedron
 void detail::PolyhedronLayout::sameTopologyInto(ConvexPolyhedron& into, const ConvexPolyhedron& like,
                                                 const std::vector<Eigen::Vector3d>& vertices,
                                                 const std::vector<std::vector<int>>& faces) {
-  ConvexPolyhedron::assembleInto(into, vertices, faces, like.flat_, nullptr, &like.topology_);
+  ConvexPolyhedron::assembleInto(into, vertices, faces, like.flat_, nullptr, &like);
   into.kernel_ = static_cast<std::uint8_t>(kernelForTopologyOf(into, static_cast<PieceKernel>(like.kernel_)));
 }
 
 ConvexPolyhedron ConvexPolyhedron::assemble(const std::vector<Eigen::Vector3d>& vertices,
                                             const std::vector<std::vector<int>>& faces, bool flat,
                                             const std::vector<Eigen::Vector3d>* hull_normals,
-                                            const std::vector<std::int32_t>* topology) {
+                                            const ConvexPolyhedron* topology_of) {
   ConvexPolyhedron poly;
-  assembleInto(poly, vertices, faces, flat, hull_normals, topology);
+  assembleInto(poly, vertices, faces, flat, hull_normals, topology_of);
   return poly;
 }
 
 void ConvexPolyhedron::assembleInto(ConvexPolyhedron& poly, const std::vector<Eigen::Vector3d>& vertices,
                                     const std::vector<std::vector<int>>& faces, bool flat,
                                     const std::vector<Eigen::Vector3d>* hull_normals,
-                                    const std::vector<std::int32_t>* topology) {
+                                    const ConvexPolyhedron* topology_of) {
+  // A new face list's numbers and topology are made in per-thread scratch,
+  // the piece's views pointing there, and copied into its block once
+  // complete (their sizes are known only then); a copied topology's are
+  // made in the block itself. A piece left half made by an error has no
+  // numbers (its block, if any, is kept).
+  thread_local std::vector<double> numbers;
+  thread_local std::vector<std::int32_t> topology;
+  poly.numbers_ = nullptr;
+  poly.topology_ = nullptr;
+  poly.number_count_ = poly.topology_count_ = 0;
+  try {
+    assembleScratch(poly, vertices, faces, flat, hull_normals, topology_of, numbers, topology);
+  } catch (...) {
+    poly.numbers_ = nullptr;
+    poly.topology_ = nullptr;
+    poly.number_count_ = poly.topology_count_ = 0;
+    throw;
+  }
+  if (topology_of == nullptr) poly.copyIntoBlock(numbers.data(), topology.data());
+}
+
+void ConvexPolyhedron::assembleScratch(ConvexPolyhedron& poly, const std::vector<Eigen::Vector3d>& vertices,
+                                       const std::vector<std::vector<int>>& faces, bool flat,
+                                       const std::vector<Eigen::Vector3d>* hull_normals,
+                                       const ConvexPolyhedron* topology_of, std::vector<double>& numbers,
+                                       std::vector<std::int32_t>& topology) {
   poly.bounds_ = Aabb::of(vertices);
   poly.origin_ = poly.bounds_.center();
   poly.size_ = poly.bounds_.extent().norm();
@@ -210,14 +238,34 @@ void ConvexPolyhedron::assembleInto(ConvexPolyhedron& poly, const std::vector<Ei
   // Topology first: the face lists the numbers below are computed from, read
   // flat (offsets, then indices) rather than through the nested vectors.
   // A copied topology is this very face list (the caller's word).
-  if (topology != nullptr) {
-    poly.topology_ = *topology;  // assignment: into's buffer if it is large enough
+  const std::int32_t* face_start = nullptr;
+  if (topology_of != nullptr) {
+    face_start = topology_of->topology_;
   } else {
-    faceLists(poly, faces);
+    faceLists(topology, faces);
+    face_start = topology.data();
   }
-  const std::int32_t* face_start = poly.topology_.data();
   const std::int32_t* face_list = face_start + nf + 1;
   const auto face_edges = static_cast<std::size_t>(face_start[nf]);
+  const std::size_t number_count =
+      3 * static_cast<std::size_t>(nv) + 4 * static_cast<std::size_t>(nf) + 4 * face_edges;
+  double* num = nullptr;
+  if (topology_of != nullptr) {
+    // Every size is known: straight into the piece's block.
+    poly.number_count_ = static_cast<std::int32_t>(number_count);
+    poly.topology_count_ = topology_of->topology_count_;
+    poly.reserveBlock();
+    num = static_cast<double*>(poly.block_);
+    std::memcpy(num + number_count, face_start,
+                static_cast<std::size_t>(poly.topology_count_) * sizeof(std::int32_t));
+  } else {
+    numbers.resize(number_count);
+    num = numbers.data();
+    poly.numbers_ = num;
+    poly.number_count_ = static_cast<std::int32_t>(number_count);
+    poly.topology_ = topology.data();
+    poly.topology_count_ = static_cast<std::int32_t>(topology.size());
+  }
 
   // Scratch for the local vertices: on the stack for the small pieces that
   // heightfields and meshes form by the million, else one list per thread.
@@ -235,8 +283,6 @@ void ConvexPolyhedron::assembleInto(ConvexPolyhedron& poly, const std::vector<Ei
   }
   poly.centroid_local_ = sum / nv;
 
-  poly.numbers_.resize(3 * static_cast<std::size_t>(nv) + 4 * static_cast<std::size_t>(nf) + 4 * face_edges);
-  double* num = poly.numbers_.data();
   for (int i = 0; i < nv; ++i) {
     num[i] = local[i].x();
     num[nv + i] = local[i].y();
@@ -247,7 +293,7 @@ void ConvexPolyhedron::assembleInto(ConvexPolyhedron& poly, const std::vector<Ei
   // its hyperplanes, and a copied topology's caller vouches for its faces
   // (prisms formed from checked corners: triangles and the vertical or
   // parallel quads between them). Zero area and volume are always checked.
-  const bool check_planar = hull_normals == nullptr && topology == nullptr;
+  const bool check_planar = hull_normals == nullptr && topology_of == nullptr;
   double* n_out = num + 3 * nv;
   for (int f = 0; f < nf; ++f) {
     const std::int32_t* face = face_list + face_start[f];
@@ -303,17 +349,19 @@ void ConvexPolyhedron::assembleInto(ConvexPolyhedron& poly, const std::vector<Ei
   if (!flat && poly.planeBoundLocal(poly.centroid_local_, nullptr) >= -planar_tol) {
     fail("the faces do not enclose a volume (the centroid is not strictly inside every face plane)");
   }
-  if (topology == nullptr) twinsAndAdjacency(poly, faces);
-  poly.numbers_.shrink_to_fit();
+  if (topology_of == nullptr) {
+    twinsAndAdjacency(poly, topology, faces);
+    poly.topology_ = topology.data();
+    poly.topology_count_ = static_cast<std::int32_t>(topology.size());
+  }
   // A copied topology's kernel is its caller's to choose (sameTopologyAs).
-  poly.kernel_ = topology == nullptr ? static_cast<std::uint8_t>(detail::kernelFor(poly)) : 0;
-  if (topology == nullptr) detail::storeKernelData(poly);
+  poly.kernel_ = topology_of == nullptr ? static_cast<std::uint8_t>(detail::kernelFor(poly)) : 0;
+  if (topology_of == nullptr) detail::storeKernelData(poly, topology);
 }
 
-void ConvexPolyhedron::faceLists(ConvexPolyhedron& poly, const std::vector<std::vector<int>>& faces) {
+void ConvexPolyhedron::faceLists(std::vector<std::int32_t>& topo, const std::vector<std::vector<int>>& faces) {
   std::size_t face_edges = 0;
   for (const auto& face : faces) face_edges += face.size();
-  auto& topo = poly.topology_;
   topo.clear();
   topo.reserve(1 + faces.size() + 2 * face_edges);  // offsets, face lists, twins: one allocation
   topo.push_back(0);
@@ -322,8 +370,8 @@ void ConvexPolyhedron::faceLists(ConvexPolyhedron& poly, const std::vector<std::
   for (const auto& face : faces) topo.insert(topo.end(), face.begin(), face.end());
 }
 
-void ConvexPolyhedron::twinsAndAdjacency(ConvexPolyhedron& poly, const std::vector<std::vector<int>>& faces) {
-  auto& topo = poly.topology_;
+void ConvexPolyhedron::twinsAndAdjacency(const ConvexPolyhedron& poly, std::vector<std::int32_t>& topo,
+                                         const std::vector<std::vector<int>>& faces) {
   const std::size_t twins_at = topo.size();
   const auto total = static_cast<std::size_t>(topo[poly.face_count_]);
   topo.resize(twins_at + total);
@@ -343,7 +391,138 @@ void ConvexPolyhedron::twinsAndAdjacency(ConvexPolyhedron& poly, const std::vect
     for (const auto& n : neighbors) topo.push_back(count += static_cast<std::int32_t>(n.size()));
     for (const auto& n : neighbors) topo.insert(topo.end(), n.begin(), n.end());
   }
-  topo.shrink_to_fit();
 }
+
+// The block: numbers_ first (8-byte doubles, at the block's start), then the
+// topology; aligned to a cache line, so that a small piece's numbers start
+// on one.
+namespace {
+constexpr std::align_val_t kBlockAlignment{64};
+}  // namespace
+
+void ConvexPolyhedron::reserveBlock() {
+  const std::size_t number_bytes = static_cast<std::size_t>(number_count_) * sizeof(double);
+  const std::size_t bytes = number_bytes + static_cast<std::size_t>(topology_count_) * sizeof(std::int32_t);
+  if (block_ == nullptr || block_bytes_ < bytes) {
+    void* fresh = ::operator new(bytes, kBlockAlignment);
+    releaseBlock();
+    block_ = fresh;
+    block_bytes_ = bytes;
+  }
+  auto* bytes_at = static_cast<unsigned char*>(block_);
+  numbers_ = reinterpret_cast<const double*>(bytes_at);
+  topology_ = reinterpret_cast<const std::int32_t*>(bytes_at + number_bytes);
+}
+
+void ConvexPolyhedron::copyIntoBlock(const double* numbers, const std::int32_t* topology) {
+  reserveBlock();
+  auto* bytes_at = static_cast<unsigned char*>(block_);
+  const std::size_t number_bytes = static_cast<std::size_t>(number_count_) * sizeof(double);
+  if (number_count_ > 0) std::memcpy(bytes_at, numbers, number_bytes);
+  if (topology_count_ > 0) {
+    std::memcpy(bytes_at + number_bytes, topology, static_cast<std::size_t>(topology_count_) * sizeof(std::int32_t));
+  }
+}
+
+void ConvexPolyhedron::releaseBlock() noexcept {
+  if (block_ != nullptr) ::operator delete(block_, kBlockAlignment);
+  block_ = nullptr;
+  block_bytes_ = 0;
+}
+
+ConvexPolyhedron::ConvexPolyhedron(const ConvexPolyhedron& other)
+    : origin_(other.origin_),
+      centroid_local_(other.centroid_local_),
+      bounds_(other.bounds_),
+      size_(other.size_),
+      vertex_count_(other.vertex_count_),
+      face_count_(other.face_count_),
+      flat_(other.flat_),
+      has_adjacency_(other.has_adjacency_),
+      kernel_(other.kernel_),
+      number_count_(other.number_count_),
+      topology_count_(other.topology_count_) {
+  // Always a block of its own: a copy outlives the piece and the terrain
+  // (arena) it was copied from.
+  if (other.numbers_ != nullptr) copyIntoBlock(other.numbers_, other.topology_);
+}
+
+ConvexPolyhedron::ConvexPolyhedron(ConvexPolyhedron&& other) noexcept
+    : origin_(other.origin_),
+      centroid_local_(other.centroid_local_),
+      bounds_(other.bounds_),
+      size_(other.size_),
+      vertex_count_(other.vertex_count_),
+      face_count_(other.face_count_),
+      flat_(other.flat_),
+      has_adjacency_(other.has_adjacency_),
+      kernel_(other.kernel_),
+      numbers_(other.numbers_),
+      topology_(other.topology_),
+      number_count_(other.number_count_),
+      topology_count_(other.topology_count_),
+      block_(other.block_),
+      block_bytes_(other.block_bytes_) {
+  // An owned block moves; an arena's views move with the pieces a terrain
+  // moves within itself (only a terrain holds such pieces, by value, and
+  // never hands one out but by const reference or by copy).
+  other.numbers_ = nullptr;
+  other.topology_ = nullptr;
+  other.number_count_ = other.topology_count_ = 0;
+  other.vertex_count_ = other.face_count_ = 0;
+  other.block_ = nullptr;
+  other.block_bytes_ = 0;
+}
+
+ConvexPolyhedron& ConvexPolyhedron::operator=(const ConvexPolyhedron& other) {
+  if (this == &other) return *this;
+  origin_ = other.origin_;
+  centroid_local_ = other.centroid_local_;
+  bounds_ = other.bounds_;
+  size_ = other.size_;
+  vertex_count_ = other.vertex_count_;
+  face_count_ = other.face_count_;
+  flat_ = other.flat_;
+  has_adjacency_ = other.has_adjacency_;
+  kernel_ = other.kernel_;
+  number_count_ = other.number_count_;
+  topology_count_ = other.topology_count_;
+  if (other.numbers_ == nullptr) {
+    numbers_ = nullptr;
+    topology_ = nullptr;
+  } else {
+    copyIntoBlock(other.numbers_, other.topology_);  // this one's block, when large enough
+  }
+  return *this;
+}
+
+ConvexPolyhedron& ConvexPolyhedron::operator=(ConvexPolyhedron&& other) noexcept {
+  if (this == &other) return *this;
+  releaseBlock();
+  origin_ = other.origin_;
+  centroid_local_ = other.centroid_local_;
+  bounds_ = other.bounds_;
+  size_ = other.size_;
+  vertex_count_ = other.vertex_count_;
+  face_count_ = other.face_count_;
+  flat_ = other.flat_;
+  has_adjacency_ = other.has_adjacency_;
+  kernel_ = other.kernel_;
+  numbers_ = other.numbers_;
+  topology_ = other.topology_;
+  number_count_ = other.number_count_;
+  topology_count_ = other.topology_count_;
+  block_ = other.block_;
+  block_bytes_ = other.block_bytes_;
+  other.numbers_ = nullptr;
+  other.topology_ = nullptr;
+  other.number_count_ = other.topology_count_ = 0;
+  other.vertex_count_ = other.face_count_ = 0;
+  other.block_ = nullptr;
+  other.block_bytes_ = 0;
+  return *this;
+}
+
+ConvexPolyhedron::~ConvexPolyhedron() { releaseBlock(); }
 
 }  // namespace wtc

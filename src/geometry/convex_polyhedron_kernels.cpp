@@ -9,7 +9,7 @@
 namespace wtc {
 
 std::span<const std::int32_t> ConvexPolyhedron::faceVertices(int f) const {
-  const std::int32_t* start = topology_.data();
+  const std::int32_t* start = topology_;
   const std::int32_t* list = start + face_count_ + 1;
   return {list + start[f], list + start[f + 1]};
 }
@@ -17,7 +17,7 @@ std::span<const std::int32_t> ConvexPolyhedron::faceVertices(int f) const {
 int ConvexPolyhedron::faceOfEdge(std::int32_t face_edge) const {
   // Face starts are ascending: a short scan for the small pieces of ground
   // (5 to 8 faces), a binary search for large ones.
-  const std::int32_t* start = topology_.data();
+  const std::int32_t* start = topology_;
   if (face_count_ <= 16) {
     int f = 0;
     while (start[f + 1] <= face_edge) ++f;
@@ -32,7 +32,7 @@ std::int32_t ConvexPolyhedron::faceEdgeNext(std::int32_t face_edge) const {
 }
 
 std::span<const std::int32_t> ConvexPolyhedron::vertexNeighbors(int i) const {
-  const std::int32_t* start = topology_.data() + face_count_ + 1 + 2 * topology_[face_count_];
+  const std::int32_t* start = topology_ + face_count_ + 1 + 2 * topology_[face_count_];
   const std::int32_t* list = start + vertex_count_ + 1;
   return {list + start[i], list + start[i + 1]};
 }
@@ -109,7 +109,10 @@ double ConvexPolyhedron::planeBoundLocal(const Eigen::Vector3d& q, int* face) co
 }
 
 std::size_t ConvexPolyhedron::memoryBytes() const {
-  return sizeof(*this) + numbers_.capacity() * sizeof(double) + topology_.capacity() * sizeof(std::int32_t);
+  // Its numbers and topology wherever they are (its own block, or a
+  // terrain's arena, which counts them in Terrain::pieceMemoryBytes).
+  return sizeof(*this) + static_cast<std::size_t>(number_count_) * sizeof(double) +
+         static_cast<std::size_t>(topology_count_) * sizeof(std::int32_t);
 }
 
 }  // namespace wtc

@@ -140,7 +140,7 @@ PieceKernel kernelForTopologyOf(const ConvexPolyhedron& poly, PieceKernel like) 
   return kernel == PieceKernel::kLabelledPrism ? PieceKernel::kGeneral : kernel;  // no data stored: no kernel
 }
 
-void storeKernelData(ConvexPolyhedron& poly) {
+void storeKernelData(ConvexPolyhedron& poly, std::vector<std::int32_t>& topology) {
   if (static_cast<PieceKernel>(Layout::kernel(poly)) != PieceKernel::kLabelledPrism) return;
   // Each face-edge's end is a neighbour of its start: every vertex's three
   // neighbours, in face order (the vertex region's answer does not depend on
@@ -155,7 +155,7 @@ void storeKernelData(ConvexPolyhedron& poly) {
       around[from][count[from]++] = list[k];
     }
   }
-  Layout::appendKernelData(poly, around[0], 18);
+  Layout::appendKernelData(poly, topology, around[0], 18);
 }
 
 }  // namespace wtc::detail

@@ -11,6 +11,7 @@
 // box the terms that are exactly zero. Every answer is the same, bit for bit
 // (PieceKernelTest).
 #include <cstdint>
+#include <vector>
 
 #include "wtc/geometry/convex_polyhedron.hpp"
 
@@ -33,7 +34,8 @@ PieceKernel kernelFor(const ConvexPolyhedron& poly);
 /// second look, only its numbers (the compact terrains form prisms so).
 PieceKernel kernelForTopologyOf(const ConvexPolyhedron& poly, PieceKernel like);
 /// Stores what the kernel of `poly` (chosen by kernelFor) reads besides the
-/// layout: the vertex neighbours of a kLabelledPrism, after its twins.
-void storeKernelData(ConvexPolyhedron& poly);
+/// layout: the vertex neighbours of a kLabelledPrism, after its twins, in
+/// `topology`, the piece's topology while it is built (assembleInto).
+void storeKernelData(ConvexPolyhedron& poly, std::vector<std::int32_t>& topology);
 
 }  // namespace wtc::detail

@@ -5,6 +5,7 @@
 // frame and the face-edge topology (convex_polyhedron.hpp has the layout).
 // Internal to wtc::core.
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #if defined(__SSE2__)
@@ -33,7 +34,7 @@ struct PolyhedronLayout {
   /// ConvexPolyhedron::faceEdgeNext, inline: the vertex-region walk takes
   /// it once per edge around the vertex.
   static std::int32_t faceEdgeNext(const P& p, std::int32_t e) {
-    const std::int32_t* start = p.topology_.data();
+    const std::int32_t* start = p.topology_;
     if (p.face_count_ > kScanFaces) return p.faceEdgeNext(e);
     int f = 0;
     while (start[f + 1] <= e) ++f;
@@ -45,20 +46,37 @@ struct PolyhedronLayout {
   /// Face f's vertex indices (faceVertices(f).data()) and their count,
   /// inline for the query kernels.
   static const std::int32_t* faceVertexList(const P& p, int f) {
-    return p.topology_.data() + p.face_count_ + 1 + p.topology_[f];
+    return p.topology_ + p.face_count_ + 1 + p.topology_[f];
   }
   static int faceSize(const P& p, int f) { return p.topology_[f + 1] - p.topology_[f]; }
-  /// Appends `count` entries of kernel data to the topology, after the
-  /// twins (the piece has no adjacency lists there: a small piece); a
-  /// kLabelledPrism keeps vertex i's three neighbours at 3 i
+  /// Appends `count` entries of kernel data to the topology being built in
+  /// `topology` (the piece's view, before its block is made: assembleInto),
+  /// after the twins (the piece has no adjacency lists there: a small
+  /// piece); a kLabelledPrism keeps vertex i's three neighbours at 3 i
   /// (FixedTopology::kernelData).
-  static void appendKernelData(P& p, const std::int32_t* data, int count) {
-    p.topology_.insert(p.topology_.end(), data, data + count);
-    p.topology_.shrink_to_fit();
+  static void appendKernelData(P& p, std::vector<std::int32_t>& topology, const std::int32_t* data, int count) {
+    topology.insert(topology.end(), data, data + count);
+    p.topology_ = topology.data();
+    p.topology_count_ = static_cast<std::int32_t>(topology.size());
   }
   static bool hasAdjacency(const P& p) { return p.has_adjacency_; }
   static std::int32_t faceEdgeEnd(const P& p, std::int32_t e) { return p.faceEdgeEnd(e); }
   static const double* faceEdgePlane(const P& p, std::int32_t e) { return p.faceEdgePlane(e); }
+  /// The piece's numbers and topology, as stored (a terrain's arena copies
+  /// them: terrain/piece_arena.hpp).
+  static std::span<const double> numbers(const P& p) {
+    return {p.numbers_, static_cast<std::size_t>(p.number_count_)};
+  }
+  static std::span<const std::int32_t> topology(const P& p) {
+    return {p.topology_, static_cast<std::size_t>(p.topology_count_)};
+  }
+  /// Points `p` at copies of its own numbers and topology that outlive it
+  /// (a terrain's arena), freeing its block.
+  static void useStorage(P& p, const double* numbers, const std::int32_t* topology) {
+    p.releaseBlock();
+    p.numbers_ = numbers;
+    p.topology_ = topology;
+  }
   /// The piece's query kernel (detail::PieceKernel), chosen when it was built.
   static std::uint8_t kernel(const P& p) { return p.kernel_; }
   /// The same piece answered by the general query: for the tests that hold
@@ -139,7 +157,7 @@ struct PolyhedronLayout {
   /// without reading the counts.
   template <int V, int F>
   struct Fixed {
-    explicit Fixed(const P& p) : numbers(p.numbers_.data()) {}
+    explicit Fixed(const P& p) : numbers(p.numbers_) {}
     const double* nx() const { return numbers + 3 * V; }
     const double* pd() const { return numbers + 3 * V + 3 * F; }
     /// Side planes of the face-edges from face-edge `e` on (faceEdgePlane).
@@ -153,7 +171,7 @@ struct PolyhedronLayout {
   /// twins (E) | kernel data].
   template <int F, int E>
   struct FixedTopology {
-    explicit FixedTopology(const P& p) : topology(p.topology_.data()) {}
+    explicit FixedTopology(const P& p) : topology(p.topology_) {}
     std::int32_t start(int f) const { return topology[f]; }
     const std::int32_t* list(std::int32_t start) const { return topology + F + 1 + start; }
     std::int32_t twin(std::int32_t e) const { return topology[F + 1 + E + e]; }

@@ -10,15 +10,24 @@
 #include <numeric>
 #include <string>
 
+#include "base/huge_pages.hpp"
 #include "box_tree.hpp"
 #include "builder_support.hpp"
 #include "formed_pieces.hpp"
+#include "piece_arena.hpp"
 #include "wtc/base/error.hpp"
 #include "wtc/geometry/point_query.hpp"
 #include "wtc/terrain/terrain_primitives.hpp"
 #include "wtc/base/tolerances.hpp"
 
 namespace wtc {
+
+namespace {
+constexpr std::size_t kCacheLineBytes = 64;  // the prefetch stride (bytes)
+// Lines of a piece's numbers prefetched: a prism's vertices, face planes and
+// first face's side planes, what a query above its top reads first.
+constexpr std::size_t kPrefetchLines = 7;
+}  // namespace
 
 MaterialId TerrainBuilder::addMaterial(const Material& material) {
   validate(material, "TerrainBuilder::addMaterial (material '" + material.name + "')");
@@ -35,6 +44,7 @@ void TerrainBuilder::requireMaterial(MaterialId material, const char* where) con
 
 PieceId TerrainBuilder::addPiece(ConvexPolyhedron piece, MaterialId material) {
   requireMaterial(material, "wtc::TerrainBuilder::addPiece");
+  if (pieces_.size() == pieces_.capacity()) reserve(std::max<std::size_t>(pieces_.capacity(), 1));
   pieces_.push_back(std::move(piece));
   piece_material_.push_back(material);
   return static_cast<PieceId>(next_id_++);
@@ -68,8 +78,8 @@ void TerrainBuilder::reserve(std::size_t count) {
   const std::size_t wanted = pieces_.size() + count;
   if (wanted <= pieces_.capacity()) return;
   const std::size_t grown = std::max(wanted, 2 * pieces_.capacity());
-  pieces_.reserve(grown);
-  piece_material_.reserve(grown);
+  detail::reserveHuge(pieces_, grown);
+  detail::reserveHuge(piece_material_, grown);
 }
 
 ConvexPolyhedron detail::FormedPieces::piece(std::size_t k) const {
@@ -165,6 +175,36 @@ Terrain TerrainBuilder::build() && {
   terrain.piece_count_ = next_id_;
   terrain.buildIndex();
   return terrain;
+}
+
+Terrain::Terrain(const Terrain& other)
+    : pieces_(other.pieces_),  // each copy in a block of its own, until gathered
+      piece_material_(other.piece_material_),
+      materials_(other.materials_),
+      fields_(other.fields_),
+      piece_count_(other.piece_count_),
+      tree_(other.tree_),
+      leaves_(other.leaves_),
+      bounds_(other.bounds_) {
+  gatherPieces();
+}
+
+Terrain::Terrain(Terrain&&) noexcept = default;
+Terrain& Terrain::operator=(Terrain&&) noexcept = default;
+Terrain::~Terrain() = default;
+
+Terrain& Terrain::operator=(const Terrain& other) {
+  if (this != &other) *this = Terrain(other);
+  return *this;
+}
+
+void Terrain::gatherPieces() {
+  if (pieces_.empty()) return;
+  std::vector<std::int32_t> stored(leaves_.size());
+  for (std::size_t k = 0; k < leaves_.size(); ++k) stored[k] = leaves_[k].stored;
+  std::vector<std::uint32_t> first_line;
+  arena_ = std::make_shared<const detail::PieceArena>(pieces_, stored, first_line);
+  for (std::size_t k = 0; k < leaves_.size(); ++k) leaves_[k].line = first_line[k];
 }
 
 Terrain::Place Terrain::place(PieceId id) const {
@@ -279,13 +319,15 @@ void Terrain::buildIndex() {
   // contiguous run of memory instead of dereferencing each piece.
   std::vector<Aabb> boxes(pieces_.size());
   for (std::size_t i = 0; i < pieces_.size(); ++i) cover(boxes[i] = pieces_[i].bounds());
-  tree_ = std::make_shared<const detail::BoxTree>(boxes, order_);
-  leaf_boxes_.resize(order_.size());
-  for (std::size_t k = 0; k < order_.size(); ++k) leaf_boxes_[k] = boxes[order_[k]];
-  // From here on order_ holds ids: a stored piece's id counts the formed
-  // ids of the parts before it.
-  if (fields_.empty()) return;
-  for (PieceId& k : order_) k = storedId(static_cast<std::size_t>(k));
+  std::vector<std::int32_t> order;  // stored positions in tree order
+  tree_ = std::make_shared<const detail::BoxTree>(boxes, order);
+  detail::reserveHuge(leaves_, order.size());
+  for (const std::int32_t stored : order) {
+    // A stored piece's id counts the formed ids of the parts before it.
+    const PieceId id = fields_.empty() ? stored : storedId(static_cast<std::size_t>(stored));
+    leaves_.push_back({boxes[stored], id, stored, 0});
+  }
+  gatherPieces();
 }
 
 void Terrain::overlapping(const Aabb& box, std::vector<PieceId>& out) const {
@@ -295,21 +337,40 @@ void Terrain::overlapping(const Aabb& box, std::vector<PieceId>& out) const {
     if (f.formed->bounds().overlaps(box)) f.formed->overlapping(box, f.first, out);
   }
   if (!tree_) return;
+  // A reported piece and its numbers are fetched while the walk goes on
+  // (a hint, no effect on any answer): its caller reads them next, and on a
+  // terrain larger than the cache the misses of all the pieces reported
+  // then overlap instead of coming one after another.
+  const unsigned char* arena = arena_->base();
   tree_->visit(box, [&](std::int32_t k) {
-    if (leaf_boxes_[k].overlaps(box)) out.push_back(order_[k]);
+    const detail::PieceLeaf& leaf = leaves_[k];
+    if (!leaf.box.overlaps(box)) return;
+    out.push_back(leaf.id);
+    // Fixed counts, unrolled: a rolling wheel's pieces are cached, and there
+    // the prefetches are pure overhead. A line past a small piece's numbers
+    // is another piece's (a prefetch never faults).
+    const char* piece = reinterpret_cast<const char*>(&pieces_[leaf.stored]);
+#pragma GCC unroll 4
+    for (std::size_t at = 0; at < sizeof(ConvexPolyhedron); at += kCacheLineBytes) __builtin_prefetch(piece + at);
+    __builtin_prefetch(piece + sizeof(ConvexPolyhedron) - 1);
+    const unsigned char* numbers = arena + static_cast<std::size_t>(leaf.line) * kCacheLineBytes;
+#pragma GCC unroll 8
+    for (std::size_t line = 0; line < kPrefetchLines; ++line) __builtin_prefetch(numbers + line * kCacheLineBytes);
+    __builtin_prefetch(&piece_material_[leaf.stored]);  // a contact's material is read next
   });
 }
 
 std::size_t Terrain::pieceMemoryBytes() const {
   std::size_t bytes = piece_material_.capacity() * sizeof(MaterialId) + fields_.capacity() * sizeof(Field);
   for (const Field& f : fields_) bytes += f.formed->memoryBytes();
-  for (const auto& p : pieces_) bytes += p.memoryBytes();
-  return bytes;
+  // Every stored piece's numbers and topology are in the arena.
+  bytes += pieces_.capacity() * sizeof(ConvexPolyhedron);
+  return bytes + (arena_ ? arena_->memoryBytes() : 0);
 }
 
 std::size_t Terrain::indexMemoryBytes() const {
   std::size_t bytes =
-      (tree_ ? tree_->memoryBytes() : 0) + order_.capacity() * sizeof(PieceId) + leaf_boxes_.capacity() * sizeof(Aabb);
+      (tree_ ? tree_->memoryBytes() : 0) + leaves_.capacity() * sizeof(detail::PieceLeaf);
   for (const Field& f : fields_) bytes += f.formed->indexMemoryBytes();
   return bytes;
 }

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <memory>
 #include <set>
 #include <utility>
 #include <vector>
@@ -251,6 +252,65 @@ TEST(ConvexPolyhedronTest, MemoryBytesCountsTheHeap) {
   const ConvexPolyhedron poly = wtc::testing::makeShape(wtc::testing::ShapeId::kHull64);
   const std::size_t numbers = 3 * poly.vertexCount() + 4 * poly.faceCount();
   EXPECT_GE(poly.memoryBytes(), sizeof(ConvexPolyhedron) + numbers * sizeof(double));
+}
+
+// Everything a user reads of a piece, compared to the bit: a copy is the
+// same piece.
+void expectSamePiece(const ConvexPolyhedron& a, const ConvexPolyhedron& b) {
+  ASSERT_EQ(a.vertexCount(), b.vertexCount());
+  ASSERT_EQ(a.faceCount(), b.faceCount());
+  EXPECT_EQ(a.origin(), b.origin());
+  EXPECT_EQ(a.bounds().min, b.bounds().min);
+  EXPECT_EQ(a.bounds().max, b.bounds().max);
+  for (int i = 0; i < a.vertexCount(); ++i) EXPECT_EQ(a.vertexLocal(i), b.vertexLocal(i)) << "vertex " << i;
+  for (int f = 0; f < a.faceCount(); ++f) {
+    EXPECT_EQ(a.faceNormal(f), b.faceNormal(f)) << "face " << f;
+    EXPECT_EQ(a.faceOffsetLocal(f), b.faceOffsetLocal(f)) << "face " << f;
+    const auto fa = a.faceVertices(f), fb = b.faceVertices(f);
+    EXPECT_TRUE(std::equal(fa.begin(), fa.end(), fb.begin(), fb.end())) << "face " << f;
+  }
+  const Vector3d p = a.bounds().max + Vector3d(0.3, -0.2, 0.7);
+  EXPECT_EQ(a.planeBound(p), b.planeBound(p));
+  EXPECT_EQ(a.support(p), b.support(p));
+}
+
+TEST(ConvexPolyhedronTest, CopiesAndMovesAreIndependentPieces) {
+  const std::vector<Vector3d> cloud = {Vector3d(0, 0, 0), Vector3d(2, 0, 0), Vector3d(0, 3, 0),
+                                       Vector3d(0, 0, 1), Vector3d(1, 1, 2), Vector3d(2, 2, 0.5)};
+  const ConvexPolyhedron reference = ConvexPolyhedron::fromPoints(cloud);
+  // Case: a copy outlives its original (its own block, not the original's).
+  auto original = std::make_unique<ConvexPolyhedron>(ConvexPolyhedron::fromPoints(cloud));
+  const ConvexPolyhedron copy = *original;
+  original.reset();
+  std::vector<ConvexPolyhedron> churn;  // reuse the freed memory
+  for (int k = 0; k < 8; ++k) churn.push_back(ConvexPolyhedron::box(Vector3d::Constant(k), Vector3d::Constant(k + 5)));
+  expectSamePiece(copy, reference);
+  // Case: copy-assignment into a piece with a larger block, and with a smaller one.
+  ConvexPolyhedron larger = wtc::testing::makeShape(wtc::testing::ShapeId::kHull64);
+  larger = reference;
+  expectSamePiece(larger, reference);
+  ConvexPolyhedron smaller = ConvexPolyhedron::fromPoints({Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(0, 1, 0)});
+  smaller = wtc::testing::makeShape(wtc::testing::ShapeId::kHull64);
+  expectSamePiece(smaller, wtc::testing::makeShape(wtc::testing::ShapeId::kHull64));
+  // Case: self-assignment keeps the piece.
+  ConvexPolyhedron self = reference;
+  const ConvexPolyhedron& alias = self;
+  self = alias;
+  expectSamePiece(self, reference);
+  // Case: a move takes the piece and leaves the source empty but usable.
+  ConvexPolyhedron source = reference;
+  ConvexPolyhedron moved = std::move(source);
+  expectSamePiece(moved, reference);
+  EXPECT_EQ(source.vertexCount(), 0);  // NOLINT(bugprone-use-after-move): the moved-from state is specified here
+  source = churn[3];
+  expectSamePiece(source, churn[3]);
+  ConvexPolyhedron target = churn[1];
+  target = std::move(moved);
+  expectSamePiece(target, reference);
+  // Case: copies in a growing vector (moved on every reallocation) stay intact.
+  std::vector<ConvexPolyhedron> grown;
+  for (int k = 0; k < 100; ++k) grown.push_back(k % 2 == 0 ? reference : churn[k % 8]);
+  for (int k = 0; k < 100; ++k) expectSamePiece(grown[k], k % 2 == 0 ? reference : churn[k % 8]);
 }
 
 }  // namespace

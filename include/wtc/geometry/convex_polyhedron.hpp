@@ -10,8 +10,10 @@
 // - Coordinates are structure-of-arrays (all x, then all y, then all z) in
 //   one allocation, so the support scan and the face-plane scan are straight
 //   loops over contiguous doubles that the compiler vectorises. Topology
-//   (face vertex lists, vertex adjacency) sits in a second allocation and is
-//   not touched by the query for small pieces.
+//   (face vertex lists, vertex adjacency) follows the numbers in the same
+//   block: one allocation per piece. A terrain moves its pieces' blocks
+//   into one arena of its own (docs/terrain.md); a copy of any piece owns
+//   its block, and is independent of the piece and terrain it came from.
 // - Face planes are unit normals n_i with offsets d_i = max_v n_i . v over all
 //   vertices, so every vertex satisfies n_i . v <= d_i exactly: the bound
 //   max_i (n_i . p - d_i) is a true lower bound on the distance outside and
@@ -40,6 +42,12 @@ struct PolyhedronLayout;  // the query kernels' view of the stored layout (src/g
 
 class ConvexPolyhedron {
  public:
+  ConvexPolyhedron(const ConvexPolyhedron& other);
+  ConvexPolyhedron(ConvexPolyhedron&& other) noexcept;
+  ConvexPolyhedron& operator=(const ConvexPolyhedron& other);
+  ConvexPolyhedron& operator=(ConvexPolyhedron&& other) noexcept;
+  ~ConvexPolyhedron();
+
   /// The convex hull of `points` (Qhull). Duplicate and nearly duplicate
   /// points (closer than tolerance::kHullMergeRelative x size) and points
   /// inside the hull or on its faces are dropped; coplanar triangles merge
@@ -91,8 +99,9 @@ class ConvexPolyhedron {
   /// distance when p is inside.
   double planeBound(const Eigen::Vector3d& p, int* face = nullptr) const;
 
-  /// Bytes owned by this piece, heap included (for the per-piece memory
-  /// figures of the terrain).
+  /// Bytes of this piece: the object and its numbers and topology, in its
+  /// own block or in a terrain's arena (which shares one topology among
+  /// many pieces: Terrain::pieceMemoryBytes counts the arena itself).
   std::size_t memoryBytes() const;
 
   // The local frame: coordinates relative to origin() (an engine adapter
@@ -106,7 +115,7 @@ class ConvexPolyhedron {
  private:
   // The stored layout, for the query kernels (src/geometry/polyhedron_layout.hpp).
   friend struct detail::PolyhedronLayout;
-  const double* vx() const { return numbers_.data(); }
+  const double* vx() const { return numbers_; }
   const double* vy() const { return vx() + vertex_count_; }
   const double* vz() const { return vy() + vertex_count_; }
   const double* nx() const { return vz() + vertex_count_; }
@@ -143,18 +152,33 @@ class ConvexPolyhedron {
   static ConvexPolyhedron assemble(const std::vector<Eigen::Vector3d>& vertices,
                                    const std::vector<std::vector<int>>& faces, bool flat,
                                    const std::vector<Eigen::Vector3d>* hull_normals,
-                                   const std::vector<std::int32_t>* topology = nullptr);
+                                   const ConvexPolyhedron* topology_of = nullptr);
   // assemble's piece made into `poly`, every member overwritten, its
-  // buffers reused.
+  // block reused when large enough.
   static void assembleInto(ConvexPolyhedron& poly, const std::vector<Eigen::Vector3d>& vertices,
                            const std::vector<std::vector<int>>& faces, bool flat,
-                           const std::vector<Eigen::Vector3d>* hull_normals, const std::vector<std::int32_t>* topology);
-  // assembleInto's topology of a new face list, into poly.topology_: the
-  // face offsets and lists (before the numbers, which read them), then the
-  // twins and, for large pieces, the adjacency (after the numbers' checks,
-  // so that a bad face is reported before a bad edge, as it always was).
-  static void faceLists(ConvexPolyhedron& poly, const std::vector<std::vector<int>>& faces);
-  static void twinsAndAdjacency(ConvexPolyhedron& poly, const std::vector<std::vector<int>>& faces);
+                           const std::vector<Eigen::Vector3d>* hull_normals, const ConvexPolyhedron* topology_of);
+  // assembleInto's topology of a new face list, into `topo`: the face
+  // offsets and lists (before the numbers, which read them), then the twins
+  // and, for large pieces, the adjacency (after the numbers' checks, so that
+  // a bad face is reported before a bad edge, as it always was).
+  // assembleInto's work, in the scratch `numbers` and `topology`.
+  static void assembleScratch(ConvexPolyhedron& poly, const std::vector<Eigen::Vector3d>& vertices,
+                              const std::vector<std::vector<int>>& faces, bool flat,
+                              const std::vector<Eigen::Vector3d>* hull_normals, const ConvexPolyhedron* topology_of,
+                              std::vector<double>& numbers, std::vector<std::int32_t>& topology);
+  static void faceLists(std::vector<std::int32_t>& topo, const std::vector<std::vector<int>>& faces);
+  static void twinsAndAdjacency(const ConvexPolyhedron& poly, std::vector<std::int32_t>& topo,
+                                const std::vector<std::vector<int>>& faces);
+  // Points the piece at `numbers` and `topology` (number_count_ and
+  // topology_count_ of each), copied into its own block (reused when large
+  // enough).
+  void copyIntoBlock(const double* numbers, const std::int32_t* topology);
+  // Makes the owned block hold number_count_ doubles and topology_count_
+  // integers (reused when large enough) and points the views at it.
+  void reserveBlock();
+  // Frees the owned block, if any; the views are left to the caller.
+  void releaseBlock() noexcept;
   // Vertices up to which assembleInto keeps its scratch on the stack.
   static constexpr int kStackVertices = 16;
   int hillClimb(const Eigen::Vector3d& dir, int start) const;
@@ -173,11 +197,20 @@ class ConvexPolyhedron {
   // In the padding after the flags: no byte more per piece.
   std::uint8_t kernel_ = 0;
   // [vx vy vz | nx ny nz d | face-edge side planes (sx sy sz s.a)...],
-  // local frame.
-  std::vector<double> numbers_;
-  // [face_start (F+1) | face vertices | face-edge twins | adjacency start (V+1) | neighbours]; adjacency
-  // only for pieces that hill-climb; a Qhull prism's kernel keeps its neighbours there (piece_kernel.hpp).
-  std::vector<std::int32_t> topology_;
+  // local frame; number_count_ doubles.
+  const double* numbers_ = nullptr;
+  // [face_start (F+1) | face vertices | face-edge twins | adjacency start
+  // (V+1) | neighbours]; adjacency only for pieces that hill-climb; a Qhull
+  // prism's kernel keeps its neighbours there (piece_kernel.hpp);
+  // topology_count_ integers.
+  const std::int32_t* topology_ = nullptr;
+  std::int32_t number_count_ = 0;
+  std::int32_t topology_count_ = 0;
+  // The block this piece owns (its numbers, then its topology), block_bytes_
+  // long; null when its numbers and topology live in a terrain's arena
+  // (detail::PieceArena), which outlives it.
+  void* block_ = nullptr;
+  std::size_t block_bytes_ = 0;
 };
 
 }  // namespace wtc

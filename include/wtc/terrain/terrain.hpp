@@ -40,6 +40,8 @@ struct TriangleMesh;
 namespace detail {
 class FormedPieces;          // a compact part's pieces, formed on demand (src/terrain/formed_pieces.hpp)
 class BoxTree;               // the index (src/terrain/box_tree.hpp)
+class PieceArena;            // the stored pieces' memory (src/terrain/piece_arena.hpp)
+struct PieceLeaf;            // a stored piece as the index reports it (src/terrain/piece_arena.hpp)
 struct TerrainBuilderAccess;  // how the compact builders add their parts
 }  // namespace detail
 
@@ -100,6 +102,15 @@ class TerrainBuilder {
 
 class Terrain {
  public:
+  Terrain() = default;
+  /// A copy has its own pieces (in an arena of its own) and shares the
+  /// immutable index.
+  Terrain(const Terrain& other);
+  Terrain& operator=(const Terrain& other);
+  Terrain(Terrain&&) noexcept;
+  Terrain& operator=(Terrain&&) noexcept;
+  ~Terrain();
+
   /// Pieces, stored and formed (ids 0 ... pieceCount() - 1).
   std::size_t pieceCount() const { return piece_count_; }
   /// Stored piece `id`. Throws InvalidInputError for a formed one (use the
@@ -181,6 +192,9 @@ class Terrain {
   const Field* formedField(PieceId id) const;
   MaterialId fieldAwareMaterialId(PieceId id) const;
   void buildIndex();
+  // Moves the stored pieces' numbers and topologies into arena_, in the
+  // index's leaf order (detail::PieceArena).
+  void gatherPieces();
 
   std::vector<ConvexPolyhedron> pieces_;
   std::vector<MaterialId> piece_material_;
@@ -188,9 +202,11 @@ class Terrain {
   std::vector<Field> fields_;
   std::size_t piece_count_ = 0;
   std::shared_ptr<const detail::BoxTree> tree_;  // over the stored pieces; null when there are none
-  std::vector<PieceId> order_;                   // piece ids in tree order
-  std::vector<Aabb> leaf_boxes_;                 // piece boxes in tree (order_) order
+  std::vector<detail::PieceLeaf> leaves_;        // the stored pieces in tree order
   Aabb bounds_;
+  // Where the stored pieces' numbers and topologies live (the pieces point
+  // into it; a piece reads nothing of it when destroyed).
+  std::shared_ptr<const detail::PieceArena> arena_;
 };
 
 }  // namespace wtc
