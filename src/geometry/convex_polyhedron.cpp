@@ -430,52 +430,7 @@ void ConvexPolyhedron::releaseBlock() noexcept {
   block_bytes_ = 0;
 }
 
-ConvexPolyhedron::ConvexPolyhedron(const ConvexPolyhedron& other)
-    : origin_(other.origin_),
-      centroid_local_(other.centroid_local_),
-      bounds_(other.bounds_),
-      size_(other.size_),
-      vertex_count_(other.vertex_count_),
-      face_count_(other.face_count_),
-      flat_(other.flat_),
-      has_adjacency_(other.has_adjacency_),
-      kernel_(other.kernel_),
-      number_count_(other.number_count_),
-      topology_count_(other.topology_count_) {
-  // Always a block of its own: a copy outlives the piece and the terrain
-  // (arena) it was copied from.
-  if (other.numbers_ != nullptr) copyIntoBlock(other.numbers_, other.topology_);
-}
-
-ConvexPolyhedron::ConvexPolyhedron(ConvexPolyhedron&& other) noexcept
-    : origin_(other.origin_),
-      centroid_local_(other.centroid_local_),
-      bounds_(other.bounds_),
-      size_(other.size_),
-      vertex_count_(other.vertex_count_),
-      face_count_(other.face_count_),
-      flat_(other.flat_),
-      has_adjacency_(other.has_adjacency_),
-      kernel_(other.kernel_),
-      numbers_(other.numbers_),
-      topology_(other.topology_),
-      number_count_(other.number_count_),
-      topology_count_(other.topology_count_),
-      block_(other.block_),
-      block_bytes_(other.block_bytes_) {
-  // An owned block moves; an arena's views move with the pieces a terrain
-  // moves within itself (only a terrain holds such pieces, by value, and
-  // never hands one out but by const reference or by copy).
-  other.numbers_ = nullptr;
-  other.topology_ = nullptr;
-  other.number_count_ = other.topology_count_ = 0;
-  other.vertex_count_ = other.face_count_ = 0;
-  other.block_ = nullptr;
-  other.block_bytes_ = 0;
-}
-
-ConvexPolyhedron& ConvexPolyhedron::operator=(const ConvexPolyhedron& other) {
-  if (this == &other) return *this;
+void ConvexPolyhedron::copyShape(const ConvexPolyhedron& other) noexcept {
   origin_ = other.origin_;
   centroid_local_ = other.centroid_local_;
   bounds_ = other.bounds_;
@@ -487,6 +442,39 @@ ConvexPolyhedron& ConvexPolyhedron::operator=(const ConvexPolyhedron& other) {
   kernel_ = other.kernel_;
   number_count_ = other.number_count_;
   topology_count_ = other.topology_count_;
+}
+
+void ConvexPolyhedron::takeStorage(ConvexPolyhedron& other) noexcept {
+  // An owned block moves; an arena's views move with the pieces a terrain
+  // moves within itself (only a terrain holds such pieces, by value, and
+  // never hands one out but by const reference or by copy).
+  numbers_ = other.numbers_;
+  topology_ = other.topology_;
+  block_ = other.block_;
+  block_bytes_ = other.block_bytes_;
+  other.numbers_ = nullptr;
+  other.topology_ = nullptr;
+  other.number_count_ = other.topology_count_ = 0;
+  other.vertex_count_ = other.face_count_ = 0;
+  other.block_ = nullptr;
+  other.block_bytes_ = 0;
+}
+
+ConvexPolyhedron::ConvexPolyhedron(const ConvexPolyhedron& other) {
+  copyShape(other);
+  // Always a block of its own: a copy outlives the piece and the terrain
+  // (arena) it was copied from.
+  if (other.numbers_ != nullptr) copyIntoBlock(other.numbers_, other.topology_);
+}
+
+ConvexPolyhedron::ConvexPolyhedron(ConvexPolyhedron&& other) noexcept {
+  copyShape(other);
+  takeStorage(other);
+}
+
+ConvexPolyhedron& ConvexPolyhedron::operator=(const ConvexPolyhedron& other) {
+  if (this == &other) return *this;
+  copyShape(other);
   if (other.numbers_ == nullptr) {
     numbers_ = nullptr;
     topology_ = nullptr;
@@ -499,27 +487,8 @@ ConvexPolyhedron& ConvexPolyhedron::operator=(const ConvexPolyhedron& other) {
 ConvexPolyhedron& ConvexPolyhedron::operator=(ConvexPolyhedron&& other) noexcept {
   if (this == &other) return *this;
   releaseBlock();
-  origin_ = other.origin_;
-  centroid_local_ = other.centroid_local_;
-  bounds_ = other.bounds_;
-  size_ = other.size_;
-  vertex_count_ = other.vertex_count_;
-  face_count_ = other.face_count_;
-  flat_ = other.flat_;
-  has_adjacency_ = other.has_adjacency_;
-  kernel_ = other.kernel_;
-  numbers_ = other.numbers_;
-  topology_ = other.topology_;
-  number_count_ = other.number_count_;
-  topology_count_ = other.topology_count_;
-  block_ = other.block_;
-  block_bytes_ = other.block_bytes_;
-  other.numbers_ = nullptr;
-  other.topology_ = nullptr;
-  other.number_count_ = other.topology_count_ = 0;
-  other.vertex_count_ = other.face_count_ = 0;
-  other.block_ = nullptr;
-  other.block_bytes_ = 0;
+  copyShape(other);
+  takeStorage(other);
   return *this;
 }
 

@@ -179,6 +179,11 @@ class ConvexPolyhedron {
   void reserveBlock();
   // Frees the owned block, if any; the views are left to the caller.
   void releaseBlock() noexcept;
+  // Copies every member but the storage (views and block) from `other`: the
+  // copies' and moves' common part.
+  void copyShape(const ConvexPolyhedron& other) noexcept;
+  // Takes `other`'s views and block, leaving it an empty piece.
+  void takeStorage(ConvexPolyhedron& other) noexcept;
   // Vertices up to which assembleInto keeps its scratch on the stack.
   static constexpr int kStackVertices = 16;
   int hillClimb(const Eigen::Vector3d& dir, int start) const;
