@@ -1,5 +1,7 @@
 #include "wtc/geometry/convex_polyhedron.hpp"
 
+#include "base/cache_line.hpp"
+
 #include "piece_kernel.hpp"
 #include "polyhedron_layout.hpp"
 
@@ -397,7 +399,7 @@ void ConvexPolyhedron::twinsAndAdjacency(const ConvexPolyhedron& poly, std::vect
 // topology; aligned to a cache line, so that a small piece's numbers start
 // on one.
 namespace {
-constexpr std::align_val_t kBlockAlignment{64};
+constexpr std::align_val_t kBlockAlignment{detail::kCacheLineBytes};
 }  // namespace
 
 void ConvexPolyhedron::reserveBlock() {

@@ -9,6 +9,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "base/cache_line.hpp"
 #include "base/huge_pages.hpp"
 #include "geometry/polyhedron_layout.hpp"
 
@@ -16,9 +17,8 @@ namespace wtc::detail {
 
 namespace {
 
-// A piece's numbers start on a cache line (bytes): a prism's 880 bytes then
-// span 14 lines, never 15.
-constexpr std::size_t kLineBytes = 64;
+// A piece's numbers start on a cache line (kCacheLineBytes): a prism's 880
+// bytes then span 14 lines, never 15.
 
 constexpr std::size_t roundUp(std::size_t n, std::size_t to) { return (n + to - 1) / to * to; }
 
@@ -63,11 +63,11 @@ PieceArena::PieceArena(std::span<ConvexPolyhedron> pieces, std::span<const std::
   }
   // 2. The block: numbers in `order`, each on a line, then the topologies.
   std::size_t number_bytes = 0;
-  for (const std::int32_t i : order) number_bytes += roundUp(Layout::numbers(pieces[i]).size_bytes(), kLineBytes);
+  for (const std::int32_t i : order) number_bytes += roundUp(Layout::numbers(pieces[i]).size_bytes(), kCacheLineBytes);
   const std::size_t wanted = number_bytes + topologies.size() * sizeof(std::int32_t);
-  if (number_bytes / kLineBytes > std::numeric_limits<std::uint32_t>::max()) throw std::bad_alloc();
+  if (number_bytes / kCacheLineBytes > std::numeric_limits<std::uint32_t>::max()) throw std::bad_alloc();
   huge_pages_ = wanted >= kHugePageBytes;
-  const std::size_t alignment = huge_pages_ ? kHugePageBytes : kLineBytes;
+  const std::size_t alignment = huge_pages_ ? kHugePageBytes : kCacheLineBytes;
   bytes_ = roundUp(std::max<std::size_t>(wanted, 1), alignment);
   memory_ = std::aligned_alloc(alignment, bytes_);
   if (memory_ == nullptr) throw std::bad_alloc();
@@ -81,12 +81,12 @@ PieceArena::PieceArena(std::span<ConvexPolyhedron> pieces, std::span<const std::
   first_line.clear();
   first_line.reserve(order.size());
   for (const std::int32_t i : order) {
-    first_line.push_back(static_cast<std::uint32_t>(at / kLineBytes));
+    first_line.push_back(static_cast<std::uint32_t>(at / kCacheLineBytes));
     const std::span<const double> numbers = Layout::numbers(pieces[i]);
     auto* to = reinterpret_cast<double*>(bytes + at);
     if (!numbers.empty()) std::memcpy(to, numbers.data(), numbers.size_bytes());
     Layout::useStorage(pieces[i], to, topology_base + topology_at[i]);
-    at += roundUp(numbers.size_bytes(), kLineBytes);
+    at += roundUp(numbers.size_bytes(), kCacheLineBytes);
   }
 }
 

@@ -20,6 +20,7 @@
 #include <span>
 #include <vector>
 
+#include "base/cache_line.hpp"
 #include "wtc/geometry/aabb.hpp"
 #include "wtc/geometry/convex_polyhedron.hpp"
 
@@ -29,7 +30,7 @@ namespace wtc::detail {
 /// in the index's leaf order: the exact box the leaf test reads, the id it
 /// reports, and where the piece and its numbers are, so that both can be
 /// fetched before the caller asks for them (Terrain::overlapping).
-struct alignas(64) PieceLeaf {
+struct alignas(kCacheLineBytes) PieceLeaf {
   Aabb box;                  ///< the piece's bounds (m)
   std::int32_t id = 0;       ///< its PieceId
   std::int32_t stored = 0;   ///< its position in the terrain's pieces

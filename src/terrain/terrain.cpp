@@ -10,6 +10,7 @@
 #include <numeric>
 #include <string>
 
+#include "base/cache_line.hpp"
 #include "base/huge_pages.hpp"
 #include "box_tree.hpp"
 #include "builder_support.hpp"
@@ -23,7 +24,7 @@
 namespace wtc {
 
 namespace {
-constexpr std::size_t kCacheLineBytes = 64;  // the prefetch stride (bytes)
+using detail::kCacheLineBytes;  // the prefetch stride
 // Lines of a piece's numbers prefetched: a prism's vertices, face planes and
 // first face's side planes, what a query above its top reads first.
 constexpr std::size_t kPrefetchLines = 7;
