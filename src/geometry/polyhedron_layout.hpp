@@ -77,6 +77,18 @@ struct PolyhedronLayout {
     p.numbers_ = numbers;
     p.topology_ = topology;
   }
+  /// A piece with no vertices, owning nothing: a place a piece is made into
+  /// later (a terrain's pending prisms, a scratch piece).
+  static P empty() { return P{}; }
+  /// Makes `p` the piece `shape` is, its numbers and topology the copies at
+  /// `numbers` and `topology` that outlive it (a terrain's arena), owning no
+  /// block.
+  static void adoptShape(P& p, const P& shape, const double* numbers, const std::int32_t* topology) {
+    p.releaseBlock();
+    p.copyShape(shape);
+    p.numbers_ = numbers;
+    p.topology_ = topology;
+  }
   /// The piece's query kernel (detail::PieceKernel), chosen when it was built.
   static std::uint8_t kernel(const P& p) { return p.kernel_; }
   /// The same piece answered by the general query: for the tests that hold

@@ -7,12 +7,14 @@
 // addTriangleMesh) would have stored it.
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "wtc/geometry/aabb.hpp"
 #include "wtc/geometry/convex_polyhedron.hpp"
+#include "pending_prisms.hpp"
 #include "wtc/terrain/terrain.hpp"
 
 namespace wtc {
@@ -67,6 +69,13 @@ struct TerrainBuilderAccess {
   /// the error thrown when the ids would pass PieceId's range.
   static PieceRange addFormedPieces(TerrainBuilder& builder, std::shared_ptr<const FormedPieces> pieces,
                                     MaterialId material, const std::string& where);
+  /// Gives `count` prisms, made from `corners` when the terrain is built
+  /// (pending_prisms.hpp), the next ids of `builder` as stored pieces, prism
+  /// k of material materialOf(k); `where` names the caller in the error
+  /// thrown when they would pass PieceId's range or this machine's memory.
+  static PieceRange addPendingPrisms(TerrainBuilder& builder, std::size_t count, PendingPrisms::Corners corners,
+                                     const std::function<MaterialId(std::size_t)>& materialOf,
+                                     const std::string& where);
 };
 
 }  // namespace wtc::detail

@@ -122,27 +122,28 @@ ConvexPolyhedron makeTriangularPrism(const Eigen::Vector3d& a, const Eigen::Vect
 
 PieceRange addHeightfield(TerrainBuilder& builder, const Heightfield& f, MaterialId material) {
   validate(f);
-  const double base_z = f.baseZ();
-  builder.requireRoomFor(
-      f.pieceCount(), "wtc::addHeightfield (" + std::to_string(f.rows) + " x " + std::to_string(f.cols) + " samples)");
+  const std::string where =
+      "wtc::addHeightfield (" + std::to_string(f.rows) + " x " + std::to_string(f.cols) + " samples)";
+  builder.requireRoomFor(f.pieceCount(), where);
   requireCellMaterials(builder, f, material, "wtc::addHeightfield");
-  PieceRange range{static_cast<PieceId>(builder.pieceCount()), 0};
-  builder.reserve(f.pieceCount());
-  std::size_t cell = 0;
-  for (int r = 0; r + 1 < f.rows; ++r) {
-    for (int c = 0; c + 1 < f.cols; ++c, ++cell) {
-      if (f.isHole(r, c)) continue;
-      const Eigen::Vector3d p00 = f.sample(r, c);
-      const Eigen::Vector3d p01 = f.sample(r, c + 1);
-      const Eigen::Vector3d p10 = f.sample(r + 1, c);
-      const Eigen::Vector3d p11 = f.sample(r + 1, c + 1);
-      const MaterialId m = f.cell_materials.empty() ? material : f.cell_materials[cell];
-      builder.addPiece(makeTriangularPrism(p00, p01, p11, base_z), m);
-      builder.addPiece(makeTriangularPrism(p00, p11, p10, base_z), m);
-      range.count += 2;
+  // The prisms are made when the terrain is built, each where the terrain
+  // keeps it (detail::PendingPrisms), from the corners the compact field
+  // gives: makeTriangularPrism's, bit for bit (CompactHeightfieldTest).
+  auto grid = std::make_shared<const detail::CompactHeightfield>(f);
+  std::vector<MaterialId> cell_material;  // per piece, when the cells have their own
+  if (!f.cell_materials.empty()) {
+    cell_material.reserve(grid->pieceCount());
+    for (std::size_t cell = 0; cell < f.cell_materials.size(); ++cell) {
+      if (!f.cell_holes.empty() && f.cell_holes[cell] != 0) continue;
+      cell_material.insert(cell_material.end(), 2, f.cell_materials[cell]);
     }
   }
-  return range;
+  return detail::TerrainBuilderAccess::addPendingPrisms(
+      builder, grid->pieceCount(),
+      [grid](std::size_t k, std::array<Eigen::Vector3d, 3>& top, std::array<Eigen::Vector3d, 3>& bottom) {
+        grid->prismCorners(k, top, bottom);
+      },
+      [&](std::size_t k) { return cell_material.empty() ? material : cell_material[k]; }, where);
 }
 
 PieceRange addCompactHeightfield(TerrainBuilder& builder, Heightfield field, MaterialId material) {

@@ -14,13 +14,15 @@
 //   walk over a gigabyte of pieces is not a walk over 4 KB pages' TLB
 //   entries.
 // The terrain owns its arena and its pieces point into it; a copy of a piece
-// owns a block of its own again (ConvexPolyhedron's copy).
+// owns a block of its own again (ConvexPolyhedron's copy). A builder's
+// pending prisms (pending_prisms.hpp) are made straight into it.
 #include <cstddef>
 #include <cstdint>
 #include <span>
 #include <vector>
 
 #include "base/cache_line.hpp"
+#include "pending_prisms.hpp"
 #include "wtc/geometry/aabb.hpp"
 #include "wtc/geometry/convex_polyhedron.hpp"
 
@@ -41,10 +43,12 @@ class PieceArena {
  public:
   /// Moves the numbers and topologies of pieces[order[0]], pieces[order[1]],
   /// ... (every piece once) into one block and points each piece at them.
-  /// `first_line[k]` receives where pieces[order[k]]'s numbers start, in
-  /// cache lines from base().
-  PieceArena(std::span<ConvexPolyhedron> pieces, std::span<const std::int32_t> order,
-             std::vector<std::uint32_t>& first_line);
+  /// The pieces at the positions of `pending` (sorted by first, disjoint)
+  /// are made there instead, from their corners: the pieces given are
+  /// placeholders. `first_line[k]` receives where pieces[order[k]]'s
+  /// numbers start, in cache lines from base().
+  PieceArena(std::span<ConvexPolyhedron> pieces, std::span<const PendingPrisms* const> pending,
+             std::span<const std::int32_t> order, std::vector<std::uint32_t>& first_line);
   ~PieceArena();
   PieceArena(const PieceArena&) = delete;
   PieceArena& operator=(const PieceArena&) = delete;

@@ -15,6 +15,7 @@
 #include "box_tree.hpp"
 #include "builder_support.hpp"
 #include "formed_pieces.hpp"
+#include "geometry/polyhedron_layout.hpp"
 #include "piece_arena.hpp"
 #include "wtc/base/error.hpp"
 #include "wtc/geometry/point_query.hpp"
@@ -166,6 +167,23 @@ PieceRange detail::TerrainBuilderAccess::addFormedPieces(TerrainBuilder& builder
   return {builder.fields_.back().first, builder.fields_.back().count};
 }
 
+PieceRange detail::TerrainBuilderAccess::addPendingPrisms(TerrainBuilder& builder, std::size_t count,
+                                                          PendingPrisms::Corners corners,
+                                                          const std::function<MaterialId(std::size_t)>& materialOf,
+                                                          const std::string& where) {
+  builder.requireRoomFor(count, where);
+  const PieceRange range{static_cast<PieceId>(builder.next_id_), static_cast<PieceId>(count)};
+  if (count == 0) return range;
+  builder.reserve(count);
+  const std::size_t first = builder.pieces_.size();
+  for (std::size_t k = 0; k < count; ++k) builder.piece_material_.push_back(materialOf(k));
+  // Empty places, made into the arena by build().
+  for (std::size_t k = 0; k < count; ++k) builder.pieces_.push_back(detail::PolyhedronLayout::empty());
+  builder.pending_.push_back(std::make_shared<const PendingPrisms>(PendingPrisms{first, count, std::move(corners)}));
+  builder.next_id_ += count;
+  return range;
+}
+
 Terrain TerrainBuilder::build() && {
   if (next_id_ == 0) throw InvalidInputError("wtc::TerrainBuilder::build: the terrain has no pieces");
   Terrain terrain;
@@ -174,7 +192,9 @@ Terrain TerrainBuilder::build() && {
   terrain.materials_ = std::move(materials_);
   terrain.fields_ = std::move(fields_);
   terrain.piece_count_ = next_id_;
-  terrain.buildIndex();
+  std::vector<const detail::PendingPrisms*> pending;
+  for (const auto& p : pending_) pending.push_back(p.get());
+  terrain.buildIndex(pending);
   return terrain;
 }
 
@@ -199,12 +219,12 @@ Terrain& Terrain::operator=(const Terrain& other) {
   return *this;
 }
 
-void Terrain::gatherPieces() {
+void Terrain::gatherPieces(std::span<const detail::PendingPrisms* const> pending) {
   if (pieces_.empty()) return;
   std::vector<std::int32_t> stored(leaves_.size());
   for (std::size_t k = 0; k < leaves_.size(); ++k) stored[k] = leaves_[k].stored;
   std::vector<std::uint32_t> first_line;
-  arena_ = std::make_shared<const detail::PieceArena>(pieces_, stored, first_line);
+  arena_ = std::make_shared<const detail::PieceArena>(pieces_, pending, stored, first_line);
   for (std::size_t k = 0; k < leaves_.size(); ++k) leaves_[k].line = first_line[k];
 }
 
@@ -307,7 +327,7 @@ MaterialId Terrain::fieldAwareMaterialId(PieceId id) const {
   return f.formed->materialId(static_cast<std::size_t>(id - f.first), f.material);
 }
 
-void Terrain::buildIndex() {
+void Terrain::buildIndex(std::span<const detail::PendingPrisms* const> pending) {
   bool empty = true;
   const auto cover = [&](const Aabb& box) {
     if (empty) bounds_ = box;
@@ -318,8 +338,18 @@ void Terrain::buildIndex() {
   if (pieces_.empty()) return;  // compact parts only: each is its own index
   // Leaf boxes in tree order, exact (double): a leaf test reads one
   // contiguous run of memory instead of dereferencing each piece.
+  // A pending prism's box is its corners' (a made prism's bounds are the
+  // min and max of its vertices, bit for bit).
   std::vector<Aabb> boxes(pieces_.size());
-  for (std::size_t i = 0; i < pieces_.size(); ++i) cover(boxes[i] = pieces_[i].bounds());
+  for (std::size_t i = 0; i < pieces_.size(); ++i) boxes[i] = pieces_[i].bounds();
+  std::array<Eigen::Vector3d, 3> top, bottom;
+  for (const detail::PendingPrisms* p : pending) {
+    for (std::size_t k = 0; k < p->count; ++k) {
+      p->corners(k, top, bottom);
+      boxes[p->first + k] = cornerBox(top, bottom);
+    }
+  }
+  for (const Aabb& box : boxes) cover(box);
   std::vector<std::int32_t> order;  // stored positions in tree order
   tree_ = std::make_shared<const detail::BoxTree>(boxes, order);
   detail::reserveHuge(leaves_, order.size());
@@ -328,7 +358,7 @@ void Terrain::buildIndex() {
     const PieceId id = fields_.empty() ? stored : storedId(static_cast<std::size_t>(stored));
     leaves_.push_back({boxes[stored], id, stored, 0});
   }
-  gatherPieces();
+  gatherPieces(pending);
 }
 
 void Terrain::overlapping(const Aabb& box, std::vector<PieceId>& out) const {

@@ -210,21 +210,37 @@ MeshBuildReport addTriangleMesh(TerrainBuilder& builder, const TriangleMesh& mes
     return report;
   }
 
-  builder.reserve(kept.size());
+  // Each prism is checked now, where the triangle can still be named, and
+  // made when the terrain is built, where the terrain keeps it
+  // (detail::PendingPrisms): makeExtrudedTriangle's piece, bit for bit, from
+  // the same corners (makeCheckedPrism's word; CompactMeshTest).
   for (std::size_t i = 0; i < kept.size(); ++i) {
     const Eigen::Vector3d& a = mesh.vertices[kept[i][0]];
     const Eigen::Vector3d& b = mesh.vertices[kept[i][1]];
     const Eigen::Vector3d& c = mesh.vertices[kept[i][2]];
-    std::optional<ConvexPolyhedron> prism;
     try {
-      prism.emplace(makeExtrudedTriangle(a, b, c, options.thickness));
+      makeExtrudedTriangle(a, b, c, options.thickness);
     } catch (const InvalidInputError& e) {
       throw InvalidInputError(triangleName(mesh, source[i]) + " " + formatVector(a) + ", " + formatVector(b) + ", " +
                               formatVector(c) + ": " + e.what());
     }
-    builder.addPiece(std::move(*prism), material);
-    ++report.pieces.count;
   }
+  struct Corners {
+    std::vector<Eigen::Vector3d> top;  // three per prism
+    double thickness;
+  };
+  auto corners = std::make_shared<Corners>(Corners{{}, options.thickness});
+  corners->top.reserve(3 * kept.size());
+  for (const auto& t : kept) {
+    for (const std::int32_t v : t) corners->top.push_back(mesh.vertices[v]);
+  }
+  report.pieces = detail::TerrainBuilderAccess::addPendingPrisms(
+      builder, kept.size(),
+      [corners](std::size_t k, std::array<Eigen::Vector3d, 3>& top, std::array<Eigen::Vector3d, 3>& bottom) {
+        top = {corners->top[3 * k], corners->top[3 * k + 1], corners->top[3 * k + 2]};
+        bottom = detail::extrudedBottom(top[0], top[1], top[2], corners->thickness);
+      },
+      [material](std::size_t) { return material; }, partName(mesh));
   return report;
 }
 

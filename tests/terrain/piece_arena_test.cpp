@@ -16,8 +16,10 @@
 #include <vector>
 
 #include "wtc/geometry/point_query.hpp"
+#include "random_heightfield.hpp"
 #include "wtc/terrain/heightfield.hpp"
 #include "wtc/terrain/terrain.hpp"
+#include "wtc/terrain/triangle_mesh.hpp"
 
 namespace {
 
@@ -108,6 +110,68 @@ TEST(PieceArenaTest, EveryPieceOfAGrownTerrainAnswersAsThePieceAdded) {
   }
 }
 
+// Case: a heightfield's and a mesh's prisms are made only when the terrain
+// is built, straight into the arena (src/terrain/pending_prisms.hpp): each
+// is, bit for bit and in its query kernel, the prism makeTriangularPrism
+// and makeExtrudedTriangle make of its corners, with its cell's material,
+// its id where the pieces added one by one put it (holes skipped, stored
+// pieces and a compact field between).
+TEST(PieceArenaTest, MakesAHeightfieldsAndAMeshsPrismsInPlaceAsTheirBuildersDo) {
+  std::mt19937_64 rng(11);
+  wtc::Heightfield field = wtc::testing::randomHeightfield(9, 12, 0.4, 5);
+  const int cells = (field.rows - 1) * (field.cols - 1);
+  field.cell_holes.assign(static_cast<std::size_t>(cells), 0);
+  for (int cell = 0; cell < cells; cell += 7) field.cell_holes[static_cast<std::size_t>(cell)] = 1;
+  wtc::TerrainBuilder builder;
+  const auto first_material = builder.addMaterial({});
+  const auto second_material = builder.addMaterial({});
+  for (int cell = 0; cell < cells; ++cell) field.cell_materials.push_back(cell % 3 == 0 ? second_material : first_material);
+  builder.addPiece(ConvexPolyhedron::box(Vector3d(0, 0, -9), Vector3d(1, 1, -8)), first_material);
+  const wtc::PieceRange grid = wtc::addHeightfield(builder, field, first_material);
+  wtc::addCompactHeightfield(builder, wtc::testing::randomHeightfield(4, 5, 0.2, 6), first_material);
+  wtc::TriangleMesh mesh;
+  mesh.name = "bumps";
+  for (int k = 0; k < 30; ++k) mesh.vertices.emplace_back(0.3 * k, 0.2 * (k % 2), 0.05 * std::sin(k));  // a zigzag strip
+  for (int k = 0; k + 2 < 30; ++k) mesh.triangles.push_back({k, k + 1, k + 2});
+  wtc::MeshExtrusionOptions options;
+  options.thickness = 0.25;
+  const wtc::MeshBuildReport extruded = wtc::addTriangleMesh(builder, mesh, second_material, options);
+  builder.addPiece(ConvexPolyhedron::box(Vector3d(5, 0, -9), Vector3d(6, 1, -8)), second_material);
+  const wtc::Terrain terrain = std::move(builder).build();
+
+  const double base_z = field.baseZ();
+  const auto expectMade = [&](wtc::PieceId id, const ConvexPolyhedron& expected, wtc::MaterialId material) {
+    SCOPED_TRACE("piece " + std::to_string(id));
+    const ConvexPolyhedron& made = terrain.piece(id);
+    expectSamePiece(made, expected, pointsAround(expected, rng, 4));
+    EXPECT_EQ(wtc::detail::PolyhedronLayout::kernel(made), wtc::detail::PolyhedronLayout::kernel(expected));
+    EXPECT_EQ(terrain.materialId(id), material);
+    EXPECT_EQ(made.bounds().min, expected.bounds().min);
+    EXPECT_EQ(made.bounds().max, expected.bounds().max);
+  };
+  wtc::PieceId id = grid.first;
+  for (int r = 0; r + 1 < field.rows; ++r) {
+    for (int c = 0; c + 1 < field.cols; ++c) {
+      if (field.isHole(r, c)) continue;
+      const auto cell = static_cast<std::size_t>(r * (field.cols - 1) + c);
+      const Vector3d p00 = field.sample(r, c), p01 = field.sample(r, c + 1);
+      const Vector3d p10 = field.sample(r + 1, c), p11 = field.sample(r + 1, c + 1);
+      expectMade(id++, wtc::makeTriangularPrism(p00, p01, p11, base_z), field.cell_materials[cell]);
+      expectMade(id++, wtc::makeTriangularPrism(p00, p11, p10, base_z), field.cell_materials[cell]);
+    }
+  }
+  EXPECT_EQ(id, grid.end());
+  ASSERT_EQ(extruded.pieces.count, static_cast<wtc::PieceId>(mesh.triangles.size()));
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto& tri = mesh.triangles[t];
+    expectMade(extruded.pieces.first + static_cast<wtc::PieceId>(t),
+               wtc::makeExtrudedTriangle(mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]],
+                                         options.thickness),
+               second_material);
+  }
+  EXPECT_EQ(terrain.materialId(extruded.pieces.end()), second_material);  // the last box
+}
+
 // Case: the arena itself: equal topologies once, each piece pointed at its
 // own numbers, the block counted whole.
 TEST(PieceArenaTest, StoresEachDistinctTopologyOnceAndEveryPiecesNumbers) {
@@ -125,7 +189,7 @@ TEST(PieceArenaTest, StoresEachDistinctTopologyOnceAndEveryPiecesNumbers) {
   std::vector<std::int32_t> order(pieces.size());
   for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<std::int32_t>(order.size() - 1 - k);
   std::vector<std::uint32_t> first_line;
-  const wtc::detail::PieceArena arena(pieces, order, first_line);
+  const wtc::detail::PieceArena arena(pieces, {}, order, first_line);
   EXPECT_EQ(arena.topologyCount(), 2u);  // a box's and the tetrahedron's
   ASSERT_EQ(first_line.size(), pieces.size());
   for (std::size_t k = 1; k < first_line.size(); ++k) EXPECT_GT(first_line[k], first_line[k - 1]);

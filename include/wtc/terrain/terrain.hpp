@@ -42,6 +42,7 @@ class FormedPieces;          // a compact part's pieces, formed on demand (src/t
 class BoxTree;               // the index (src/terrain/box_tree.hpp)
 class PieceArena;            // the stored pieces' memory (src/terrain/piece_arena.hpp)
 struct PieceLeaf;            // a stored piece as the index reports it (src/terrain/piece_arena.hpp)
+struct PendingPrisms;        // stored prisms made when the terrain is built (src/terrain/pending_prisms.hpp)
 struct TerrainBuilderAccess;  // how the compact builders add their parts
 }  // namespace detail
 
@@ -93,10 +94,11 @@ class TerrainBuilder {
   // pass PieceId's range (requireRoomFor's first check).
   void requireIdsFor(std::uint64_t count, const std::string& where) const;
 
-  std::vector<ConvexPolyhedron> pieces_;
+  std::vector<ConvexPolyhedron> pieces_;  // a pending prism's place holds an empty piece
   std::vector<MaterialId> piece_material_;
   std::vector<Material> materials_;
   std::vector<Field> fields_;
+  std::vector<std::shared_ptr<const detail::PendingPrisms>> pending_;  // by first stored position
   std::size_t next_id_ = 0;
 };
 
@@ -191,10 +193,13 @@ class Terrain {
   // The compact part holding piece `id`; null for a stored piece or no piece.
   const Field* formedField(PieceId id) const;
   MaterialId fieldAwareMaterialId(PieceId id) const;
-  void buildIndex();
+  // `pending` are the builder's prisms not made yet (their places in
+  // pieces_ are empty), made in gatherPieces.
+  void buildIndex(std::span<const detail::PendingPrisms* const> pending);
   // Moves the stored pieces' numbers and topologies into arena_, in the
-  // index's leaf order (detail::PieceArena).
-  void gatherPieces();
+  // index's leaf order, and makes the pending prisms there
+  // (detail::PieceArena).
+  void gatherPieces(std::span<const detail::PendingPrisms* const> pending = {});
 
   std::vector<ConvexPolyhedron> pieces_;
   std::vector<MaterialId> piece_material_;
