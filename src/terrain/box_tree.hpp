@@ -49,10 +49,18 @@ class BoxTree {
   BoxTree(std::span<const Aabb> boxes, std::vector<std::int32_t>& order);
 
   /// Calls leaf(position) for every position in order whose leaf's single
-  /// precision box overlaps `box` (a superset of the boxes that overlap).
-  /// Allocation-free. A box with a NaN meets nothing.
+  /// precision box overlaps `box` (a superset of the boxes that overlap), in
+  /// no particular order. Allocation-free. A box with a NaN meets nothing.
   template <class Leaf>
-  void visit(const Aabb& box, Leaf&& leaf) const;
+  void visit(const Aabb& box, Leaf&& leaf) const {
+    visit(box, leaf, [](std::int32_t, std::int32_t) {});
+  }
+  /// The same, and touch(first, count) as soon as positions first ...
+  /// first + count - 1 are known to come, before any leaf() of them: a hint
+  /// for the owner to prefetch what leaf() will read, so that those misses
+  /// overlap the rest of the walk.
+  template <class Leaf, class Touch>
+  void visit(const Aabb& box, Leaf&& leaf, Touch&& touch) const;
 
   std::size_t memoryBytes() const { return nodes_.capacity() * sizeof(Node); }
 
@@ -68,6 +76,9 @@ class BoxTree {
     std::int32_t count[kWidth];
   };
   static_assert(sizeof(Node) % kCacheLineBytes == 0);
+  // Hit leaves a walk holds back before reporting them: more than a wheel's
+  // query meets, few enough for the stack.
+  static constexpr int kPendingLeaves = 16;
   // Asks for all the lines of node `index` (a hint: it changes no answer).
   void prefetchNode(std::int32_t index) const {
     const char* at = reinterpret_cast<const char*>(&nodes_[index]);
@@ -80,13 +91,23 @@ class BoxTree {
   std::vector<Node> nodes_;
 };
 
-template <class Leaf>
-void BoxTree::visit(const Aabb& box, Leaf&& leaf) const {
+template <class Leaf, class Touch>
+void BoxTree::visit(const Aabb& box, Leaf&& leaf, Touch&& touch) const {
   if (nodes_.empty()) return;
   float lo[3], hi[3];
   widen(box, lo, hi);
   const Float4 lx{lo[0], lo[0], lo[0], lo[0]}, ly{lo[1], lo[1], lo[1], lo[1]}, lz{lo[2], lo[2], lo[2], lo[2]};
   const Float4 hx{hi[0], hi[0], hi[0], hi[0]}, hy{hi[1], hi[1], hi[1], hi[1]}, hz{hi[2], hi[2], hi[2], hi[2]};
+  // Hit leaves wait here, touched, while the walk goes on; leaf() runs for
+  // them when the buffer is full and at the end.
+  std::int32_t pending_first[kPendingLeaves], pending_count[kPendingLeaves];
+  int pending = 0;
+  auto flush = [&] {
+    for (int p = 0; p < pending; ++p) {
+      for (std::int32_t k = pending_first[p]; k < pending_first[p] + pending_count[p]; ++k) leaf(k);
+    }
+    pending = 0;
+  };
   // Depth-first. Positions are int32, so a binary tree of them is at most
   // 32 deep, and each of the wide levels leaves at most kWidth - 1 siblings
   // on the stack.
@@ -108,10 +129,15 @@ void BoxTree::visit(const Aabb& box, Leaf&& leaf) const {
           stack[top++] = child;
           continue;
         }
-        for (std::int32_t k = ~child; k < ~child + node.count[4 * g + c]; ++k) leaf(k);
+        if (pending == kPendingLeaves) flush();
+        pending_first[pending] = ~child;
+        pending_count[pending] = node.count[4 * g + c];
+        touch(pending_first[pending], pending_count[pending]);
+        ++pending;
       }
     }
   }
+  flush();
 }
 
 }  // namespace wtc::detail
