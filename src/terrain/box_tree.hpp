@@ -24,6 +24,10 @@
 #include <span>
 #include <vector>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "base/cache_line.hpp"
 #include "wtc/geometry/aabb.hpp"
 
@@ -76,6 +80,16 @@ class BoxTree {
     std::int32_t count[kWidth];
   };
   static_assert(sizeof(Node) % kCacheLineBytes == 0);
+  static_assert(kWidth <= 32, "a node's hits are bits of an unsigned");
+  // A four-lane compare's result (each lane all ones or zero) as four bits.
+  using Int4 = std::int32_t __attribute__((vector_size(16)));
+  static unsigned laneBits(Int4 hit) {
+#if defined(__SSE2__)
+    return static_cast<unsigned>(_mm_movemask_ps(reinterpret_cast<__m128>(hit)));
+#else
+    return (hit[0] & 1u) | (hit[1] & 2u) | (hit[2] & 4u) | (hit[3] & 8u);
+#endif
+  }
   // Hit leaves a walk holds back before reporting them: more than a wheel's
   // query meets, few enough for the stack.
   static constexpr int kPendingLeaves = 16;
@@ -116,25 +130,27 @@ void BoxTree::visit(const Aabb& box, Leaf&& leaf, Touch&& touch) const {
   stack[top++] = 0;
   while (top > 0) {
     const Node& node = nodes_[stack[--top]];
+    unsigned hits = 0;  // bit s: slot s's box overlaps the query
     for (int g = 0; g < kGroups; ++g) {
-      const auto hit = (lx <= node.max_x[g]) & (node.min_x[g] <= hx) & (ly <= node.max_y[g]) &
+      const Int4 hit = (lx <= node.max_x[g]) & (node.min_x[g] <= hx) & (ly <= node.max_y[g]) &
                        (node.min_y[g] <= hy) & (lz <= node.max_z[g]) & (node.min_z[g] <= hz);
-      for (int c = 0; c < 4; ++c) {
-        if (hit[c] == 0) continue;
-        const std::int32_t child = node.child[4 * g + c];
-        if (child >= 0) {
-          // Every hit child's lines are asked for now, so the misses of
-          // siblings overlap instead of coming one after another.
-          prefetchNode(child);
-          stack[top++] = child;
-          continue;
-        }
-        if (pending == kPendingLeaves) flush();
-        pending_first[pending] = ~child;
-        pending_count[pending] = node.count[4 * g + c];
-        touch(pending_first[pending], pending_count[pending]);
-        ++pending;
+      hits |= laneBits(hit) << (4 * g);
+    }
+    for (; hits != 0; hits &= hits - 1) {
+      const int slot = __builtin_ctz(hits);
+      const std::int32_t child = node.child[slot];
+      if (child >= 0) {
+        // Every hit child's lines are asked for now, so the misses of
+        // siblings overlap instead of coming one after another.
+        prefetchNode(child);
+        stack[top++] = child;
+        continue;
       }
+      if (pending == kPendingLeaves) flush();
+      pending_first[pending] = ~child;
+      pending_count[pending] = node.count[slot];
+      touch(pending_first[pending], pending_count[pending]);
+      ++pending;
     }
   }
   flush();
