@@ -136,8 +136,12 @@ void BoxTree::visit(const Aabb& box, Leaf&& leaf, Touch&& touch) const {
                        (node.min_y[g] <= hy) & (lz <= node.max_z[g]) & (node.min_z[g] <= hz);
       hits |= laneBits(hit) << (4 * g);
     }
-    for (; hits != 0; hits &= hits - 1) {
-      const int slot = __builtin_ctz(hits);
+    // Every slot in turn, unrolled: each test is a branch of its own, which
+    // a rolling wheel's steady pattern predicts (walking the set bits by
+    // count-trailing-zeros measured fewer instructions but more time).
+#pragma GCC unroll 8
+    for (int slot = 0; slot < kWidth; ++slot) {
+      if ((hits >> slot & 1u) == 0) continue;
       const std::int32_t child = node.child[slot];
       if (child >= 0) {
         // Every hit child's lines are asked for now, so the misses of
