@@ -34,8 +34,9 @@ void BoxTree::widen(const Aabb& box, float lo[3], float hi[3]) {
 }
 
 // A node's range is split at the median along the widest centre axis, and
-// each part again, kSplitLevels deep, giving up to kWidth children; a part of
-// at most kLeafBoxes boxes is a leaf and is not split further. O(n log n).
+// each part again, up to kSplitLevels deep, giving up to kWidth children; a
+// part of at most kLeafBoxes boxes is a leaf and is not split further.
+// O(n log n).
 BoxTree::BoxTree(std::span<const Aabb> boxes, std::vector<std::int32_t>& order) {
   const auto n = static_cast<std::int32_t>(boxes.size());
   order.resize(static_cast<std::size_t>(n));
@@ -97,20 +98,30 @@ BoxTree::BoxTree(std::span<const Aabb> boxes, std::vector<std::int32_t>& order) 
     std::memcpy(node.child, child, sizeof child);
     std::memcpy(node.count, count, sizeof count);
   };
+  // Binary levels a node over `count` boxes takes: the rest of the binary
+  // depth below it a multiple of kSplitLevels, so the partly filled node is
+  // the root (cached) and the nodes above the leaves, the most numerous,
+  // are full. Median splits keep every leaf at depth d or d - 1, d that of
+  // the larger half's chain.
+  auto levels = [](std::int32_t count) {
+    int depth = 0;
+    for (; count > kLeafBoxes; count -= count / 2) ++depth;
+    return (depth - 1) % kSplitLevels + 1;
+  };
   // Returns the node index; called only for ranges larger than a leaf.
   auto build = [&](auto& self, std::int32_t begin, std::int32_t end) -> std::int32_t {
     std::int32_t bounds[kWidth + 1];
     int parts = 0;
-    auto partition = [&](auto& again, std::int32_t b, std::int32_t e, int levels) -> void {
-      if (levels == 0 || e - b <= kLeafBoxes) {
+    auto partition = [&](auto& again, std::int32_t b, std::int32_t e, int deep) -> void {
+      if (deep == 0 || e - b <= kLeafBoxes) {
         bounds[parts++] = b;
         return;
       }
       const std::int32_t mid = split(b, e);
-      again(again, b, mid, levels - 1);
-      again(again, mid, e, levels - 1);
+      again(again, b, mid, deep - 1);
+      again(again, mid, e, deep - 1);
     };
-    partition(partition, begin, end, kSplitLevels);
+    partition(partition, begin, end, levels(end - begin));
     bounds[parts] = end;
     const auto index = static_cast<std::int32_t>(nodes_.size());
     nodes_.emplace_back();
