@@ -34,8 +34,9 @@ void BoxTree::widen(const Aabb& box, float lo[3], float hi[3]) {
 }
 
 // A node's range is split at the median along the widest centre axis, and
-// each half once more, giving up to four children; a child of at most
-// kLeafBoxes boxes is a leaf. O(n log n).
+// each part again, up to kSplitLevels deep, giving up to kWidth children; a
+// part of at most kLeafBoxes boxes is a leaf and is not split further.
+// O(n log n).
 BoxTree::BoxTree(std::span<const Aabb> boxes, std::vector<std::int32_t>& order) {
   const auto n = static_cast<std::int32_t>(boxes.size());
   order.resize(static_cast<std::size_t>(n));
@@ -59,76 +60,83 @@ BoxTree::BoxTree(std::span<const Aabb> boxes, std::vector<std::int32_t>& order) 
     return mid;
   };
   nodes_.reserve(static_cast<std::size_t>(n) / kLeafBoxes + 1);
-  auto setNode = [&](std::int32_t index, const float(&min)[3][4], const float(&max)[3][4]) {
-    Node& node = nodes_[index];
-    std::memcpy(&node.min_x, min[0], sizeof(Float4));
-    std::memcpy(&node.min_y, min[1], sizeof(Float4));
-    std::memcpy(&node.min_z, min[2], sizeof(Float4));
-    std::memcpy(&node.max_x, max[0], sizeof(Float4));
-    std::memcpy(&node.max_y, max[1], sizeof(Float4));
-    std::memcpy(&node.max_z, max[2], sizeof(Float4));
-  };
   constexpr float kInf = std::numeric_limits<float>::infinity();
-  // Returns the node index; called only for ranges larger than a leaf.
-  auto build = [&](auto& self, std::int32_t begin, std::int32_t end) -> std::int32_t {
-    std::int32_t bounds[5];
-    int parts = 0;
-    const std::int32_t mid = split(begin, end);
-    for (const auto& [b, e] : {std::pair{begin, mid}, std::pair{mid, end}}) {
-      bounds[parts++] = b;
-      if (e - b > kLeafBoxes) bounds[parts++] = split(b, e);
-    }
-    bounds[parts] = end;
-    const auto index = static_cast<std::int32_t>(nodes_.size());
-    nodes_.emplace_back();
-    float min[3][4], max[3][4];
-    for (int c = 0; c < 4; ++c) {
-      float lo[3] = {kInf, kInf, kInf}, hi[3] = {-kInf, -kInf, -kInf};  // empty slot: overlaps nothing
-      std::int32_t child = -1, count = 0;
+  // Node `index`'s slots from its parts' bounds (parts <= kWidth ranges,
+  // bounds[parts] the end); a part larger than a leaf becomes a node by
+  // `inner`. Unused slots get empty boxes, which overlap nothing.
+  auto fill = [&](std::int32_t index, const std::int32_t* bounds, int parts, auto&& inner) {
+    float min[3][kWidth], max[3][kWidth];
+    std::int32_t child[kWidth], count[kWidth];
+    for (int c = 0; c < kWidth; ++c) {
+      float lo[3] = {kInf, kInf, kInf}, hi[3] = {-kInf, -kInf, -kInf};
+      child[c] = -1;
+      count[c] = 0;
       if (c < parts) {
         const std::int32_t b = bounds[c], e = bounds[c + 1];
         storeOutward(rangeBox(b, e), lo, hi);
         if (e - b <= kLeafBoxes) {
-          child = ~b;
-          count = e - b;
+          child[c] = ~b;
+          count[c] = e - b;
         } else {
-          child = self(self, b, e);
+          child[c] = inner(b, e);
         }
       }
       for (int k = 0; k < 3; ++k) {
         min[k][c] = lo[k];
         max[k][c] = hi[k];
       }
-      nodes_[index].child[c] = child;
-      nodes_[index].count[c] = count;
     }
-    setNode(index, min, max);
+    Node& node = nodes_[index];  // after the recursion: it may grow nodes_
+    for (int g = 0; g < kGroups; ++g) {
+      std::memcpy(&node.min_x[g], &min[0][4 * g], sizeof(Float4));
+      std::memcpy(&node.min_y[g], &min[1][4 * g], sizeof(Float4));
+      std::memcpy(&node.min_z[g], &min[2][4 * g], sizeof(Float4));
+      std::memcpy(&node.max_x[g], &max[0][4 * g], sizeof(Float4));
+      std::memcpy(&node.max_y[g], &max[1][4 * g], sizeof(Float4));
+      std::memcpy(&node.max_z[g], &max[2][4 * g], sizeof(Float4));
+    }
+    std::memcpy(node.child, child, sizeof child);
+    std::memcpy(node.count, count, sizeof count);
+  };
+  // Binary levels a node over `count` boxes takes: the rest of the binary
+  // depth below it a multiple of kSplitLevels, so the partly filled node is
+  // the root (cached) and the nodes above the leaves, the most numerous,
+  // are full. Median splits keep every leaf at depth d or d - 1, d that of
+  // the larger half's chain.
+  auto levels = [](std::int32_t count) {
+    int depth = 0;
+    for (; count > kLeafBoxes; count -= count / 2) ++depth;
+    return (depth - 1) % kSplitLevels + 1;
+  };
+  // Returns the node index; called only for ranges larger than a leaf.
+  auto build = [&](auto& self, std::int32_t begin, std::int32_t end) -> std::int32_t {
+    std::int32_t bounds[kWidth + 1];
+    int parts = 0;
+    auto partition = [&](auto& again, std::int32_t b, std::int32_t e, int deep) -> void {
+      if (deep == 0 || e - b <= kLeafBoxes) {
+        bounds[parts++] = b;
+        return;
+      }
+      const std::int32_t mid = split(b, e);
+      again(again, b, mid, deep - 1);
+      again(again, mid, e, deep - 1);
+    };
+    partition(partition, begin, end, levels(end - begin));
+    bounds[parts] = end;
+    const auto index = static_cast<std::int32_t>(nodes_.size());
+    nodes_.emplace_back();
+    fill(index, bounds, parts, [&](std::int32_t b, std::int32_t e) { return self(self, b, e); });
     return index;
   };
   if (n > kLeafBoxes) {
     build(build, 0, n);
   } else {
     // A root with a single leaf child keeps one query path for all sizes.
-    float min[3][4], max[3][4], lo[3], hi[3];
-    storeOutward(rangeBox(0, n), lo, hi);
-    for (int k = 0; k < 3; ++k) {
-      min[k][0] = lo[k];
-      max[k][0] = hi[k];
-      for (int c = 1; c < 4; ++c) {
-        min[k][c] = kInf;
-        max[k][c] = -kInf;
-      }
-    }
+    const std::int32_t bounds[2] = {0, n};
     nodes_.emplace_back();
-    nodes_[0].child[0] = ~0;
-    nodes_[0].count[0] = n;
-    for (int c = 1; c < 4; ++c) {
-      nodes_[0].child[c] = -1;
-      nodes_[0].count[c] = 0;
-    }
-    setNode(0, min, max);
+    fill(0, bounds, 1, [](std::int32_t, std::int32_t) { return std::int32_t{-1}; });
   }
-  // Fitted to its size (the reservation above is about three times it), in
+  // Fitted to its size (the reservation above is several times it), in
   // memory advised for huge pages.
   std::vector<Node> fitted;
   reserveHuge(fitted, nodes_.size());

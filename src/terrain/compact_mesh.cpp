@@ -51,7 +51,7 @@ void CompactTriangleMesh::prismCorners(std::size_t k, std::array<Eigen::Vector3d
 }
 
 void CompactTriangleMesh::overlapping(const Aabb& box, PieceId first, std::vector<PieceId>& out) const {
-  tree_.visit(box, [&](std::int32_t position) {
+  auto report = [&](std::int32_t position) {
     const FloatBox& f = boxes_[position];
     // The exact box lies inside the float one: no overlap with it, none.
     if (f.max[0] < box.min[0] || box.max[0] < f.min[0] || f.max[1] < box.min[1] || box.max[1] < f.min[1] ||
@@ -67,7 +67,16 @@ void CompactTriangleMesh::overlapping(const Aabb& box, PieceId first, std::vecto
     }
     const auto k = static_cast<std::size_t>(order_[position]);
     if (sure || pieceBounds(k).overlaps(box)) out.push_back(first + static_cast<PieceId>(k));
-  });
+  };
+  // The float boxes report() reads, every line they span, asked for while
+  // the walk goes on.
+  auto touch = [&](std::int32_t from, std::int32_t count) {
+    const auto* at = reinterpret_cast<const char*>(&boxes_[from]);
+    const auto* end = reinterpret_cast<const char*>(&boxes_[from] + count);
+    for (; at < end; at += kCacheLineBytes) __builtin_prefetch(at);
+    __builtin_prefetch(end - 1);  // the last line, when `at` skipped past its start
+  };
+  tree_.visit(box, report, touch);
 }
 
 std::size_t CompactTriangleMesh::memoryBytes() const {

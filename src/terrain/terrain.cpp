@@ -373,7 +373,7 @@ void Terrain::overlapping(const Aabb& box, std::vector<PieceId>& out) const {
   // terrain larger than the cache the misses of all the pieces reported
   // then overlap instead of coming one after another.
   const unsigned char* arena = arena_->base();
-  tree_->visit(box, [&](std::int32_t k) {
+  auto report = [&](std::int32_t k) {
     const detail::PieceLeaf& leaf = leaves_[k];
     if (!leaf.box.overlaps(box)) return;
     out.push_back(leaf.id);
@@ -388,7 +388,12 @@ void Terrain::overlapping(const Aabb& box, std::vector<PieceId>& out) const {
 #pragma GCC unroll 8
     for (std::size_t line = 0; line < kPrefetchLines; ++line) __builtin_prefetch(numbers + line * kCacheLineBytes);
     __builtin_prefetch(&piece_material_[leaf.stored]);  // a contact's material is read next
-  });
+  };
+  // The leaf records report() reads, asked for while the walk goes on.
+  auto touch = [&](std::int32_t first, std::int32_t count) {
+    for (std::int32_t k = first; k < first + count; ++k) __builtin_prefetch(&leaves_[k]);
+  };
+  tree_->visit(box, report, touch);
 }
 
 std::size_t Terrain::pieceMemoryBytes() const {

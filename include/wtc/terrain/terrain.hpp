@@ -3,7 +3,7 @@
 // spatial index that answers "which pieces can touch this box" (a wheel's
 // bounding box). Immutable once built; build it with TerrainBuilder.
 //
-// Index: a static 4-wide bounding-volume hierarchy over the pieces' boxes,
+// Index: a static 8-wide bounding-volume hierarchy over the pieces' boxes,
 // tested four at a time in single precision, with an exact test on the
 // double boxes at the leaves (docs/terrain.md). Chosen over FCL's
 // DynamicAABBTreeCollisionManager and Bullet's btDbvt by the benchmark
