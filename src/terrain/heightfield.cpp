@@ -129,21 +129,14 @@ PieceRange addHeightfield(TerrainBuilder& builder, const Heightfield& f, Materia
   // The prisms are made when the terrain is built, each where the terrain
   // keeps it (detail::PendingPrisms), from the corners the compact field
   // gives: makeTriangularPrism's, bit for bit (CompactHeightfieldTest).
+  // Each piece's material is the compact field's answer too.
   auto grid = std::make_shared<const detail::CompactHeightfield>(f);
-  std::vector<MaterialId> cell_material;  // per piece, when the cells have their own
-  if (!f.cell_materials.empty()) {
-    cell_material.reserve(grid->pieceCount());
-    for (std::size_t cell = 0; cell < f.cell_materials.size(); ++cell) {
-      if (!f.cell_holes.empty() && f.cell_holes[cell] != 0) continue;
-      cell_material.insert(cell_material.end(), 2, f.cell_materials[cell]);
-    }
-  }
   return detail::TerrainBuilderAccess::addPendingPrisms(
       builder, grid->pieceCount(),
       [grid](std::size_t k, std::array<Eigen::Vector3d, 3>& top, std::array<Eigen::Vector3d, 3>& bottom) {
         grid->prismCorners(k, top, bottom);
       },
-      [&](std::size_t k) { return cell_material.empty() ? material : cell_material[k]; }, where);
+      [&](std::size_t k) { return grid->materialId(k, material); }, where);
 }
 
 PieceRange addCompactHeightfield(TerrainBuilder& builder, Heightfield field, MaterialId material) {
