@@ -16,6 +16,8 @@
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 #include <btBulletDynamicsCommon.h>
 
+#include "body_hull.hpp"
+#include "joint_row.hpp"
 #include "native_wheels.hpp"
 #include "sim/engine_base.hpp"
 #include "src/conversions.hpp"
@@ -63,12 +65,8 @@ btCollisionShape* partShape(const Shape& s, Keep& keep) {
       return keep(cylinder(s.cylinder_axis, s.radius, s.length));
     case Shape::Kind::kSphere:
       return keep(std::make_unique<btSphereShape>(s.radius));
-    case Shape::Kind::kHull: {
-      auto hull = std::make_unique<btConvexHullShape>();
-      for (const Eigen::Vector3d& p : s.hull_vertices) hull->addPoint(toBt(p), false);
-      hull->recalcLocalAabb();
-      return keep(std::move(hull));
-    }
+    case Shape::Kind::kHull:
+      return keep(makeBodyHull(s.hull_vertices));
     case Shape::Kind::kNone:
       break;
   }
@@ -395,6 +393,16 @@ class SimEngine final : public sim::EngineBase {
   // target fed back (btMultiBodyGearConstraint.cpp): A the mimic joint's
   // link, B the master's, ratio = -k, target = offset. It reads B's
   // coordinate through A's multibody, so both must be one tree.
+  // Bullet's gear filed on the multibody's island (islandOf), as the
+  // drives and limits are: its own rule takes the links' colliders, and a
+  // mimic joint's link without one (a knuckle) would be solved never.
+  class MimicGear final : public btMultiBodyGearConstraint {
+   public:
+    using btMultiBodyGearConstraint::btMultiBodyGearConstraint;
+    int getIslandIdA() const override { return islandOf(*m_bodyA); }
+    int getIslandIdB() const override { return islandOf(*m_bodyB); }
+  };
+
   void addMimic(int i) {
     const Body& b = vehicle().bodies[i];
     const vehicle::Mimic& mimic = *b.joint.mimic;
@@ -404,7 +412,7 @@ class SimEngine final : public sim::EngineBase {
       throw InvalidInputError("wtc::bullet sim engine: mimic joint '" + b.joint.name + "' (body '" + b.name +
                               "') and its master are in two trees: a gear constraint ties one multibody's joints");
     }
-    auto gear = std::make_unique<btMultiBodyGearConstraint>(a.multibody, a.link, m.multibody, m.link,
+    auto gear = std::make_unique<MimicGear>(a.multibody, a.link, m.multibody, m.link,
                                                             btVector3(0, 0, 0), btVector3(0, 0, 0),
                                                             btMatrix3x3::getIdentity(), btMatrix3x3::getIdentity());
     gear->setGearRatio(-mimic.multiplier);

@@ -14,6 +14,8 @@ WarmStartedMotor::WarmStartedMotor(btMultiBody* body, int link) : btMultiBodyJoi
   m_bodyB = nullptr;  // before the Jacobians are sized (finalizeMultiDof): A's alone
 }
 
+int WarmStartedMotor::getIslandIdA() const { return islandOf(*m_bodyA); }
+
 void WarmStartedMotor::setTarget(double rate, double cap, bool active, double h) {
   setVelocityTarget(rate);
   setMaxAppliedImpulse(active ? std::min(cap * h, std::numeric_limits<double>::max()) : 0.0);

@@ -48,6 +48,12 @@ class WarmStartedMotor final : public btMultiBodyJointMotor {
 
   void createConstraintRows(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data,
                             const btContactSolverInfo& info) override;
+  // The multibody's island (islandOf), not the link's own collider's:
+  // btMultiBodyJointMotor files a motor on a link without a collider (a
+  // steering knuckle, a link of a mesh-less chain) under island -1, which
+  // the island solver never solves, and the drive did nothing (issue 52
+  // row 1: a steered car's knuckles never moved in Bullet).
+  int getIslandIdA() const override;
   int getIslandIdB() const override { return getIslandIdA(); }  // no body B: A's island
 
  private:
