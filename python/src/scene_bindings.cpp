@@ -7,6 +7,7 @@
 #include "bindings.hpp"
 #include "wtc/base/error.hpp"
 #include "wtc/sim/engine.hpp"
+#include "wtc/sim/engine_table.hpp"
 
 namespace wtc::python {
 namespace {
@@ -16,7 +17,7 @@ std::shared_ptr<LoadedScene> loadScene(const std::filesystem::path& path,
   auto loaded = std::make_shared<LoadedScene>();
   loaded->file = path;
   for (const auto& [key, value] : overrides) loaded->overrides.push_back({key, value});
-  loaded->scene = sim::loadScene(path, loaded->overrides);
+  loaded->scene = sim::loadScene(path, loaded->overrides, sim::requireEngine);
   return loaded;
 }
 

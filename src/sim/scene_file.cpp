@@ -277,7 +277,8 @@ Override parseOverride(const std::string& text) {
 
 namespace {
 
-sim::Scene readSceneFile(const std::filesystem::path& path, std::span<const Override> overrides) {
+sim::Scene readSceneFile(const std::filesystem::path& path, std::span<const Override> overrides,
+                         const EngineCheck& check_engine) {
   YAML::Node root = io::detail::loadYamlFile(path);
   YamlReader in(path);
   in.requireMap(root, "scene file");
@@ -307,8 +308,9 @@ sim::Scene readSceneFile(const std::filesystem::path& path, std::span<const Over
   }
   if (const auto d = YamlReader::get(root, "description")) scene.description = in.string(*d, "description");
   // The engine table (wtc::sim_engines) lies a layer above this reader: the
-  // name keeps its place here, and makeEngine refuses a name it does not have
-  // with that place and the names it has.
+  // name keeps its place here, and the caller's check (requireEngine), or
+  // else makeEngine, refuses a name the table does not have with that place
+  // and the names it has.
   if (const auto e = YamlReader::get(root, "engine")) {
     scene.engine.engine = in.string(*e, "engine");
     scene.engine.engine_where = in.describe(*e, "engine");
@@ -320,6 +322,7 @@ sim::Scene readSceneFile(const std::filesystem::path& path, std::span<const Over
       in.fail(*m, error.what());
     }
   }
+  if (check_engine) check_engine(scene.engine);
   scene.engine.step_seconds = in.number(root, "dt", scene.engine.step_seconds);
   if (!(scene.engine.step_seconds > 0.0)) in.fail(root["dt"], "dt: must be > 0 s");
   scene.engine.solver_iterations = static_cast<int>(in.integer(root, "solver_iterations", 50));
@@ -401,8 +404,9 @@ sim::Scene readSceneFile(const std::filesystem::path& path, std::span<const Over
 
 }  // namespace
 
-sim::Scene loadScene(const std::filesystem::path& path, std::span<const Override> overrides) {
-  return io::detail::withYamlErrors(path, [&] { return readSceneFile(path, overrides); });
+sim::Scene loadScene(const std::filesystem::path& path, std::span<const Override> overrides,
+                     const EngineCheck& check_engine) {
+  return io::detail::withYamlErrors(path, [&] { return readSceneFile(path, overrides, check_engine); });
 }
 
 }  // namespace wtc::sim

@@ -15,7 +15,7 @@ namespace {
 std::string loadProblem(const PlannedRun& run, const std::vector<sim::Override>& overrides) {
   try {
     // The scene reader keeps the engine's name; the engine table judges it.
-    sim::requireEngine(sim::loadScene(run.scene_file, overrides).engine);
+    (void)sim::loadScene(run.scene_file, overrides, sim::requireEngine);
     return {};
   } catch (const std::exception& e) {
     return e.what();

@@ -110,6 +110,12 @@ TEST(EngineTableTest, AnUnknownNameIsRefusedWithTheKnownNames) {
   EXPECT_THAT([&] { sim::requireEngine(overridden.engine); },
               ThrowsMessage<InvalidInputError>(HasSubstr(
                   "robot_straight.yaml: --set engine=physx: engine: unknown engine 'physx' " + knownNames())));
+  // Case: checked as the scene is read (sim::loadScene's EngineCheck), before
+  // its terrain is built: here a terrain that is not there is never reached.
+  const std::vector<sim::Override> misspelt_first = {sim::parseOverride("engine=bulet"),
+                                                     sim::parseOverride("terrain=no_such_terrain.yaml")};
+  EXPECT_THAT([&] { sim::loadScene(scene, misspelt_first, sim::requireEngine); },
+              ThrowsMessage<InvalidInputError>(HasSubstr("--set engine=bulet: engine: unknown engine 'bulet' ")));
   // Case: this build's names, as scenes/README.md and docs/bad-input.md show them.
   EXPECT_THAT(knownNames(), ::testing::StartsWith("(expected bullet, ode"));
 }

@@ -29,6 +29,7 @@
 // Files: regular files within wtc/io/file_limits.hpp's caps; no key twice
 // in a mapping (docs/bad-input.md).
 #include <filesystem>
+#include <functional>
 #include <span>
 #include <string>
 
@@ -45,7 +46,16 @@ struct Override {
 /// text when there is no '=' or the path is empty.
 Override parseOverride(const std::string& text);
 
-/// Reads, overrides, checks and builds (terrain and vehicle loaded).
-sim::Scene loadScene(const std::filesystem::path& path, std::span<const Override> overrides = {});
+/// Told the scene's engine settings as soon as they are read, before the
+/// terrain and the vehicle are built: a caller that knows the engines
+/// passes the engine table's sim::requireEngine, so that a misspelt engine
+/// is refused at once, not after a large terrain's load. This reader lies a
+/// layer below the table and cannot ask it itself.
+using EngineCheck = std::function<void(const EngineSettings& settings)>;
+
+/// Reads, overrides, checks and builds (terrain and vehicle loaded);
+/// `check_engine`, if given, judges the engine settings first.
+sim::Scene loadScene(const std::filesystem::path& path, std::span<const Override> overrides = {},
+                     const EngineCheck& check_engine = {});
 
 }  // namespace wtc::sim
