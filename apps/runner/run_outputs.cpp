@@ -1,5 +1,7 @@
 #include "runner/run_outputs.hpp"
 
+#include <algorithm>
+#include <cstdio>
 #include <optional>
 #include <system_error>
 #include <vector>
@@ -86,7 +88,13 @@ RunOutcome runWithOutputs(const sim::Scene& scene, sim::Engine& engine, const Ou
   }
   BothObservers observers(replay ? &*replay : nullptr, options.observer);
   options.observer = &observers;
-  outcome.summary = sim::runScene(scene, engine, options);
+  try {
+    outcome.summary = sim::runScene(scene, engine, options);
+  } catch (const std::exception& e) {
+    // The caller reports the error; the summary says the run is over.
+    sim::writeRunFailed(dir / "summary.json", e.what());
+    throw;
+  }
   sim::RunSummary& summary = outcome.summary;
   summary.program = request.program;
   if (request.on_run_end) request.on_run_end();
@@ -115,6 +123,33 @@ RunOutcome runWithOutputs(const sim::Scene& scene, sim::Engine& engine, const Ou
                           : "not drawn (python3 with matplotlib is needed; see above)";
   }
   return outcome;
+}
+
+std::string runReport(const RunOutcome& outcome) {
+  const sim::RunSummary& summary = outcome.summary;
+  std::string text;
+  char line[512];
+  const auto add = [&](int n) { text.append(line, static_cast<std::size_t>(std::clamp(n, 0, int(sizeof line) - 1))); };
+  char headline[64] = "success";
+  if (summary.interrupted) {
+    std::snprintf(headline, sizeof headline, "INTERRUPTED at t = %.3f s", summary.sim_time);
+  } else if (!summary.success) {
+    std::snprintf(headline, sizeof headline, "FAILED");
+  }
+  text += summary.scene + " in " + summary.engine + " (" + summary.mode + " mode, dt ";
+  add(std::snprintf(line, sizeof line, "%g s): %s\n", summary.dt, headline));
+  for (const sim::FailedCriterion& f : summary.failed_criteria) text += "  failed: " + sim::describe(f) + "\n";
+  add(std::snprintf(line, sizeof line,
+                    "  %.3f s simulated in %.3f s wall: %.1fx real time, %llu steps, %.1f %% of the wall time in WTC\n",
+                    summary.sim_time, summary.wall_time, summary.real_time_factor,
+                    static_cast<unsigned long long>(summary.steps), 100.0 * summary.wtcShare()));
+  for (const auto& [key, value] : summary.fields) {
+    text += "  " + key;
+    add(std::snprintf(line, sizeof line, ": %.4g\n", value));
+  }
+  text += "  outputs: " + outcome.dir.string() + " (series, summary.json, " + outcome.replay_said + "; figures " +
+          outcome.figures + ")\n";
+  return text;
 }
 
 }  // namespace wtc::apps

@@ -59,4 +59,10 @@ std::filesystem::path makeOutputDirectory(const OutputRequest& request, const si
 RunOutcome runWithOutputs(const sim::Scene& scene, sim::Engine& engine, const OutputRequest& request,
                           sim::RunOptions options);
 
+/// What wtc-sim prints after a run (and `python3 -m wtc run`, from the
+/// same text): the headline (success, FAILED, INTERRUPTED at t), each
+/// failed criterion, the clock, the scene's figures and where the outputs
+/// are, a line each.
+std::string runReport(const RunOutcome& outcome);
+
 }  // namespace wtc::apps

@@ -97,7 +97,7 @@ int main(int argc, char** argv) {
       if (!quiet) std::printf("%s: finished earlier, skipped\n", out.c_str());
       return 0;
     }
-    scene = wtc::sim::loadScene(scene_file, overrides);
+    scene = wtc::sim::loadScene(scene_file, overrides, wtc::sim::requireEngine);
   } catch (const std::exception& e) {
     std::cerr << "wtc-sim: " << e.what() << '\n';
     return 2;
@@ -133,30 +133,8 @@ int main(int argc, char** argv) {
     };
     request.warn = [](const std::string& warning) { std::cerr << "wtc-sim: warning: " << warning << '\n'; };
     const wtc::apps::RunOutcome outcome = wtc::apps::runWithOutputs(scene, *engine_ptr, request, options);
-    const wtc::sim::RunSummary& summary = outcome.summary;
-    const fs::path& dir = outcome.dir;
-    const std::string& replay_said = outcome.replay_said;
-    const std::string& figures = outcome.figures;
-    if (!quiet) {
-      char headline[64] = "success";
-      if (summary.interrupted) {
-        std::snprintf(headline, sizeof headline, "INTERRUPTED at t = %.3f s", summary.sim_time);
-      } else if (!summary.success) {
-        std::snprintf(headline, sizeof headline, "FAILED");
-      }
-      std::printf("%s in %s (%s mode, dt %g s): %s\n", summary.scene.c_str(), summary.engine.c_str(),
-                  summary.mode.c_str(), summary.dt, headline);
-      for (const wtc::sim::FailedCriterion& f : summary.failed_criteria) {
-        std::printf("  failed: %s\n", wtc::sim::describe(f).c_str());
-      }
-      std::printf("  %.3f s simulated in %.3f s wall: %.1fx real time, %llu steps, %.1f %% of the wall time in WTC\n",
-                  summary.sim_time, summary.wall_time, summary.real_time_factor,
-                  static_cast<unsigned long long>(summary.steps), 100.0 * summary.wtcShare());
-      for (const auto& [key, value] : summary.fields) std::printf("  %s: %.4g\n", key.c_str(), value);
-      std::printf("  outputs: %s (series, summary.json, %s; figures %s)\n", dir.c_str(), replay_said.c_str(),
-                  figures.c_str());
-    }
-    return summary.success ? 0 : 1;
+    if (!quiet) std::fputs(wtc::apps::runReport(outcome).c_str(), stdout);
+    return outcome.summary.success ? 0 : 1;
   } catch (const std::exception& e) {
     std::cerr << "wtc-sim: " << e.what() << '\n';
     return 2;

@@ -139,7 +139,7 @@ def main():
     scene = wtc.load_scene(root / "scenes/towed_path.yaml", duration=duration)
     summary = wtc.run(scene, out=args.out, controller=PathController(**S_CURVE), progress=not args.quick,
                       plots=not args.quick, replay=not args.quick)
-    fields = summary["fields"]
+    fields = summary  # summary.json's keys: the controller's figures among them
     print(f"towed_path with a Python path controller: {'success' if summary['success'] else 'FAILED'} "
           f"after {summary['sim_time']:.3f} s; tracking error max {fields['max_tracking_error_m'] * 1e3:.1f} mm, "
           f"rms {fields['rms_tracking_error_m'] * 1e3:.1f} mm; outputs in {summary['out']}")

@@ -1,5 +1,7 @@
 #include "python_controller.hpp"
 
+#include <cmath>
+
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
@@ -68,12 +70,42 @@ class PythonController final : public vehicle::Controller {
     if (!result.is_none()) apply(result, commands);
   }
 
+  // summary() -> {name: number} or None. What it returns is checked whole
+  // before any field is taken: a refusal (InvalidInputError, which runScene
+  // turns into a warning) names every value that is not a finite number, and
+  // the run's own figures and outputs are kept.
   void summarize(std::map<std::string, double>& fields) const override {
     py::gil_scoped_acquire gil;
     if (!py::hasattr(*object_, "summary")) return;
-    const py::object s = object_->attr("summary")();
+    py::object s;
+    try {
+      s = object_->attr("summary")();
+    } catch (py::error_already_set& e) {
+      throw InvalidInputError("Python controller: summary() raised " + std::string(e.what()));
+    }
     if (s.is_none()) return;
-    for (const auto& [k, v] : s.cast<py::dict>()) fields[py::str(k)] = v.cast<double>();
+    if (!py::isinstance<py::dict>(s)) {
+      throw InvalidInputError("Python controller: summary() returned " + py::repr(s).cast<std::string>() +
+                              " (expected a dict {name: number} or None)");
+    }
+    std::map<std::string, double> taken;
+    std::string refused;
+    for (const auto& [k, v] : s.cast<py::dict>()) {
+      const std::string key = py::str(k);
+      // PyNumber_Check: int, float, bool, NumPy scalars; not a str that reads as one.
+      const bool number = PyNumber_Check(v.ptr()) == 1 && !py::isinstance<py::str>(v);
+      const double x = number ? v.cast<double>() : 0.0;
+      if (number && std::isfinite(x)) {
+        taken[key] = x;
+      } else {
+        refused += std::string(refused.empty() ? "" : ", ") + "'" + key + "': " + py::repr(v).cast<std::string>();
+      }
+    }
+    if (!refused.empty()) {
+      throw InvalidInputError("Python controller: summary() gave values that are not finite numbers (" + refused +
+                              "); its summary is left out");
+    }
+    fields.insert(taken.begin(), taken.end());
   }
 
   bool failed() const override { return !failure().empty(); }
@@ -126,6 +158,11 @@ class PythonController final : public vehicle::Controller {
     }
     for (const auto& [key, value] : result.cast<py::dict>()) {
       const int b = bodyIndex(key);
+      // A body without a drive takes no command: said, not dropped (issue 57 row 10).
+      if (!vehicle_.bodies[static_cast<std::size_t>(b)].joint.actuator) {
+        throw InvalidInputError("Python controller: command for '" + vehicle_.bodies[static_cast<std::size_t>(b)].name +
+                                "', which has no drive (the driven bodies: Scene.drives)");
+      }
       commands[static_cast<std::size_t>(b)] = command(value, commands[static_cast<std::size_t>(b)]);
     }
   }

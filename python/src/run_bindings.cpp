@@ -14,6 +14,7 @@
 #include "signal_watch.hpp"
 #include "wtc/base/error.hpp"
 #include "wtc/sim/engine_table.hpp"
+#include "wtc/sim/run_summary_file.hpp"
 
 namespace wtc::python {
 namespace {
@@ -38,44 +39,9 @@ std::string moduleIdentity() {
 }  // namespace
 
 py::dict summaryDict(const sim::RunSummary& s) {
-  py::dict d;
-  d["scene"] = s.scene;
-  d["engine"] = s.engine;
-  d["mode"] = s.mode;
-  d["dt"] = s.dt;
-  d["success"] = s.success;
-  d["interrupted"] = s.interrupted;
-  d["nan"] = s.nan;
-  d["diverged"] = s.diverged;
-  d["steps"] = s.steps;
-  d["sim_time"] = s.sim_time;
-  d["wall_time"] = s.wall_time;
-  d["wtc_time"] = s.wtc_time;
-  d["real_time_factor"] = s.real_time_factor;
-  d["max_penetration"] = s.max_penetration;
-  d["max_joint_gap"] = s.max_joint_gap;
-  d["max_joint_angle"] = s.max_joint_angle;
-  d["saturation_steps"] = s.saturation_steps;
-  d["fields"] = s.fields;
-  d["parameters"] = s.parameters;
-  d["wheel_peak_slip"] = s.wheel_peak_slip;
-  d["warnings"] = s.warnings;
-  py::list failed;
-  for (const sim::FailedCriterion& f : s.failed_criteria) failed.append(sim::describe(f));
-  d["failed"] = failed;
-  py::list drives;
-  for (const auto& dr : s.drives) {
-    py::dict one;
-    one["name"] = dr.name;
-    one["steps"] = dr.steps;
-    one["saturated_steps"] = dr.saturated_steps;
-    one["peak_effort"] = dr.peak_effort;
-    one["mean_effort"] = dr.mean_effort;
-    drives.append(one);
-  }
-  d["drives"] = drives;
-  d["program"] = s.program;
-  return d;
+  // summary.json's own text (sim::runSummaryText), read by Python's json:
+  // one writer for the file and the dict.
+  return py::module_::import("json").attr("loads")(sim::runSummaryText(s));
 }
 
 namespace {
@@ -130,6 +96,7 @@ py::dict run(const LoadedScene& loaded, const std::optional<fs::path>& out, cons
   d["out"] = outcome.dir;
   d["replay"] = outcome.replay_said;
   d["figures"] = outcome.figures;
+  d["report"] = apps::runReport(outcome);
   return d;
 }
 

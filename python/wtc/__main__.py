@@ -40,11 +40,7 @@ def main(argv=None):
         print(f"python3 -m wtc: {e}", file=sys.stderr)
         return 2
     if not args.quiet:
-        state = "success" if summary["success"] else ("INTERRUPTED" if summary["interrupted"] else "FAILED")
-        print(f"{summary['scene']} in {summary['engine']} ({summary['mode']} mode, dt {summary['dt']:g} s): {state}")
-        for f in summary["failed"]:
-            print(f"  failed: {f}")
-        print(f"  outputs: {summary['out']}")
+        print(summary["report"], end="")  # wtc-sim's own lines (apps/runner/run_outputs.hpp, runReport)
     return 0 if summary["success"] else 1
 
 

@@ -79,7 +79,7 @@ std::vector<sim::FailedCriterion> readFailed(const nlohmann::json& list) {
 
 }  // namespace
 
-void writeRunSummary(const std::filesystem::path& file, const sim::RunSummary& s) {
+std::string runSummaryText(const sim::RunSummary& s) {
   nlohmann::json j = {{"scene", s.scene},
                       {"program", s.program},
                       {"status", s.interrupted ? "interrupted" : "completed"},
@@ -111,7 +111,11 @@ void writeRunSummary(const std::filesystem::path& file, const sim::RunSummary& s
                            {"mean_effort", d.mean_effort}};
   }
   for (const auto& [name, slip] : s.wheel_peak_slip) j["wheels"][name]["peak_slip"] = slip;
-  writeJson(file, j);
+  return j.dump(2) + '\n';
+}
+
+void writeRunSummary(const std::filesystem::path& file, const sim::RunSummary& s) {
+  io::writeFileAtomically(file, runSummaryText(s));
 }
 
 void writeRunStarted(const std::filesystem::path& file, const sim::Scene& scene) {
@@ -132,22 +136,38 @@ void writeRunStarted(const std::filesystem::path& file, const sim::Scene& scene)
                    {"note", "written when the run started; a run that ends replaces it"}});
 }
 
-void writeRunCrashed(const std::filesystem::path& file, const std::string& reason) {
+namespace {
+
+// Over the summary a run left (its start's, or none): the run ended without
+// a summary of its own, with `status`, `criterion` and `reason`.
+void writeRunEndedWithout(const std::filesystem::path& file, const char* status, const char* criterion,
+                          const std::string& reason, const char* note) {
   nlohmann::json j;
   if (std::ifstream in(file); in) j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
   if (!j.is_object()) j = nlohmann::json::object();
-  j["status"] = "crashed";
+  j["status"] = status;
   j["success"] = false;
   j["interrupted"] = false;
   j["warnings"] = std::vector<std::string>{reason};
   j["failed_criteria"] = failedJson(
-      {{.criterion = "crashed", .limit = std::nullopt, .measured = std::nullopt, .unit = "", .detail = reason}});
-  j["note"] = "the run's process died; written by the study's runner";
+      {{.criterion = criterion, .limit = std::nullopt, .measured = std::nullopt, .unit = "", .detail = reason}});
+  j["note"] = note;
   for (const char* key : {"scene", "engine", "mode"}) {
     if (!j.contains(key)) j[key] = "?";
   }
   if (!j.contains("dt")) j["dt"] = 0.0;
   writeJson(file, j);
+}
+
+}  // namespace
+
+void writeRunCrashed(const std::filesystem::path& file, const std::string& reason) {
+  writeRunEndedWithout(file, "crashed", "crashed", reason, "the run's process died; written by the study's runner");
+}
+
+void writeRunFailed(const std::filesystem::path& file, const std::string& reason) {
+  writeRunEndedWithout(file, "failed", "error", reason,
+                       "the run ended early by an error (its message is the warning); no figures were measured");
 }
 
 sim::RunSummary readRunSummary(const std::filesystem::path& file) {
@@ -165,8 +185,9 @@ sim::RunSummary readRunSummary(const std::filesystem::path& file) {
     s.success = j.at("success").get<bool>();
     const std::string status = j.at("status").get<std::string>();
     s.crashed = status == "crashed";
-    s.interrupted = status != "completed" && !s.crashed;
-    if (s.crashed) s.warnings = j.at("warnings").get<std::vector<std::string>>();
+    const bool failed = status == "failed";  // ended by an error (writeRunFailed)
+    s.interrupted = status != "completed" && !s.crashed && !failed;
+    if (s.crashed || failed) s.warnings = j.at("warnings").get<std::vector<std::string>>();
     // Absent from summaries written before runs said why they failed.
     if (j.contains("failed_criteria")) s.failed_criteria = readFailed(j.at("failed_criteria"));
     if (status != "completed") return s;

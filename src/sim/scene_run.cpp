@@ -357,7 +357,15 @@ RunSummary SceneRun::summary() const {
     summary.fields["hitch_force_mean_x_N"] = x.hitch_sum_x / static_cast<double>(run.steps());
   }
   const bool controller_failed = controller && controller->failed();
-  if (controller) controller->summarize(summary.fields);
+  if (controller) {
+    // A controller written by the user (Python) may give a summary that is
+    // not numbers: said as a warning, the run's figures kept.
+    try {
+      controller->summarize(summary.fields);
+    } catch (const InvalidInputError& e) {
+      summary.warnings.push_back(std::string("controller: ") + e.what());
+    }
+  }
   if (controller_failed) summary.warnings.push_back("controller: " + controller->failure());
   const SuccessCriteria& c = scene.success;
   double lowest_wheel = std::numeric_limits<double>::infinity();

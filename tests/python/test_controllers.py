@@ -1,5 +1,6 @@
 """Controllers written in Python: the shipped path controller rewritten in Python (examples/python/my_controller.py)
 drives the towed run the C++ one drives, to 1e-9; a scene may name a Python controller; its errors are said."""
+import json
 import subprocess
 import sys
 
@@ -45,7 +46,7 @@ def test_a_python_controller_reports_its_figures_in_the_summary(source_dir, my_c
     python = wtc.run(scene, out=tmp_path / "py", progress=False, plots=False, replay=False,
                      controller=my_controller.PathController(**my_controller.S_CURVE))
     for key in ["max_tracking_error_m", "rms_tracking_error_m", "final_tracking_error_m", "distance_m"]:
-        assert python["fields"][key] == pytest.approx(cpp["fields"][key], abs=TOLERANCE), key
+        assert python[key] == pytest.approx(cpp[key], abs=TOLERANCE), key
 
 
 def scene_naming(source_dir, tmp_path, controller):
@@ -110,14 +111,58 @@ class BadCommand:
         return {"no_such_wheel": 1.0}
 
 
+class CommandsTheTowedBody:
+    def update(self, t, sensors):
+        return {"towed": 1.0}
+
+
 def test_a_python_controllers_errors_reach_the_caller(source_dir):
     scene = wtc.load_scene(source_dir / "scenes/towed_path.yaml", duration=0.1)
     with pytest.raises(ZeroDivisionError, match="my controller's own error"):
         wtc.Simulation(scene, controller=Raising()).step(100)
     with pytest.raises(wtc.InvalidInputError, match="'no_such_wheel', which is no body of the vehicle"):
         wtc.Simulation(scene, controller=BadCommand()).step(1)
+    # Issue 57 row 10: a command to a body without a drive was dropped without a word.
+    with pytest.raises(wtc.InvalidInputError, match="command for 'towed', which has no drive"):
+        wtc.Simulation(scene, controller=CommandsTheTowedBody()).step(1)
     with pytest.raises(wtc.InvalidInputError, match="has no update"):
         wtc.Simulation(scene, controller=object())
+
+
+def test_a_run_whose_python_controller_raises_ends_failed_not_running(source_dir, tmp_path):
+    # Issue 52 row 2: summary.json kept "running" after the exception reached the caller.
+    scene = wtc.load_scene(source_dir / "scenes/towed_path.yaml", duration=0.1)
+    with pytest.raises(ZeroDivisionError, match="my controller's own error"):
+        wtc.run(scene, out=tmp_path / "run", progress=False, plots=False, replay=False, controller=Raising())
+    summary = json.loads((tmp_path / "run/summary.json").read_text())
+    assert summary["status"] == "failed"
+    assert summary["success"] is False
+    assert [f["criterion"] for f in summary["failed_criteria"]] == ["error"]
+    assert "my controller's own error" in summary["failed_criteria"][0]["detail"]
+    assert "my controller's own error" in summary["warnings"][0]
+
+
+class NotNumbersInSummary:
+    def update(self, t, sensors):
+        return None
+
+    def summary(self):
+        return {"laps": 3, "verdict": "good", "ratio": float("nan")}
+
+
+def test_a_python_summary_that_is_not_numbers_is_a_warning_and_the_run_is_kept(source_dir, tmp_path):
+    # Issue 57 row 5: pybind11's "Unable to cast Python instance to C++ type" after the whole run, which was lost.
+    scene = wtc.load_scene(source_dir / "scenes/towed_path.yaml", duration=0.1)
+    result = wtc.run(scene, out=tmp_path / "run", progress=False, plots=False, replay=False,
+                     controller=NotNumbersInSummary())
+    warning = next(w for w in result["warnings"] if w.startswith("controller: "))
+    assert "summary() gave values that are not finite numbers" in warning
+    assert "'verdict': 'good'" in warning and "'ratio': nan" in warning and "laps" not in warning
+    assert "laps" not in result
+    summary = json.loads((tmp_path / "run/summary.json").read_text())
+    assert summary["status"] == "completed"
+    assert summary["warnings"] == result["warnings"]
+    assert (tmp_path / "run/bodies.csv").exists()
 
 
 class Recording:

@@ -51,6 +51,9 @@ class Controller {
   virtual void update(const VehicleState& state, std::span<DriveCommand> commands) = 0;
   /// The controller's own figures for the run's summary (a tracking error,
   /// a phase reached), added to `fields` by name with units in the name.
+  /// May throw InvalidInputError for figures it cannot give (a Python
+  /// controller's summary() that is not numbers): the run keeps its own
+  /// figures and reports the message as a warning.
   virtual void summarize(std::map<std::string, double>& fields) const { (void)fields; }
   /// True once the controller could not do its task (a path it could not
   /// hold): the run then fails, and says why (failure()).
