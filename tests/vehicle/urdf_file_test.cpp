@@ -201,6 +201,13 @@ TEST(UrdfFileTest, RefusesMassesAndInertiasThatAreNotPositive) {
   expectRefused("inertia_triangle_inequality.urdf", {"link 'body'", "triangle inequality"});
 }
 
+TEST(UrdfFileTest, RefusesACollisionMeshThatEnclosesNoVolume) {
+  // Issue 57 row 2: a zero-thickness mesh was accepted, and Bullet threw the robot from it.
+  expectRefused("mesh_zero_thickness.urdf",
+                {"link 'body'", "lie in one plane: a collision mesh must enclose a volume"},
+                {.package_path = {kUrdf / "packages"}});
+}
+
 TEST(UrdfFileTest, RefusesAMimicOfAMissingJoint) {
   expectRefused("mimic_missing_joint.urdf",
                 {"joint 'rocker_joint' mimics 'differential_joint', which is not a joint of"});

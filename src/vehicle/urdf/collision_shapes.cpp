@@ -26,6 +26,13 @@ Shape meshHull(const urdf::Mesh& mesh, const std::string& link, const CollisionC
         points.push_back(p.cwiseProduct(Eigen::Vector3d(mesh.scale.x, mesh.scale.y, mesh.scale.z)));
     }
     const ConvexPolyhedron hull = ConvexPolyhedron::fromPoints(points);
+    // A mesh in one plane bounds no volume: ODE ignored it, Bullet threw the
+    // robot from it in one step (issue 57 row 2).
+    if (hull.isFlat()) {
+      throw InvalidInputError("its " + std::to_string(hull.vertexCount()) +
+                              " hull vertices lie in one plane: a collision mesh must enclose a volume (a plate "
+                              "needs a thickness; a <box> is the exact shape for one)");
+    }
     Shape s;
     s.kind = Shape::Kind::kHull;
     for (int i = 0; i < hull.vertexCount(); ++i) s.hull_vertices.push_back(hull.vertex(i));
