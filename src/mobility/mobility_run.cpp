@@ -12,8 +12,10 @@
 
 #include "io/content_hash.hpp"
 #include "wtc/base/error.hpp"
+#include "wtc/sim/engine_table.hpp"
 #include "wtc/sim/run_summary_file.hpp"
 #include "wtc/study/study_runner.hpp"
+#include "wtc/terrain/terrain_primitives.hpp"
 
 namespace wtc::mobility {
 namespace {
@@ -127,6 +129,24 @@ void setBound(EventResult& r, const Bound& b) {
   r.governs = b.governs;
 }
 
+// Why `engine` refuses to build the vehicle in `mode` ("" if it builds it):
+// the engine's own message (ODE refuses a mimic about parallel axes, Bullet
+// a wheel that is a root), found once, on a bare slab, before any run.
+std::string refusal(const vehicle::VehicleDescription& vehicle, const std::string& engine, const std::string& mode,
+                    double dt) {
+  sim::EngineSettings settings{.engine = engine, .step_seconds = dt};
+  sim::parseMode(mode, settings, "modes");
+  TerrainBuilder builder;
+  addSlab(builder, SlabParams{}, builder.addMaterial(Material{}));
+  const Terrain slab = std::move(builder).build();
+  try {
+    sim::makeEngine(settings, slab, vehicle, Eigen::Isometry3d::Identity());
+  } catch (const InvalidInputError& e) {
+    return e.what();
+  }
+  return {};
+}
+
 }  // namespace
 
 MobilityOutcome runMobility(const EventVehicle& v, const MobilitySettings& s, const MobilityOptions& opt) {
@@ -137,6 +157,12 @@ MobilityOutcome runMobility(const EventVehicle& v, const MobilitySettings& s, co
   fs::create_directories(opt.out / "scenes");
   fs::create_directories(opt.out / "runs");
 
+  // An engine that refuses the vehicle is a row of the report, not the
+  // end of the batch: the other engines' events run (issue 57 row 7).
+  std::map<std::pair<std::string, std::string>, std::string> refused;
+  for (const std::string& engine : s.engines) {
+    for (const std::string& mode : s.modes) refused[{engine, mode}] = refusal(v.description, engine, mode, s.dt_s);
+  }
   std::vector<Unit> units;
   for (const std::string& event : s.events) {
     for (const std::string& engine : s.engines) {
@@ -166,6 +192,10 @@ MobilityOutcome runMobility(const EventVehicle& v, const MobilitySettings& s, co
         if (isSearch(event)) {
           u.lo = rangeOf(event, s).low;
           u.hi = rangeOf(event, s).high;
+        }
+        if (const std::string& why = refused[{engine, mode}]; !why.empty()) {
+          u.result.note = "the engine refuses the vehicle: " + why;
+          u.done = true;
         }
         if (event != "drawbar") {
           units.push_back(u);

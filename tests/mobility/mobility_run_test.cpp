@@ -124,5 +124,34 @@ TEST(MobilityRunTest, AJobListRoundByRoundGivesThePoolsResults) {
   EXPECT_TRUE(find(o, "coast").measured.has_value());
 }
 
+// Issue 57 row 7: one engine refusing the vehicle ended the whole batch (exit 2, no report, the other engine's
+// runs lost). Now its events are rows saying why, and the other engine's are measured.
+TEST(MobilityRunTest, AnEngineThatRefusesTheVehicleIsARowAndTheOthersRun) {
+  EventVehicle v;
+  v.file = fs::path(WTC_SOURCE_DIR) / "tests" / "urdf" / "steered_car_mimic.yaml";
+  v.description = vehicle::loadVehicle(v.file);
+  v.statics = describeStatics(v.description);
+  MobilitySettings s = quick();
+  s.engines = {"bullet", "ode"};
+  s.events = {"coast"};
+  MobilityOptions options{.out = freshDir("wtc_mobility_refused_test"), .wtc_sim = WTC_SIM_EXE, .workers = 2};
+  const MobilityOutcome o = runMobility(v, s, options);
+  ASSERT_EQ(o.results.size(), 2u);
+  EXPECT_EQ(o.runs_made, 1u);
+  const EventResult& bullet = o.results[0];
+  const EventResult& ode = o.results[1];
+  EXPECT_EQ(bullet.engine, "bullet");
+  EXPECT_TRUE(bullet.measured.has_value());
+  EXPECT_EQ(ode.engine, "ode");
+  EXPECT_FALSE(ode.measured.has_value());
+  EXPECT_NE(ode.note.find("the engine refuses the vehicle: wtc::ode sim engine: mimic joint 'fr_knuckle_joint'"),
+            std::string::npos)
+      << ode.note;
+  writeReport(v, s, o, options.out, "test");
+  std::ifstream md(options.out / "report.md");
+  const std::string text((std::istreambuf_iterator<char>(md)), {});
+  EXPECT_NE(text.find("| coast-down deceleration | ode | force | — |"), std::string::npos) << text;
+}
+
 }  // namespace
 }  // namespace wtc::mobility
