@@ -4,6 +4,7 @@
 
 PYBIND11_MODULE(_wtc, m) {
   m.doc() = "WTC's C++ core, bound with pybind11 (import wtc, not wtc._wtc; docs/python.md)";
+  m.attr("__version__") = WTC_VERSION;  // the project's (CMakeLists.txt), as wtc-sim --version says
   wtc::python::bindErrors(m);
   wtc::python::bindScenes(m);
   wtc::python::bindTerrain(m);

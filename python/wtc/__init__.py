@@ -8,16 +8,21 @@
 
 Units are SI throughout (m, s, N, rad); see docs/python.md for each function.
 """
-from ._wtc import (Error, InvalidInputError, Scene, Sensors, Simulation as _Simulation, Terrain, heightfield,
-                   load_terrain)
+import os
+
+from ._wtc import (Error, InvalidInputError, Scene, Sensors, Simulation as _Simulation, Terrain, __version__,
+                   heightfield, load_terrain)
 from . import _wtc
 
-__all__ = ["Error", "InvalidInputError", "Scene", "Sensors", "Simulation", "Terrain", "heightfield", "load_scene",
+__all__ = ["__version__", "Error", "InvalidInputError", "Scene", "Sensors", "Simulation", "Terrain", "heightfield", "load_scene",
            "load_terrain", "run"]
 
 
 def _yaml_text(value):
-    """An override's value as YAML text (what --set takes)."""
+    """An override's value as YAML text (what --set takes): numbers, booleans, strings, lists and tuples of them,
+    NumPy arrays and NumPy numbers (as their Python values)."""
+    if hasattr(value, "tolist") and callable(value.tolist):  # a NumPy array or scalar
+        value = value.tolist()
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, (int, float)):
@@ -52,6 +57,7 @@ def load_scene(path, engine=None, mode=None, dt=None, duration=None, set=None):
 def run(scene, out=None, progress=True, plots=True, replay=True, controller=None):
     """Runs the scene whole and writes what wtc-sim writes, byte for byte the same series.
 
+    scene: a wtc.Scene (wtc.load_scene), or a scene file's path (read as load_scene(path) reads it).
     out: the output directory (new or empty); None: runs/<scene>_<engine>_<mode>[_N] as wtc-sim.
     progress: True for wtc-sim's progress bar on stderr, False for none, or a callable(fraction).
     plots, replay: False skips the figures (--no-plots) or the replay page (--no-replay).
@@ -60,6 +66,13 @@ def run(scene, out=None, progress=True, plots=True, replay=True, controller=None
     GIL. Ctrl-C ends the run as in wtc-sim (outputs written, summary interrupted) and then raises
     KeyboardInterrupt.
     """
+    if isinstance(scene, (str, os.PathLike)):
+        scene = load_scene(scene)
+    if not isinstance(scene, Scene):
+        raise TypeError(f"wtc.run: scene must be a wtc.Scene (wtc.load_scene) or a scene file's path, not "
+                        f"{type(scene).__name__}")
+    if not (isinstance(progress, bool) or progress is None or callable(progress)):
+        raise TypeError(f"wtc.run: progress must be True, False, None or a callable(fraction), not {progress!r}")
     if controller is not None:
         scene = _wtc._with_controller(scene, controller)
     return _wtc._run(scene, None if out is None else str(out), progress, plots, replay)

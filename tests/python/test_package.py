@@ -50,10 +50,12 @@ def test_an_override_error_names_the_override(source_dir):
         wtc.load_scene(source_dir / "scenes/robot_ledge.yaml", dt=-1)
 
 
-def test_an_unknown_engine_is_refused_naming_the_known_ones(source_dir):
-    scene = wtc.load_scene(source_dir / "scenes/robot_straight.yaml", engine="physx")
-    with pytest.raises(wtc.InvalidInputError, match=r"unknown engine 'physx' \(expected bullet, ode"):
-        wtc.Simulation(scene)
+def test_an_unknown_engine_is_refused_as_the_scene_is_loaded_naming_the_known_ones(source_dir):
+    # Refused by load_scene itself (issue 57 row 10: it was accepted, and Simulation failed later), before the
+    # terrain: a terrain that is not there is never reached.
+    with pytest.raises(wtc.InvalidInputError, match=r"--set engine=bulet: engine: unknown engine 'bulet' \(expected "
+                                                    r"bullet, ode"):
+        wtc.load_scene(source_dir / "scenes/robot_straight.yaml", engine="bulet", set={"terrain": "no_such.yaml"})
 
 
 def test_a_missing_file_is_an_invalid_input_error(tmp_path):
@@ -80,3 +82,29 @@ def test_cmake_install_puts_an_importable_package_under_the_prefix(tmp_path, sou
     assert lines[0].startswith(str(site)), lines
     assert lines[1] == "25"
     assert (tmp_path / "run/bodies.csv").exists()
+
+
+def test_the_package_says_its_version():
+    assert wtc.__version__.count(".") == 2 and all(part.isdigit() for part in wtc.__version__.split("."))
+
+
+def test_run_takes_a_scene_files_path_and_refuses_what_is_neither(source_dir, tmp_path):
+    # Issue 57 row 10: wtc.run("scene.yaml") raised a TypeError naming the internal _run; progress="yes" was taken.
+    scene = source_dir / "tests/bad_input/scene.yaml"  # 10 ms of the robot at rest
+    summary = wtc.run(scene, out=tmp_path / "a", progress=False, plots=False, replay=False)
+    assert summary["scene"] == "bad_input" and summary["steps"] == 25
+    with pytest.raises(TypeError, match=r"wtc.run: scene must be a wtc.Scene \(wtc.load_scene\) or a scene file's path, "
+                                        r"not int"):
+        wtc.run(3)
+    with pytest.raises(TypeError, match=r"progress must be True, False, None or a callable\(fraction\), not 'yes'"):
+        wtc.run(str(scene), out=tmp_path / "b", progress="yes")
+    assert not (tmp_path / "b").exists()
+    with pytest.raises(wtc.InvalidInputError, match="nothing.yaml"):
+        wtc.run(tmp_path / "nothing.yaml")
+
+
+def test_a_numpy_value_is_an_override_as_its_python_value(source_dir):
+    np = pytest.importorskip("numpy")
+    scene = wtc.load_scene(source_dir / "scenes/robot_ledge.yaml",
+                           set={"ledge_height": np.float64(0.25), "vehicle.translation": np.array([0.0, 0.0, 0.01])})
+    assert scene.parameters["ledge_height"] == 0.25
