@@ -18,16 +18,49 @@ model per effect set (minimal, each effect alone, full): median ns/step of
 WheelForces (contacts + forces) and WheelForcesOnly (forces alone), each with
 its difference to minimal, then the contact counts and heap allocations.
 Times are medians over repetitions (the `median` aggregate when present,
-otherwise the median of the individual runs). Standard library only.
+otherwise the median of the individual runs). Above the tables, the CPU the
+times were measured on: the one the JSON records (tools/bench_tables.py's
+JSON does), else `--cpu`, else this machine's (`lscpu`'s model name, or
+/proc/cpuinfo's), said on stderr. Absolute times only compare on one CPU.
+Standard library only.
 """
 import argparse
 import json
+import os
+import platform
 import statistics
+import subprocess
 import sys
 from collections import defaultdict
 
 METHODS = ["wtc", "wtc_maxdist", "wtc_gjk", "bullet", "fcl", "brute"]
 SCALE_TO_NS = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}
+
+
+def cpu_model():
+    """This machine's CPU: `lscpu`'s "Model name", else /proc/cpuinfo's "model name"."""
+    try:
+        out = subprocess.run(["lscpu"], capture_output=True, text=True, timeout=30,
+                             env={**os.environ, "LC_ALL": "C"}).stdout
+        for line in out.splitlines():
+            key, _, value = line.partition(":")
+            if key.strip() == "Model name" and value.strip():
+                return value.strip()
+    except (OSError, subprocess.SubprocessError):
+        pass
+    try:
+        with open("/proc/cpuinfo") as f:
+            for line in f:
+                if line.startswith("model name"):
+                    return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return platform.processor() or "unknown CPU"
+
+
+def recorded_cpu(data):
+    """The CPU a benchmark JSON says it ran on (tools/bench_tables.py records it), or None."""
+    return (data.get("wtc") or {}).get("cpu")
 
 
 def load_runs(data, time_key):
@@ -194,9 +227,17 @@ def main():
     parser.add_argument("json", nargs="?", help="benchmark JSON (default: stdin)")
     parser.add_argument("--time", choices=["cpu", "real"], default="cpu",
                         help="time column to report (default: cpu)")
+    parser.add_argument("--cpu", help="the CPU the JSON was measured on, when the JSON does not name it "
+                                      "(default: this machine's, lscpu's model name)")
     args = parser.parse_args()
     with (open(args.json) if args.json else sys.stdin) as f:
         data = json.load(f)
+    cpu = recorded_cpu(data) or args.cpu
+    if not cpu:
+        cpu = cpu_model()
+        print(f"bench_table.py: the JSON names no CPU; printing this machine's ({cpu}): "
+              f"give --cpu if it was measured on another", file=sys.stderr)
+    print(f"*CPU: {cpu}*\n")
     runs = load_runs(data, f"{args.time}_time")
     wheel, forces = wheel_table(runs), forces_table(runs)
     if wheel or forces:

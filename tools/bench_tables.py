@@ -12,9 +12,12 @@ writes each table into docs/performance.md between its markers
     ...
     <!-- /bench:NAME -->
 
-with a line that says the date, the build's commit and the command that
-made it. `--only query,sim` runs some of them; `--from-json` rewrites the
-tables from the JSON already in docs/bench/ without running anything. The
+with a line that says the date, the build's commit, the CPU it ran on
+(`lscpu`'s model name, or /proc/cpuinfo's) and the command that made it:
+absolute times compare only on one CPU (the same build measured about 1.7x
+slower on an AMD EPYC than on an Intel Xeon), ratios within a table do.
+`--only query,sim` runs some of them; `--from-json` rewrites the tables
+from the JSON already in docs/bench/ without running anything. The
 prose around the tables quotes some figures: read it again after a run.
 Standard library only (the table layouts of query, wheel and forces are
 tools/bench_table.py's).
@@ -23,7 +26,6 @@ import argparse
 import datetime
 import json
 import os
-import platform
 import re
 import subprocess
 import sys
@@ -183,17 +185,6 @@ def git(*args):
     return subprocess.run(["git", "-C", ROOT, *args], capture_output=True, text=True).stdout.strip()
 
 
-def cpu_model():
-    try:
-        with open("/proc/cpuinfo") as f:
-            for line in f:
-                if line.startswith("model name"):
-                    return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or "unknown CPU"
-
-
 def run_bench(build, name, programs, json_dir):
     """Runs the programs, merges their benchmarks into one JSON document, keeps it in json_dir."""
     merged = None
@@ -214,7 +205,7 @@ def run_bench(build, name, programs, json_dir):
     # Changes to the docs (this program writes them) do not change the build.
     dirty = bool(git("status", "--porcelain", "--", ".", ":!docs", ":!*.md"))
     merged["wtc"] = {"commit": git("rev-parse", "--short", "HEAD"), "dirty": dirty,
-                     "date": datetime.date.today().isoformat(), "cpu": cpu_model(), "cores": os.cpu_count(),
+                     "date": datetime.date.today().isoformat(), "cpu": bt.cpu_model(), "cores": os.cpu_count(),
                      "commands": [" ".join(["build/bench/" + p[0], *p[1:]]) for p in programs]}
     with open(os.path.join(json_dir, f"{name}.json"), "w") as f:
         json.dump(merged, f, indent=1)
@@ -224,7 +215,10 @@ def run_bench(build, name, programs, json_dir):
 def block(name, bench, data, table):
     meta = data["wtc"]
     commit = meta["commit"] + (" with uncommitted changes" if meta.get("dirty") else "")
-    stamp = (f"*{meta['date']}, build `{commit}`, {meta['cores']} cores ({meta['cpu']}); "
+    cpu = bt.recorded_cpu(data)
+    cpu = f"CPU: {cpu}" if cpu else "CPU not recorded"
+    cores = f", {meta['cores']} cores" if meta.get("cores") else ""
+    stamp = (f"*{meta['date']}, build `{commit}`, {cpu}{cores}; "
              f"`python3 tools/bench_tables.py --only {bench}` ran "
              + "; ".join(f"`{c}`" for c in meta["commands"]) + f"; JSON in `docs/bench/{bench}.json`.*")
     body = "\n".join(table)
