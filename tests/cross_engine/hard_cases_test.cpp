@@ -531,31 +531,58 @@ TEST(HardCasesTest, ForceAndConstraintModeClimbASmallStepInAboutTheSameTime) {
 // The tread state now relaxes only as the ground moves under it (rate
 // V_t / sigma): at rest it is a spring that holds while the load is below
 // the peak of mu(s) R_z (a sticking state). A locked 21 kg wheel on 15 and
-// 30 deg, both engines and modes, at 0.4 and 2 ms: after settling for 1 s,
-// an hour of parking moves it less than 1 mm.
+// 30 deg, both engines and modes, at 0.4 and 2 ms, after settling for 1 s:
+// - held for kHoldS, its creep is below the hour's 1 mm prorated
+//   (1 mm x kHoldS / 1 h = 33 um): a creep at a rate, as the old defect's,
+//   is a rate from the first minutes on (the old law moved 0.41 mm in 10 s,
+//   twelve times this bound), and a creep that slows (a settling's tail)
+//   moves less in the hour than the prorated bound assumes;
+// - one case, the one that creeps most in kHoldS, is held the whole hour
+//   (kHourCase): the hour's 1 mm itself, measured.
+// The whole hour in every case (24 of them, 9e6 steps each at 0.4 ms) took
+// 7.8 min of the suite and was its longest test by ten times, for no defect
+// the prorated bound would miss.
 TEST(HardCasesTest, AParkedWheelHoldsForAnHourOn15And30Degrees) {
-  constexpr double kMass = 21.0, kHourS = 3600.0;
-  for (const double degrees : {15.0, 30.0}) {
-    const double slope = degrees * std::numbers::pi / 180.0;
+  constexpr double kMass = 21.0, kHourS = 3600.0, kHoldS = 120.0, kHourCreepM = 1e-3;
+  struct Case {
+    double degrees;
+    Engine engine;
+    ContactMode mode;
+    double h;
+  };
+  // The largest creep of the 24 in kHoldS (1.3 um on 30 deg, the same at
+  // both steps; Bullet's are 0, ODE's force and implicit modes' 0.05 um: the
+  // test prints them), at the larger step (a fifth of the steps). Its hour
+  // measured 38.4 um: the 120 s creep times 30, a rate, as the bound assumes.
+  const Case kHourCase{30.0, Engine::kOde, ContactMode::kConstraint, 2e-3};
+  const auto creepOf = [&](const Case& c, double hold_s) {
+    const double slope = c.degrees * std::numbers::pi / 180.0;
     const Terrain incline = tiltedSlab(slope);
     const double deflection = kMass * kGravityMps2 * std::cos(slope) / 1e5;
+    auto sim = makeEngineSim(c.engine, c.mode, incline, kMass, (kRadius - deflection) * slabNormal(slope), Hold::kLocked);
+    for (long k = 0; k < std::lround(1.0 / c.h); ++k) sim->step(c.h);
+    const Eigen::Vector3d start = sim->position();
+    for (long k = 0; k < std::lround(hold_s / c.h); ++k) sim->step(c.h);
+    return std::abs((sim->position() - start).dot(downhill(slope)));
+  };
+  for (const double degrees : {15.0, 30.0}) {
     for (const Engine engine : {Engine::kBullet, Engine::kOde}) {
       for (const ContactMode mode : kEveryMode) {
         for (const double h : {4e-4, 2e-3}) {
-          auto sim =
-              makeEngineSim(engine, mode, incline, kMass, (kRadius - deflection) * slabNormal(slope), Hold::kLocked);
-          for (long k = 0; k < std::lround(1.0 / h); ++k) sim->step(h);
-          const Eigen::Vector3d start = sim->position();
-          for (long k = 0; k < std::lround(kHourS / h); ++k) sim->step(h);
-          const double creep = std::abs((sim->position() - start).dot(downhill(slope)));
+          const double creep = creepOf({degrees, engine, mode, h}, kHoldS);
           const std::string label = std::to_string(degrees) + " deg, " + engineName(engine) + ", " +
                                     std::string(contactModeName(mode)) + ", h = " + std::to_string(h);
           RecordProperty(label, std::to_string(creep * 1e3) + " mm");
-          EXPECT_LT(creep, 1e-3) << label << ": " << creep * 1e3 << " mm in an hour";
+          std::printf("%s: %.3g um in %g s\n", label.c_str(), creep * 1e6, kHoldS);
+          EXPECT_LT(creep, kHourCreepM * kHoldS / kHourS) << label << ": " << creep * 1e3 << " mm in " << kHoldS << " s";
         }
       }
     }
   }
+  const double hour = creepOf(kHourCase, kHourS);
+  RecordProperty("the hour's case", std::to_string(hour * 1e3) + " mm");
+  std::printf("30 deg, ODE dWorldStep, constraint, h = 0.002: %.3g um in an hour\n", hour * 1e6);
+  EXPECT_LT(hour, kHourCreepM) << hour * 1e3 << " mm in an hour";
 }
 
 // Issue 11, defect 9: the modes on a driven scene. wtc_bench_bullet and
