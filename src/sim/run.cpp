@@ -39,6 +39,7 @@ Run::Run(Engine& engine, vehicle::Controller* controller, const vehicle::Vehicle
   targets_.resize(n);
   drives_.resize(n);
   sense();
+  energy_.start(state_);  // the balance counts the first step (a kick in it)
   if (drawbar) {
     drawbar_.emplace(*drawbar, engine.vehicle(), state_.bodies.at(drawbar->body), "drawbar");
     drawbar_force_ = drawbar_->force(state_.bodies[drawbar->body], state_.time);
@@ -79,6 +80,11 @@ void Run::step() {
     rig_work = drawbar_force_->force_W.dot(v_P) * engine_.settings().step_seconds;
   }
   energy_.step(state_, wheel_forces_, drives_, rig_work);
+}
+
+void Run::setGravity(const Eigen::Vector3d& g_W) {
+  engine_.setGravity(g_W);
+  energy_.setGravity(g_W, state_);
 }
 
 void Run::sense() {
