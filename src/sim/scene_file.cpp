@@ -89,9 +89,15 @@ YAML::Node applyOverride(YAML::Node& root, const Override& o, const std::string&
     parts.insert(parts.begin(), "parameters");
   }
   // yaml-cpp's Node is a handle: walk with copies, assign through the last.
+  // `created`: the first part the document did not have (the override makes
+  // it and all below it, so an error at any of them names the override:
+  // --set vehicle.rotation.degrees=90 on a vehicle without a rotation makes
+  // rotation {degrees: 90}, whose missing axis is the override's fault).
+  std::size_t created = parts.size() - 1;
   YAML::Node node = root;
   for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
     const std::string& part = parts[i];
+    if (created == parts.size() - 1 && (node.IsNull() || (node.IsMap() && !node[part]))) created = i;
     if (node.IsSequence()) {
       const bool digits = std::all_of(part.begin(), part.end(), [](char c) { return c >= '0' && c <= '9'; });
       if (!digits || std::stoul(part) >= node.size()) {
@@ -120,7 +126,10 @@ YAML::Node applyOverride(YAML::Node& root, const Override& o, const std::string&
   } else {
     node[last] = value;
   }
-  return value;
+  if (created == parts.size() - 1) return value;
+  YAML::Node made = root;
+  for (std::size_t i = 0; i <= created; ++i) made.reset(made[parts[i]]);
+  return made;
 }
 
 // Replaces every scalar "$name" ("-$name") outside `parameters` by the parameter's value.
@@ -277,6 +286,28 @@ Override parseOverride(const std::string& text) {
 
 namespace {
 
+// `tilt_table: {axis: x | y, rate_deg_s, start_s, slide_m}` (tilt_table.hpp).
+TiltTable readTiltTable(const YamlReader& in, const YAML::Node& node, double duration_s) {
+  in.requireMap(node, "tilt_table");
+  in.checkKeys(node, {"axis", "rate_deg_s", "start_s", "slide_m"});
+  TiltTable t;
+  if (const auto a = YamlReader::get(node, "axis")) {
+    const std::string axis = in.string(*a, "tilt_table.axis");
+    if (axis != "x" && axis != "y") in.fail(*a, "tilt_table.axis: '" + axis + "' (expected x or y)");
+    t.axis = axis == "x" ? 0 : 1;
+  }
+  t.rate_deg_s = in.number(node, "rate_deg_s", t.rate_deg_s);
+  if (!(t.rate_deg_s > 0.0)) in.fail(node["rate_deg_s"], "tilt_table.rate_deg_s: must be > 0 deg/s");
+  t.start_s = in.number(node, "start_s", t.start_s);
+  if (!(t.start_s >= 0.0 && t.start_s < duration_s)) {
+    in.fail(node["start_s"], "tilt_table.start_s: must be >= 0 s and before the run's end (" +
+                                 formatNumber(duration_s) + " s)");
+  }
+  t.slide_m = in.number(node, "slide_m", t.slide_m);
+  if (!(t.slide_m > 0.0)) in.fail(node["slide_m"], "tilt_table.slide_m: must be > 0 m");
+  return t;
+}
+
 sim::Scene readSceneFile(const std::filesystem::path& path, std::span<const Override> overrides,
                          const EngineCheck& check_engine) {
   YAML::Node root = io::detail::loadYamlFile(path);
@@ -289,7 +320,7 @@ sim::Scene readSceneFile(const std::filesystem::path& path, std::span<const Over
   }
   in.checkKeys(root, {"name", "description", "parameters", "engine", "mode", "dt", "duration", "solver_iterations",
                       "solver_residual", "terrain", "vehicle", "effects", "controller", "output", "success", "cases",
-                      "drawbar"});
+                      "drawbar", "tilt_table"});
 
   sim::Scene scene;
   scene.source = path.string();
@@ -370,6 +401,7 @@ sim::Scene readSceneFile(const std::filesystem::path& path, std::span<const Over
     }
   }
   if (const auto d = YamlReader::get(root, "drawbar")) scene.drawbar = readDrawbar(in, *d, scene.vehicle);
+  if (const auto t = YamlReader::get(root, "tilt_table")) scene.tilt_table = readTiltTable(in, *t, scene.duration_seconds);
 
   readEffects(in, YamlReader::get(root, "effects").value_or(YAML::Load("[full]")), scene);
   readController(in, in.require(root, "controller"), scene);

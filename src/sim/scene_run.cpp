@@ -8,6 +8,8 @@
 #include <numbers>
 
 #include "recorder.hpp"
+#include "start_overlap.hpp"
+#include "tilt_watch.hpp"
 #include "wtc/base/constants.hpp"
 #include "wtc/base/error.hpp"
 #include "wtc/base/tolerances.hpp"
@@ -175,6 +177,8 @@ struct SceneRun::State {
   std::uint64_t contact_breaks = 0;
   double hitch_peak = 0.0, hitch_sum_x = 0.0;
   double wall_seconds = 0.0, wtc0 = 0.0;
+  std::vector<std::string> start_warnings;  // bodies that start inside the ground (start_overlap.hpp)
+  std::optional<detail::TiltWatch> tilt;    // the scene's tilt table
 };
 
 SceneRun::SceneRun(const Scene& scene, Engine& engine, const RunOptions& options)
@@ -188,6 +192,11 @@ SceneRun::SceneRun(const Scene& scene, Engine& engine, const RunOptions& options
   x.every = std::max<std::uint64_t>(1, std::llround(1.0 / (scene.output.rate_hz * dt)));
   x.progress_every = std::max<std::uint64_t>(1, x.steps / 100);
   x.start = run.state().bodies.front().pose;
+  x.start_warnings = detail::startOverlaps(*scene.terrain, v, run.state().bodies);
+  if (scene.tilt_table) x.tilt.emplace(*scene.tilt_table, v);
+  if (options.warn) {
+    for (const std::string& w : x.start_warnings) options.warn(w);
+  }
   x.bounds.observe(run.state());
   x.last_yaw = yawRad(vehicleAxes(x.start, v.bodies.front()));
   x.effort_sum.assign(v.bodies.size(), 0.0);
@@ -208,7 +217,10 @@ SceneRun::~SceneRun() = default;
 
 const Run& SceneRun::run() const { return s_->run; }
 
-bool SceneRun::ended() const { return s_->run.steps() >= s_->steps || s_->run.nonFinite() || s_->run.diverged(); }
+bool SceneRun::ended() const {
+  const State& x = *s_;
+  return x.run.steps() >= x.steps || x.run.nonFinite() || x.run.diverged() || (x.tilt && x.tilt->done(x.run.time()));
+}
 
 std::uint64_t SceneRun::advance(std::uint64_t n) {
   State& x = *s_;
@@ -219,7 +231,10 @@ std::uint64_t SceneRun::advance(std::uint64_t n) {
   const auto t0 = std::chrono::steady_clock::now();
   while (run.steps() < steps && run.steps() - first < n) {
     if (options.stop != nullptr && options.stop->load()) break;
+    if (x.tilt && x.tilt->done(run.time())) break;  // the table's answer is in
+    if (x.tilt) x.tilt->before(run);
     run.step();
+    if (x.tilt) x.tilt->after(run);
     x.spring_watch.look(x.engine, run);
     if (run.nonFinite() || run.diverged()) break;
     x.bounds.observe(run.state());
@@ -277,6 +292,7 @@ RunSummary SceneRun::summary() const {
   summary.dt = scene.engine.step_seconds;
   summary.parameters = scene.parameters;
   summary.warnings = scene.warnings;  // reading the scene's (a mesh's skipped triangles) first
+  summary.warnings.insert(summary.warnings.end(), x.start_warnings.begin(), x.start_warnings.end());
   summary.wall_time = x.wall_seconds;
   summary.wtc_time = engine.contactSeconds() - x.wtc0;
 
@@ -285,13 +301,16 @@ RunSummary SceneRun::summary() const {
   summary.real_time_factor = summary.wall_time > 0.0 ? summary.sim_time / summary.wall_time : 0.0;
   summary.nan = run.nonFinite();
   summary.diverged = run.diverged() && !run.nonFinite();
-  summary.interrupted = run.steps() < steps && !summary.nan && !summary.diverged;
+  const bool tilt_done = x.tilt && x.tilt->done(run.time());
+  summary.interrupted = run.steps() < steps && !summary.nan && !summary.diverged && !tilt_done;
   summary.max_penetration = run.maxDeflection();
   summary.max_joint_gap = run.maxJointError().distance;
   summary.max_joint_angle = run.maxJointError().angle;
   for (const int b : v.actuated()) {
     const vehicle::DriveReport& d = run.drives()[b];
     summary.drives.push_back({.name = v.bodies[b].name,
+                              .joint = v.bodies[b].joint.type == vehicle::JointType::kPrismatic ? "prismatic"
+                                                                                                 : "revolute",
                               .steps = d.steps,
                               .saturated_steps = d.saturated_steps,
                               .peak_effort = d.peak_effort,
@@ -349,6 +368,7 @@ RunSummary SceneRun::summary() const {
   summary.fields["final_speed_mps"] = end.linear_velocity.head<2>().norm();
   summary.fields["yaw_change_deg"] = yaw_change * kDegPerRad;
   summary.fields["max_tilt_deg"] = max_tilt * kDegPerRad;
+  if (x.tilt) x.tilt->summarize(run.time(), summary.fields);
   summary.fields["contact_breaks_per_s"] =
       summary.sim_time > 0.0 ? static_cast<double>(x.contact_breaks) / summary.sim_time : 0.0;
   for (const int w : wheels) summary.wheel_peak_slip[v.bodies[w].name] = x.peak_slip[w];

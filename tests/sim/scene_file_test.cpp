@@ -187,6 +187,12 @@ TEST(SceneFileTest, ErrorsInAnOverridesValueNameTheOverride) {
       errorOf(kMinimal, {parseOverride("vehicle={file: ../vehicles/six_wheel_robot.yaml, translation: [0, x, 0]}")}),
       HasSubstr(": --set vehicle={file: ../vehicles/six_wheel_robot.yaml, translation: [0, x, 0]}: vehicle: "
                 "translation[1]: 'x' is not a number"));
+  // A path the document did not have: the override made every part of it, and an error there is the
+  // override's (issue 57 row 11: "vehicle: missing key 'axis'" named no --set).
+  EXPECT_THAT(errorOf("name: t\nduration: 1\nterrain: ../terrains/flat.yaml\n"
+                      "vehicle: {file: ../vehicles/six_wheel_robot.yaml}\ncontroller: {type: none}\n",
+                      {parseOverride("vehicle.rotation.degrees=90")}),
+              HasSubstr("wtc_scene_file_test.yaml.tmp: --set vehicle.rotation.degrees=90: vehicle: missing key 'axis'"));
   // A value the override did not touch keeps its line.
   EXPECT_THAT(errorOf(kMinimal + "dt: -1\n", {parseOverride("duration=2")}),
               HasSubstr("wtc_scene_file_test.yaml.tmp:6:5: dt: must be > 0 s"));

@@ -122,6 +122,10 @@ class Engine {
   virtual void addForce(int body, const Eigen::Vector3d& force, const Eigen::Vector3d& point) = 0;
   /// One step of settings().step_seconds.
   virtual void step() = 0;
+  /// Gravity for the next steps (m/s^2, world; (0, 0, -kGravityMps2) until
+  /// set): a scene's tilt table turns it slowly instead of the ground
+  /// (sim::TiltTable). Run::setGravity also tells the energy balance.
+  virtual void setGravity(const Eigen::Vector3d& g_W) = 0;
   /// Before the first step: every body's velocity (one per body, world),
   /// such as startVelocities gives. The engines keep what their joints
   /// allow: Bullet's multibodies take the roots' velocities and each

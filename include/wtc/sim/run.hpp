@@ -28,6 +28,9 @@ class Run {
 
   /// One engine step. Throws InvalidInputError for a non-finite command.
   void step();
+  /// Gravity for the next steps (m/s^2, world): the engine's, and the
+  /// energy balance's (the turn is a source: EnergyBalance::setGravity).
+  void setGravity(const Eigen::Vector3d& g_W);
 
   double time() const { return state_.time; }
   std::uint64_t steps() const { return steps_; }

@@ -12,6 +12,7 @@
 
 #include "wtc/sim/drawbar.hpp"
 #include "wtc/sim/engine.hpp"
+#include "wtc/sim/tilt_table.hpp"
 #include "wtc/vehicle/controller.hpp"
 #include "wtc/vehicle/vehicle_effects.hpp"
 
@@ -54,6 +55,9 @@ struct Scene {
   /// (startVelocities); zero: at rest, and the engines are not told.
   Eigen::Vector3d start_velocity_V{Eigen::Vector3d::Zero()};
   std::optional<Drawbar> drawbar;  ///< A drawbar rig pulling the vehicle, if any.
+  /// A tilt table turning the ground (gravity) slowly, if any: the run ends
+  /// soon after the vehicle tips or slides (tilt_table.hpp).
+  std::optional<TiltTable> tilt_table;
   vehicle::VehicleEffects vehicle_effects;
   std::string controller_type;  ///< "none", "schedule", ...
   /// A fresh controller for one run (controllers keep state).

@@ -47,6 +47,18 @@ inline constexpr double kJointAngleBoundRad = 0.1 * std::numbers::pi / 180.0;
 /// left its terrain (not a success): a vehicle at the terrain's edge has
 /// centres beyond it by less than its own length.
 inline constexpr double kTerrainBoundsMarginM = 2.0;
+/// A body's shape that starts deeper than this in the terrain is said
+/// before the run (m): the engines' own contacts push out a millimetre's
+/// overlap over several steps, a deeper one in a kick (a 5 mm bumper at
+/// about 1 m/s).
+inline constexpr double kStartOverlapM = 1e-3;
+/// A tilt table's vehicle tipped when all its uphill wheels have had no
+/// contact this long (s): longer than a bounce of a settled tyre off the
+/// ground (a few steps), far shorter than a tilt of 0.1 deg at 1 deg/s.
+inline constexpr double kTiltLiftHoldS = 0.02;
+/// A tilt table's run ends this long after the tip or the slide (s): the
+/// answer is in; what follows (a fall) is not measured.
+inline constexpr double kTiltAfterS = 0.2;
 
 /// The most triangles the replay page of a run draws of its terrain
 /// (wtc::sim::replayTerrain; docs/vehicles-and-scenes.md gives the bytes
@@ -65,8 +77,11 @@ inline constexpr double kReplayTerrainMarginM = 10.0;
 /// joint's ERP: ODE's default ERP 0.2, Bullet's gear constraint the same.
 inline constexpr double kMimicErp = 0.2;
 /// A mimic's two axes count as parallel when |cos| is within this of 1
-/// (dimensionless): ODE cannot hold such a mimic between two bodies.
+/// (dimensionless): ODE holds such a mimic between two bodies only when its
+/// multiplier is the axes' cos, +1 or -1 (within kMimicParallelMultiplier:
+/// the two children then turn together, a steering linkage).
 inline constexpr double kMimicParallelCos = 1e-6;
+inline constexpr double kMimicParallelMultiplier = 1e-9;
 /// The largest impulse a mimic's constraint applies in one step (N m s):
 /// unlimited in effect, as the rods or gears of a differential are rigid.
 inline constexpr double kMimicMaxImpulse = 1e6;

@@ -180,6 +180,8 @@ class SimEngine final : public sim::EngineBase {
     }
   }
 
+  void setGravity(const Eigen::Vector3d& g_W) override { world_.setGravity(toBt(g_W)); }
+
   // One internal step of exactly h (maxSubSteps = 0: Bullet's variable step).
   void step() override {
     for (WarmStartedJointLimit* limit : limits_) limit->prepare(settings().step_seconds);
