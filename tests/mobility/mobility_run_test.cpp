@@ -128,7 +128,7 @@ TEST(MobilityRunTest, AJobListRoundByRoundGivesThePoolsResults) {
 // runs lost). Now its events are rows saying why, and the other engine's are measured.
 TEST(MobilityRunTest, AnEngineThatRefusesTheVehicleIsARowAndTheOthersRun) {
   EventVehicle v;
-  v.file = fs::path(WTC_SOURCE_DIR) / "tests" / "urdf" / "steered_car_mimic.yaml";
+  v.file = fs::path(WTC_SOURCE_DIR) / "tests" / "urdf" / "steered_car_ackermann.yaml";
   v.description = vehicle::loadVehicle(v.file);
   v.statics = describeStatics(v.description);
   MobilitySettings s = quick();

@@ -68,7 +68,8 @@ dGeomID makeGeom(const Body& body, const sim::EngineSettings& settings, dSpaceID
 
 // Refuses, before any ODE object exists, the mimic joints ODE cannot hold
 // (SimEngine::Mimic says why): a prismatic one, one whose master hangs from
-// another body, one about an axis parallel to its master's.
+// another body, one about an axis parallel to its master's unless it turns
+// with it (multiplier = the axes' cos: +1, a steering linkage).
 void checkMimics(const vehicle::VehicleDescription& v) {
   for (const Body& b : v.bodies) {
     if (b.parent < 0 || !b.joint.mimic) continue;
@@ -82,10 +83,13 @@ void checkMimics(const vehicle::VehicleDescription& v) {
       throw InvalidInputError(name + " and its master '" + master.joint.name +
                               "' hang from different bodies: ODE holds a mimic between two joints of one parent only");
     }
-    if (std::abs(b.joint.axis.dot(master.joint.axis)) > 1.0 - sim::kMimicParallelCos) {
+    const double c = b.joint.axis.dot(master.joint.axis);
+    if (std::abs(c) > 1.0 - sim::kMimicParallelCos && std::abs(mimic.multiplier - c) > sim::kMimicParallelMultiplier) {
       throw InvalidInputError(name + " and its master '" + master.joint.name +
-                              "' turn about parallel axes: that ties three bodies, which ODE's two-body joints "
-                              "cannot hold (Bullet can: a gear constraint on one multibody)");
+                              "' turn about parallel axes with multiplier " + formatNumber(mimic.multiplier) +
+                              ": that ties three bodies, which ODE's two-body joints cannot hold (Bullet can: a "
+                              "gear constraint on one multibody); ODE holds parallel axes with multiplier " +
+                              formatNumber(c > 0.0 ? 1.0 : -1.0) + " (the two turn together, a steering linkage)");
     }
   }
 }
@@ -177,6 +181,8 @@ class SimEngine final : public sim::EngineBase {
       dBodySetAngularVel(refs_[i].body, v.angular.x(), v.angular.y(), v.angular.z());
     }
   }
+
+  void setGravity(const Eigen::Vector3d& g_W) override { dWorldSetGravity(world_, g_W.x(), g_W.y(), g_W.z()); }
 
   void step() override {
     const double h = settings().step_seconds;
@@ -454,9 +460,11 @@ class SimEngine final : public sim::EngineBase {
   // (w_1 - w_2) . n = qdot_1 - k qdot_2: P's rotation cancels and the
   // motor, holding that rate at 0, holds the mimic (n = a + k b for
   // perpendicular axes). n is fixed in neither body: set every step. Two
-  // parallel axes (c^2 = 1) leave P in the rate (three bodies), which a
-  // joint between two bodies cannot hold: refused, as are mimics across
-  // parents or of a prismatic joint.
+  // parallel axes (b = c a, c = +-1) give (w_1 - w_2) . a = qdot_1 - c qdot_2:
+  // with k = c (a steering linkage's 1), n = a holds the mimic; with another
+  // k, P stays in the rate (three bodies), which a joint between two bodies
+  // cannot hold: refused, as are mimics across parents or of a prismatic
+  // joint.
   struct Mimic {
     dJointID motor = nullptr;
     int body = -1;    // the mimic joint's child
@@ -490,7 +498,8 @@ class SimEngine final : public sim::EngineBase {
     dJointGetHingeAxis(master, b_ode);
     const Eigen::Vector3d a = toEigen(a_ode), b = toEigen(b_ode);
     const double c = a.dot(b), k = m.multiplier;
-    const Eigen::Vector3d n = ((k * c - 1.0) * a + (c - k) * b) / (c * c - 1.0);
+    const Eigen::Vector3d n =
+        std::abs(c) > 1.0 - sim::kMimicParallelCos ? a : Eigen::Vector3d(((k * c - 1.0) * a + (c - k) * b) / (c * c - 1.0));
     dJointSetAMotorAxis(m.motor, 0, 0, n.x(), n.y(), n.z());
     const double error = dJointGetHingeAngle(joint) - k * dJointGetHingeAngle(master) - m.offset;
     dJointSetAMotorParam(m.motor, dParamVel, -sim::kMimicErp * error / h);
