@@ -144,6 +144,16 @@ TEST(UrdfFileTest, PackageMeshIsItsConvexHullBesideTheBox) {
   EXPECT_EQ(b.compound[1].shape.kind, Shape::Kind::kBox);
 }
 
+TEST(UrdfFileTest, APackageIsFoundInAWorkspaceFolderOfAnotherNameAsRosCrawlsForIt) {
+  // Issue 57 row 11: package://NAME was found only in a folder called NAME or on the path itself.
+  const UrdfModel m = readUrdf(kUrdf / "workspace_mesh.urdf", {.package_path = {kUrdf / "workspace"}});
+  const Body& b = m.vehicle.bodies.at(0);
+  // The tetrahedron's hull, a part at its place in the body (centre-of-mass) frame.
+  ASSERT_EQ(b.compound.size(), 1u);
+  ASSERT_EQ(b.compound[0].shape.kind, Shape::Kind::kHull);
+  EXPECT_EQ(b.compound[0].shape.hull_vertices.size(), 4u);
+}
+
 TEST(UrdfFileTest, ShippedUrdfsReadWithTheirBodyCounts) {
   const std::filesystem::path vehicles = std::filesystem::path(WTC_SOURCE_DIR) / "vehicles";
   EXPECT_EQ(readUrdf(vehicles / "six_wheel_robot.urdf").vehicle.bodies.size(), 11u);

@@ -4,7 +4,11 @@
 // DIR of the path is the package NAME when DIR/package.xml names it (how
 // vehicles/, whose package.xml names it wtc_vehicles, is found), or holds it
 // as DIR/NAME when that folder exists (how tests/urdf/packages holds
-// wtc_test_pkg). The path comes from the caller (wtc-sim's --package-path)
+// wtc_test_pkg), or holds it anywhere below, in a folder of any name whose
+// package.xml names it (a ROS workspace: src/<repository>/<package>; the
+// crawl ROS's tools make, not into packages, hidden folders or folders
+// marked CATKIN_IGNORE, COLCON_IGNORE or AMENT_IGNORE, at most ten folders
+// deep). The path comes from the caller (wtc-sim's --package-path)
 // followed by the environment's WTC_PACKAGE_PATH (':'-separated).
 #include <filesystem>
 #include <string>

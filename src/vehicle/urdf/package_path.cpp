@@ -26,6 +26,44 @@ std::string manifestName(const std::filesystem::path& dir) {
   return name && name->GetText() ? std::string(name->GetText()) : std::string();
 }
 
+// How deep below a package path's folder the crawl looks for a package
+// (folders): a ROS workspace keeps its packages at src/<repository>/<package>,
+// three levels down; ten leaves room and bounds a crawl of a wrong folder.
+constexpr int kPackageCrawlDepth = 10;
+
+// The package called `name` below `root`, as ROS finds one (rospack's and
+// ament's crawl): a folder whose package.xml names it, whatever the folder
+// is called; the crawl does not enter a package, a hidden folder, one
+// marked CATKIN_IGNORE, COLCON_IGNORE or AMENT_IGNORE, or a symbolic link to
+// a folder (no cycles). "" when there is none.
+std::filesystem::path crawlForPackage(const std::filesystem::path& root, const std::string& name) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::recursive_directory_iterator it(root, fs::directory_options::skip_permission_denied, ec);
+  for (const fs::recursive_directory_iterator end; !ec && it != end; it.increment(ec)) {
+    const fs::directory_entry& entry = *it;
+    if (!entry.is_directory(ec) || entry.is_symlink(ec)) {
+      if (entry.is_symlink(ec)) it.disable_recursion_pending();
+      continue;
+    }
+    const std::string folder = entry.path().filename().string();
+    if (folder.empty() || folder.front() == '.' || it.depth() >= kPackageCrawlDepth) {
+      it.disable_recursion_pending();
+      continue;
+    }
+    if (fs::exists(entry.path() / "CATKIN_IGNORE", ec) || fs::exists(entry.path() / "COLCON_IGNORE", ec) ||
+        fs::exists(entry.path() / "AMENT_IGNORE", ec)) {
+      it.disable_recursion_pending();
+      continue;
+    }
+    if (fs::is_regular_file(entry.path() / "package.xml", ec)) {
+      if (manifestName(entry.path()) == name) return entry.path();
+      it.disable_recursion_pending();  // a package holds no packages
+    }
+  }
+  return {};
+}
+
 }  // namespace
 
 std::vector<std::filesystem::path> packagePathFromEnvironment() {
@@ -66,6 +104,8 @@ std::filesystem::path resolveResourceUri(const std::string& uri, const std::file
       package = dir;
     } else if (std::filesystem::is_directory(dir / name, ec)) {
       package = dir / name;
+    } else if (const std::filesystem::path crawled = crawlForPackage(dir, name); !crawled.empty()) {
+      package = crawled;  // a workspace: the package is named by its package.xml, not its folder
     } else {
       continue;
     }
