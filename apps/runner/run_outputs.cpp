@@ -112,13 +112,8 @@ RunOutcome runWithOutputs(const sim::Scene& scene, sim::Engine& engine, const Ou
 
   outcome.figures = "skipped (--no-plots)";
   if (request.plots && scene.output.plots) {
-    // The drives on sliding joints: their travel (m) and force (N) get axes of their own.
-    std::string prismatic;
-    for (const int b : scene.vehicle.actuated()) {
-      if (scene.vehicle.bodies[b].joint.type != vehicle::JointType::kPrismatic) continue;
-      prismatic += (prismatic.empty() ? "" : ",") + scene.vehicle.bodies[b].name;
-    }
-    outcome.figures = runPlotScript(ownFile("wtc-sim", "plot_run.py"), dir, {"--prismatic", prismatic})
+    // plot_run.py reads each drive's joint (its units) from summary.json.
+    outcome.figures = runPlotScript(ownFile("wtc-sim", "plot_run.py"), dir)
                           ? "drawn"
                           : "not drawn (python3 with matplotlib is needed; see above)";
   }

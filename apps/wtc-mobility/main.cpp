@@ -47,7 +47,10 @@ int main(int argc, char** argv) {
                         app.add_subcommand("jobs",
                                            "write the next round's runs to <out>/jobs.txt (run them, call "
                                            "again until none is left); report what is finished")}) {
-    sub->add_option("vehicle", vehicle_file, "vehicle file (YAML or URDF)")->required();
+    sub->add_option("vehicle", vehicle_file,
+                    "vehicle file (YAML; a URDF robot through a vehicle file that names it and its wheels: "
+                    "docs/urdf.md)")
+        ->required();
     sub->add_option("--settings", settings_file,
                     "settings file (default: every default, apps/wtc-mobility/settings.yaml)");
     sub->add_option("--out", out, "output directory (default mobility/<vehicle name>)");

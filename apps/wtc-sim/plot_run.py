@@ -9,14 +9,15 @@ and saturation, the wheels' normal and traction forces, and the hitch force
 for the towed system. Exits 3 (and says so) when matplotlib is missing.
 
 Each axis holds one unit: angles (deg) apart from slider travel (m), torques
-(N m) apart from slider forces (N). --prismatic names the drives on sliding
-joints (wtc-sim passes them from the vehicle); without it, a drive whose
-name has "slider" in it is taken for one. A left and a right body of a pair
+(N m) apart from slider forces (N). Which drives are on sliding joints
+comes from the run's summary.json (each drive's "joint"); --prismatic names
+them instead, for a run written before summary.json said. A left and a right body of a pair
 (front_left_wheel, front_right_wheel) share a colour: left solid, right
 dashed; other lines get a colour and a dash each; legends stand beside the
 axes.
 """
 import csv
+import json
 import math
 import os
 import sys
@@ -87,7 +88,14 @@ def main(run_dir, prismatic=None):
     wheel_names = names(wheels, ".fz_N")
     drive_names = names(drives, ".effort")
     if prismatic is None:
-        prismatic = [d for d in drive_names if "slider" in d]
+        # Each drive's joint as the run wrote it (summary.json), not guessed from its name.
+        with open(os.path.join(run_dir, "summary.json")) as f:
+            summary_drives = json.load(f).get("drives", {})
+        unknown = [d for d in drive_names if "joint" not in summary_drives.get(d, {})]
+        if unknown:
+            print(f"plot_run.py: summary.json names no joint for {', '.join(unknown)} (a run from before "
+                  "2026-11-29?): drawn as revolute; give --prismatic", file=sys.stderr)
+        prismatic = [d for d in drive_names if summary_drives.get(d, {}).get("joint") == "prismatic"]
     roots = [b for b in body_names if b not in wheel_names and b not in drive_names]
     colours = {}
 

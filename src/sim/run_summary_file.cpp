@@ -105,7 +105,8 @@ std::string runSummaryText(const sim::RunSummary& s) {
                       {"parameters", s.parameters}};
   for (const auto& [key, value] : s.fields) j[key] = value;
   for (const sim::DriveSummary& d : s.drives) {
-    j["drives"][d.name] = {{"steps", d.steps},
+    j["drives"][d.name] = {{"joint", d.joint},
+                           {"steps", d.steps},
                            {"saturated_steps", d.saturated_steps},
                            {"peak_effort", d.peak_effort},
                            {"mean_effort", d.mean_effort}};
@@ -210,6 +211,7 @@ sim::RunSummary readRunSummary(const std::filesystem::path& file) {
     if (j.contains("drives")) {
       for (const auto& [name, d] : j["drives"].items()) {
         s.drives.push_back({.name = name,
+                            .joint = d.value("joint", std::string()),  // absent from summaries before 2026-11-29
                             .steps = d.at("steps").get<std::uint64_t>(),
                             .saturated_steps = d.at("saturated_steps").get<std::uint64_t>(),
                             .peak_effort = d.at("peak_effort").get<double>(),

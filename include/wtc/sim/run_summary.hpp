@@ -13,6 +13,7 @@ namespace wtc::sim {
 
 struct DriveSummary {
   std::string name;
+  std::string joint;                  ///< "revolute" (efforts in N m, travel in rad) or "prismatic" (N, m).
   std::uint64_t steps = 0;            ///< Steps with the drive on.
   std::uint64_t saturated_steps = 0;  ///< Of those, steps at a limit.
   double peak_effort = 0.0;           ///< (N m or N).
