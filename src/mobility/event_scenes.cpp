@@ -22,6 +22,8 @@ constexpr double kMarginM = 0.5;          // ground beyond what the run needs, e
 constexpr double kPieceThicknessM = 0.5;  // every piece's thickness (m)
 constexpr double kRunsOnFactor = 1.5;     // a search run lasts this many times its nominal travel time
 constexpr double kAxleTolM = 1e-6;
+constexpr double kTiltSettleS = 1.0;   // a tilt table's level start: the vehicle settles (s)
+constexpr double kTiltPastTopS = 0.5;  // the run goes on past the table's top (s): a tip at the top is seen
 
 // The wheels' extent in x (vehicle frame, m): the rearmost and frontmost contact reach.
 struct Extent {
@@ -164,8 +166,10 @@ double roundDuration(double seconds) { return std::ceil(seconds * 10.0 - 1e-9) /
 
 std::string sceneName(const EventVehicle& v, const std::string& event, double value) {
   std::string name = v.description.name + "_" + event;
-  if (event == "step" || event == "grade" || event == "parked" || event == "side_slope" || event == "drawbar" ||
-      event == "gap") {
+  if (isTiltTable(event, value)) {
+    name += "_tilt_table";
+  } else if (event == "step" || event == "grade" || event == "parked" || event == "side_slope" ||
+             event == "drawbar" || event == "gap") {
     char text[32];
     std::snprintf(text, sizeof text, "_%.6g", value);
     name += text;
@@ -249,6 +253,30 @@ std::string eventScene(const EventVehicle& v, const std::string& event, double v
     } else {
       text += "success: {min_advance: " + num(approach + length + far + 0.1) + ", max_tilt_deg: 45}\n";
     }
+    return text;
+  }
+  if (isTiltTable(event, value)) {
+    // Level ground under the vehicle, and the table turning (sim::TiltTable) after a second's settling up
+    // to the search's top. Across: about x, the vehicle facing +x (its right side falls). Parked: about y,
+    // whose +x side falls, so the vehicle faces -x, up the grade.
+    const bool side = event == "side_slope";
+    const TiltSettings& tilt = side ? s.side_slope.tilt : s.parked.tilt;
+    const double top = side ? s.side_slope.degrees.high : s.parked.degrees.high;
+    const double duration = roundDuration(kTiltSettleS + top / tilt.rate_deg_s + kTiltPastTopS);
+    text = head(v, event, value,
+                std::string(side ? "Across a tilt table" : "Up a tilt table") + ", wheels held: the table turns at " +
+                    num(tilt.rate_deg_s) + " deg/s to " + num(top) + " deg; the angle where it tips or slides.",
+                duration);
+    text += ground(s.ground);
+    const double reach = std::max({e.front, -e.rear, e.half_width}) + kMarginM;
+    text += "    - {type: slab, material: ground, size: [" + num(2.0 * reach + 2.0) + ", " + num(2.0 * reach + 2.0) +
+            "], thickness: " + num(kPieceThicknessM) + "}\n";
+    const Eigen::Matrix3d R = side ? I : Eigen::Matrix3d(Eigen::AngleAxisd(std::numbers::pi, Eigen::Vector3d::UnitZ()));
+    text += placement(v, Eigen::Vector3d::Zero(), R);
+    text += schedule(v, "[[0, 0]]");
+    text += "tilt_table: {axis: " + std::string(side ? "x" : "y") + ", rate_deg_s: " + num(tilt.rate_deg_s) +
+            ", start_s: " + num(kTiltSettleS) + ", slide_m: " + num(tilt.slide_m) + "}\n";
+    text += "success: {max_tilt_deg: 90}\n";
     return text;
   }
   if (event == "grade" || event == "parked" || event == "side_slope") {

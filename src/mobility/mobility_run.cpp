@@ -22,8 +22,32 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool isSearch(const std::string& event) {
-  return event == "step" || event == "grade" || event == "parked" || event == "side_slope" || event == "gap";
+// A held event (parked, side_slope) on a tilt table: one run (TiltSettings).
+bool onTiltTable(const std::string& event, const MobilitySettings& s) {
+  return (event == "parked" && s.parked.tilt.rate_deg_s > 0.0) ||
+         (event == "side_slope" && s.side_slope.tilt.rate_deg_s > 0.0);
+}
+
+bool isSearch(const std::string& event, const MobilitySettings& s) {
+  return (event == "step" || event == "grade" || event == "parked" || event == "side_slope" || event == "gap") &&
+         !onTiltTable(event, s);
+}
+
+// A tilt table's answer from its run's summary: the angle where the vehicle
+// tipped or slid, or the table's top when it held to the end (at least that).
+void readTiltTable(EventResult& r, const sim::RunSummary& summary, const MobilitySettings& s, const std::string& run) {
+  const TiltSettings& tilt = r.event == "side_slope" ? s.side_slope.tilt : s.parked.tilt;
+  const std::string how = "tilt table at " + formatNumber(tilt.rate_deg_s) + " deg/s";
+  for (const auto& [field, what] : {std::pair{"tilt_tipped_deg", "tipped"}, std::pair{"tilt_slid_deg", "slid"}}) {
+    if (const auto it = summary.fields.find(field); it != summary.fields.end()) {
+      r.measured = it->second;
+      r.note = how + ": " + what + " (" + run + ")";
+      return;
+    }
+  }
+  const auto top = summary.fields.find("tilt_final_deg");
+  if (top != summary.fields.end()) r.measured = top->second;
+  r.note = how + ": held to its top, at least this (raise the range) (" + run + ")";
 }
 
 Search rangeOf(const std::string& event, const MobilitySettings& s) {
@@ -189,7 +213,7 @@ MobilityOutcome runMobility(const EventVehicle& v, const MobilitySettings& s, co
         } else if (event == "gap") {
           u.result.governs += " (one wheel dropping into it: a vehicle whose other axles carry it may bridge more)";
         }
-        if (isSearch(event)) {
+        if (isSearch(event, s)) {
           u.lo = rangeOf(event, s).low;
           u.hi = rangeOf(event, s).high;
         }
@@ -225,8 +249,8 @@ MobilityOutcome runMobility(const EventVehicle& v, const MobilitySettings& s, co
     std::map<std::string, bool> written;
     for (Unit& u : units) {
       if (u.done) continue;
-      double value = u.result.slip;
-      if (isSearch(u.result.event)) {
+      double value = onTiltTable(u.result.event, s) ? kTiltTableValue : u.result.slip;
+      if (isSearch(u.result.event, s)) {
         const std::optional<double> next = nextValue(u, rangeOf(u.result.event, s));
         if (!next) {
           u.done = true;
@@ -289,7 +313,7 @@ MobilityOutcome runMobility(const EventVehicle& v, const MobilitySettings& s, co
       Unit& u = *w.unit;
       const fs::path dir = study::runDirectory(opt.out, w.run);
       const sim::RunSummary summary = sim::readRunSummary(dir / "summary.json");
-      if (isSearch(u.result.event)) {
+      if (isSearch(u.result.event, s)) {
         const std::string failure = trialFailure(summary, u.result.event);
         Trial t{.value = w.value, .passed = failure.empty(), .failure = failure, .run = w.run.key};
         (t.passed ? u.lo : u.hi) = w.value;
@@ -299,6 +323,10 @@ MobilityOutcome runMobility(const EventVehicle& v, const MobilitySettings& s, co
       u.done = true;
       if (summary.crashed || summary.nan || summary.diverged || sim::jointsCameApart(summary)) {
         u.result.note = "the run failed: " + trialFailure(summary, u.result.event) + " (" + w.run.key + ")";
+        continue;
+      }
+      if (onTiltTable(u.result.event, s)) {
+        readTiltTable(u.result, summary, s, w.run.key);
         continue;
       }
       double torque = 0.0;

@@ -124,6 +124,35 @@ TEST(MobilityRunTest, AJobListRoundByRoundGivesThePoolsResults) {
   EXPECT_TRUE(find(o, "coast").measured.has_value());
 }
 
+// Issue 52 deliverable 2: the held events on a tilt table, one run each, beside their bounds. The cart made
+// for the check (tests/mobility/data/tilt_cart.yaml) tips across at atan(t / h) = 29.59 deg and slides up a
+// grade at atan(mu) = 38.66 deg; set down on slopes of each angle (the bisection) it tipped at 27.25 deg.
+TEST(MobilityRunTest, TheHeldEventsRunOnATiltTableAndMeetTheirBounds) {
+  constexpr double kToleranceDeg = 0.25;  // the tyres' give (TiltTableTest)
+  EventVehicle v;
+  v.file = fs::path(WTC_SOURCE_DIR) / "tests" / "mobility" / "data" / "tilt_cart.yaml";
+  v.description = vehicle::loadVehicle(v.file);
+  v.statics = describeStatics(v.description);
+  MobilitySettings s = quick();
+  s.events = {"side_slope", "parked"};
+  s.side_slope.tilt.rate_deg_s = 1.0;
+  s.parked.tilt.rate_deg_s = 1.0;
+  MobilityOptions options{.out = freshDir("wtc_mobility_tilt_test"), .wtc_sim = WTC_SIM_EXE, .workers = 2};
+  const MobilityOutcome o = runMobility(v, s, options);
+  EXPECT_EQ(o.runs_made, 2u);  // one run an event, no bisection
+  const EventResult& side = find(o, "side_slope");
+  ASSERT_TRUE(side.measured.has_value());
+  EXPECT_EQ(side.governs, "tipping");
+  EXPECT_NEAR(*side.measured, side.bound, kToleranceDeg);
+  EXPECT_NE(side.note.find("tilt table at 1 deg/s: tipped"), std::string::npos) << side.note;
+  EXPECT_TRUE(side.trials.empty());
+  const EventResult& parked = find(o, "parked");
+  ASSERT_TRUE(parked.measured.has_value());
+  EXPECT_NEAR(*parked.measured, parked.bound, kToleranceDeg);
+  EXPECT_NE(parked.note.find("tilt table at 1 deg/s: slid"), std::string::npos) << parked.note;
+  EXPECT_TRUE(fs::exists(options.out / "scenes" / "tilt_cart_side_slope_tilt_table.yaml"));
+}
+
 // Issue 57 row 7: one engine refusing the vehicle ended the whole batch (exit 2, no report, the other engine's
 // runs lost). Now its events are rows saying why, and the other engine's are measured.
 TEST(MobilityRunTest, AnEngineThatRefusesTheVehicleIsARowAndTheOthersRun) {

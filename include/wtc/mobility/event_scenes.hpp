@@ -22,12 +22,21 @@ struct EventVehicle {
   VehicleStatics statics;
 };
 
-/// The scene's name: <vehicle>_<event>[_<value>].
+/// The value that asks for a held event's tilt table (parked, side_slope:
+/// one run, sim::TiltTable) instead of a slope of `value` degrees.
+inline constexpr double kTiltTableValue = -1.0;
+/// Whether `event` at `value` is a tilt table's run.
+inline bool isTiltTable(const std::string& event, double value) {
+  return value == kTiltTableValue && (event == "parked" || event == "side_slope");
+}
+
+/// The scene's name: <vehicle>_<event>[_<value>], or <vehicle>_<event>_tilt_table.
 std::string sceneName(const EventVehicle& v, const std::string& event, double value);
 
 /// The YAML text of `event`'s scene at `value` (step: height m; grade,
-/// parked, side_slope: degrees; drawbar: driving slip i; gap: width m;
-/// coast, braking, turn: ignored). Throws InvalidInputError for an unknown
+/// parked, side_slope: degrees, or kTiltTableValue for the tilt table up
+/// to the search's top at TiltSettings::rate_deg_s; drawbar: driving slip
+/// i; gap: width m; coast, braking, turn: ignored). Throws InvalidInputError for an unknown
 /// event, or one the vehicle cannot do (turn: not skid-steered; every
 /// event: no driven wheel).
 std::string eventScene(const EventVehicle& v, const std::string& event, double value, const MobilitySettings& settings);

@@ -36,8 +36,21 @@ struct GradeSettings {
   double duration_s = 6.0;
 };
 
+/// A held event (parked, side_slope) on a tilt table (sim::TiltTable, SAE
+/// J2180): the vehicle settles on level ground, then the table turns at
+/// rate_deg_s up to the search's top, in one run; the answer is the angle at
+/// which it tipped or slid (slide_m over the table). rate_deg_s 0: the
+/// bisection instead, a run on a slope of each angle tried.
+struct TiltSettings {
+  /// (deg/s): halving 0.5 moved the shipped vehicles' answers and the tilt
+  /// cart's by under 0.1 deg (docs/mobility.md).
+  double rate_deg_s = 0.5;
+  double slide_m = 0.005;  ///< (m), sim::TiltTable::slide_m.
+};
+
 struct ParkedSettings {
   Search degrees{0.0, 45.0, 0.25};
+  TiltSettings tilt;
   /// Held: at the end the first body moves at most this fast (m/s), having moved at most max_slide_m
   /// (the tyres' tread and the sections settle by up to 6 cm near the limit, then hold; a vehicle that
   /// slides and stops elsewhere, the towed system jackknifing across a slope, did not hold).
@@ -48,6 +61,7 @@ struct ParkedSettings {
 
 struct SideSlopeSettings {
   Search degrees{0.0, 60.0, 0.25};
+  TiltSettings tilt;
   double max_final_speed_mps = 0.005;  ///< Holds: at the end it moves at most this fast (m/s); slides beyond.
   double max_slide_m = 0.2;            ///< And moved at most this far (m), as ParkedSettings's.
   double max_tilt_deg = 30.0;          ///< Tips: a root tilted this much beyond the slope (deg).
