@@ -321,6 +321,15 @@ VehicleBounds computeBounds(const VehicleStatics& v, const MobilitySettings& set
   out.braking_m.value = speed * speed / (2.0 * decel);
   out.braking_m.governs = v.allDriven() ? "mu(1) at every wheel" : "mu(1) at the locked (driven) wheels";
   out.braking_m.detail = "deceleration " + num(decel) + " m/s^2, mu(1) = " + num(mu1, 6);
+  // Pitch-over: at that deceleration the loads' moment about the leading
+  // locked wheels tips the vehicle (the wheels behind lift and it goes over
+  // them: m a h > m g l, l the centre of mass's lead over those wheels, h its
+  // height; issue 57 row 6: a front-drive robot landed upside down and the
+  // report said +100.3 % of this distance).
+  if (!wheelLoads(v, 0.0, -decel, v.allDriven() ? 0.0 : k).equilibrium) {
+    out.braking_m.governs = "pitch-over about the locked wheels: no stop on its wheels";
+    out.braking_m.detail += "; at that deceleration the wheels behind lift and the vehicle goes over the locked ones";
+  }
   return out;
 }
 

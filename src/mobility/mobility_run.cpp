@@ -22,6 +22,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// A run in which a root tilted more than this went over (deg): its
+// measurement is not the event's (a stop over the locked front wheels).
+constexpr double kOverturnedDeg = 45.0;
+
 // A held event (parked, side_slope) on a tilt table: one run (TiltSettings).
 bool onTiltTable(const std::string& event, const MobilitySettings& s) {
   return (event == "parked" && s.parked.tilt.rate_deg_s > 0.0) ||
@@ -327,6 +331,13 @@ MobilityOutcome runMobility(const EventVehicle& v, const MobilitySettings& s, co
       }
       if (onTiltTable(u.result.event, s)) {
         readTiltTable(u.result, summary, s, w.run.key);
+        continue;
+      }
+      // A stop, a coast or a turn that went over is not the vehicle's stop (issue 57 row 6).
+      if (const auto tilt = summary.fields.find("max_tilt_deg");
+          tilt != summary.fields.end() && tilt->second > kOverturnedDeg) {
+        u.result.note = "pitched over: tilted " + formatNumber(tilt->second) + " deg, not a stop on its wheels (" +
+                        w.run.key + ")";
         continue;
       }
       double torque = 0.0;

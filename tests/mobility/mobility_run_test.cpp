@@ -12,6 +12,7 @@
 #include <numbers>
 
 #include "scratch_path.hpp"
+#include "wtc/mobility/mobility_bounds.hpp"
 #include "wtc/mobility/mobility_report.hpp"
 #include "wtc/vehicle/vehicle_file.hpp"
 
@@ -151,6 +152,30 @@ TEST(MobilityRunTest, TheHeldEventsRunOnATiltTableAndMeetTheirBounds) {
   EXPECT_NEAR(*parked.measured, parked.bound, kToleranceDeg);
   EXPECT_NE(parked.note.find("tilt table at 1 deg/s: slid"), std::string::npos) << parked.note;
   EXPECT_TRUE(fs::exists(options.out / "scenes" / "tilt_cart_side_slope_tilt_table.yaml"));
+}
+
+// Issue 57 row 6: braking on locked front wheels ahead of the centre of mass, a vehicle pitches over them;
+// the report said "+100.3 %" of a stopping distance. The bound says pitch-over, and the run that went over is
+// not a stop.
+TEST(MobilityRunTest, ABrakingVehicleThatPitchesOverItsLockedWheelsIsSaidAndNotMeasured) {
+  EventVehicle v;
+  v.file = fs::path(WTC_SOURCE_DIR) / "tests" / "mobility" / "data" / "front_brake_cart.yaml";
+  v.description = vehicle::loadVehicle(v.file);
+  v.statics = describeStatics(v.description);
+  MobilitySettings s = quick();
+  s.events = {"braking"};
+  MobilityOptions options{.out = freshDir("wtc_mobility_pitch_test"), .wtc_sim = WTC_SIM_EXE, .workers = 2};
+  const MobilityOutcome o = runMobility(v, s, options);
+  const EventResult& braking = find(o, "braking");
+  EXPECT_EQ(braking.governs.rfind("pitch-over about the locked wheels", 0), 0u) << braking.governs;
+  EXPECT_FALSE(braking.measured.has_value());
+  EXPECT_EQ(braking.note.rfind("pitched over: tilted ", 0), 0u) << braking.note;
+  // The tilt cart, its centre of mass 0.3 m behind the locked front wheels, stops on its wheels.
+  EXPECT_EQ(computeBounds(describeStatics(vehicle::loadVehicle(fs::path(WTC_SOURCE_DIR) / "tests" / "mobility" /
+                                                                "data" / "tilt_cart.yaml")),
+                          s)
+                .braking_m.governs.find("pitch-over"),
+            std::string::npos);
 }
 
 // Issue 57 row 7: one engine refusing the vehicle ended the whole batch (exit 2, no report, the other engine's
