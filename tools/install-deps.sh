@@ -17,6 +17,7 @@ packages=(
   libjs-three chromium-headless-shell           # the replay page (three.js) and its test (headless Chromium)
   clang-14 libclang-rt-14-dev                   # libFuzzer, ASan, UBSan for fuzz/ (ctest -L fuzz)
   libtbb-dev parallel                           # the accuracy study: runs on all cores (TBB), or as a job list (GNU parallel)
+  slurm-wlm munge   # the cluster test: a real Slurm on localhost (tests/study/slurm_cluster_test.sh)
 )
 # Each engine's own, listed in its folder (plugins/<engine>/debian-packages: names, '#' comments).
 for list in "$(dirname "$0")"/../plugins/*/debian-packages; do

@@ -184,6 +184,9 @@ MobilityOutcome runMobility(const EventVehicle& v, const MobilitySettings& s, co
   const VehicleBounds& b = outcome.bounds;
   fs::create_directories(opt.out / "scenes");
   fs::create_directories(opt.out / "runs");
+  // A job list says what is left: emptied first, so that once every round
+  // is done it is empty, not the last round's lines again.
+  if (opt.job_list) std::ofstream(opt.out / "jobs.txt", std::ios::trunc);
 
   // An engine that refuses the vehicle is a row of the report, not the
   // end of the batch: the other engines' events run (issue 57 row 7).

@@ -120,6 +120,8 @@ TEST(MobilityRunTest, AJobListRoundByRoundGivesThePoolsResults) {
     for (std::string line; std::getline(jobs, line);) ASSERT_LE(std::system(line.c_str()) >> 8, 1) << line;
   }
   EXPECT_EQ(rounds, (std::vector<std::size_t>{2, 1}));  // grade 48 and the coast; then grade 32
+  // Once nothing is left, the list is empty (it kept the last round's lines).
+  EXPECT_EQ(fs::file_size(options.out / "jobs.txt"), 0u);
   EXPECT_EQ(o.runs_made, 0u);
   EXPECT_EQ(*find(o, "grade").measured, 32.0);
   EXPECT_TRUE(find(o, "coast").measured.has_value());
