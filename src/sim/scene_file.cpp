@@ -286,10 +286,10 @@ Override parseOverride(const std::string& text) {
 
 namespace {
 
-// `tilt_table: {axis: x | y, rate_deg_s, start_s, slide_m}` (tilt_table.hpp).
+// `tilt_table: {axis: x | y, rate_deg_s, start_s, slide_m, slide_speed_mps}` (tilt_table.hpp).
 TiltTable readTiltTable(const YamlReader& in, const YAML::Node& node, double duration_s) {
   in.requireMap(node, "tilt_table");
-  in.checkKeys(node, {"axis", "rate_deg_s", "start_s", "slide_m"});
+  in.checkKeys(node, {"axis", "rate_deg_s", "start_s", "slide_m", "slide_speed_mps"});
   TiltTable t;
   if (const auto a = YamlReader::get(node, "axis")) {
     const std::string axis = in.string(*a, "tilt_table.axis");
@@ -305,6 +305,8 @@ TiltTable readTiltTable(const YamlReader& in, const YAML::Node& node, double dur
   }
   t.slide_m = in.number(node, "slide_m", t.slide_m);
   if (!(t.slide_m > 0.0)) in.fail(node["slide_m"], "tilt_table.slide_m: must be > 0 m");
+  t.slide_speed_mps = in.number(node, "slide_speed_mps", t.slide_speed_mps);
+  if (!(t.slide_speed_mps > 0.0)) in.fail(node["slide_speed_mps"], "tilt_table.slide_speed_mps: must be > 0 m/s");
   return t;
 }
 

@@ -49,7 +49,7 @@ void TiltWatch::after(const Run& run) {
     return;
   }
   const Eigen::Vector3d moved = s.bodies.front().pose.translation() - origin_;
-  if (moved.norm() > table_.slide_m) {
+  if (moved.norm() > table_.slide_m && s.bodies.front().linear_velocity.norm() > table_.slide_speed_mps) {
     slid_ = table_.angleRad(t);
     at_ = t;
   }

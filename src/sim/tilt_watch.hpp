@@ -3,7 +3,8 @@
 // wtc/sim/tilt_table.hpp). From start_s on: the vehicle tipped when every
 // wheel on its uphill side (uphill of its centre of mass, as it stood at
 // start_s) has had no contact for kTipHoldS, the angle taken where that
-// began; it slid when its first body moved slide_m over the table. The
+// began; it slid when its first body has moved slide_m over the table and
+// moves faster than slide_speed_mps (a slide, not a compliant vehicle's give). The
 // first of the two is the run's answer; the run ends kTiltAfterS after it.
 #include <optional>
 #include <string>

@@ -8,7 +8,7 @@
 // the terrain needs no motion, and the engines only a gravity to set.
 //
 // Scene key (scenes/README.md):
-//   tilt_table: {axis: x, rate_deg_s: 0.5, start_s: 1, slide_m: 0.005}
+//   tilt_table: {axis: x, rate_deg_s: 0.5, start_s: 1, slide_m: 0.005, slide_speed_mps: 0.01}
 // About +x, the table's +y side rises: a vehicle facing +x meets a side
 // slope falling to -y (its right); about +y, the +x side falls: a vehicle
 // facing +x stands nose-down, one facing -x nose-up (a grade).
@@ -26,6 +26,12 @@ struct TiltTable {
   /// the slide's own acceleration (at 5 cm a cart on a 1 deg/s table was
   /// read a degree late; at 5 mm within 0.15 deg of atan(mu)).
   double slide_m = 0.005;
+  /// And is moving over the table faster than this (m/s), > 0: a vehicle
+  /// that gives as the table turns (a hitch's spring, the sections'
+  /// joints) creeps at well under a millimetre a second at 0.5 deg/s and
+  /// does not slide; a slide accelerates through it within a tenth of a
+  /// second.
+  double slide_speed_mps = 0.01;
 
   /// The table's angle at time t (rad): 0 before start_s.
   double angleRad(double t) const;
