@@ -46,20 +46,33 @@ class KnuckleWatch final : public sim::RunObserver {
 
 class SteeredCarTest : public ::testing::TestWithParam<sim::EngineSettings> {};
 
-TEST_P(SteeredCarTest, KnucklesWithoutCollisionShapesSteerAndTheCarTurns) {
-  const sim::EngineSettings& settings = GetParam();
-  const std::vector<sim::Override> overrides = atImplicitModeStep(
-      {{"engine", settings.engine}, {"mode", std::string(sim::modeName(settings))}});
-  const sim::Scene scene =
-      sim::loadScene(fs::path(WTC_SOURCE_DIR) / "tests/urdf/steered_car_turn.yaml", overrides, sim::requireEngine);
+struct Turn {
+  sim::RunSummary summary;
+  double left = 0.0, right = 0.0;  // the knuckles' angles at the end (rad)
+};
+
+// The turn scene in `settings`'s engine and mode, with `more` overrides.
+Turn turn(const sim::EngineSettings& settings, std::vector<sim::Override> more = {}) {
+  std::vector<sim::Override> overrides = {{"engine", settings.engine}, {"mode", std::string(sim::modeName(settings))}};
+  overrides.insert(overrides.end(), more.begin(), more.end());
+  const sim::Scene scene = sim::loadScene(fs::path(WTC_SOURCE_DIR) / "tests/urdf/steered_car_turn.yaml",
+                                          atImplicitModeStep(overrides), sim::requireEngine);
   const auto engine = sim::makeEngine(scene.engine, *scene.terrain, scene.vehicle, scene.placement);
   KnuckleWatch knuckles(scene.vehicle);
   sim::RunOptions options;
   options.observer = &knuckles;
-  const sim::RunSummary summary = sim::runScene(scene, *engine, options);
+  Turn t{.summary = sim::runScene(scene, *engine, options)};
+  t.left = knuckles.left();
+  t.right = knuckles.right();
+  return t;
+}
+
+TEST_P(SteeredCarTest, KnucklesWithoutCollisionShapesSteerAndTheCarTurns) {
+  const Turn t = turn(GetParam());
+  const sim::RunSummary& summary = t.summary;
   ASSERT_TRUE(summary.success) << summary.warnings.size();
-  EXPECT_NEAR(knuckles.left(), kSteerRad, kSteerToleranceRad);
-  EXPECT_NEAR(knuckles.right(), kSteerRad, kSteerToleranceRad);
+  EXPECT_NEAR(t.left, kSteerRad, kSteerToleranceRad);
+  EXPECT_NEAR(t.right, kSteerRad, kSteerToleranceRad);
   // Kinematics (a bicycle model, no slip): the heading turns by
   // path x tan(delta) / L. The real car turns less (its rear wheels, on one
   // axle at one rate, scrub against the turn; the front tyres slip), but at
@@ -77,23 +90,12 @@ TEST_P(SteeredCarTest, KnucklesWithoutCollisionShapesSteerAndTheCarTurns) {
 // knuckle driven. Issue 57 row 9: ODE refused it (parallel axes); it holds
 // it now by an angular motor between the two knuckles.
 TEST_P(SteeredCarTest, AMimicSteeringLinkageTurnsBothKnuckles) {
-  const sim::EngineSettings& settings = GetParam();
-  const std::vector<sim::Override> overrides =
-      atImplicitModeStep({{"engine", settings.engine},
-                          {"mode", std::string(sim::modeName(settings))},
-                          {"vehicle.file", "steered_car_mimic.yaml"},
-                          {"controller.schedules.1.drives", "[fl_knuckle]"}});
-  const sim::Scene scene =
-      sim::loadScene(fs::path(WTC_SOURCE_DIR) / "tests/urdf/steered_car_turn.yaml", overrides, sim::requireEngine);
-  const auto engine = sim::makeEngine(scene.engine, *scene.terrain, scene.vehicle, scene.placement);
-  KnuckleWatch knuckles(scene.vehicle);
-  sim::RunOptions options;
-  options.observer = &knuckles;
-  const sim::RunSummary summary = sim::runScene(scene, *engine, options);
-  ASSERT_TRUE(summary.success);
-  EXPECT_NEAR(knuckles.left(), kSteerRad, kSteerToleranceRad);
-  EXPECT_NEAR(knuckles.right(), knuckles.left(), kMimicToleranceRad);
-  EXPECT_GT(summary.fields.at("yaw_change_deg"), 5.0);
+  const Turn t =
+      turn(GetParam(), {{"vehicle.file", "steered_car_mimic.yaml"}, {"controller.schedules.1.drives", "[fl_knuckle]"}});
+  ASSERT_TRUE(t.summary.success);
+  EXPECT_NEAR(t.left, kSteerRad, kSteerToleranceRad);
+  EXPECT_NEAR(t.right, t.left, kMimicToleranceRad);
+  EXPECT_GT(t.summary.fields.at("yaw_change_deg"), 5.0);
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryEngine, SteeredCarTest, ::testing::ValuesIn(everyEngine()),
