@@ -126,8 +126,20 @@ std::string ground(const Material& g) {
          ", rolling_resistance: " + num(g.rolling_resistance) + "}\n  pieces:\n";
 }
 
-std::string placement(const EventVehicle& v, const Eigen::Vector3d& t, const Eigen::Matrix3d& R,
+// How far the vehicle frame must rise for its lowest wheel to stand on the
+// ground (m): 0 for a vehicle whose frame is at ground level (the shipped
+// ones: a wheel centre at z = r), a URDF's base link's height for one whose
+// frame is its base (a car with wheels 0.12 m below it started them in the
+// ground: issue 57 row 4's kick).
+double groundLift(const EventVehicle& v) {
+  double lift = 0.0;
+  for (const WheelInfo& w : v.statics.wheels) lift = std::max(lift, w.radius_m - w.position.z());
+  return lift > kAxleTolM ? lift : 0.0;
+}
+
+std::string placement(const EventVehicle& v, Eigen::Vector3d t, const Eigen::Matrix3d& R,
                       const std::string& extra = "") {
+  t += R.col(2) * groundLift(v);
   const Eigen::AngleAxisd aa(R);
   Eigen::Vector3d axis = aa.axis();
   double degrees = aa.angle() * 180.0 / std::numbers::pi;

@@ -11,6 +11,7 @@
 #include "io/yaml_reader.hpp"
 #include "vehicle/controllers/controller_types.hpp"
 #include "wtc/base/error.hpp"
+#include "wtc/vehicle/plausibility.hpp"
 #include "wtc/sim/sim_constants.hpp"
 #include "wtc/sim/step_count.hpp"
 #include "wtc/vehicle/vehicle_file.hpp"
@@ -402,6 +403,8 @@ sim::Scene readSceneFile(const std::filesystem::path& path, std::span<const Over
       }
     }
   }
+  // Valid but what a unit slip gives (grams, millimetres, degrees): said, not refused.
+  for (const std::string& w : vehicle::plausibilityWarnings(scene.vehicle)) scene.warnings.push_back("vehicle: " + w);
   if (const auto d = YamlReader::get(root, "drawbar")) scene.drawbar = readDrawbar(in, *d, scene.vehicle);
   if (const auto t = YamlReader::get(root, "tilt_table")) scene.tilt_table = readTiltTable(in, *t, scene.duration_seconds);
 

@@ -197,7 +197,7 @@ TEST(MobilityRunTest, AnEngineThatRefusesTheVehicleIsARowAndTheOthersRun) {
   const EventResult& bullet = o.results[0];
   const EventResult& ode = o.results[1];
   EXPECT_EQ(bullet.engine, "bullet");
-  EXPECT_TRUE(bullet.measured.has_value());
+  EXPECT_TRUE(bullet.measured.has_value()) << bullet.note;
   EXPECT_EQ(ode.engine, "ode");
   EXPECT_FALSE(ode.measured.has_value());
   EXPECT_NE(ode.note.find("the engine refuses the vehicle: wtc::ode sim engine: mimic joint 'fr_knuckle_joint'"),
