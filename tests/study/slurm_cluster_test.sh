@@ -33,6 +33,13 @@ vehicle_file=$root/vehicles/six_wheel_robot.yaml
 log() { printf 'slurm_cluster_test: [%3ds] %s\n' "$SECONDS" "$*"; }
 fail() { printf 'slurm_cluster_test: FAILED: %s\n' "$*" >&2; exit 1; }
 
+# slurmd 22.05 initialises its cgroup plugin whatever the process tracking, and stops without a cgroup file
+# system at /sys/fs/cgroup: a fresh chroot (tools/fresh-debian-check, and so CI) has none mounted, and the test
+# is skipped there, saying so; on a machine (or container) with one it runs.
+if ! grep -qs " /sys/fs/cgroup " /proc/mounts; then
+  echo "skipped: no cgroup file system mounted at /sys/fs/cgroup (a chroot?): slurmd 22.05 cannot start without one"
+  exit 0
+fi
 for daemon in slurmctld slurmd munged; do
   if ! command -v "$daemon" >/dev/null; then
     echo "skipped: $daemon is not installed (tools/install-deps.sh installs slurm-wlm and munge)"
