@@ -3,6 +3,8 @@
 // naming the file, the line, the key and the problem.
 #include "wtc/sim/scene_file.hpp"
 
+#include <unistd.h>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -35,16 +37,22 @@ std::vector<fs::path> shippedScenes() {
 // its relative paths resolve), with `overrides`, and of asking the engine
 // table for its engine (as wtc-sim and wtc-study do before anything runs).
 std::string errorOf(const std::string& text, std::vector<Override> overrides = {}) {
-  const fs::path path = kScenes / "wtc_scene_file_test.yaml.tmp";
+  // A folder of this process's own beside scenes/ (the text's paths are
+  // relative to it, as a shipped scene's are): the suite and the sanitized
+  // suite run at once from one source tree, and a shared file name let one
+  // remove the other's scene (seen in a fresh root: "file not found").
+  const fs::path folder = fs::path(WTC_SOURCE_DIR) / ("scenes_test_" + std::to_string(::getpid()));
+  fs::create_directories(folder);
+  const fs::path path = folder / "wtc_scene_file_test.yaml.tmp";
   std::ofstream(path) << text;
+  std::string said = "no error";
   try {
     requireEngine(loadScene(path, overrides).engine);
   } catch (const InvalidInputError& e) {
-    fs::remove(path);
-    return e.what();
+    said = e.what();
   }
-  fs::remove(path);
-  return "no error";
+  fs::remove_all(folder);
+  return said;
 }
 
 const std::string kMinimal =
