@@ -159,14 +159,11 @@ void setBound(EventResult& r, const Bound& b) {
 
 // Why `engine` refuses to build the vehicle in `mode` ("" if it builds it):
 // the engine's own message (ODE refuses a mimic about parallel axes, Bullet
-// a wheel that is a root), found once, on a bare slab, before any run.
-std::string refusal(const vehicle::VehicleDescription& vehicle, const std::string& engine, const std::string& mode,
-                    double dt) {
+// a wheel that is a root), found once, on `slab`, before any run.
+std::string refusal(const vehicle::VehicleDescription& vehicle, const Terrain& slab, const std::string& engine,
+                    const std::string& mode, double dt) {
   sim::EngineSettings settings{.engine = engine, .step_seconds = dt};
   sim::parseMode(mode, settings, "modes");
-  TerrainBuilder builder;
-  addSlab(builder, SlabParams{}, builder.addMaterial(Material{}));
-  const Terrain slab = std::move(builder).build();
   try {
     sim::makeEngine(settings, slab, vehicle, Eigen::Isometry3d::Identity());
   } catch (const InvalidInputError& e) {
@@ -191,8 +188,13 @@ MobilityOutcome runMobility(const EventVehicle& v, const MobilitySettings& s, co
   // An engine that refuses the vehicle is a row of the report, not the
   // end of the batch: the other engines' events run (issue 57 row 7).
   std::map<std::pair<std::string, std::string>, std::string> refused;
-  for (const std::string& engine : s.engines) {
-    for (const std::string& mode : s.modes) refused[{engine, mode}] = refusal(v.description, engine, mode, s.dt_s);
+  {
+    TerrainBuilder builder;
+    addSlab(builder, SlabParams{}, builder.addMaterial(Material{}));
+    const Terrain slab = std::move(builder).build();  // one bare slab for every engine and mode asked
+    for (const std::string& engine : s.engines) {
+      for (const std::string& mode : s.modes) refused[{engine, mode}] = refusal(v.description, slab, engine, mode, s.dt_s);
+    }
   }
   std::vector<Unit> units;
   for (const std::string& event : s.events) {
