@@ -5,6 +5,8 @@
 // speed while the drives impose the wheels' rate (DP/W = mu(s) for an
 // all-wheel drive), the rig's work counted as a source of energy, and a
 // drive that switches off during a run.
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -246,7 +248,8 @@ TEST(ScheduleOffAfterTest, TheDrivesFollowTheScheduleThenAreOff) {
 // negative (a vehicle sliding down a grade must not pass a climb), nor max_final_speed (still moving); a
 // robot standing passes max_final_speed (a parked vehicle that settled and holds).
 TEST(MinAdvanceTest, GoingBackCountsNegativeAndAVehicleStillMovingFailsMaxFinalSpeed) {
-  const std::filesystem::path path = std::filesystem::path(WTC_SOURCE_DIR) / "scenes" / "wtc_min_advance_test.yaml.tmp";
+  const std::filesystem::path path = std::filesystem::path(WTC_SOURCE_DIR) / "scenes" /
+                                          ("wtc_min_advance_test_" + std::to_string(::getpid()) + ".yaml.tmp");
   std::ofstream(path) << "name: back\nduration: 3\nterrain: ../terrains/flat.yaml\n"
                          "vehicle: ../vehicles/six_wheel_robot.yaml\n"
                          "controller: {type: schedule, schedules: [{drives: [front_left_wheel, front_right_wheel, "

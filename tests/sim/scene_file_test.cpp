@@ -36,14 +36,19 @@ std::vector<fs::path> shippedScenes() {
 // The error of loading `text` as a scene beside the shipped ones (so that
 // its relative paths resolve), with `overrides`, and of asking the engine
 // table for its engine (as wtc-sim and wtc-study do before anything runs).
+// A folder of this process's own beside scenes/ (the text's paths are
+// relative to it, as a shipped scene's are): the suite and the sanitized
+// suite run at once from one source tree, and a shared file name let one
+// remove the other's scene (seen in a fresh root: "file not found").
+fs::path scratchFolder() { return fs::path(WTC_SOURCE_DIR) / ("scenes_test_" + std::to_string(::getpid())); }
+
+fs::path scratchFile(const std::string& name) {
+  fs::create_directories(scratchFolder());
+  return scratchFolder() / name;
+}
+
 std::string errorOf(const std::string& text, std::vector<Override> overrides = {}) {
-  // A folder of this process's own beside scenes/ (the text's paths are
-  // relative to it, as a shipped scene's are): the suite and the sanitized
-  // suite run at once from one source tree, and a shared file name let one
-  // remove the other's scene (seen in a fresh root: "file not found").
-  const fs::path folder = fs::path(WTC_SOURCE_DIR) / ("scenes_test_" + std::to_string(::getpid()));
-  fs::create_directories(folder);
-  const fs::path path = folder / "wtc_scene_file_test.yaml.tmp";
+  const fs::path path = scratchFile("wtc_scene_file_test.yaml.tmp");
   std::ofstream(path) << text;
   std::string said = "no error";
   try {
@@ -51,7 +56,7 @@ std::string errorOf(const std::string& text, std::vector<Override> overrides = {
   } catch (const InvalidInputError& e) {
     said = e.what();
   }
-  fs::remove_all(folder);
+  fs::remove_all(scratchFolder());
   return said;
 }
 
@@ -213,28 +218,28 @@ TEST(SceneFileTest, AReferencedFileThatFailsIsNamedAtTheScenesLineAndKey) {
       "name: t\nduration: 1\nterrain: nowhere.yaml\nvehicle: ../vehicles/six_wheel_robot.yaml\n"
       "controller: {type: none}\n";
   EXPECT_THAT(errorOf(missing_terrain), HasSubstr("wtc_scene_file_test.yaml.tmp:3:10: terrain: " +
-                                                  (kScenes / "nowhere.yaml").string() + ": file not found"));
+                                                  (scratchFolder() / "nowhere.yaml").string() + ": file not found"));
   const std::string missing_vehicle =
       "name: t\nduration: 1\nterrain: ../terrains/flat.yaml\nvehicle: {file: ghost.yaml, translation: [0, 0, 0]}\n"
       "controller: {type: none}\n";
   EXPECT_THAT(errorOf(missing_vehicle), HasSubstr("wtc_scene_file_test.yaml.tmp:4:17: vehicle.file: " +
-                                                  (kScenes / "ghost.yaml").string() + ": file not found"));
+                                                  (scratchFolder() / "ghost.yaml").string() + ": file not found"));
   EXPECT_THAT(errorOf(kMinimal, {parseOverride("vehicle=ghost.yaml")}),
               HasSubstr("wtc_scene_file_test.yaml.tmp: --set vehicle=ghost.yaml: vehicle: " +
-                        (kScenes / "ghost.yaml").string() + ": file not found"));
+                        (scratchFolder() / "ghost.yaml").string() + ": file not found"));
 }
 
 // Degenerate triangles a mesh skipped reach the scene's warnings (and so
 // the run's summary); a mesh of nothing else is an error.
 TEST(SceneFileTest, SkippedDegenerateTrianglesAreSceneWarnings) {
-  const fs::path mesh = kScenes / "wtc_scene_file_test_mesh.obj.tmp";
+  const fs::path mesh = scratchFile("wtc_scene_file_test_mesh.obj.tmp");
   // Two ground triangles and one whose vertices are collinear.
   std::ofstream(mesh) << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nf 1 2 3\nf 1 3 4\nf 1 2 5\n";
   const std::string scene =
       "name: t\nduration: 1\nvehicle: ../vehicles/six_wheel_robot.yaml\ncontroller: {type: none}\n"
       "terrain:\n  materials: {a: {}}\n  pieces:\n    - {type: mesh, file: " +
       mesh.string() + ", translation: [0, 0, 0], thickness: 0.1}\n";
-  const fs::path path = kScenes / "wtc_scene_file_test.yaml.tmp";
+  const fs::path path = scratchFile("wtc_scene_file_test.yaml.tmp");
   std::ofstream(path) << scene;
   const sim::Scene s = loadScene(path);
   ASSERT_EQ(s.warnings.size(), 1u);
@@ -242,8 +247,7 @@ TEST(SceneFileTest, SkippedDegenerateTrianglesAreSceneWarnings) {
                                        ": 1 of 3 triangles are degenerate (zero area), skipped"));
   std::ofstream(mesh) << "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n";
   EXPECT_THAT(errorOf(scene), HasSubstr(mesh.string() + ": all 1 of its 1 triangles are degenerate"));
-  fs::remove(mesh);
-  fs::remove(path);
+  fs::remove_all(scratchFolder());
 }
 
 // Issue 35: a scene's name becomes part of the output directory's name
@@ -325,7 +329,7 @@ TEST(SceneFileTest, ControllerTypesComeFromOneTableThatALayerAboveMayExtend) {
 TEST(SceneFileTest, TheRigsKeysAreReadAndTheirMisusesRefusedWhereTheyStand) {
   const std::string head = "name: t\nduration: 1\nterrain: ../terrains/flat.yaml\ncontroller: {type: none}\n";
   const std::string robot = "vehicle: {file: ../vehicles/six_wheel_robot.yaml, velocity: [1, 0, 0]}\n";
-  const fs::path path = kScenes / "wtc_scene_file_rigs_test.yaml.tmp";
+  const fs::path path = scratchFile("wtc_scene_file_rigs_test.yaml.tmp");
   std::ofstream(path)
       << head << robot
       << "drawbar: {body: middle, point: [-0.3, 0, 0.19], speed: 0.3, stiffness: 2.0e4, damping: 3000}\n";
