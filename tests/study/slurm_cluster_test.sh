@@ -33,12 +33,19 @@ vehicle_file=$root/vehicles/six_wheel_robot.yaml
 log() { printf 'slurm_cluster_test: [%3ds] %s\n' "$SECONDS" "$*"; }
 fail() { printf 'slurm_cluster_test: FAILED: %s\n' "$*" >&2; exit 1; }
 
-# slurmd 22.05 initialises its cgroup plugin whatever the process tracking, and stops without a cgroup file
-# system at /sys/fs/cgroup: a fresh chroot (tools/fresh-debian-check, and so CI) has none mounted, and the test
-# is skipped there, saying so; on a machine (or container) with one it runs.
-if ! grep -qs " /sys/fs/cgroup " /proc/mounts; then
-  echo "skipped: no cgroup file system mounted at /sys/fs/cgroup (a chroot?): slurmd 22.05 cannot start without one"
-  exit 0
+# slurmd 22.05 initialises its cgroup plugin whatever the process tracking, and stops when its cgroup mount
+# point (/sys/fs/cgroup) holds no cgroup file system: a fresh chroot (tools/fresh-debian-check, and so CI) has
+# none mounted. There the test mounts a tmpfs of its own (root may) and names it in a cgroup.conf beside
+# slurm.conf as a cgroup v1 mount point: with proctrack/linuxproc and task/none, slurmd makes no cgroup in
+# it. Without root there, the test is skipped, saying so. WTC_SLURM_TEST_OWN_CGROUP=1 takes this path on a
+# machine that has a cgroup file system, to try it there.
+own_cgroup=0
+if [[ ${WTC_SLURM_TEST_OWN_CGROUP:-0} == 1 ]] || ! grep -qs " /sys/fs/cgroup " /proc/mounts; then
+  if (($(id -u) != 0)); then
+    echo "skipped: no cgroup file system at /sys/fs/cgroup (a chroot?) and not root to mount one for slurmd 22.05"
+    exit 0
+  fi
+  own_cgroup=1
 fi
 for daemon in slurmctld slurmd munged; do
   if ! command -v "$daemon" >/dev/null; then
@@ -111,6 +118,7 @@ stop_cluster() {
   stop_daemon munged "$tmp/munge-run/munged.pid"
 }
 remove_tmp() {
+  if mountpoint -q "$tmp/cgroup" 2>/dev/null; then umount "$tmp/cgroup" || umount -l "$tmp/cgroup"; fi
   if [[ ${WTC_SLURM_TEST_KEEP:-0} == 1 ]]; then
     echo "slurm_cluster_test: kept $tmp" >&2
   else
@@ -145,6 +153,13 @@ tmp=$tmp user=$user setsid bash -c "$(declare -f pid_of alive stop_daemon stop_c
   stop_cluster
   remove_tmp" </dev/null >/dev/null 2>&1 &
 watchdog=$!
+if ((own_cgroup)); then
+  mkdir -m 755 "$tmp/cgroup"
+  mount -t tmpfs -o size=1m,mode=755 wtc-slurm-cgroup "$tmp/cgroup" || fail "cannot mount a tmpfs at $tmp/cgroup for slurmd"
+  printf '%s\n' "# slurmd's cgroup mount point: a tmpfs of the test's own (no cgroup file system here)" \
+    "CgroupMountpoint=$tmp/cgroup" "CgroupPlugin=cgroup/v1" >"$tmp/slurm/cgroup.conf"
+  log "no cgroup file system at /sys/fs/cgroup: slurmd's cgroup mount point is a tmpfs at $tmp/cgroup"
+fi
 
 # ---- munge: its own key and socket, whatever munged the host runs ----
 head -c 1024 /dev/urandom >"$tmp/munge-key/munge.key"
