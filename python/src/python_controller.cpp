@@ -249,7 +249,7 @@ py::dict bodyDescription(const vehicle::VehicleDescription& vehicle, int b) {
   py::array_t<double> pose({py::ssize_t{4}, py::ssize_t{4}});
   auto m = pose.mutable_unchecked<2>();
   for (int i = 0; i < 4; ++i) {
-    for (int j = 0; j < 4; ++j) m(i, j) = body.pose.matrix()(i, j);
+    for (int j = 0; j < 4; ++j) m(i, j) = vehicle::ownFrame(body, body.pose).matrix()(i, j);
   }
   static const char* const kJointNames[] = {"revolute", "prismatic", "ball", "fixed"};
   py::dict d;
@@ -264,7 +264,8 @@ py::dict bodyDescription(const vehicle::VehicleDescription& vehicle, int b) {
   if (body.wheel) {
     d["radius"] = body.wheel->geometry.free_radius;
     d["width"] = body.wheel->geometry.tread_width;
-    d["axle"] = std::array<double, 3>{body.wheel->axle.x(), body.wheel->axle.y(), body.wheel->axle.z()};
+    const Eigen::Vector3d axle = body.own_axes.transpose() * body.wheel->axle;  // in the body's own axes
+    d["axle"] = std::array<double, 3>{axle.x(), axle.y(), axle.z()};
   }
   return d;
 }
@@ -334,17 +335,19 @@ void bindControllers(py::module_& m) {
           "rotation",
           [](const Sensors& s) {
             const vehicle::VehicleState& x = stateOf(s);
+            const vehicle::VehicleDescription& v = vehicleOf(s);
             const auto n = static_cast<py::ssize_t>(x.bodies.size());
             py::array_t<double> a({n, py::ssize_t{3}, py::ssize_t{3}});
             auto r = a.mutable_unchecked<3>();
             for (py::ssize_t i = 0; i < n; ++i) {
-              const Eigen::Matrix3d R = x.bodies[static_cast<std::size_t>(i)].pose.linear();
+              const auto b = static_cast<std::size_t>(i);
+              const Eigen::Matrix3d R = vehicle::ownFrame(v.bodies[b], x.bodies[b].pose).linear();
               for (int j = 0; j < 3; ++j)
                 for (int k = 0; k < 3; ++k) r(i, j, k) = R(j, k);
             }
             return a;
           },
-          "(B, 3, 3) body-to-world rotations")
+          "(B, 3, 3) rotations from each body's own axes (a URDF link's as written) to the world")
       .def_property_readonly(
           "linear_velocity",
           [](const Sensors& s) {

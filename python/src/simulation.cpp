@@ -119,7 +119,7 @@ class Simulation final : private sim::RunObserver {
     time_.push_back(s.time);
     for (std::size_t b = 0; b < s.bodies.size(); ++b) {
       const vehicle::BodyKinematics& k = s.bodies[b];
-      const Eigen::Quaterniond q(k.pose.linear());
+      const Eigen::Quaterniond q(vehicle::ownFrame(run.engine().vehicle().bodies[b], k.pose).linear());
       const Eigen::Vector3d p = k.pose.translation();
       body_.insert(body_.end(),
                    {p.x(), p.y(), p.z(), q.w(), q.x(), q.y(), q.z(), k.linear_velocity.x(), k.linear_velocity.y(),
@@ -159,7 +159,7 @@ py::dict state(const Simulation& sim) {
   auto w = angular.mutable_unchecked<2>();
   for (py::ssize_t b = 0; b < bodies; ++b) {
     const vehicle::BodyKinematics& k = s.bodies[static_cast<std::size_t>(b)];
-    const Eigen::Quaterniond r(k.pose.linear());
+    const Eigen::Quaterniond r(vehicle::ownFrame(sim.run().engine().vehicle().bodies[b], k.pose).linear());
     for (int i = 0; i < 3; ++i) {
       p(b, i) = k.pose.translation()[i];
       v(b, i) = k.linear_velocity[i];

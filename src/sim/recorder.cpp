@@ -98,8 +98,10 @@ Recorder::Recorder(const std::filesystem::path& dir, const Run& run)
 void Recorder::record(const Run& run) {
   const vehicle::VehicleState& s = run.state();
   bodies_ << s.time;
-  for (const vehicle::BodyKinematics& k : s.bodies) {
-    const Eigen::Quaterniond q(k.pose.linear());
+  const vehicle::VehicleDescription& v = run.engine().vehicle();
+  for (std::size_t b = 0; b < s.bodies.size(); ++b) {
+    const vehicle::BodyKinematics& k = s.bodies[b];
+    const Eigen::Quaterniond q(vehicle::ownFrame(v.bodies[b], k.pose).linear());
     const Eigen::Vector3d& p = k.pose.translation();
     bodies_ << ',' << p.x() << ',' << p.y() << ',' << p.z() << ',' << q.w() << ',' << q.x() << ',' << q.y() << ','
             << q.z();

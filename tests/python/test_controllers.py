@@ -212,3 +212,45 @@ def test_sensors_kept_past_their_call_are_refused(source_dir):
                  lambda s: s.contact_points(1)]:
         with pytest.raises(wtc.InvalidInputError, match="read outside the update call it was given to"):
             read(controller.kept)
+
+
+class SpeedAlongTheBase:
+    """A speed controller as users write one: the base's forward speed is its velocity along the x axis of
+    sensors.rotation, held at `target` by integral action on the four wheels' rate."""
+
+    GAIN = 20.0  # rad/s per (m/s) per s: at 0.1 m a wheel, a time constant of 1 / (0.1 x 20) = 0.5 s
+
+    def __init__(self, target, dt):
+        self.target, self.dt = target, dt
+        self.rate = 0.0
+        self.first_rotation = None
+        self.speed = self.world_speed = 0.0
+
+    def update(self, t, sensors):
+        base = sensors.index("base_link")
+        rotation = sensors.rotation[base]
+        if self.first_rotation is None:
+            self.first_rotation = rotation.copy()
+        velocity = sensors.linear_velocity[base]
+        self.speed = rotation[:, 0] @ velocity
+        self.world_speed = velocity[0]
+        self.rate += self.GAIN * (self.target - self.speed) * self.dt
+        return {w: self.rate for w in ("fl_wheel", "fr_wheel", "rl_wheel", "rr_wheel")}
+
+
+def test_users_read_a_links_own_axes_not_the_principal_axes_it_is_integrated_in(source_dir, tmp_path):
+    # Issue 57 row 3: a lidar on a fixed joint off the base's axes gives the merged base products of inertia,
+    # and the engines integrate it in principal axes (of arbitrary sign and order). Reported as they were, the
+    # root came out yawed 180 degrees and a controller like this one drove at 0.92 m/s instead of 0.3.
+    scene = wtc.load_scene(source_dir / "tests/urdf/skid_lidar_drive.yaml")
+    np.testing.assert_allclose(scene.body("base_link")["pose"][:3, :3], np.eye(3), atol=1e-12)
+    np.testing.assert_allclose(scene.body("fl_wheel")["axle"], [0, 0, 1], atol=1e-12)  # the joint's axis, as written
+    controller = SpeedAlongTheBase(0.3, scene.dt)
+    wtc.run(scene, out=tmp_path / "run", progress=False, plots=False, replay=False, controller=controller)
+    np.testing.assert_allclose(controller.first_rotation, np.eye(3), atol=1e-9)
+    assert controller.speed == pytest.approx(0.3, abs=0.01)
+    assert controller.world_speed == pytest.approx(0.3, abs=0.01)  # forward is world +x, as placed
+    # bodies.csv's quaternion of the base: base_link's axes, level and facing +x after 3 s on flat ground.
+    series = np.genfromtxt(tmp_path / "run/bodies.csv", delimiter=",", names=True)
+    qw, qz = series["base_linkqw"][-1], series["base_linkqz"][-1]
+    assert abs(qw) == pytest.approx(1.0, abs=1e-3) and abs(qz) < 0.01  # |yaw| < 1.2 degrees

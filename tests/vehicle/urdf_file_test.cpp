@@ -51,6 +51,28 @@ TEST(UrdfFileTest, TensorOffItsAxesTurnsTheBodyToItsPrincipalAxes) {
   ASSERT_EQ(b.compound.size(), 1u);
   EXPECT_EQ(b.compound[0].shape.kind, Shape::Kind::kBox);
   EXPECT_TRUE((b.pose * b.compound[0].pose_BS).linear().isIdentity(kTolerance));
+  // What users read is the link's own frame: the root link's axes are V's (issue 57 row 3).
+  EXPECT_TRUE(ownFrame(b, b.pose).linear().isIdentity(kTolerance));
+  EXPECT_TRUE(ownFrame(b, b.pose).translation().isApprox(b.pose.translation(), kTolerance));
+}
+
+// Issue 57 row 3: a link's own axes, not the principal axes, wherever a
+// body's rotation reaches users. A diagonal tensor in an <inertial> frame
+// with rpy: the body's frame is that of the <inertial>, its own axes the
+// link's. A lidar merged into the base: principal axes turned, own axes V's.
+TEST(UrdfFileTest, EveryBodyKeepsItsLinksOwnAxesBesideTheFrameItIsIntegratedIn) {
+  const UrdfModel rotated = readUrdf(kUrdf / "inertia_rotated_origin.urdf");
+  const Body& r = rotated.vehicle.bodies.at(0);
+  EXPECT_FALSE(r.pose.linear().isIdentity(1e-6));
+  EXPECT_TRUE(ownFrame(r, r.pose).linear().isIdentity(kTolerance)) << ownFrame(r, r.pose).linear();
+  const UrdfModel skid = readUrdf(kUrdf / "skid_lidar.urdf");
+  const Body& base = body(skid, "base_link");
+  EXPECT_FALSE(base.pose.linear().isIdentity(1e-3)) << base.pose.linear();
+  EXPECT_TRUE(ownFrame(base, base.pose).linear().isIdentity(kTolerance)) << ownFrame(base, base.pose).linear();
+  // A wheel on a joint turned by rpy (-pi/2, 0, 0): its own axes are its link's, the axle along its z.
+  const Body& wheel = body(skid, "fl_wheel");
+  const Eigen::Matrix3d R_VL = Eigen::AngleAxisd(-std::numbers::pi / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  EXPECT_TRUE(ownFrame(wheel, wheel.pose).linear().isApprox(R_VL, kTolerance));
 }
 
 TEST(UrdfFileTest, InertialOriginRotationAppliesRollThenPitchThenYaw) {

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 
 #include "scratch_path.hpp"
 #include "wtc/base/error.hpp"
@@ -151,19 +152,25 @@ TEST(UrdfVehicleFileTest, RefusalsInsideTheUrdfNameBothFiles) {
                 {"floating_joint.urdf", "joint 'payload_joint' is floating"});
 }
 
-// The rover's chassis has products of inertia: its body frame is turned to
-// its principal axes, and the path controller, which steers by its body's x
-// and y, refuses it by name rather than steering by the wrong axes.
-TEST(UrdfVehicleFileTest, PathControllerRefusesABodyTurnedToItsPrincipalAxes) {
+// The rover's chassis has products of inertia: the engines integrate it in
+// its principal axes, turned from the link's. Its own axes are the link's
+// (the root link's: the vehicle frame), and the path controller steers by
+// them: C is `lead` ahead of the middle axle along the chassis link's x.
+TEST(UrdfVehicleFileTest, PathControllerSteersByTheBodysOwnAxesNotItsPrincipalAxes) {
   const VehicleDescription rover = loadVehicle(kSource / "vehicles" / "rocker_bogie_rover.yaml");
-  ASSERT_FALSE(rover.bodies.at(rover.find("chassis")).pose.linear().isIdentity(1e-6));
-  try {
-    PathController(rover, {.body = "chassis", .left_drive = "middle_left_wheel", .right_drive = "middle_right_wheel"},
-                   "scene.yaml");
-    ADD_FAILURE() << "the path controller took a body turned to its principal axes";
-  } catch (const InvalidInputError& e) {
-    EXPECT_THAT(e.what(), HasSubstr("body 'chassis' is turned from the vehicle's axes"));
-  }
+  const Body& chassis = rover.bodies.at(rover.find("chassis"));
+  ASSERT_FALSE(chassis.pose.linear().isIdentity(1e-6));
+  EXPECT_TRUE(ownFrame(chassis, chassis.pose).linear().isIdentity(1e-12));
+  const PathController path(
+      rover, {.body = "chassis", .left_drive = "middle_left_wheel", .right_drive = "middle_right_wheel", .lead = 0.2},
+      "scene.yaml");
+  const Eigen::Vector3d axle = 0.5 * (rover.bodies.at(rover.find("middle_left_wheel")).pose.translation() +
+                                      rover.bodies.at(rover.find("middle_right_wheel")).pose.translation());
+  const Eigen::Vector2d expected = (axle + Eigen::Vector3d(0.2, 0, 0)).head<2>();
+  EXPECT_LT((path.pointC(chassis.pose) - expected).norm(), 1e-12);
+  // Turned 90 degrees about z in the world, C turns with the link's x.
+  const Eigen::Isometry3d turned = Eigen::Isometry3d(Eigen::AngleAxisd(std::numbers::pi / 2, Eigen::Vector3d::UnitZ())) * chassis.pose;
+  EXPECT_LT((path.pointC(turned) - Eigen::Vector2d(-expected.y(), expected.x())).norm(), 1e-12);
 }
 
 }  // namespace

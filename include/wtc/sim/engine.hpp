@@ -134,7 +134,10 @@ class Engine {
   /// (startVelocities' do). Throws InvalidInputError for a wrong count.
   virtual void setVelocities(std::span<const BodyVelocity> velocities) = 0;
 
-  /// Pose and velocity of a body's centre of mass (world).
+  /// Pose and velocity of a body's centre of mass (world), the pose in the
+  /// frame the engine integrates it in (Body::pose's; principal axes for a
+  /// URDF tensor with products of inertia): vehicle::ownFrame turns it to
+  /// the body's own axes, as every output gives them.
   virtual vehicle::BodyKinematics body(int body) const = 0;
   /// Coordinate (rad or m) and rate of `body`'s joint to its parent
   /// (revolute and prismatic joints; 0 for others).

@@ -104,6 +104,12 @@ struct Body {
   double mass = 0.0;                                      ///< (kg), > 0.
   Eigen::Vector3d inertia{Eigen::Vector3d::Zero()};       ///< Principal moments about the centre of mass (kg m^2).
   Eigen::Isometry3d pose{Eigen::Isometry3d::Identity()};  ///< Centre-of-mass frame in V at the reference (m).
+  /// The body's own axes (a URDF link's, as written) in its centre-of-mass
+  /// frame `pose`, which the engines integrate in: a body whose tensor has
+  /// products of inertia is turned to its principal axes, of arbitrary sign
+  /// and order. What users read as the body's rotation is R_WB own_axes
+  /// (ownFrame). Identity where the two agree (every YAML body).
+  Eigen::Matrix3d own_axes{Eigen::Matrix3d::Identity()};
   Shape shape;                                            ///< Collision with the ground (kNone: none).
   /// When not empty, the body's collision shape instead of `shape`: the
   /// parts together (a URDF link's several collision elements).
@@ -112,6 +118,15 @@ struct Body {
   int parent = -1;             ///< Index of the parent body; -1 for a root.
   Joint joint;                 ///< To the parent (ignored for a root).
 };
+
+/// A body's pose as users read it (outputs, sensors, controllers): at its
+/// centre of mass, turned to its own axes. `pose_B` is the body's
+/// centre-of-mass frame (Body::pose, or an engine's answer in the world).
+inline Eigen::Isometry3d ownFrame(const Body& body, const Eigen::Isometry3d& pose_B) {
+  Eigen::Isometry3d out = pose_B;
+  out.linear() = pose_B.linear() * body.own_axes;
+  return out;
+}
 
 /// The elastic hitch of the towed system (vehicles spec, section 2):
 /// P = diag(C) (D1 - D2) + diag(mu) d(D1 - D2)/dt, in the horizontal axes of

@@ -249,6 +249,10 @@ UrdfModel readUrdf(const std::filesystem::path& file, const UrdfOptions& options
       b.pose.translation() = c;
     }
 
+    // The link's axes in the body's frame (R_BL = R_VB^T R_VL): users read
+    // the link's rotation, not the principal axes' (nor an <inertial>'s rpy).
+    b.own_axes = b.pose.linear().transpose() * X_VL.at(name).linear();
+
     if (const auto pj = parent_joint.find(name); pj != parent_joint.end()) {
       const urdf::Joint& j = *pj->second;
       b.parent = out.link_body.at(j.parent_link_name);

@@ -58,13 +58,15 @@ class PathController final : public Controller {
   /// The path's point and velocity at time t (world, m and m/s).
   Eigen::Vector2d desired(double t) const;
   Eigen::Vector2d desiredVelocity(double t) const;
-  /// Where C is for the body's pose (world x, y).
+  /// Where C is for the body's pose (its centre-of-mass frame, as the
+  /// engines give it; world x, y).
   Eigen::Vector2d pointC(const Eigen::Isometry3d& body_pose) const;
 
  private:
   PathControllerParams params_;
   int body_ = -1, left_ = -1, right_ = -1;
-  Eigen::Vector3d axle_mid_local_{Eigen::Vector3d::Zero()};  // A in the body's frame
+  Eigen::Matrix3d own_axes_{Eigen::Matrix3d::Identity()};    // Body::own_axes: the axes it steers by
+  Eigen::Vector3d axle_mid_local_{Eigen::Vector3d::Zero()};  // A in the body's own frame
   double half_track_ = 0.0, radius_ = 0.0;
   double max_error_ = 0.0, sum_sq_error_ = 0.0, last_error_ = 0.0, lost_time_ = 0.0;
   long samples_ = 0;

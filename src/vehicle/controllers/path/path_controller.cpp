@@ -46,16 +46,12 @@ PathController::PathController(const VehicleDescription& v, const PathController
   if (r.wheel->geometry.free_radius != radius_) {
     throw InvalidInputError(where + ": the drive wheels have different radii");
   }
-  // The controller steers by the body's axes (x forward, y left): a body
-  // turned to its principal axes (a URDF tensor with products of inertia)
-  // has other axes.
-  if (!v.bodies[body_].pose.linear().isIdentity(0.0)) {
-    throw InvalidInputError(where + ": body '" + p.body +
-                            "' is turned from the vehicle's axes (its principal axes of inertia): the path controller "
-                            "steers by the body's x forward and y left; name a body whose inertia is diagonal in them");
-  }
-  // Both wheels' centres in the body's frame; the axle is the line between.
-  const Eigen::Isometry3d to_body = v.bodies[body_].pose.inverse();
+  // The controller steers by the body's own axes (x forward, y left), not
+  // the principal axes the engines integrate it in (a URDF tensor with
+  // products of inertia turns those).
+  own_axes_ = v.bodies[body_].own_axes;
+  // Both wheels' centres in the body's own frame; the axle is the line between.
+  const Eigen::Isometry3d to_body = ownFrame(v.bodies[body_], v.bodies[body_].pose).inverse();
   const Eigen::Vector3d pl = to_body * l.pose.translation(), pr = to_body * r.pose.translation();
   if (pl.y() <= pr.y() || std::abs(pl.x() - pr.x()) > 1e-9) {
     throw InvalidInputError(where + ": left_drive must be left of right_drive (+y) on one axle across the body");
@@ -81,13 +77,13 @@ Eigen::Vector2d PathController::desiredVelocity(double t) const {
 }
 
 Eigen::Vector2d PathController::pointC(const Eigen::Isometry3d& pose) const {
-  const Eigen::Vector3d c = pose * (axle_mid_local_ + params_.lead * Eigen::Vector3d::UnitX());
+  const Eigen::Vector3d c = pose * (own_axes_ * (axle_mid_local_ + params_.lead * Eigen::Vector3d::UnitX()));
   return c.head<2>();
 }
 
 void PathController::update(const VehicleState& state, std::span<DriveCommand> commands) {
   const Eigen::Isometry3d& pose = state.bodies[body_].pose;
-  const Eigen::Vector3d forward = pose.linear().col(0);
+  const Eigen::Vector3d forward = pose.linear() * own_axes_.col(0);
   const double psi = std::atan2(forward.y(), forward.x());
   const Eigen::Vector2d heading(std::cos(psi), std::sin(psi)), left(-std::sin(psi), std::cos(psi));
 
