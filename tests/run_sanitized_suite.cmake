@@ -11,6 +11,8 @@
 # report still names file and line, and the tree compiles in about half the
 # time (a test file 33.6 s -> 17.8 s, a library file 11.8 s -> 6.8 s with
 # GCC 12), which is what keeps the suite within CI's budget on two cores.
+# The test files themselves are built with ASan only and no debug
+# information (tests/CMakeLists.txt, WTC_SANITIZED_CHILD).
 #   cmake -DSOURCE_DIR=<repo> -DBUILD_DIR=<dir> -DCXX=<g++> -P run_sanitized_suite.cmake
 set(flags "-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer")
 execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${BUILD_DIR} -DCMAKE_CXX_COMPILER=${CXX}
