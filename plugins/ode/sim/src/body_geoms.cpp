@@ -41,11 +41,11 @@ dGeomID makeConvex(const Shape& s, dSpaceID space, std::deque<ConvexGeomData>& s
 // A hull that is a box (six faces in three opposite pairs about orthogonal
 // axes, every vertex at a corner): its size and its pose in the shape's
 // frame. ODE collides a convex geom against the terrain's triangle meshes
-// through libccd's GJK-EPA, one contact a pair; a thin one (a 2 cm plate
+// through libccd's GJK-EPA, one contact a pair; a thin one (a skid plate
 // given as a mesh) lands on one point, rocks, and when EPA takes the wrong
-// face, is thrown: an 11 kg robot dropped 7 cm on such a plate at 1 ms
-// steps gained 16 kJ. ODE's box collider gives the face's contacts and
-// holds it, as a URDF <box> does; so a box given as a mesh is one.
+// face, is thrown (docs/urdf.md, "Thin meshes in ODE", has the figures).
+// ODE's box collider gives the face's contacts and holds it, as a URDF
+// <box> does; so a box given as a mesh is one.
 struct HullBox {
   Eigen::Vector3d size;
   Eigen::Isometry3d pose{Eigen::Isometry3d::Identity()};
