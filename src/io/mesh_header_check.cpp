@@ -224,11 +224,13 @@ void checkPly(const std::filesystem::path& path, std::string_view bytes, std::ui
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   if (magic != "ply" && ext != ".ply") return;
-  // A PLY header is lines of printable ASCII ending in end_header (PLY's
-  // definition); assimp 5.2 loops forever on headers with control or
+  // A PLY header is lines of printable ASCII ending in a line end_header
+  // (PLY's definition); assimp 5.2 loops forever on headers with control or
   // non-ASCII bytes, with or without end_header (found by fuzzing:
-  // wtc_fuzz_mesh_ply hung twice), so refuse both.
-  const std::size_t end = bytes.find("end_header");
+  // wtc_fuzz_mesh_ply hung twice), so refuse both. end_header counts only
+  // where a line starts: assimp hung on "propertyend_header" (fuzzing again).
+  std::size_t end = bytes.find("end_header");
+  while (end != std::string_view::npos && end > 0 && bytes[end - 1] != '\n') end = bytes.find("end_header", end + 1);
   const std::size_t header_end = end == std::string_view::npos ? bytes.size() : end;
   for (std::size_t i = 0; i < header_end; ++i) {
     const auto c = static_cast<unsigned char>(bytes[i]);

@@ -213,6 +213,11 @@ TEST_F(MeshFileTest, BrokenFilesWrittenHereGiveErrorsWithThePath) {
       // assimp 5.2 loops forever on these (found by wtc_fuzz_mesh_ply): refused first.
       {write("no_end_header.ply", "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\n"),
        "PLY header has no end_header line"},
+      // wtc_fuzz_mesh_ply (-O1 build): end_header inside a line; assimp 5.2 hung on it.
+      {write("end_header_inside_a_line.ply",
+             "ply\nformat ascii 1.0\nelement vertex 3\nproperty float32 x\nproperty float32 y\nproperty float32 z\n"
+             "element face 1 index\npropertyend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"),
+       "PLY header has no end_header line"},
       {write("control_bytes.ply", std::string("ply\nformat ascii 1.0\nelement verte\x03\0\0\0\x03\x07 4\n", 40)),
        "PLY header holds a byte that is not printable ASCII (3)"},
       {write("high_bytes.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float \xff\xff\nend_header\n0\n"),
