@@ -248,8 +248,9 @@ py::dict bodyDescription(const vehicle::VehicleDescription& vehicle, int b) {
   const vehicle::Body& body = vehicle.bodies[static_cast<std::size_t>(b)];
   py::array_t<double> pose({py::ssize_t{4}, py::ssize_t{4}});
   auto m = pose.mutable_unchecked<2>();
+  const Eigen::Matrix4d own = vehicle::ownFrame(body, body.pose).matrix();
   for (int i = 0; i < 4; ++i) {
-    for (int j = 0; j < 4; ++j) m(i, j) = vehicle::ownFrame(body, body.pose).matrix()(i, j);
+    for (int j = 0; j < 4; ++j) m(i, j) = own(i, j);
   }
   static const char* const kJointNames[] = {"revolute", "prismatic", "ball", "fixed"};
   py::dict d;

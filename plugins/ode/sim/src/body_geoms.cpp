@@ -18,8 +18,8 @@ using vehicle::Shape;
 // plane offset >= 0), as the plugin's terrain pieces are made
 // (plugins/ode/src/terrain_geoms.cpp). Returns the geom; `centre` is the
 // centroid in the shape's frame, where the geom's origin must sit.
-dGeomID makeConvex(const Shape& s, dSpaceID space, std::deque<ConvexGeomData>& store, Eigen::Vector3d& centre) {
-  const ConvexPolyhedron hull = ConvexPolyhedron::fromPoints(s.hull_vertices);
+dGeomID makeConvex(const ConvexPolyhedron& hull, dSpaceID space, std::deque<ConvexGeomData>& store,
+                   Eigen::Vector3d& centre) {
   centre = hull.centroid();
   ConvexGeomData& data = store.emplace_back();
   for (int v = 0; v < hull.vertexCount(); ++v) {
@@ -108,13 +108,14 @@ dGeomID addPart(const Shape& s, const Eigen::Isometry3d& pose_BS, dSpaceID space
       geom = dCreateSphere(space, s.radius);
       break;
     case Shape::Kind::kHull: {
-      if (const auto box = boxOf(ConvexPolyhedron::fromPoints(s.hull_vertices))) {
+      const ConvexPolyhedron hull = ConvexPolyhedron::fromPoints(s.hull_vertices);
+      if (const auto box = boxOf(hull)) {
         geom = dCreateBox(space, box->size.x(), box->size.y(), box->size.z());
         offset = pose_BS * box->pose;
         break;
       }
       Eigen::Vector3d centre;
-      geom = makeConvex(s, space, store, centre);
+      geom = makeConvex(hull, space, store, centre);
       offset.translation() = pose_BS * centre;
       break;
     }
