@@ -23,6 +23,7 @@ WheelContactFinder::WheelContactFinder() {
   contacts_.reserve(kReservedCandidates);
   caps_.reserve(kReservedCandidates);
   shares_.reserve(kReservedCandidates);
+  rank_.reserve(kReservedCandidates);
   through_edge_.reserve(kReservedCandidates);
   exits_.reserve(kReservedCandidates);
   next_exits_.reserve(kReservedCandidates);
@@ -45,17 +46,27 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
 
   caps_.clear();
 
-  // 1. Candidate pieces.
-  candidates_.clear();
-  terrain.overlapping({o.array() - r, o.array() + r}, candidates_);
-
-  // 2. Point queries, warm-started from the previous call's simplices.
-  QueryOptions query;
   // Right after a call that saw the ground at a cap, the caps are looked for
   // a little farther (hysteresis): an engine holding the wheel on a cap's
   // rim holds it at about r_f, and the cap contacts must not come and go
   // with every micrometre (they switch the engine's cap collision).
   const double cap_reach = caps_last_ ? r * (1.0 + tolerance::kCapHysteresisRelative) : r;
+
+  // 1. Candidate pieces: those whose boxes come within the reach of O (the
+  // others a point query turns away at its first test), and, as ever, meet
+  // the cube O +- r_f. Asking the index for the ball, not the cube, visits
+  // a fine field's disc of cells under the rim instead of the square
+  // around the wheel (issue 53).
+  candidates_.clear();
+  terrain.within(o, cap_reach, candidates_);
+  if (cap_reach > r) {
+    const Aabb cube{o.array() - r, o.array() + r};
+    std::erase_if(candidates_, [&](PieceId id) { return !terrain.pieceBounds(id).overlaps(cube); });
+  }
+  counts_ = {candidates_.size(), 0, 0, 0};
+
+  // 2. Point queries, warm-started from the previous call's simplices.
+  QueryOptions query;
   query.max_distance = cap_reach;
   contacts_.clear();
   contact_pieces_.clear();
@@ -108,8 +119,10 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
       piece = &terrain.piece(id);
     }
     const PointQuery q = queryPoint(*piece, o, query, cache);
+    ++counts_.queried;
     next_caches_.emplace_back(id, cache);
     if (q.status == QueryStatus::kBeyond || !(q.signed_distance < cap_reach)) continue;
+    ++counts_.touching;
     WheelContact c;
     c.e = -q.normal;
     c.point = o + r * c.e;
@@ -161,6 +174,7 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
     contacts_.resize(1);
   }
   caps_last_ = !caps_.empty();
+  counts_.contacts = contacts_.size();
   return contacts_;
 }
 
@@ -203,21 +217,31 @@ void WheelContactFinder::exitWhereEntered(const ConvexPolyhedron& piece, PieceId
 
 void WheelContactFinder::applySeamRule(double gap, double radius) {
   // Contacts are ranked strictly by (distance, piece id): the nearest one
-  // keeps its whole load, and no two contacts can shadow each other.
-  auto share = [&](std::size_t kb) {
+  // keeps its whole load, and no two contacts can shadow each other. Each
+  // piece gives at most one contact, so the rank is a strict order and the
+  // contacts nearer than B are those ranked before it.
+  rank_.resize(contacts_.size());
+  for (std::size_t k = 0; k < rank_.size(); ++k) rank_[k] = k;
+  std::sort(rank_.begin(), rank_.end(), [&](std::size_t x, std::size_t y) {
+    const WheelContact &a = contacts_[x], &b = contacts_[y];
+    return a.signed_distance < b.signed_distance || (a.signed_distance == b.signed_distance && a.piece < b.piece);
+  });
+  auto share = [&](std::size_t at) {
+    const std::size_t kb = rank_[at];
     const WheelContact& b = contacts_[kb];
     // L = sqrt(2 r Z): half the chord the ground cuts from the undeformed tread.
     const double patch = std::sqrt(2.0 * radius * b.deflection);
     double least = 1.0;
     bool covered = false;  // B's ground point lies on another touching piece: a seam, not a real edge
-    for (std::size_t ka = 0; ka < contacts_.size(); ++ka) {
-      const WheelContact& a = contacts_[ka];
-      if (a.piece == b.piece) continue;
+    // The nearer contacts, the ones nearest B's distance first: on a fine
+    // field the piece that covers B is its neighbour, a little nearer. Once
+    // B is covered with no share left, no other contact can change that:
+    // the loop stops (the same answer as reading all of them, bit for bit;
+    // without it the rule read every pair, half a fine field's search).
+    for (std::size_t q = at; q-- > 0 && !(covered && least == 0.0);) {
+      const std::size_t ka = rank_[q];
       const double outside = contact_pieces_[ka]->planeBound(b.ground_point) - gap;  // (m)
       covered = covered || outside <= 0.0;
-      const bool nearer =
-          a.signed_distance < b.signed_distance || (a.signed_distance == b.signed_distance && a.piece < b.piece);
-      if (!nearer) continue;
       double cut = outside <= 0.0 ? 0.0 : std::min(1.0, outside / patch);
       // A nearer real edge standing less than its deflection off the ground
       // presses Z_A - clear of B's own ground through it: B adds the rest,
@@ -225,13 +249,17 @@ void WheelContactFinder::applySeamRule(double gap, double radius) {
       if (cut > 0.0) cut = std::min(cut, std::max(0.0, 1.0 - groundThroughEdge(ka, gap) / b.deflection));
       least = std::min(least, cut);
     }
-    return least < 1.0 && !covered && onAnEdge(kb, gap) ? std::max(least, realEdgeClearance(kb, gap) / b.deflection)
-                                                        : least;
+    if (least == 1.0) return least;  // whole: coverage is asked only of a cut contact
+    // The farther contacts cut nothing but may cover B.
+    for (std::size_t q = at + 1; q < rank_.size() && !covered; ++q) {
+      covered = contact_pieces_[rank_[q]]->planeBound(b.ground_point) - gap <= 0.0;
+    }
+    return !covered && onAnEdge(kb, gap) ? std::max(least, realEdgeClearance(kb, gap) / b.deflection) : least;
   };
   // Decide on the unfiltered set, then erase: the rule is symmetric in order.
   through_edge_.assign(contacts_.size(), kNotMeasured);
   shares_.resize(contacts_.size());
-  for (std::size_t k = 0; k < contacts_.size(); ++k) shares_[k] = share(k);
+  for (std::size_t at = 0; at < rank_.size(); ++at) shares_[rank_[at]] = share(at);
   std::size_t out = 0;
   for (std::size_t k = 0; k < contacts_.size(); ++k) {
     if (shares_[k] == 0.0) continue;

@@ -28,7 +28,10 @@
 #include <emmintrin.h>
 #endif
 
+#include <Eigen/Core>
+
 #include "base/cache_line.hpp"
+
 #include "wtc/geometry/aabb.hpp"
 
 namespace wtc::detail {
@@ -36,6 +39,15 @@ namespace wtc::detail {
 /// `box` in single precision rounded outward, never smaller than it: the
 /// tree's node boxes, and a compact mesh's leaf boxes.
 void storeOutward(const Aabb& box, float min[3], float max[3]);
+
+/// A ball (centre, radius): BoxTree::visitNear() also skips the slots whose
+/// boxes lie farther than the radius from the centre (decided in single
+/// precision with a relative slack of BoxTree::kBallSlack, so never one that
+/// comes within it).
+struct BoxTreeBall {
+  Eigen::Vector3d centre;
+  double radius = 0.0;
+};
 
 class BoxTree {
  public:
@@ -64,7 +76,17 @@ class BoxTree {
   /// for the owner to prefetch what leaf() will read, so that those misses
   /// overlap the rest of the walk.
   template <class Leaf, class Touch>
-  void visit(const Aabb& box, Leaf&& leaf, Touch&& touch) const;
+  void visit(const Aabb& box, Leaf&& leaf, Touch&& touch) const {
+    visit(box, nullptr, leaf, touch);
+  }
+  using Ball = BoxTreeBall;
+  /// visit(box, leaf, touch) for a `box` that holds `ball`, pruned by the
+  /// ball: what a wheel's search asks, where the ground within the wheel's
+  /// radius is a disc a few cells wide and the box a square of many.
+  template <class Leaf, class Touch>
+  void visitNear(const Aabb& box, const Ball& ball, Leaf&& leaf, Touch&& touch) const {
+    visit(box, &ball, leaf, touch);
+  }
 
   std::size_t memoryBytes() const { return nodes_.capacity() * sizeof(Node); }
 
@@ -101,17 +123,31 @@ class BoxTree {
   }
   // The query box in single precision, widened by at least one ulp.
   static void widen(const Aabb& box, float lo[3], float hi[3]);
+  // Relative slack of the ball's single-precision test (float's epsilon is
+  // 6e-8: the centre's and the boxes' rounding stay far inside it).
+  static constexpr double kBallSlack = 1e-5;
+  static Float4 positive(Float4 v) { return v > Float4{} ? v : Float4{}; }
+  template <class Leaf, class Touch>
+  void visit(const Aabb& box, const Ball* ball, Leaf&& leaf, Touch&& touch) const;
 
   std::vector<Node> nodes_;
 };
 
 template <class Leaf, class Touch>
-void BoxTree::visit(const Aabb& box, Leaf&& leaf, Touch&& touch) const {
+void BoxTree::visit(const Aabb& box, const Ball* ball, Leaf&& leaf, Touch&& touch) const {
   if (nodes_.empty()) return;
   float lo[3], hi[3];
   widen(box, lo, hi);
   const Float4 lx{lo[0], lo[0], lo[0], lo[0]}, ly{lo[1], lo[1], lo[1], lo[1]}, lz{lo[2], lo[2], lo[2], lo[2]};
   const Float4 hx{hi[0], hi[0], hi[0], hi[0]}, hy{hi[1], hi[1], hi[1], hi[1]}, hz{hi[2], hi[2], hi[2], hi[2]};
+  // The ball in single precision, its radius grown by the slack.
+  Float4 bx{}, by{}, bz{}, br2{};
+  if (ball != nullptr) {
+    const Eigen::Vector3d& c = ball->centre;
+    const double grown = (ball->radius + kBallSlack * (c.cwiseAbs().maxCoeff() + ball->radius)) * (1.0 + kBallSlack);
+    const auto f = [](double v) { return Float4{float(v), float(v), float(v), float(v)}; };
+    bx = f(c.x()), by = f(c.y()), bz = f(c.z()), br2 = f(grown * grown);
+  }
   // Hit leaves wait here, touched, while the walk goes on; leaf() runs for
   // them when the buffer is full and at the end.
   std::int32_t pending_first[kPendingLeaves], pending_count[kPendingLeaves];
@@ -134,7 +170,14 @@ void BoxTree::visit(const Aabb& box, Leaf&& leaf, Touch&& touch) const {
     for (int g = 0; g < kGroups; ++g) {
       const Int4 hit = (lx <= node.max_x[g]) & (node.min_x[g] <= hx) & (ly <= node.max_y[g]) &
                        (node.min_y[g] <= hy) & (lz <= node.max_z[g]) & (node.min_z[g] <= hz);
-      hits |= laneBits(hit) << (4 * g);
+      if (ball == nullptr) {
+        hits |= laneBits(hit) << (4 * g);
+        continue;
+      }
+      const Float4 ex = positive(node.min_x[g] - bx) + positive(bx - node.max_x[g]);
+      const Float4 ey = positive(node.min_y[g] - by) + positive(by - node.max_y[g]);
+      const Float4 ez = positive(node.min_z[g] - bz) + positive(bz - node.max_z[g]);
+      hits |= laneBits(hit & (ex * ex + ey * ey + ez * ez <= br2)) << (4 * g);
     }
     // Every slot in turn, unrolled: each test is a branch of its own, which
     // a rolling wheel's steady pattern predicts (walking the set bits by

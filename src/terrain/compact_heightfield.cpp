@@ -104,6 +104,9 @@ void cellSpan(double lo, double hi, double origin, double spacing, int cells, in
   while (last >= 0 && x(last) > hi) --last;              // starts after hi
 }
 
+// Relative and absolute widening of a row's chord (m): far above rounding.
+constexpr double kChordSlack = 1e-9;
+
 }  // namespace
 
 void CompactHeightfield::overlapping(const Aabb& box, PieceId first, std::vector<PieceId>& out) const {
@@ -129,6 +132,49 @@ void CompactHeightfield::overlapping(const Aabb& box, PieceId first, std::vector
       if (lowest <= std::max({z00, z01, z11})) out.push_back(id);
       if (lowest <= std::max({z00, z11, z10})) out.push_back(id + 1);
       k += 2;
+    }
+  }
+}
+
+void CompactHeightfield::within(const Eigen::Vector3d& point, double reach, PieceId first,
+                                std::vector<PieceId>& out) const {
+  const Heightfield& f = field_;
+  const Aabb cube{point.array() - reach, point.array() + reach};
+  // overlapping()'s tests on the cube, then each box's distance.
+  if (!(cube.max.z() >= base_z_) || cube.min.hasNaN() || cube.max.hasNaN()) return;
+  const auto x = [&](int i) { return f.origin.x() + i * f.spacing_x; };  // as sample() computes them
+  const auto y = [&](int i) { return f.origin.y() + i * f.spacing_y; };
+  const double reach2 = reach * reach;
+  int c0, c1, r0, r1;
+  cellSpan(cube.min.x(), cube.max.x(), f.origin.x(), f.spacing_x, f.cols - 1, c0, c1);
+  cellSpan(cube.min.y(), cube.max.y(), f.origin.y(), f.spacing_y, f.rows - 1, r0, r1);
+  const auto cells_per_row = static_cast<std::size_t>(f.cols - 1);
+  const double lowest = cube.min.z();
+  for (int r = r0; r <= r1; ++r) {
+    const double dy = std::max({0.0, y(r) - point.y(), point.y() - y(r + 1)});
+    if (dy * dy > reach2) continue;
+    // The row's chord of the disc, a little wider than computed: the test
+    // below decides each cell exactly.
+    const double half = std::sqrt(reach2 - dy * dy) * (1.0 + kChordSlack) + kChordSlack;
+    int from, to;
+    cellSpan(point.x() - half, point.x() + half, f.origin.x(), f.spacing_x, f.cols - 1, from, to);
+    from = std::max(from, c0), to = std::min(to, c1);
+    if (from > to) continue;
+    const std::size_t row = static_cast<std::size_t>(r) * cells_per_row;
+    std::size_t k = piecesBefore(row + from);  // the next ground cell's first piece
+    for (int c = from; c <= to; ++c) {
+      if (f.isHole(r, c)) continue;
+      const double z00 = f.origin.z() + f.height(r, c), z01 = f.origin.z() + f.height(r, c + 1);
+      const double z10 = f.origin.z() + f.height(r + 1, c), z11 = f.origin.z() + f.height(r + 1, c + 1);
+      const Eigen::Vector3d low(x(c), y(r), base_z_);
+      const auto id = first + static_cast<PieceId>(k);
+      k += 2;
+      const double top[2] = {std::max({z00, z01, z11}), std::max({z00, z11, z10})};
+      for (int t = 0; t < 2; ++t) {
+        if (lowest <= top[t] && Aabb{low, {x(c + 1), y(r + 1), top[t]}}.squaredDistance(point) <= reach2) {
+          out.push_back(id + t);
+        }
+      }
     }
   }
 }

@@ -41,6 +41,9 @@ class CompactHeightfield final : public FormedPieces {
   /// Appends first + k for every piece k whose bounds overlap `box` (as
   /// Aabb::overlaps decides), cell by cell in row-major order.
   void overlapping(const Aabb& box, PieceId first, std::vector<PieceId>& out) const override;
+  /// The cells of the disc the ball spans, row by row, each cell's two boxes
+  /// made from its lines and corners as pieceBounds() makes them.
+  void within(const Eigen::Vector3d& point, double reach, PieceId first, std::vector<PieceId>& out) const override;
   /// The union of all pieces' bounds.
   const Aabb& bounds() const override { return bounds_; }
   /// The field's samples and description (bytes).

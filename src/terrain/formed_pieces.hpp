@@ -47,6 +47,12 @@ class FormedPieces {
   /// Appends first + k for every piece k whose bounds overlap `box`, exactly
   /// as Aabb::overlaps decides on pieceBounds(k).
   virtual void overlapping(const Aabb& box, PieceId first, std::vector<PieceId>& out) const = 0;
+  /// Appends first + k for every piece k whose bounds overlap the cube
+  /// `point` +- `reach` and come within `reach` of `point`, exactly as
+  /// Aabb::overlaps and Aabb::squaredDistance decide on pieceBounds(k)
+  /// (Terrain::within). By default overlapping() on the cube, then the
+  /// distance.
+  virtual void within(const Eigen::Vector3d& point, double reach, PieceId first, std::vector<PieceId>& out) const;
   /// The union of all pieces' bounds.
   virtual const Aabb& bounds() const = 0;
   /// The geometry (bytes).

@@ -116,6 +116,19 @@ Aabb detail::FormedPieces::pieceBounds(std::size_t k) const {
   return cornerBox(top, bottom);
 }
 
+void detail::FormedPieces::within(const Eigen::Vector3d& point, double reach, PieceId first,
+                                  std::vector<PieceId>& out) const {
+  const std::size_t from = out.size();
+  overlapping({point.array() - reach, point.array() + reach}, first, out);
+  std::size_t kept = from;
+  for (std::size_t k = from; k < out.size(); ++k) {
+    if (pieceBounds(static_cast<std::size_t>(out[k] - first)).squaredDistance(point) <= reach * reach) {
+      out[kept++] = out[k];
+    }
+  }
+  out.resize(kept);
+}
+
 bool detail::FormedPieces::beyond(std::size_t k, const Eigen::Vector3d& point, double reach) const {
   std::array<Eigen::Vector3d, 3> top, bottom;
   prismCorners(k, top, bottom);
@@ -361,11 +374,24 @@ void Terrain::buildIndex(std::span<const detail::PendingPrisms* const> pending) 
   gatherPieces(pending);
 }
 
-void Terrain::overlapping(const Aabb& box, std::vector<PieceId>& out) const {
+void Terrain::overlapping(const Aabb& box, std::vector<PieceId>& out) const { collect(box, nullptr, out); }
+
+void Terrain::within(const Eigen::Vector3d& point, double reach, std::vector<PieceId>& out) const {
+  const detail::BoxTreeBall ball{point, reach};
+  collect({point.array() - reach, point.array() + reach}, &ball, out);
+}
+
+// overlapping() and within(): `box` holds `ball` when there is one.
+void Terrain::collect(const Aabb& box, const detail::BoxTreeBall* ball, std::vector<PieceId>& out) const {
   // Each compact part is its own index; its bounds spare a part far away
   // the walk (a box with a NaN overlaps no bounds).
   for (const Field& f : fields_) {
-    if (f.formed->bounds().overlaps(box)) f.formed->overlapping(box, f.first, out);
+    if (!f.formed->bounds().overlaps(box)) continue;
+    if (ball != nullptr) {
+      f.formed->within(ball->centre, ball->radius, f.first, out);
+    } else {
+      f.formed->overlapping(box, f.first, out);
+    }
   }
   if (!tree_) return;
   // A reported piece and its numbers are fetched while the walk goes on
@@ -375,7 +401,11 @@ void Terrain::overlapping(const Aabb& box, std::vector<PieceId>& out) const {
   const unsigned char* arena = arena_->base();
   auto report = [&](std::int32_t k) {
     const detail::PieceLeaf& leaf = leaves_[k];
-    if (!leaf.box.overlaps(box)) return;
+    // queryPoint's first test, on the same box: within the reach or not.
+    if (!leaf.box.overlaps(box) ||
+        (ball != nullptr && leaf.box.squaredDistance(ball->centre) > ball->radius * ball->radius)) {
+      return;
+    }
     out.push_back(leaf.id);
     // Fixed counts, unrolled: a rolling wheel's pieces are cached, and there
     // the prefetches are pure overhead. A line past a small piece's numbers
@@ -393,7 +423,11 @@ void Terrain::overlapping(const Aabb& box, std::vector<PieceId>& out) const {
   auto touch = [&](std::int32_t first, std::int32_t count) {
     for (std::int32_t k = first; k < first + count; ++k) __builtin_prefetch(&leaves_[k]);
   };
-  tree_->visit(box, report, touch);
+  if (ball != nullptr) {
+    tree_->visitNear(box, *ball, report, touch);
+  } else {
+    tree_->visit(box, report, touch);
+  }
 }
 
 std::size_t Terrain::pieceMemoryBytes() const {

@@ -265,6 +265,46 @@ TEST(CompactTerrainTest, FindsTheSameCandidatesForAnyBox) {
   }
 }
 
+// Terrain::within (the wheel's search since issue 53) against its
+// definition, read off every piece: the boxes that meet the ball's cube and
+// lie within the reach (so that the wheel's candidates stay the ones it
+// had, the cube's, less those its first test turned away), on stored
+// pieces (the index walked by the ball) and on compact fields and meshes
+// (their own disc of cells, their default). Half the balls are placed to
+// graze a piece's box: at exactly the reach, and one ulp beyond it.
+TEST(CompactTerrainTest, FindsThePiecesWithinAReachAsTheirBoxesDecide) {
+  const Terrain stored = mixed(false), compact = mixed(true);
+  std::mt19937 gen(11);
+  std::vector<PieceId> got, expected;
+  int grazes = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    Eigen::Vector3d c(uniform(gen, -21, 9.5), uniform(gen, -3, 3), uniform(gen, -0.7, 0.4));
+    double reach = uniform(gen, 0.01, 0.6);
+    const auto id = static_cast<PieceId>(uniform(gen, 0, static_cast<double>(stored.pieceCount() - 1)));
+    const bool graze = trial % 2 == 1;
+    if (graze) {  // straight above the piece's box, the reach its distance or one ulp less
+      const Aabb box = stored.pieceBounds(id);
+      c = Eigen::Vector3d(box.center().x(), box.center().y(), box.max.z() + reach);
+      reach = c.z() - box.max.z();
+      if (trial % 4 == 3) reach = std::nextafter(reach, 0.0);
+    }
+    for (const Terrain* terrain : {&stored, &compact}) {
+      got.clear();
+      expected.clear();
+      terrain->within(c, reach, got);
+      const Aabb cube{c.array() - reach, c.array() + reach};
+      for (PieceId k = 0; k < static_cast<PieceId>(terrain->pieceCount()); ++k) {
+        const Aabb box = terrain->pieceBounds(k);
+        if (box.overlaps(cube) && box.squaredDistance(c) <= reach * reach) expected.push_back(k);
+      }
+      std::sort(got.begin(), got.end());
+      ASSERT_EQ(got, expected) << "trial " << trial << (terrain == &compact ? ", compact" : ", stored");
+      if (graze && terrain == &compact) grazes += std::count(got.begin(), got.end(), id) == (trial % 4 == 1);
+    }
+  }
+  EXPECT_GT(grazes, 1000);  // most grazing balls did decide their piece at the edge
+}
+
 // Case: boxes that touch a mesh piece's box exactly at one face, or miss it
 // by one double ulp: below the single-precision boxes' resolution, where
 // only the exact box decides.

@@ -29,6 +29,7 @@
 // of the ground. See docs/wheel-contact.md for why this is exact on flat
 // seams and ridges.
 #include <cmath>
+#include <cstddef>
 #include <memory>
 #include <span>
 #include <string>
@@ -84,6 +85,19 @@ struct WheelContact {
   MaterialId material = -1;
 };
 
+/// What one call of WheelContactFinder::find did, stage by stage: the
+/// pieces the index gave (their boxes meet the wheel's box), the point
+/// queries run on them (the others were put beyond the reach by their
+/// corners without forming them: compact parts only), the pieces found
+/// within the reach, and the contacts returned. Counted, not timed: a
+/// query's cost is in docs/terrain.md.
+struct ContactSearchCounts {
+  std::size_t candidates = 0;
+  std::size_t queried = 0;
+  std::size_t touching = 0;
+  std::size_t contacts = 0;
+};
+
 /// Per-wheel state: scratch memory and warm-start caches, reused across
 /// steps so that a step allocates nothing once warmed up.
 class WheelContactFinder {
@@ -99,6 +113,8 @@ class WheelContactFinder {
 
   /// Candidate pieces of the last call (for diagnostics and benchmarks).
   std::span<const PieceId> candidates() const { return candidates_; }
+  /// The stages of the last call (for diagnostics and benchmarks).
+  const ContactSearchCounts& counts() const { return counts_; }
 
   /// The contacts of the last call that the tread filter dropped: the ground
   /// touches a cut cap (a wheel cambered beyond asin(w / 2 r_f) against its
@@ -120,9 +136,11 @@ class WheelContactFinder {
   void exitWhereEntered(const ConvexPolyhedron& piece, PieceId id, const Eigen::Vector3d& centre, double radius,
                         WheelContact& c);
   std::vector<PieceId> candidates_;
+  ContactSearchCounts counts_;
   std::vector<WheelContact> contacts_, caps_;
   std::vector<std::pair<PieceId, QueryCache>> caches_, next_caches_;
   std::vector<double> shares_;
+  std::vector<std::size_t> rank_;  // the seam rule's order: contacts_ indices, nearest first
   std::vector<double> through_edge_;  // per contact of this call: groundThroughEdge's answer, or kNotMeasured
   // The piece of each of this call's contacts (contacts_ order: stored, or
   // formed and kept in formed_), and the pieces formed for this call's

@@ -40,6 +40,7 @@ struct TriangleMesh;
 namespace detail {
 class FormedPieces;          // a compact part's pieces, formed on demand (src/terrain/formed_pieces.hpp)
 class BoxTree;               // the index (src/terrain/box_tree.hpp)
+struct BoxTreeBall;          // a ball the index is walked by (src/terrain/box_tree.hpp)
 class PieceArena;            // the stored pieces' memory (src/terrain/piece_arena.hpp)
 struct PieceLeaf;            // a stored piece as the index reports it (src/terrain/piece_arena.hpp)
 struct PendingPrisms;        // stored prisms made when the terrain is built (src/terrain/pending_prisms.hpp)
@@ -179,6 +180,14 @@ class Terrain {
   /// Appends to `out` every piece whose bounding box overlaps `box`
   /// (allocation-free once `out` has capacity). Order unspecified.
   void overlapping(const Aabb& box, std::vector<PieceId>& out) const;
+  /// Appends to `out` every piece whose bounding box overlaps the cube
+  /// `point` +- `reach` (m) and comes within `reach` of `point` (squared
+  /// distance at most reach^2): of overlapping()'s pieces for that cube,
+  /// those a point query with max_distance = reach does not turn away at
+  /// its first test (queryPoint), found without visiting the others. A
+  /// wheel's search: on a fine heightfield the ground within the wheel's
+  /// radius is a disc a few cells wide, its cube a square of many.
+  void within(const Eigen::Vector3d& point, double reach, std::vector<PieceId>& out) const;
 
   /// Memory (bytes) of the pieces (stored pieces, and compact parts'
   /// samples, vertices and triangles) and of the index (the stored pieces'
@@ -190,6 +199,7 @@ class Terrain {
   friend class TerrainBuilder;
   using Field = TerrainBuilder::Field;
   const ConvexPolyhedron& storedPiece(PieceId id) const;
+  void collect(const Aabb& box, const detail::BoxTreeBall* ball, std::vector<PieceId>& out) const;
   // The compact part holding piece `id`; null for a stored piece or no piece.
   const Field* formedField(PieceId id) const;
   MaterialId fieldAwareMaterialId(PieceId id) const;
