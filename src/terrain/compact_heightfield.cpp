@@ -3,9 +3,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace wtc::detail {
+
+namespace {
+// Relative and absolute (m^2) margin of a tile's test: far above rounding.
+constexpr double kTileSlack = 1e-9;
+}  // namespace
 
 CompactHeightfield::CompactHeightfield(Heightfield field) : field_(std::move(field)) {
   validate(field_);
@@ -14,6 +20,7 @@ CompactHeightfield::CompactHeightfield(Heightfield field) : field_(std::move(fie
   field_.cell_materials.shrink_to_fit();
   field_.cell_holes.shrink_to_fit();
   base_z_ = field_.baseZ();
+  makeTiles();
   if (field_.cell_holes.empty()) {
     piece_count_ = 2 * field_.cellCount();
     // The corners' coordinates as sample() computes them; origin.z + h is
@@ -46,6 +53,42 @@ CompactHeightfield::CompactHeightfield(Heightfield field) : field_(std::move(fie
     }
   }
   bounds_.min.z() = base_z_;
+}
+
+void CompactHeightfield::makeTiles() {
+  const int cells_x = field_.cols - 1, cells_y = field_.rows - 1;
+  tile_cols_ = (cells_x + kTileCells - 1) / kTileCells;
+  const int tile_rows = (cells_y + kTileCells - 1) / kTileCells;
+  tile_top_.assign(static_cast<std::size_t>(tile_rows) * static_cast<std::size_t>(tile_cols_),
+                   -std::numeric_limits<float>::infinity());
+  for (int r = 0; r < field_.rows; ++r) {
+    for (int c = 0; c < field_.cols; ++c) {
+      const double h = field_.height(r, c);
+      float up = static_cast<float>(h);
+      if (static_cast<double>(up) < h) up = std::nextafter(up, std::numeric_limits<float>::infinity());
+      // A sample on a tile's side belongs to the tiles on both sides of it.
+      for (int tr = std::max(0, (r - 1) / kTileCells); tr <= std::min(tile_rows - 1, r / kTileCells); ++tr) {
+        for (int tc = std::max(0, (c - 1) / kTileCells); tc <= std::min(tile_cols_ - 1, c / kTileCells); ++tc) {
+          float& top = tile_top_[static_cast<std::size_t>(tr) * tile_cols_ + tc];
+          top = std::max(top, up);
+        }
+      }
+    }
+  }
+  tile_top_.shrink_to_fit();
+}
+
+bool CompactHeightfield::tileBeyond(int tile_row, int tile_col, const Eigen::Vector3d& point, double reach2) const {
+  const Heightfield& f = field_;
+  const int c0 = tile_col * kTileCells, c1 = std::min(c0 + kTileCells, f.cols - 1);
+  const int r0 = tile_row * kTileCells, r1 = std::min(r0 + kTileCells, f.rows - 1);
+  const double dx = std::max({0.0, f.origin.x() + c0 * f.spacing_x - point.x(), point.x() - (f.origin.x() + c1 * f.spacing_x)});
+  const double dy = std::max({0.0, f.origin.y() + r0 * f.spacing_y - point.y(), point.y() - (f.origin.y() + r1 * f.spacing_y)});
+  const double top = f.origin.z() + static_cast<double>(tile_top_[static_cast<std::size_t>(tile_row) * tile_cols_ + tile_col]);
+  const double dz = std::max(0.0, point.z() - top);  // the pieces reach down to the base, below the point's ball
+  // Beyond with a margin far above the rounding of these sums: the cells'
+  // own test decides whatever this one lets through.
+  return dx * dx + dy * dy + dz * dz > reach2 * (1.0 + kTileSlack) + kTileSlack;
 }
 
 std::size_t CompactHeightfield::piecesBefore(std::size_t cell) const {
@@ -163,6 +206,14 @@ void CompactHeightfield::within(const Eigen::Vector3d& point, double reach, Piec
     const std::size_t row = static_cast<std::size_t>(r) * cells_per_row;
     std::size_t k = piecesBefore(row + from);  // the next ground cell's first piece
     for (int c = from; c <= to; ++c) {
+      if (c == from || c % kTileCells == 0) {
+        const int tile_end = std::min(to, (c / kTileCells + 1) * kTileCells - 1);
+        if (tileBeyond(r / kTileCells, c / kTileCells, point, reach2)) {
+          c = tile_end;  // the loop's ++c moves on to the next tile
+          if (c < to) k = piecesBefore(row + c + 1);
+          continue;
+        }
+      }
       if (f.isHole(r, c)) continue;
       const double z00 = f.origin.z() + f.height(r, c), z01 = f.origin.z() + f.height(r, c + 1);
       const double z10 = f.origin.z() + f.height(r + 1, c), z11 = f.origin.z() + f.height(r + 1, c + 1);
@@ -180,7 +231,7 @@ void CompactHeightfield::within(const Eigen::Vector3d& point, double reach, Piec
 }
 
 std::size_t CompactHeightfield::memoryBytes() const {
-  return sizeof(*this) + field_.heights.capacity() * sizeof(double) +
+  return sizeof(*this) + field_.heights.capacity() * sizeof(double) + tile_top_.capacity() * sizeof(float) +
          field_.cell_materials.capacity() * sizeof(MaterialId) + field_.cell_holes.capacity() +
          ground_before_.capacity() * sizeof(std::uint32_t);
 }
