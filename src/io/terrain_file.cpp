@@ -210,7 +210,8 @@ void readLedge(TerrainBuilder& builder, const YamlReader& in, const YAML::Node& 
                const MaterialNames& /*materials*/, TerrainFileReport& /*report*/) {
   in.checkKeys(
       p, kCommonKeys,
-      {"height", "approach_length", "top_length", "width", "thickness", "approach_tiles", "heightfield_spacing"});
+      {"height", "approach_length", "top_length", "width", "thickness", "approach_tiles", "heightfield_spacing",
+       "storage"});
   LedgeParams s;
   s.height = in.number(in.require(p, "height"), "height");
   s.approach_length = in.number(p, "approach_length", s.approach_length);
@@ -219,6 +220,10 @@ void readLedge(TerrainBuilder& builder, const YamlReader& in, const YAML::Node& 
   s.thickness = in.number(p, "thickness", s.thickness);
   s.approach_tiles = toInt(in, p, "approach_tiles", s.approach_tiles);
   s.heightfield_spacing = in.number(p, "heightfield_spacing", s.heightfield_spacing);
+  s.compact_heightfield = readCompactStorage(in, p);
+  if (s.compact_heightfield && !(s.heightfield_spacing > 0.0)) {
+    in.fail(p["storage"], "storage: compact needs heightfield_spacing > 0 (a ledge of boxes has no samples to keep)");
+  }
   s.pose_WL = in.pose(p);
   addLedge(builder, s, material);
 }

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 #include <vector>
 
 #include "builder_support.hpp"
@@ -148,7 +149,8 @@ PieceRange addSampledLedge(TerrainBuilder& builder, const LedgeParams& p, Materi
       field.heights[static_cast<std::size_t>(r) * field.cols + c] = c >= static_cast<int>(front_cells) ? p.height : 0.0;
     }
   }
-  return addHeightfield(builder, field, material);
+  return p.compact_heightfield ? addCompactHeightfield(builder, std::move(field), material)
+                               : addHeightfield(builder, field, material);
 }
 
 }  // namespace

@@ -168,6 +168,26 @@ TEST_F(TerrainFileTest, ACompactHeightfieldHasTheStoredOnesPieces) {
               HasSubstr(at(8, 14) + "pieces[1] (heightfield): storage: 'packed' (expected prisms or compact)"));
 }
 
+// A ledge sampled into a heightfield takes the same key (its engines' bodies
+// then meet the engines' own heightfield shapes); a ledge of boxes refuses
+// it, at its line.
+TEST_F(TerrainFileTest, ASampledLedgeTakesCompactStorage) {
+  const std::string ledge = std::string(kMaterials) +
+                            "pieces:\n"
+                            "  - {type: box, size: [1, 1, 1], translation: [-5, 0, 0]}\n"
+                            "  - {type: ledge, height: 0.3, approach_length: 1, top_length: 0.5, width: 1,\n"
+                            "     heightfield_spacing: 0.1";
+  const Terrain stored = loadTerrain(write("stored.yaml", ledge + "}\n"));
+  const Terrain compact = loadTerrain(write("compact.yaml", ledge + ", storage: compact}\n"));
+  ASSERT_EQ(compact.pieceCount(), stored.pieceCount());
+  ASSERT_EQ(compact.pieceCount(), 1u + 2u * 15u * 10u);
+  ASSERT_EQ(compact.compactFieldCount(), 1u);
+  EXPECT_NE(compact.compactField(0).field, nullptr);
+  expectTheStoredPiecesAfterTheBox(stored, compact);
+  EXPECT_THAT(loadError(std::string(kMaterials) + "pieces:\n  - {type: ledge, height: 0.3, storage: compact}\n"),
+              HasSubstr("storage: compact needs heightfield_spacing > 0"));
+}
+
 // A mesh takes the same storage key: its prisms formed from its vertices
 // and triangles, the same pieces as stored.
 TEST_F(TerrainFileTest, ACompactMeshHasTheStoredOnesPieces) {

@@ -65,6 +65,10 @@ struct LedgeParams {
   /// front of x = 0. Needs a pose without rotation (heightfields are
   /// axis-aligned).
   double heightfield_spacing = 0.0;
+  /// With heightfield_spacing: keep the samples (addCompactHeightfield: the
+  /// same prisms, formed when a wheel needs them, and the engines' own
+  /// heightfield shapes for the bodies) instead of every prism.
+  bool compact_heightfield = false;
   Eigen::Isometry3d pose_WL = Eigen::Isometry3d::Identity();
 };
 
