@@ -9,7 +9,7 @@
 //   FieldStep/<storage>/<spacing_mm>    TyreModel::step, full effects: search and forces.
 // <storage>: prisms (addHeightfield: every prism stored) or compact
 // (addCompactHeightfield: the samples, prisms formed as a query needs them).
-// Counters, per step: candidates (the index's pieces under the wheel's box),
+// Counters, per step: candidates (the index's pieces within r_f of the centre),
 // queried (point queries run), touching (pieces within r_f), contacts (after
 // the seam rule and the tread filter), allocs_per_step.
 //

@@ -4,7 +4,7 @@
 // from the wheel centre O to the piece is below the free radius r_f.
 //
 // One call reads top to bottom:
-//   candidate pieces (terrain index, box O +- r_f)
+//   candidate pieces (terrain index: boxes within r_f of O, Terrain::within)
 //   -> point queries (modified GJK, max_distance = r_f, warm-started)
 //   -> seam rule (drop contacts that are internal seams of the ground)
 //   -> tread filter (drop contacts on the cut caps of the truncated sphere)
@@ -86,7 +86,7 @@ struct WheelContact {
 };
 
 /// What one call of WheelContactFinder::find did, stage by stage: the
-/// pieces the index gave (their boxes meet the wheel's box), the point
+/// pieces the index gave (their boxes come within r_f of O), the point
 /// queries run on them (the others were put beyond the reach by their
 /// corners without forming them: compact parts only), the pieces found
 /// within the reach, and the contacts returned. Counted, not timed: a
