@@ -21,11 +21,8 @@
 // in the sampled pieces (restingCentre), turning 5 % faster than rolling.
 #include <benchmark/benchmark.h>
 
-#include <atomic>
 #include <cmath>
-#include <cstdlib>
 #include <memory>
-#include <new>
 #include <string>
 #include <vector>
 
@@ -34,21 +31,8 @@
 #include <wtc/tyre/tyre_model.hpp>
 
 #include "bench_field.hpp"
+#include "allocation_count.hpp"
 #include "resting_centre.hpp"
-
-namespace {
-
-std::atomic<std::size_t> g_allocations{0};  // single-threaded: see wheel_forces_bench.cpp
-
-}  // namespace
-
-void* operator new(std::size_t size) {
-  g_allocations.store(g_allocations.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace {
 
@@ -164,13 +148,13 @@ void fieldSearch(benchmark::State& state, bool compact, int spacing_mm) {
   for (const PathPoint& p : s.path) finder.find(s.terrain, wheel, p.pose, options);  // warm-up lap
   Totals totals;
   std::size_t k = 0;
-  const std::size_t allocations = g_allocations.load(std::memory_order_relaxed);
+  const std::size_t allocations = wtc::bench::allocationCount();
   for (auto _ : state) {
     benchmark::DoNotOptimize(finder.find(s.terrain, wheel, s.path[k].pose, options).data());
     totals.add(finder.counts());
     k = k + 1 == s.path.size() ? 0 : k + 1;
   }
-  totals.report(state, g_allocations.load(std::memory_order_relaxed) - allocations);
+  totals.report(state, wtc::bench::allocationCount() - allocations);
 }
 
 void fieldStep(benchmark::State& state, bool compact, int spacing_mm) {
@@ -190,7 +174,7 @@ void fieldStep(benchmark::State& state, bool compact, int spacing_mm) {
   }
   double contacts = 0.0;
   std::size_t k = 0;
-  const std::size_t allocations = g_allocations.load(std::memory_order_relaxed);
+  const std::size_t allocations = wtc::bench::allocationCount();
   for (auto _ : state) {
     const wtc::WheelForces& result = step(s.path[k]);
     contacts += static_cast<double>(result.contacts.size());
@@ -199,7 +183,7 @@ void fieldStep(benchmark::State& state, bool compact, int spacing_mm) {
   }
   Totals totals;
   totals.contacts = contacts;
-  totals.report(state, g_allocations.load(std::memory_order_relaxed) - allocations);
+  totals.report(state, wtc::bench::allocationCount() - allocations);
 }
 
 const bool kRegistered = [] {

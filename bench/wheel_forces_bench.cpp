@@ -37,15 +37,12 @@
 // traction and rolling resistance work); at the end of a lap it jumps back
 // to the start (one step in 20,000). One WheelState per run, warmed up by one
 // lap before timing. Counters: contacts_per_step, multi_contact_fraction,
-// allocs_per_step (heap allocations per step, counted by the operator new
-// below: tyre_model.hpp says a warm step allocates nothing).
+// allocs_per_step (heap allocations per step, counted by the operator new of
+// allocation_count.cpp: tyre_model.hpp says a warm step allocates nothing).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <cstdlib>
-#include <new>
 #include <string>
 #include <utility>
 #include <vector>
@@ -55,23 +52,8 @@
 #include <wtc/terrain/terrain_primitives.hpp>
 #include <wtc/tyre/tyre_model.hpp>
 
+#include "allocation_count.hpp"
 #include "resting_centre.hpp"
-
-namespace {
-
-// The benchmark is single-threaded: a relaxed load and store count exactly
-// without the locked add that would slow every allocation down.
-std::atomic<std::size_t> g_allocations{0};
-
-}  // namespace
-
-void* operator new(std::size_t size) {
-  g_allocations.store(g_allocations.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace {
 
@@ -219,7 +201,7 @@ void wheelForces(benchmark::State& state, wtc::EffectSet effects) {
   }
   double contacts = 0.0, multi = 0.0;
   std::size_t k = 0;
-  const std::size_t allocations = g_allocations.load(std::memory_order_relaxed);
+  const std::size_t allocations = wtc::bench::allocationCount();
   for (auto _ : state) {
     const wtc::WheelForces& result = step(s.path[k]);
     k = k + 1 == s.path.size() ? 0 : k + 1;
@@ -227,7 +209,7 @@ void wheelForces(benchmark::State& state, wtc::EffectSet effects) {
     multi += result.contacts.size() >= 2 ? 1.0 : 0.0;
     benchmark::DoNotOptimize(result.force);
   }
-  addCounters(state, contacts, multi, g_allocations.load(std::memory_order_relaxed) - allocations);
+  addCounters(state, contacts, multi, wtc::bench::allocationCount() - allocations);
 }
 
 void wheelForcesOnly(benchmark::State& state, wtc::EffectSet effects) {
@@ -251,14 +233,14 @@ void wheelForcesOnly(benchmark::State& state, wtc::EffectSet effects) {
       return;
     }
   }
-  const std::size_t allocations = g_allocations.load(std::memory_order_relaxed);
+  const std::size_t allocations = wtc::bench::allocationCount();
   for (auto _ : state) {
     const wtc::WheelForces& result = forces();
     benchmark::DoNotOptimize(result.force);
   }
   const double n = static_cast<double>(state.iterations());
   addCounters(state, n * static_cast<double>(contacts.size()), contacts.size() >= 2 ? n : 0.0,
-              g_allocations.load(std::memory_order_relaxed) - allocations);
+              wtc::bench::allocationCount() - allocations);
 }
 
 const bool kRegistered = [] {

@@ -154,13 +154,8 @@ constexpr double kChordSlack = 1e-9;
 
 void CompactHeightfield::overlapping(const Aabb& box, PieceId first, std::vector<PieceId>& out) const {
   const Heightfield& f = field_;
-  // Every piece reaches down to the base: a box below it meets none. A
-  // box with a NaN meets nothing (every comparison fails), as in
-  // Terrain::overlapping.
-  if (!(box.max.z() >= base_z_) || box.min.hasNaN() || box.max.hasNaN()) return;
   int c0, c1, r0, r1;
-  cellSpan(box.min.x(), box.max.x(), f.origin.x(), f.spacing_x, f.cols - 1, c0, c1);
-  cellSpan(box.min.y(), box.max.y(), f.origin.y(), f.spacing_y, f.rows - 1, r0, r1);
+  if (!cellsUnder(box, c0, c1, r0, r1)) return;
   const auto cells_per_row = static_cast<std::size_t>(f.cols - 1);
   const double lowest = box.min.z();
   for (int r = r0; r <= r1; ++r) {
@@ -168,15 +163,32 @@ void CompactHeightfield::overlapping(const Aabb& box, PieceId first, std::vector
     std::size_t k = piecesBefore(row + c0);  // the next ground cell's first piece
     for (int c = c0; c <= c1; ++c) {
       if (f.isHole(r, c)) continue;
-      // The pieces' tops: the corners' z as sample() computes them.
-      const double z00 = f.origin.z() + f.height(r, c), z01 = f.origin.z() + f.height(r, c + 1);
-      const double z10 = f.origin.z() + f.height(r + 1, c), z11 = f.origin.z() + f.height(r + 1, c + 1);
       const auto id = first + static_cast<PieceId>(k);
-      if (lowest <= std::max({z00, z01, z11})) out.push_back(id);
-      if (lowest <= std::max({z00, z11, z10})) out.push_back(id + 1);
+      const std::array<double, 2> top = pieceTops(r, c);
+      if (lowest <= top[0]) out.push_back(id);
+      if (lowest <= top[1]) out.push_back(id + 1);
       k += 2;
     }
   }
+}
+
+bool CompactHeightfield::cellsUnder(const Aabb& box, int& c0, int& c1, int& r0, int& r1) const {
+  // Every piece reaches down to the base: a box below it meets none. A
+  // box with a NaN meets nothing (every comparison fails), as in
+  // Terrain::overlapping.
+  if (!(box.max.z() >= base_z_) || box.min.hasNaN() || box.max.hasNaN()) return false;
+  const Heightfield& f = field_;
+  cellSpan(box.min.x(), box.max.x(), f.origin.x(), f.spacing_x, f.cols - 1, c0, c1);
+  cellSpan(box.min.y(), box.max.y(), f.origin.y(), f.spacing_y, f.rows - 1, r0, r1);
+  return true;
+}
+
+std::array<double, 2> CompactHeightfield::pieceTops(int r, int c) const {
+  // The corners' z as sample() computes them; (p00, p01, p11), then (p00, p11, p10).
+  const Heightfield& f = field_;
+  const double z00 = f.origin.z() + f.height(r, c), z01 = f.origin.z() + f.height(r, c + 1);
+  const double z10 = f.origin.z() + f.height(r + 1, c), z11 = f.origin.z() + f.height(r + 1, c + 1);
+  return {std::max({z00, z01, z11}), std::max({z00, z11, z10})};
 }
 
 void CompactHeightfield::within(const Eigen::Vector3d& point, double reach, PieceId first,
@@ -184,13 +196,11 @@ void CompactHeightfield::within(const Eigen::Vector3d& point, double reach, Piec
   const Heightfield& f = field_;
   const Aabb cube{point.array() - reach, point.array() + reach};
   // overlapping()'s tests on the cube, then each box's distance.
-  if (!(cube.max.z() >= base_z_) || cube.min.hasNaN() || cube.max.hasNaN()) return;
+  int c0, c1, r0, r1;
+  if (!cellsUnder(cube, c0, c1, r0, r1)) return;
   const auto x = [&](int i) { return f.origin.x() + i * f.spacing_x; };  // as sample() computes them
   const auto y = [&](int i) { return f.origin.y() + i * f.spacing_y; };
   const double reach2 = reach * reach;
-  int c0, c1, r0, r1;
-  cellSpan(cube.min.x(), cube.max.x(), f.origin.x(), f.spacing_x, f.cols - 1, c0, c1);
-  cellSpan(cube.min.y(), cube.max.y(), f.origin.y(), f.spacing_y, f.rows - 1, r0, r1);
   const auto cells_per_row = static_cast<std::size_t>(f.cols - 1);
   const double lowest = cube.min.z();
   for (int r = r0; r <= r1; ++r) {
@@ -215,12 +225,10 @@ void CompactHeightfield::within(const Eigen::Vector3d& point, double reach, Piec
         }
       }
       if (f.isHole(r, c)) continue;
-      const double z00 = f.origin.z() + f.height(r, c), z01 = f.origin.z() + f.height(r, c + 1);
-      const double z10 = f.origin.z() + f.height(r + 1, c), z11 = f.origin.z() + f.height(r + 1, c + 1);
       const Eigen::Vector3d low(x(c), y(r), base_z_);
       const auto id = first + static_cast<PieceId>(k);
       k += 2;
-      const double top[2] = {std::max({z00, z01, z11}), std::max({z00, z11, z10})};
+      const std::array<double, 2> top = pieceTops(r, c);
       for (int t = 0; t < 2; ++t) {
         if (lowest <= top[t] && Aabb{low, {x(c + 1), y(r + 1), top[t]}}.squaredDistance(point) <= reach2) {
           out.push_back(id + t);

@@ -67,6 +67,11 @@ class CompactHeightfield final : public FormedPieces {
   static constexpr int kTileCells = 8;
   // True when no piece of tile (tile_row, tile_col) has a box within
   // `reach2` (m^2, the reach squared) of `point`.
+  // The cells whose pieces' boxes may meet `box` (cellSpan along x and y);
+  // false when none can (a box below the base, or with a NaN).
+  bool cellsUnder(const Aabb& box, int& c0, int& c1, int& r0, int& r1) const;
+  // The tops (m) of cell (r, c)'s two pieces, as their boxes have them.
+  std::array<double, 2> pieceTops(int r, int c) const;
   void makeTiles();
   bool tileBeyond(int tile_row, int tile_col, const Eigen::Vector3d& point, double reach2) const;
 
