@@ -25,6 +25,8 @@ endif()
 # `yaml-cpp` (no namespace) in 0.7.
 find_package(assimp CONFIG REQUIRED)
 find_package(yaml-cpp CONFIG REQUIRED)
+# DEMs (GeoTIFF and every raster GDAL reads): GDAL 3.6's own CMake config.
+find_package(GDAL CONFIG REQUIRED)
 # summary.json of a run (wtc::io), wtc-sim and wtc-study.
 find_package(nlohmann_json 3 CONFIG REQUIRED)
 # wtc::vehicle reads URDF files with urdfdom (its CMake config's targets
@@ -53,5 +55,5 @@ function(wtc_require_linked_files)
     endforeach()
   endforeach()
 endfunction()
-wtc_require_linked_files(assimp::assimp yaml-cpp urdfdom::urdfdom_model fcl Qhull::qhullcpp
+wtc_require_linked_files(assimp::assimp yaml-cpp GDAL::GDAL urdfdom::urdfdom_model fcl Qhull::qhullcpp
   Qhull::qhull_r GTest::gtest GTest::gmock benchmark::benchmark)

@@ -9,6 +9,7 @@ packages=(
   libassimp-dev assimp-testmodels                # mesh import and its test files
   zlib1g-dev                                     # assimp's CMake config links libz.so; libassimp-dev lacks the dependency
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev
+  libgdal-dev                                    # DEMs: GeoTIFF and the other rasters GDAL reads
   liburdfdom-dev libtinyxml-dev                  # vehicles from URDF (urdfdom, and the TinyXML it parses with)
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-matplotlib                    # wtc-sim's figures

@@ -11,6 +11,7 @@
 
 #include "file_support.hpp"
 #include "wtc/base/error.hpp"
+#include "wtc/io/dem_file.hpp"
 #include "wtc/io/heightfield_file.hpp"
 #include "wtc/io/mesh_file.hpp"
 #include "wtc/terrain/heightfield.hpp"
@@ -48,11 +49,58 @@ bool readCompactStorage(const YamlReader& in, const YAML::Node& p) {
   return kind == "compact";
 }
 
+// A DEM file's keys (wtc/io/dem_file.hpp): spacing only where the raster
+// has no georeferencing, crop, step, frame and band.
+Heightfield readDemPiece(const YamlReader& in, const YAML::Node& p, const YAML::Node& file,
+                         const std::filesystem::path& path) {
+  DemRequest request;
+  if (const auto spacing = YamlReader::get(p, "spacing")) {
+    request.spacing = spacing->IsSequence() ? in.vector<2>(*spacing, "spacing")
+                                            : Eigen::Vector2d::Constant(in.number(*spacing, "spacing"));
+  }
+  if (const auto crop = YamlReader::get(p, "crop")) request.crop = in.vector<4>(*crop, "crop");
+  if (const auto step = YamlReader::get(p, "step")) {
+    const long long n = in.integer(p, "step", 1);
+    if (n < 1 || n > (1 << 20)) in.fail(*step, "step = " + std::to_string(n) + " (expected 1 ... 1048576)");
+    request.step = static_cast<int>(n);
+  }
+  if (const auto band = YamlReader::get(p, "band")) {
+    const long long n = in.integer(p, "band", 1);
+    if (n < 1 || n > (1 << 16)) in.fail(*band, "band = " + std::to_string(n) + " (expected 1 or more)");
+    request.band = static_cast<int>(n);
+  }
+  if (const auto frame = YamlReader::get(p, "frame")) {
+    const std::string kind = in.string(*frame, "frame");
+    if (kind != "local" && kind != "map") in.fail(*frame, "frame: '" + kind + "' (expected local or map)");
+    request.map_frame = kind == "map";
+  }
+  if (YamlReader::get(p, "height_scale")) request.height_scale = in.number(p, "height_scale", 1.0);
+  request.base_depth = in.number(p, "base_depth", request.base_depth);
+  request.translation = in.pose(p).translation();
+  try {
+    return readDem(path, request);
+  } catch (const InvalidInputError& e) {
+    in.fail(file, e.what());
+  }
+}
+
 Heightfield readHeightfield(const YamlReader& in, const YAML::Node& p) {
   in.checkKeys(p, kCommonKeys,
-               {"heights", "file", "spacing", "base_depth", "height_scale", "storage", "cell_materials", "holes"});
+               {"heights", "file", "spacing", "base_depth", "height_scale", "storage", "cell_materials", "holes",
+                "crop", "step", "frame", "band"});
   if (YamlReader::get(p, "rotation")) {
     in.fail(p["rotation"], "a heightfield takes no rotation (its grid is aligned with x and y)");
+  }
+  const auto file = YamlReader::get(p, "file");
+  const auto heights = YamlReader::get(p, "heights");
+  if (file.has_value() == heights.has_value()) in.fail(p, "give exactly one of 'heights' and 'file'");
+  const std::filesystem::path path = file ? in.path().parent_path() / in.string(*file, "file") : "";
+  if (file && isDemPath(path)) return readDemPiece(in, p, *file, path);
+  for (const char* key : {"crop", "step", "frame", "band"}) {
+    if (const auto node = YamlReader::get(p, key)) {
+      in.fail(*node, std::string(key) + " applies to a DEM file (.tif, .npy, .png, ...), not to " +
+                         (file ? "a CSV or PGM file" : "inline heights"));
+    }
   }
   HeightfieldLayout layout;
   const YAML::Node spacing = in.require(p, "spacing");
@@ -66,11 +114,7 @@ Heightfield readHeightfield(const YamlReader& in, const YAML::Node& p) {
   layout.origin = in.pose(p).translation();
   layout.base_depth = in.number(p, "base_depth", layout.base_depth);
   layout.height_scale = in.number(p, "height_scale", layout.height_scale);
-  const auto file = YamlReader::get(p, "file");
-  const auto heights = YamlReader::get(p, "heights");
-  if (file.has_value() == heights.has_value()) in.fail(p, "give exactly one of 'heights' and 'file'");
   if (file) {
-    const std::filesystem::path path = in.path().parent_path() / in.string(*file, "file");
     try {
       return readHeightfieldFile(path, layout);
     } catch (const InvalidInputError& e) {
@@ -250,7 +294,17 @@ void readHeightfieldPiece(TerrainBuilder& builder, const YamlReader& in, const Y
   if (const auto cells = YamlReader::get(p, "cell_materials")) {
     field.cell_materials = readCellMaterials(in, *cells, field, materials);
   }
-  if (const auto holes = YamlReader::get(p, "holes")) field.cell_holes = readHoles(in, *holes, field);
+  if (const auto holes = YamlReader::get(p, "holes")) {
+    // A DEM's no-data holes stay holes: the file's and the key's are joined.
+    std::vector<std::uint8_t> given = readHoles(in, *holes, field);
+    for (std::size_t k = 0; k < field.cell_holes.size(); ++k) given[k] |= field.cell_holes[k];
+    field.cell_holes = std::move(given);
+    try {
+      validate(field);
+    } catch (const InvalidInputError& e) {
+      in.fail(*holes, e.what());
+    }
+  }
   if (compact) {
     addCompactHeightfield(builder, std::move(field), material);
   } else {

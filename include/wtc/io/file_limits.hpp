@@ -26,4 +26,11 @@ inline constexpr std::uint64_t kMaxDescriptionFileBytes = 64 * kBytesPerMiB;
 /// value, and a binary STL of 8e7 triangles (50 bytes each).
 inline constexpr std::uint64_t kMaxDataFileBytes = 4096 * kBytesPerMiB;
 
+/// Samples a DEM may give a heightfield (wtc/io/dem_file.hpp), after its
+/// crop and step: 2^30, about the most cells a terrain can number
+/// ((2^31 - 1) / 2 pieces), 8 GiB of heights. A compressed GeoTIFF can
+/// hold far more samples than its bytes suggest, so the count is checked
+/// before any height is read.
+inline constexpr std::uint64_t kMaxDemSamples = std::uint64_t{1} << 30;
+
 }  // namespace wtc::io
