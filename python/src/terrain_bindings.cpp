@@ -11,6 +11,7 @@
 #include "terrain_query.hpp"
 #include "wtc/base/error.hpp"
 #include "wtc/contact/wheel_contact.hpp"
+#include "wtc/io/dem_file.hpp"
 #include "wtc/io/terrain_file.hpp"
 #include "wtc/terrain/heightfield.hpp"
 
@@ -143,6 +144,88 @@ TerrainHandle heightfield(const py::array_t<double, py::array::c_style | py::arr
   return TerrainHandle{std::make_shared<const Terrain>(std::move(builder).build())};
 }
 
+bool isDescription(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".yaml" || ext == ".yml";
+}
+
+Eigen::Vector2d spacingOf(const py::object& spacing) {
+  if (py::isinstance<py::float_>(spacing) || py::isinstance<py::int_>(spacing)) {
+    return Eigen::Vector2d::Constant(spacing.cast<double>());
+  }
+  const auto pair = spacing.cast<std::array<double, 2>>();
+  return Eigen::Vector2d(pair[0], pair[1]);
+}
+
+TerrainHandle loadTerrain(const std::filesystem::path& path, const py::object& spacing, const py::object& crop,
+                          int step, const py::object& height_scale, const std::string& frame,
+                          const std::array<double, 3>& translation, int band, const std::string& storage,
+                          double base_depth) {
+  if (isDescription(path)) {
+    const bool defaults = spacing.is_none() && crop.is_none() && step == 1 && height_scale.is_none() &&
+                          frame == "local" && translation == std::array<double, 3>{0.0, 0.0, 0.0} && band == 1 &&
+                          storage == "compact" && base_depth == 1.0;
+    if (!defaults) {
+      throw InvalidInputError("wtc.load_terrain: " + path.string() +
+                              ": a terrain file gives its pieces' keys itself; the DEM arguments are for a raster");
+    }
+    return TerrainHandle{std::make_shared<const Terrain>(io::loadTerrain(path))};
+  }
+  if (frame != "local" && frame != "map") {
+    throw InvalidInputError("wtc.load_terrain: frame = '" + frame + "' (expected 'local' or 'map')");
+  }
+  if (storage != "compact" && storage != "prisms") {
+    throw InvalidInputError("wtc.load_terrain: storage = '" + storage + "' (expected 'compact' or 'prisms')");
+  }
+  io::DemRequest request;
+  if (!spacing.is_none()) request.spacing = spacingOf(spacing);
+  if (!crop.is_none()) {
+    const auto w = crop.cast<std::array<double, 4>>();
+    request.crop = Eigen::Vector4d(w[0], w[1], w[2], w[3]);
+  }
+  request.step = step;
+  if (!height_scale.is_none()) request.height_scale = height_scale.cast<double>();
+  request.map_frame = frame == "map";
+  request.translation = Eigen::Vector3d(translation[0], translation[1], translation[2]);
+  request.band = band;
+  request.base_depth = base_depth;
+  Heightfield field;
+  {
+    py::gil_scoped_release unlocked;
+    field = io::readDem(path, request);
+  }
+  TerrainBuilder builder;
+  const MaterialId material = builder.addMaterial(Material{});
+  if (storage == "compact") {
+    addCompactHeightfield(builder, std::move(field), material);
+  } else {
+    addHeightfield(builder, field, material);
+  }
+  return TerrainHandle{std::make_shared<const Terrain>(std::move(builder).build())};
+}
+
+void writeDem(const std::filesystem::path& path,
+              const py::array_t<double, py::array::c_style | py::array::forcecast>& heights, const py::object& spacing,
+              const std::array<double, 2>& south_west, int epsg) {
+  if (heights.ndim() != 2) throw InvalidInputError("wtc.write_dem: heights must be a 2-D array (rows, cols)");
+  Heightfield field;
+  field.rows = static_cast<int>(heights.shape(0));
+  field.cols = static_cast<int>(heights.shape(1));
+  const Eigen::Vector2d s = spacingOf(spacing);
+  field.spacing_x = s.x();
+  field.spacing_y = s.y();
+  field.heights.assign(heights.data(), heights.data() + heights.size());
+  // NaN samples are no ground: the cells around them become holes.
+  std::vector<std::uint8_t> missing(field.heights.size(), 0);
+  for (std::size_t k = 0; k < field.heights.size(); ++k) missing[k] = std::isnan(field.heights[k]) ? 1 : 0;
+  holesAtMissingSamples(field, missing);
+  io::DemWriteOptions options;
+  options.epsg = epsg;
+  options.map_south_west = Eigen::Vector2d(south_west[0], south_west[1]);
+  io::writeDemGeoTiff(path, field, options);
+}
+
 }  // namespace
 
 void bindTerrain(py::module_& m) {
@@ -166,12 +249,19 @@ void bindTerrain(py::module_& m) {
            "the contacts, flat, with index saying whose.")
       .def("_cpp_query_seconds", &cppQuerySeconds, py::arg("points"), py::arg("max_distance") = 1.0,
            "The benchmark's reference: the same queries point by point from C++; seconds.");
-  m.def(
-      "load_terrain",
-      [](const std::filesystem::path& path) {
-        return TerrainHandle{std::make_shared<const Terrain>(io::loadTerrain(path))};
-      },
-      py::arg("path"), "A terrain file (terrains/README.md).");
+  m.def("load_terrain", &loadTerrain, py::arg("path"), py::kw_only(), py::arg("spacing") = py::none(),
+        py::arg("crop") = py::none(), py::arg("step") = 1, py::arg("height_scale") = py::none(),
+        py::arg("frame") = "local", py::arg("translation") = std::array<double, 3>{0.0, 0.0, 0.0},
+        py::arg("band") = 1, py::arg("storage") = "compact", py::arg("base_depth") = 1.0,
+        "A terrain file (.yaml, terrains/README.md), or a DEM (GeoTIFF or any raster GDAL reads, a 16-bit PNG, a "
+        ".npy array) as one heightfield of the default material, with the terrain file's keys as arguments "
+        "(docs/terrain.md#dems-geotiff-png-npy); a DEM keeps only its samples (storage='compact') unless "
+        "storage='prisms'.");
+  m.def("write_dem", &writeDem, py::arg("path"), py::arg("heights"), py::arg("spacing"), py::kw_only(),
+        py::arg("south_west") = std::array<double, 2>{0.0, 0.0}, py::arg("epsg") = 0,
+        "Writes heights (rows, cols) in m, row 0 the south edge as in wtc.heightfield, NaN for no ground, as a "
+        "north-up GeoTIFF of `spacing` m (a number or (x, y)) whose south-west sample is at `south_west` in the "
+        "projected system EPSG:`epsg` (0: none).");
   m.def("heightfield", &heightfield, py::arg("heights"), py::arg("spacing_x") = 1.0, py::arg("spacing_y") = 1.0,
         py::arg("origin") = std::array<double, 3>{0.0, 0.0, 0.0}, py::arg("base_depth") = 1.0,
         "A terrain of one heightfield: heights (rows, cols) in m, rows along y, columns along x.");

@@ -334,7 +334,6 @@ Heightfield readDem(const std::filesystem::path& path, const DemRequest& request
   field.heights.resize(kept);
   std::vector<std::uint8_t> no_data;  // per sample, filled at the first one
   std::int64_t no_data_count = 0;
-  double lowest = std::numeric_limits<double>::infinity();
   const std::int64_t col_lo = std::min(ax.first, ax.first + (ax.count - 1) * ax.stride);
   const std::int64_t span = std::abs((ax.count - 1) * ax.stride) + 1;
   std::vector<double> row_values(static_cast<std::size_t>(span));
@@ -357,30 +356,16 @@ Heightfield readDem(const std::filesystem::path& path, const DemRequest& request
                                 std::to_string(file_col) + " is " + number(raw) + ", which gives no finite height");
       }
       field.heights[k] = h;
-      lowest = std::min(lowest, h);
     }
   }
   if (no_data_count == static_cast<std::int64_t>(kept)) {
     throw InvalidInputError(where(path) + "all " + std::to_string(kept) + " kept samples are no-data: no ground");
   }
   if (no_data_count > 0) {
-    // A cell with a no-data corner is a hole; the missing samples take the
-    // lowest height so that they move neither the base nor any bound.
-    field.cell_holes.assign(field.cellCount(), 0);
-    for (int r = 0; r + 1 < field.rows; ++r) {
-      for (int c = 0; c + 1 < field.cols; ++c) {
-        const std::size_t k = static_cast<std::size_t>(r) * field.cols + c;
-        if (no_data[k] | no_data[k + 1] | no_data[k + field.cols] | no_data[k + field.cols + 1]) {
-          field.cell_holes[static_cast<std::size_t>(r) * (field.cols - 1) + c] = 1;
-        }
-      }
-    }
-    for (std::size_t k = 0; k < kept; ++k) {
-      if (no_data[k]) field.heights[k] = lowest;
-    }
-    if (field.pieceCount() == 0) {
-      throw InvalidInputError(where(path) + "every cell touches a no-data sample (" + std::to_string(no_data_count) +
-                              " of " + std::to_string(kept) + " samples): no ground");
+    try {
+      holesAtMissingSamples(field, no_data);
+    } catch (const InvalidInputError& e) {
+      throw InvalidInputError(where(path) + e.what());
     }
   }
   field.origin = request.translation;

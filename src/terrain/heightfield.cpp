@@ -165,6 +165,39 @@ std::optional<PieceId> pieceUnder(const PieceRange& range, const Heightfield& f,
   return cellPiece(range, f, p.r, p.c, p.s >= p.t ? 0 : 1);
 }
 
+void holesAtMissingSamples(Heightfield& f, const std::vector<std::uint8_t>& missing) {
+  const auto samples = static_cast<std::size_t>(f.rows) * static_cast<std::size_t>(f.cols);
+  if (f.rows < 2 || f.cols < 2 || missing.size() != samples || f.heights.size() != samples) {
+    throw InvalidInputError(std::string(kWhere) + ": holesAtMissingSamples needs one entry per sample (" +
+                            std::to_string(samples) + ")");
+  }
+  const auto count = static_cast<std::size_t>(std::count_if(missing.begin(), missing.end(), holeEntry));
+  if (count == 0) return;
+  if (count == samples) {
+    throw InvalidInputError(std::string(kWhere) + ": all " + std::to_string(samples) + " samples are missing: no ground");
+  }
+  double lowest = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < samples; ++k) {
+    if (!missing[k]) lowest = std::min(lowest, f.heights[k]);
+  }
+  if (f.cell_holes.empty()) f.cell_holes.assign(f.cellCount(), 0);
+  for (int r = 0; r + 1 < f.rows; ++r) {
+    for (int c = 0; c + 1 < f.cols; ++c) {
+      const std::size_t k = static_cast<std::size_t>(r) * f.cols + c;
+      if (missing[k] | missing[k + 1] | missing[k + f.cols] | missing[k + f.cols + 1]) {
+        f.cell_holes[static_cast<std::size_t>(r) * (f.cols - 1) + c] = 1;
+      }
+    }
+  }
+  for (std::size_t k = 0; k < samples; ++k) {
+    if (missing[k]) f.heights[k] = lowest;
+  }
+  if (f.pieceCount() == 0) {
+    throw InvalidInputError(std::string(kWhere) + ": every cell touches a missing sample (" + std::to_string(count) +
+                            " of " + std::to_string(samples) + " samples): no ground");
+  }
+}
+
 TriangleMesh surfaceMesh(const Heightfield& f) {
   TriangleMesh m;
   m.vertices.reserve(f.heights.size());

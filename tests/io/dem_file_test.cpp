@@ -208,7 +208,7 @@ TEST_F(DemFileTest, NoDataAndNanSamplesMakeHolesOfTheCellsTheyTouch) {
   r.no_data = -9999.0;
   r.values[5] = r.values[6] = -9999.0;  // the middle row's two inner samples touch all six cells
   writeRaster(dir() / "cut.tif", r);
-  EXPECT_THAT(errorOf([&] { readDem(dir() / "cut.tif"); }), HasSubstr("every cell touches a no-data sample"));
+  EXPECT_THAT(errorOf([&] { readDem(dir() / "cut.tif"); }), HasSubstr("every cell touches a missing sample"));
 }
 
 TEST_F(DemFileTest, VerticalUnitsScaleAndOffsetGiveMetres) {

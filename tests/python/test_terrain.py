@@ -87,3 +87,41 @@ def test_bad_arrays_are_refused_naming_the_problem():
         terrain.query(np.zeros((1, 3)), max_distance=np.inf)
     with pytest.raises(wtc.InvalidInputError, match="free_radius"):
         terrain.wheel_contacts(np.zeros((1, 3)), np.array([[0.0, 1.0, 0.0]]), radius=-1.0)
+
+
+def test_a_dem_written_and_loaded_is_the_same_ground(tmp_path):
+    """wtc.write_dem then wtc.load_terrain: the GeoTIFF's ground is the array's, cropped and placed as asked;
+    a NaN sample leaves a hole; a .npy array loads with its spacing."""
+    rows, cols, spacing = 40, 60, 0.05
+    y, x = np.mgrid[0:rows, 0:cols] * spacing
+    full = 0.1 * np.sin(x) + 0.05 * y  # row 0 is the south edge, as in wtc.heightfield
+    heights = full.copy()
+    heights[10, 10] = np.nan
+    path = tmp_path / "dem.tif"
+    wtc.write_dem(path, heights, spacing, south_west=(350000.0, 600000.0), epsg=32633)
+
+    whole = wtc.load_terrain(path)
+    same = wtc.heightfield(full, spacing, spacing)
+    # Two points above the ground, one 1 cm under it where the NaN sample (0.5, 0.5) took its four cells.
+    under = 0.1 * np.sin(0.515) + 0.05 * 0.52 - 0.01  # within 0.5 mm of the surface's plane there
+    points = np.array([[1.0, 1.0, 1.0], [2.5, 1.5, 1.0], [0.515, 0.52, under]])
+    distances, _, _ = whole.query(points, max_distance=2.0)
+    expected, _, _ = same.query(points, max_distance=2.0)
+    np.testing.assert_allclose(distances[:2], expected[:2], rtol=0, atol=1e-6)  # float32 heights
+    assert expected[2] < 0 < distances[2]  # inside the full ground, in the air of the hole
+
+    part = wtc.load_terrain(path, crop=(350001.0, 600000.5, 350002.0, 600001.0), frame="map",
+                            translation=(-350000.0, -600000.0, 0.0))
+    (low, high) = part.bounds
+    np.testing.assert_allclose([low[0], low[1], high[0], high[1]], [1.0, 0.5, 2.0, 1.0], atol=1e-6)
+    assert part.piece_count == 2 * 20 * 10
+
+    np.save(tmp_path / "dem.npy", heights[::-1])  # a .npy is a map: its first row is north
+    from_npy = wtc.load_terrain(tmp_path / "dem.npy", spacing=spacing)
+    distances_npy, _, _ = from_npy.query(points[:2], max_distance=2.0)
+    np.testing.assert_allclose(distances_npy, expected[:2], rtol=0, atol=1e-12)
+
+    with pytest.raises(wtc.Error, match="the raster has no georeferencing: give spacing"):
+        wtc.load_terrain(tmp_path / "dem.npy")
+    with pytest.raises(wtc.Error, match="the DEM arguments are for a raster"):
+        wtc.load_terrain(tmp_path / "t.yaml", step=2)

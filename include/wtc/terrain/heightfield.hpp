@@ -127,6 +127,15 @@ std::optional<PieceId> pieceUnder(const PieceRange& range, const Heightfield& fi
 /// wants triangles.
 TriangleMesh surfaceMesh(const Heightfield& field);
 
+/// Samples that measured nothing (a DEM's no-data, a NaN height): every
+/// cell with a missing corner becomes a hole (joined with the field's own
+/// cell_holes), and each missing sample takes the lowest height of the
+/// others, so that it moves neither the base nor any bound. `missing` has
+/// one entry per sample (rows x cols, as heights), nonzero where missing.
+/// Leaves the field alone when nothing is missing; throws
+/// InvalidInputError if no sample or no cell is left.
+void holesAtMissingSamples(Heightfield& field, const std::vector<std::uint8_t>& missing);
+
 /// World z of the triangulated surface above (x, y) (m), or nullopt outside
 /// the grid or over a hole. The same triangles as the pieces.
 std::optional<double> surfaceHeight(const Heightfield& field, double x, double y);
