@@ -122,6 +122,9 @@ class GdalSource final : public RasterSource {
                               std::to_string(bands) + ")");
     }
     band_ = GDALGetRasterBand(dataset_.get(), band_number);
+    int block_cols = 0, block_rows = 0;
+    GDALGetBlockSize(band_, &block_cols, &block_rows);
+    block_rows_ = std::max(block_rows, 1);
     facts_.cols = GDALGetRasterXSize(dataset_.get());
     facts_.rows = GDALGetRasterYSize(dataset_.get());
     readGeoreference();
@@ -130,6 +133,14 @@ class GdalSource final : public RasterSource {
   const RasterFacts& facts() const override { return facts_; }
   void readRow(std::int64_t row, std::int64_t col0, std::int64_t count, double* out) override {
     const QuietGdal quiet;
+    // Rows come in order: once they leave a row of blocks, its decoded
+    // blocks are dropped, so that GDAL's cache (5 % of the memory by
+    // default) does not grow to the whole raster beside the heights.
+    const std::int64_t block_row = row / block_rows_;
+    if (block_row != last_block_row_) {
+      GDALFlushRasterCache(band_);
+      last_block_row_ = block_row;
+    }
     if (GDALRasterIO(band_, GF_Read, static_cast<int>(col0), static_cast<int>(row), static_cast<int>(count), 1, out,
                      static_cast<int>(count), 1, GDT_Float64, 0, 0) != CE_None) {
       throw InvalidInputError(where(path_) + "cannot read row " + std::to_string(row) + QuietGdal::lastMessage());
@@ -178,6 +189,8 @@ class GdalSource final : public RasterSource {
   std::filesystem::path path_;
   Dataset dataset_;
   GDALRasterBandH band_ = nullptr;
+  std::int64_t block_rows_ = 1;
+  std::int64_t last_block_row_ = -1;
   RasterFacts facts_;
 };
 

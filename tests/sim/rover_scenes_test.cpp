@@ -1,6 +1,6 @@
 // The rocker-bogie rover from URDF (vehicles/rocker_bogie_rover.yaml): its
 // three scenes in both engines and every mode (issue 37, item 4), with
-// its differential held: the rockers turn by equal and opposite angles
+// its differential held (and the sample DEM's scene): the rockers turn by equal and opposite angles
 // relative to the chassis (left = -bar, right = +bar, URDF <mimic>), so
 // the chassis pitches by their mean. Short runs (seconds each); the step
 // climb's measurement is tools/rover_step_climb.sh (docs/rocker-bogie-rover.md).
@@ -121,6 +121,22 @@ TEST(RoverScenesTest, ClimbsALowStepInBothEnginesAndModes) {
       EXPECT_GT(o.summary.fields.at("lowest_wheel_height_m"), 0.05) << label;
       EXPECT_LT(o.mimic_error, kMimicToleranceRad) << label;
     }
+  }
+}
+
+// The rover over a GeoTIFF DEM (scenes/rover_dem.yaml: terrains/sample_dem.yaml,
+// 2 cm cells kept compact, the engines' bodies on their own heightfield
+// shapes): its right wheels climb a 3.1 cm rock, the differential moves,
+// nothing tips. 8 s: the rock is crossed by 2.5 s.
+TEST(RoverScenesTest, CrossesASampleDemAndItsRockInBothEngines) {
+  for (const char* engine : kEngines) {
+    const Outcome o = run("rover_dem", engine, "force", {{"duration", "8"}, {"success.min_distance", "1.2"}},
+                          /*scene_step=*/true);
+    EXPECT_TRUE(o.summary.success) << engine;  // its energy check included
+    EXPECT_GT(o.summary.fields.at("distance_m"), 1.4) << engine;  // 0.2 m/s after the 1 s ramp
+    EXPECT_LT(o.summary.fields.at("max_tilt_deg"), 10.0) << engine;
+    EXPECT_GT(o.bar_travel, 0.01) << engine << ": the rockers did not move over the rock";
+    EXPECT_LT(o.mimic_error, kMimicToleranceRad) << engine;
   }
 }
 
