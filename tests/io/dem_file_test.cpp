@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "gdal_raster.hpp"
 #include "temp_dir.hpp"
 #include "wtc/base/error.hpp"
 #include "wtc/io/file_limits.hpp"
@@ -26,66 +27,15 @@
 namespace wtc::io {
 namespace {
 
+using testing::Raster;
+using testing::writeRaster;
+
 using ::testing::AllOf;
 using testing::errorOf;
 using ::testing::HasSubstr;
 
 // Float32 holds these test heights (multiples of 1/64 m below 100 m) exactly.
 constexpr double kExact = 0.0;
-
-// A raster as GDAL's GTiff (or PNG, through a MEM copy) driver writes it.
-struct Raster {
-  int cols = 0, rows = 0;
-  std::vector<double> values;  // file order: the top (first) row first
-  GDALDataType type = GDT_Float32;
-  std::optional<std::array<double, 6>> geotransform;
-  int epsg = 0;
-  std::string unit;
-  std::optional<double> no_data, scale, offset;
-  bool palette = false;
-  std::string driver = "GTiff";
-  std::vector<std::string> options;
-};
-
-void writeRaster(const std::filesystem::path& path, const Raster& r) {
-  GDALAllRegister();
-  GDALDriverH mem = GDALGetDriverByName("MEM");
-  GDALDatasetH ds = GDALCreate(mem, "", r.cols, r.rows, 1, r.type, nullptr);
-  ASSERT_NE(ds, nullptr);
-  if (r.geotransform) {
-    std::array<double, 6> g = *r.geotransform;
-    GDALSetGeoTransform(ds, g.data());
-  }
-  if (r.epsg) {
-    OGRSpatialReferenceH srs = OSRNewSpatialReference(nullptr);
-    ASSERT_EQ(OSRImportFromEPSG(srs, r.epsg), OGRERR_NONE);
-    GDALSetSpatialRef(ds, srs);
-    OSRDestroySpatialReference(srs);
-  }
-  GDALRasterBandH band = GDALGetRasterBand(ds, 1);
-  if (!r.unit.empty()) GDALSetRasterUnitType(band, r.unit.c_str());
-  if (r.no_data) GDALSetRasterNoDataValue(band, *r.no_data);
-  if (r.scale) GDALSetRasterScale(band, *r.scale);
-  if (r.offset) GDALSetRasterOffset(band, *r.offset);
-  if (r.palette) {
-    GDALColorTableH table = GDALCreateColorTable(GPI_RGB);
-    GDALColorEntry entry{10, 20, 30, 255};
-    GDALSetColorEntry(table, 0, &entry);
-    GDALSetRasterColorTable(band, table);
-    GDALDestroyColorTable(table);
-  }
-  std::vector<double> values = r.values;
-  ASSERT_EQ(GDALRasterIO(band, GF_Write, 0, 0, r.cols, r.rows, values.data(), r.cols, r.rows, GDT_Float64, 0, 0),
-            CE_None);
-  std::vector<const char*> options;
-  for (const std::string& o : r.options) options.push_back(o.c_str());
-  options.push_back(nullptr);
-  GDALDatasetH out = GDALCreateCopy(GDALGetDriverByName(r.driver.c_str()), path.c_str(), ds, FALSE,
-                                    const_cast<char**>(options.data()), nullptr, nullptr);
-  ASSERT_NE(out, nullptr) << CPLGetLastErrorMsg();
-  GDALClose(out);
-  GDALClose(ds);
-}
 
 // A 4 x 3 raster of 0.5 m pixels whose top-left corner is at (1000, 2003):
 // pixel centres x = 1000.25 ... 1001.75, y = 2002.75 (top row) ... 2001.75.
@@ -361,19 +311,7 @@ TEST_F(DemFileTest, RastersItCannotTakeAreRefusedWithTheReason) {
               AllOf(HasSubstr("palette.tif: band 1 is a colour channel (Palette)")));
 
   // 40000 x 30000 samples in a file of a few kB: no block is written.
-  Raster huge;
-  huge.cols = 40000;
-  huge.rows = 30000;
-  huge.geotransform = std::array<double, 6>{0.0, 0.01, 0.0, 300.0, 0.0, -0.01};
-  GDALAllRegister();
-  {
-    const char* options[] = {"SPARSE_OK=TRUE", "TILED=YES", nullptr};
-    GDALDatasetH ds = GDALCreate(GDALGetDriverByName("GTiff"), (dir() / "huge.tif").c_str(), huge.cols, huge.rows, 1,
-                                 GDT_Float32, const_cast<char**>(options));
-    ASSERT_NE(ds, nullptr);
-    GDALSetGeoTransform(ds, huge.geotransform->data());
-    GDALClose(ds);
-  }
+  testing::writeSparseRaster(dir() / "huge.tif", 40000, 30000, {0.0, 0.01, 0.0, 300.0, 0.0, -0.01});
   EXPECT_LT(std::filesystem::file_size(dir() / "huge.tif"), 1u << 20);
   EXPECT_THAT(errorOf([&] { readDem(dir() / "huge.tif"); }),
               AllOf(HasSubstr("huge.tif: 40000 x 30000 = 1200000000 samples, more than the 1073741824"),
