@@ -255,7 +255,7 @@ void bindTerrain(py::module_& m) {
         py::arg("band") = 1, py::arg("storage") = "compact", py::arg("base_depth") = 1.0,
         "A terrain file (.yaml, terrains/README.md), or a DEM (GeoTIFF or any raster GDAL reads, a 16-bit PNG, a "
         ".npy array) as one heightfield of the default material, with the terrain file's keys as arguments "
-        "(docs/terrain.md#dems-geotiff-png-npy); a DEM keeps only its samples (storage='compact') unless "
+        "(docs/terrain.md#dems-geotiff-png-npy-issue-53-item-4); a DEM keeps only its samples (storage='compact') unless "
         "storage='prisms'.");
   m.def("write_dem", &writeDem, py::arg("path"), py::arg("heights"), py::arg("spacing"), py::kw_only(),
         py::arg("south_west") = std::array<double, 2>{0.0, 0.0}, py::arg("epsg") = 0,
