@@ -25,12 +25,6 @@ namespace {
 
 using detail::where;
 
-std::string number(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.9g", v);
-  return text;
-}
-
 // Metres per vertical unit as GDAL bands write it; nullopt if unknown.
 std::optional<double> metresPerUnit(std::string unit) {
   for (char& c : unit) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -46,7 +40,8 @@ std::optional<double> metresPerUnit(std::string unit) {
 // What the pipeline needs of a raster, whoever reads it.
 struct RasterFacts {
   std::int64_t cols = 0, rows = 0;
-  std::optional<std::array<double, 6>> geotransform;  // GDAL's: x = g0 + (j) g1 + (i) g2, y = g3 + j g4 + i g5 (corners)
+  std::optional<std::array<double, 6>>
+      geotransform;  // GDAL's: x = g0 + (j) g1 + (i) g2, y = g3 + j g4 + i g5 (corners)
   double metres_per_map_unit = 1.0;
   std::string crs;
   bool integer = false;
@@ -197,11 +192,11 @@ class GdalSource final : public RasterSource {
 // One axis of the grid: the file indices of the kept samples, in the
 // order of increasing map coordinate, and the first one's map coordinate.
 struct Axis {
-  std::int64_t first = 0;  // file index of the kept sample with the smallest map coordinate
+  std::int64_t first = 0;   // file index of the kept sample with the smallest map coordinate
   std::int64_t stride = 1;  // file index step to the next kept sample (+-step)
   std::int64_t count = 0;
-  double spacing = 1.0;     // m
-  double start = 0.0;       // map coordinate of the first kept sample (m)
+  double spacing = 1.0;  // m
+  double start = 0.0;    // map coordinate of the first kept sample (m)
 };
 
 // Kept samples of one axis: file index k has map coordinate
@@ -232,8 +227,7 @@ Axis keepAlong(std::int64_t size, double centre0, double delta, std::optional<st
 
 std::unique_ptr<RasterSource> openSource(const std::filesystem::path& path, int band) {
   detail::requireRegularFile(path, kMaxDataFileBytes, detail::kDataFileKind);
-  std::string ext = path.extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string ext = detail::lowerExtension(path);
   if (ext == ".npy") {
     if (band != 1) throw InvalidInputError(where(path) + "a .npy array has one band; band = " + std::to_string(band));
     return std::make_unique<NpySource>(path);
@@ -244,21 +238,21 @@ std::unique_ptr<RasterSource> openSource(const std::filesystem::path& path, int 
 }  // namespace
 
 bool isDemPath(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string ext = detail::lowerExtension(path);
   return ext != ".csv" && ext != ".txt" && ext != ".pgm";
 }
 
 Heightfield readDem(const std::filesystem::path& path, const DemRequest& request, DemInfo* info) {
   if (request.step < 1) throw InvalidInputError(where(path) + "step = " + std::to_string(request.step) + " (>= 1)");
   if (request.height_scale && !std::isfinite(*request.height_scale)) {
-    throw InvalidInputError(where(path) + "height_scale = " + number(*request.height_scale) + " is not finite");
+    throw InvalidInputError(where(path) + "height_scale = " + formatNumber(*request.height_scale) + " is not finite");
   }
   if (request.crop) {
     const Eigen::Vector4d& w = *request.crop;
     if (!w.allFinite() || !(w[0] < w[2]) || !(w[1] < w[3])) {
-      throw InvalidInputError(where(path) + "crop [" + number(w[0]) + ", " + number(w[1]) + ", " + number(w[2]) +
-                              ", " + number(w[3]) + "] is not a window [x0, y0, x1, y1] with x0 < x1, y0 < y1");
+      throw InvalidInputError(where(path) + "crop [" + formatNumber(w[0]) + ", " + formatNumber(w[1]) + ", " +
+                              formatNumber(w[2]) + ", " + formatNumber(w[3]) +
+                              "] is not a window [x0, y0, x1, y1] with x0 < x1, y0 < y1");
     }
   }
   const std::unique_ptr<RasterSource> source = openSource(path, request.band);
@@ -269,19 +263,19 @@ Heightfield readDem(const std::filesystem::path& path, const DemRequest& request
   if (f.geotransform) {
     const auto& g = *f.geotransform;
     if (g[2] != 0.0 || g[4] != 0.0) {
-      throw InvalidInputError(where(path) + "the raster is rotated or sheared (geotransform terms " + number(g[2]) +
-                              ", " + number(g[4]) + "): WTC reads north-up rasters only; warp it first (gdalwarp)");
+      throw InvalidInputError(where(path) + "the raster is rotated or sheared (geotransform terms " +
+                              formatNumber(g[2]) + ", " + formatNumber(g[4]) +
+                              "): WTC reads north-up rasters only; warp it first (gdalwarp)");
     }
     if (!(std::isfinite(g[1]) && std::isfinite(g[5]) && g[1] != 0.0 && g[5] != 0.0 && std::isfinite(g[0]) &&
           std::isfinite(g[3]))) {
-      throw InvalidInputError(where(path) + "the raster's pixel size " + number(g[1]) + " x " + number(g[5]) +
-                              " or origin is not usable");
+      throw InvalidInputError(where(path) + "the raster's pixel size " + formatNumber(g[1]) + " x " +
+                              formatNumber(g[5]) + " or origin is not usable");
     }
     if (request.spacing) {
-      throw InvalidInputError(where(path) + "the raster states its own spacing (" +
-                              number(std::abs(g[1]) * f.metres_per_map_unit) + " x " +
-                              number(std::abs(g[5]) * f.metres_per_map_unit) +
-                              " m): leave out spacing (step coarsens it)");
+      throw InvalidInputError(
+          where(path) + "the raster states its own spacing (" + formatNumber(std::abs(g[1]) * f.metres_per_map_unit) +
+          " x " + formatNumber(std::abs(g[5]) * f.metres_per_map_unit) + " m): leave out spacing (step coarsens it)");
     }
     const double u = f.metres_per_map_unit;
     dx = g[1] * u;
@@ -295,7 +289,8 @@ Heightfield readDem(const std::filesystem::path& path, const DemRequest& request
     dx = request.spacing->x();
     dy = -request.spacing->y();
     if (!(dx > 0.0 && -dy > 0.0 && std::isfinite(dx) && std::isfinite(dy))) {
-      throw InvalidInputError(where(path) + "spacing " + number(dx) + " x " + number(-dy) + " is not > 0 and finite");
+      throw InvalidInputError(where(path) + "spacing " + formatNumber(dx) + " x " + formatNumber(-dy) +
+                              " is not > 0 and finite");
     }
     cx0 = 0.0;
     cy0 = static_cast<double>(f.rows - 1) * -dy;  // the last file row (south) at y = 0
@@ -331,7 +326,8 @@ Heightfield readDem(const std::filesystem::path& path, const DemRequest& request
     }
     unit = *m;
   } else if (f.integer && !f.band_scale && !request.height_scale) {
-    throw InvalidInputError(where(path) + "integer samples with no vertical unit or scale (counts, as in a 16-bit "
+    throw InvalidInputError(where(path) +
+                            "integer samples with no vertical unit or scale (counts, as in a 16-bit "
                             "PNG): give height_scale (m per count)");
   }
   const double factor = request.height_scale.value_or(1.0) * unit;
@@ -366,7 +362,8 @@ Heightfield readDem(const std::filesystem::path& path, const DemRequest& request
       const double h = factor * (raw * scale + offset);
       if (!std::isfinite(h)) {
         throw InvalidInputError(where(path) + "sample at row " + std::to_string(file_row) + ", column " +
-                                std::to_string(file_col) + " is " + number(raw) + ", which gives no finite height");
+                                std::to_string(file_col) + " is " + formatNumber(raw) +
+                                ", which gives no finite height");
       }
       field.heights[k] = h;
     }
@@ -408,13 +405,13 @@ void writeDemGeoTiff(const std::filesystem::path& path, const Heightfield& field
   if (!driver) throw InvalidInputError(where(path) + "GDAL has no GTiff driver");
   const char* create_options[] = {"TILED=YES", "COMPRESS=DEFLATE", "PREDICTOR=3", "BIGTIFF=IF_SAFER", nullptr};
   const GDALDataType type = options.float32 ? GDT_Float32 : GDT_Float64;
-  Dataset dataset(GDALCreate(driver, path.c_str(), field.cols, field.rows, 1, type,
-                             const_cast<char**>(create_options)));
+  Dataset dataset(
+      GDALCreate(driver, path.c_str(), field.cols, field.rows, 1, type, const_cast<char**>(create_options)));
   if (!dataset) throw InvalidInputError(where(path) + "cannot create the GeoTIFF" + QuietGdal::lastMessage());
   // Corner of the north-west pixel: samples sit at pixel centres.
   const double top = options.map_south_west.y() + (field.rows - 1 + 0.5) * field.spacing_y;
-  std::array<double, 6> g{options.map_south_west.x() - 0.5 * field.spacing_x, field.spacing_x, 0.0, top, 0.0,
-                          -field.spacing_y};
+  std::array<double, 6> g{
+      options.map_south_west.x() - 0.5 * field.spacing_x, field.spacing_x, 0.0, top, 0.0, -field.spacing_y};
   GDALSetGeoTransform(dataset.get(), g.data());
   if (options.epsg != 0) {
     OGRSpatialReferenceH srs = OSRNewSpatialReference(nullptr);

@@ -1,5 +1,7 @@
 #include "file_support.hpp"
 
+#include <cctype>
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -110,5 +112,11 @@ std::string where(const std::filesystem::path& path, long line, long column) {
 }
 
 std::string where(const std::filesystem::path& path) { return path.string() + ": "; }
+
+std::string lowerExtension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
 
 }  // namespace wtc::io::detail

@@ -31,6 +31,10 @@ std::string readDescriptionFile(const std::filesystem::path& path);
 /// readWholeFile for data files (kMaxDataFileBytes).
 std::string readDataFile(const std::filesystem::path& path);
 
+/// The file's extension in lower case (".TIF" -> ".tif"), by which the
+/// readers pick a format.
+std::string lowerExtension(const std::filesystem::path& path);
+
 /// "<path>:<line>:<column>: " (1-based), the prefix of positioned messages.
 std::string where(const std::filesystem::path& path, long line, long column);
 

@@ -247,8 +247,7 @@ Heightfield readHeightfieldPgm(const std::filesystem::path& path, const Heightfi
 }
 
 Heightfield readHeightfieldFile(const std::filesystem::path& path, const HeightfieldLayout& layout) {
-  std::string ext = path.extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string ext = detail::lowerExtension(path);
   if (ext == ".pgm") return readHeightfieldPgm(path, layout);
   if (ext == ".csv" || ext == ".txt") return readHeightfieldCsv(path, layout);
   throw InvalidInputError(where(path) + "unknown heightfield format '" + ext + "' (expected .csv, .txt or .pgm)");

@@ -89,9 +89,7 @@ bool isOffKeyword(std::string_view token) {
 void checkOffFaces(const std::filesystem::path& path, std::string_view bytes);
 
 bool hasOffExtension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext == ".off";
+  return detail::lowerExtension(path) == ".off";
 }
 
 // What assimp's OFF reader takes for the keyword and the first count in a
@@ -221,9 +219,7 @@ void checkPly(const std::filesystem::path& path, std::string_view bytes, std::ui
   // file as PLY whatever its first bytes.
   std::string magic(bytes.substr(0, 3));
   std::transform(magic.begin(), magic.end(), magic.begin(), [](unsigned char c) { return std::tolower(c); });
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  if (magic != "ply" && ext != ".ply") return;
+  if (magic != "ply" && detail::lowerExtension(path) != ".ply") return;
   // A PLY header is lines of printable ASCII ending in a line end_header
   // (PLY's definition); assimp 5.2 loops forever on headers with control or
   // non-ASCII bytes, with or without end_header (found by fuzzing:
