@@ -8,10 +8,14 @@
 //   FieldSearch/<storage>/<spacing_mm>  WheelContactFinder::find alone.
 //   FieldStep/<storage>/<spacing_mm>    TyreModel::step, full effects: search and forces.
 // <storage>: prisms (addHeightfield: every prism stored) or compact
-// (addCompactHeightfield: the samples, prisms formed as a query needs them).
+// (addCompactHeightfield: the samples, met as one surface, closed-form
+// triangles and a contact per local minimum), or compact_per_prism (the same
+// field met prism by prism, ContactOptions::field_surface off, FieldSearch
+// only: the answer the surface reproduces).
 // Counters, per step: candidates (the index's pieces within r_f of the centre),
-// queried (point queries run), touching (pieces within r_f), contacts (after
-// the seam rule and the tread filter), allocs_per_step.
+// queried (point queries run), touching (pieces within r_f, or local minima
+// of a surface), contacts (after the seam rule and the tread filter), surface
+// (a surface's triangles answered in closed form), allocs_per_step.
 //
 // The surface: bench_field.hpp's relief (5 cm and 2 cm waves, slopes under
 // 5 deg) with a 4 mm roughness of 7 cm wavelength on top, which the fine
@@ -122,9 +126,10 @@ const Scenario& scenario(bool compact, int spacing_mm) {
 }
 
 struct Totals {
-  double candidates = 0, queried = 0, touching = 0, contacts = 0;
+  double candidates = 0, queried = 0, touching = 0, contacts = 0, surface = 0;
   void add(const wtc::ContactSearchCounts& c) {
     candidates += static_cast<double>(c.candidates);
+    surface += static_cast<double>(c.surface);
     queried += static_cast<double>(c.queried);
     touching += static_cast<double>(c.touching);
     contacts += static_cast<double>(c.contacts);
@@ -136,14 +141,16 @@ struct Totals {
     state.counters["queried"] = avg(queried);
     state.counters["touching"] = avg(touching);
     state.counters["contacts"] = avg(contacts);
+    state.counters["surface"] = avg(surface);
     state.counters["allocs_per_step"] = avg(static_cast<double>(allocations));
   }
 };
 
-void fieldSearch(benchmark::State& state, bool compact, int spacing_mm) {
+void fieldSearch(benchmark::State& state, bool compact, int spacing_mm, bool field_surface) {
   const Scenario& s = scenario(compact, spacing_mm);
   const wtc::WheelGeometry wheel = robotWheel().geometry;
-  const wtc::ContactOptions options = wtc::TyreModel(wtc::EffectSet::full()).contactOptions();
+  wtc::ContactOptions options = wtc::TyreModel(wtc::EffectSet::full()).contactOptions();
+  options.field_surface = field_surface;
   wtc::WheelContactFinder finder;
   for (const PathPoint& p : s.path) finder.find(s.terrain, wheel, p.pose, options);  // warm-up lap
   Totals totals;
@@ -190,8 +197,12 @@ const bool kRegistered = [] {
   for (const bool compact : {false, true}) {
     for (const int mm : kSpacingsMm) {
       const std::string tail = std::string(compact ? "compact/" : "prisms/") + std::to_string(mm);
-      benchmark::RegisterBenchmark(("FieldSearch/" + tail).c_str(), fieldSearch, compact, mm);
+      benchmark::RegisterBenchmark(("FieldSearch/" + tail).c_str(), fieldSearch, compact, mm, true);
       benchmark::RegisterBenchmark(("FieldStep/" + tail).c_str(), fieldStep, compact, mm);
+      if (compact) {  // the field's prisms one by one, as before its surface (issue 53)
+        benchmark::RegisterBenchmark(("FieldSearch/compact_per_prism/" + std::to_string(mm)).c_str(), fieldSearch,
+                                     compact, mm, false);
+      }
     }
   }
   return true;

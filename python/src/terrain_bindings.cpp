@@ -84,7 +84,7 @@ double cppQuerySeconds(const TerrainHandle& t, const Points& points, double reac
 }
 
 py::dict wheelContacts(const TerrainHandle& t, const Points& centers, const Points& axles, double radius, double width,
-                       bool multiple_contacts, bool tread_truncation, bool seam_rule) {
+                       bool multiple_contacts, bool tread_truncation, bool seam_rule, bool field_surface) {
   requireRows3(centers, "centers");
   requireRows3(axles, "axles");
   if (axles.shape(0) != centers.shape(0) && axles.shape(0) != 1) {
@@ -94,8 +94,10 @@ py::dict wheelContacts(const TerrainHandle& t, const Points& centers, const Poin
   }
   const WheelGeometry wheel{.free_radius = radius, .tread_width = width};
   validate(wheel, "wtc.Terrain.wheel_contacts");
-  const ContactOptions options{
-      .multiple_contacts = multiple_contacts, .tread_truncation = tread_truncation, .seam_rule = seam_rule};
+  const ContactOptions options{.multiple_contacts = multiple_contacts,
+                               .tread_truncation = tread_truncation,
+                               .seam_rule = seam_rule,
+                               .field_surface = field_surface};
   const py::ssize_t n = centers.shape(0);
   std::vector<std::int64_t> index;
   std::vector<double> point, normal, deflection, share;
@@ -244,7 +246,7 @@ void bindTerrain(py::module_& m) {
            "max_distance (m); beyond it distance inf, normal 0, piece -1.")
       .def("wheel_contacts", &wheelContacts, py::arg("centers"), py::arg("axles"), py::arg("radius") = 0.19,
            py::arg("width") = 0.12, py::arg("multiple_contacts") = true, py::arg("tread_truncation") = true,
-           py::arg("seam_rule") = true,
+           py::arg("seam_rule") = true, py::arg("field_surface") = true,
            "WheelContactFinder at each pose (centres (N, 3) m, axles (N, 3) or (1, 3)), one finder for all: "
            "the contacts, flat, with index saying whose.")
       .def("_cpp_query_seconds", &cppQuerySeconds, py::arg("points"), py::arg("max_distance") = 1.0,

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "base/scratch_capacity.hpp"
+#include "field_surface.hpp"
 #include "wtc/base/checks.hpp"
 #include "wtc/base/error.hpp"
 
@@ -25,6 +26,10 @@ WheelContactFinder::WheelContactFinder() {
   shares_.reserve(kReservedCandidates);
   rank_.reserve(kReservedCandidates);
   through_edge_.reserve(kReservedCandidates);
+  surface_runs_.reserve(kReservedCandidates);
+  surface_.points.reserve(kReservedCandidates);
+  shadows_.reserve(kReservedCandidates);
+  touches_.reserve(kReservedCandidates);
   exits_.reserve(kReservedCandidates);
   next_exits_.reserve(kReservedCandidates);
   contact_pieces_.reserve(kReservedCandidates);
@@ -43,6 +48,8 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
   }
   const double r = wheel.free_radius;
   const Eigen::Vector3d& o = pose.center;
+  terrain_ = &terrain;
+  radius_ = r;
 
   caps_.clear();
 
@@ -58,12 +65,37 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
   // a fine field's disc of cells under the rim instead of the square
   // around the wheel (issue 53).
   candidates_.clear();
-  terrain.within(o, cap_reach, candidates_);
+  touches_.clear();
+  surface_.points.clear();  // no shadows but this call's
+  const double gap = tolerance::kSeamGapRelative * r;
+  bool per_prism = !(options.field_surface && options.seam_rule);
+  if (!per_prism) {
+    // A compact heightfield as one surface: its triangles in closed form,
+    // a candidate only where the distance to it has a local minimum (or
+    // on an exposed cell, as a prism).
+    surface_runs_.clear();
+    terrain.withinSurfaces(o, cap_reach, candidates_, surface_runs_);
+    if (!surface_runs_.empty()) {
+      if (detail::surfaceLocalMinima(terrain, surface_runs_, o, cap_reach, gap, surface_, candidates_, touches_)) {
+        for (const detail::SurfacePoint& touch : touches_) candidates_.push_back(touch.id);
+      } else {  // the centre inside the ground (or a vast window): every prism queried
+        per_prism = true;
+        candidates_.clear();
+        touches_.clear();
+        surface_.points.clear();
+      }
+    }
+  }
+  if (per_prism) terrain.within(o, cap_reach, candidates_);
   if (cap_reach > r) {
     const Aabb cube{o.array() - r, o.array() + r};
     std::erase_if(candidates_, [&](PieceId id) { return !terrain.pieceBounds(id).overlaps(cube); });
   }
-  counts_ = {candidates_.size(), 0, 0, 0};
+  counts_ = {candidates_.size(), 0, 0, 0, 0};
+  if (!per_prism && !surface_runs_.empty()) {
+    counts_.surface = surface_.triangles;
+    counts_.candidates += surface_.triangles - touches_.size();  // a touch is both
+  }
 
   // 2. Point queries, warm-started from the previous call's simplices.
   QueryOptions query;
@@ -82,7 +114,10 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
   // few hundred steps.
   auto previous_formed = formed_.begin();
   next_formed_.clear();
+  auto touch = touches_.cbegin();  // in id order, as the candidates
   for (const PieceId id : candidates_) {
+    while (touch != touches_.cend() && touch->id < id) ++touch;
+    const bool on_surface = touch != touches_.cend() && touch->id == id;
     QueryCache cache;
     while (previous != caches_.end() && previous->first < id) ++previous;
     if (previous != caches_.end() && previous->first == id) cache = previous->second;
@@ -96,7 +131,7 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
         // the piece's corners without forming it: a piece they put beyond
         // the reach is beyond, its cache untouched, exactly as queryPoint
         // decides for a stored one.
-        if (terrain.formedPieceBeyond(id, o, cap_reach)) {
+        if (!on_surface && terrain.formedPieceBeyond(id, o, cap_reach)) {
           next_caches_.emplace_back(id, cache);
           continue;
         }
@@ -118,9 +153,18 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
     } else {
       piece = &terrain.piece(id);
     }
-    const PointQuery q = queryPoint(*piece, o, query, cache);
-    ++counts_.queried;
-    next_caches_.emplace_back(id, cache);
+    PointQuery q;
+    if (on_surface) {  // answered in closed form; the prism is the seam rule's
+      q.status = QueryStatus::kOutside;
+      q.closest_point = touch->point;
+      q.signed_distance = touch->distance;
+      q.normal = (o - touch->point) / touch->distance;
+      q.direction = -q.normal;
+    } else {
+      q = queryPoint(*piece, o, query, cache);
+      ++counts_.queried;
+      next_caches_.emplace_back(id, cache);
+    }
     if (q.status == QueryStatus::kBeyond || !(q.signed_distance < cap_reach)) continue;
     ++counts_.touching;
     WheelContact c;
@@ -149,7 +193,7 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
   has_previous_ = true;
 
   // 3. Seam rule.
-  if (options.seam_rule && contacts_.size() > 1) applySeamRule(tolerance::kSeamGapRelative * r, r);
+  if (options.seam_rule && contacts_.size() > 1) applySeamRule(gap, r);
 
   // 4. Tread filter: keep contacts with |OP . a| <= w / 2; the others are
   // the caps'.
@@ -226,6 +270,13 @@ void WheelContactFinder::applySeamRule(double gap, double radius) {
     const WheelContact &a = contacts_[x], &b = contacts_[y];
     return a.signed_distance < b.signed_distance || (a.signed_distance == b.signed_distance && a.piece < b.piece);
   });
+  // The field surfaces' touching triangles that are no contact (in no
+  // order: each contact reads them once, a sort cost more).
+  shadows_.clear();
+  for (const detail::SurfacePoint& s : surface_.points) {
+    if (!s.minimum && s.distance < radius) shadows_.push_back(s);
+  }
+  const double tie = gap;  // shadowNearer's
   auto share = [&](std::size_t at) {
     const std::size_t kb = rank_[at];
     const WheelContact& b = contacts_[kb];
@@ -249,10 +300,26 @@ void WheelContactFinder::applySeamRule(double gap, double radius) {
       if (cut > 0.0) cut = std::min(cut, std::max(0.0, 1.0 - groundThroughEdge(ka, gap) / b.deflection));
       least = std::min(least, cut);
     }
+    // A field surface's nearer triangles that are no contact cut B as
+    // their prisms did (they stand on no real edge: nothing passes through).
+    for (const detail::SurfacePoint& s : shadows_) {
+      if (covered && least == 0.0) break;
+      if (s.distance > b.signed_distance + tie || !shadowNearer(s, b)) continue;
+      // Beyond the patch a shadow cuts nothing (and covers nothing).
+      const double outside = detail::prismPlaneBound(s, b.ground_point, patch + gap) - gap;  // (m)
+      covered = covered || outside <= 0.0;
+      least = std::min(least, outside <= 0.0 ? 0.0 : std::min(1.0, outside / patch));
+    }
     if (least == 1.0) return least;  // whole: coverage is asked only of a cut contact
-    // The farther contacts cut nothing but may cover B.
+    // The farther contacts cut nothing but may cover B; so may the farther
+    // triangles of a field's surface.
     for (std::size_t q = at + 1; q < rank_.size() && !covered; ++q) {
       covered = contact_pieces_[rank_[q]]->planeBound(b.ground_point) - gap <= 0.0;
+    }
+    for (const detail::SurfacePoint& s : shadows_) {
+      if (covered) break;
+      if (shadowNearer(s, b)) continue;
+      covered = detail::prismPlaneBound(s, b.ground_point, gap) - gap <= 0.0;
     }
     return !covered && onAnEdge(kb, gap) ? std::max(least, realEdgeClearance(kb, gap) / b.deflection) : least;
   };
@@ -292,7 +359,7 @@ bool WheelContactFinder::onAnEdge(std::size_t b, double gap) const {
 
 // min(Z_B, clear) (m) of contact b, on an edge that no other touching piece
 // covers (above).
-double WheelContactFinder::realEdgeClearance(std::size_t b, double gap) const {
+double WheelContactFinder::realEdgeClearance(std::size_t b, double gap) {
   const WheelContact& edge = contacts_[b];
   double clear = edge.deflection;  // only clearances below Z_B matter
   for (std::size_t k = 0; k < contacts_.size(); ++k) {
@@ -302,7 +369,38 @@ double WheelContactFinder::realEdgeClearance(std::size_t b, double gap) const {
     if (outside < clear) outside = queryPoint(other, edge.ground_point).signed_distance - gap;
     clear = std::min(clear, outside);
   }
+  for (const detail::SurfacePoint& s : shadows_) {
+    double outside = detail::prismPlaneBound(s, edge.ground_point) - gap;
+    if (outside < clear) outside = shadowDistance(s, edge.ground_point) - gap;
+    clear = std::min(clear, outside);
+  }
   return clear;
+}
+
+bool WheelContactFinder::shadowNearer(const detail::SurfacePoint& s, const WheelContact& b) const {
+  // The seam rule's order, (distance, id); but two triangles' closed forms
+  // of one point (an edge's, a vertex's) differ by roundoff, and there, as
+  // the local minima were found, the lower id is first.
+  const double tie = tolerance::kSeamGapRelative * radius_;
+  if (std::abs(s.distance - b.signed_distance) <= tie && (s.point - b.ground_point).norm() <= tie) {
+    return onSurface(b.piece) && s.id < b.piece;  // an exposed prism's point is its own
+  }
+  return s.distance < b.signed_distance || (s.distance == b.signed_distance && s.id < b.piece);
+}
+
+bool WheelContactFinder::onSurface(PieceId id) const {
+  const auto at = std::lower_bound(touches_.begin(), touches_.end(), id,
+                                   [](const detail::SurfacePoint& t, PieceId wanted) { return t.id < wanted; });
+  return at != touches_.end() && at->id == id;
+}
+
+double WheelContactFinder::shadowDistance(const detail::SurfacePoint& s, const Eigen::Vector3d& p) {
+  if (shadow_piece_) {
+    terrain_->formPiece(s.id, *shadow_piece_);
+  } else {
+    terrain_->piece(s.id, shadow_piece_);
+  }
+  return queryPoint(*shadow_piece_, p).signed_distance;
 }
 
 // A step lower than the tread's deflection (issue 40, item 6): contact a on
@@ -321,6 +419,11 @@ double WheelContactFinder::groundThroughEdge(std::size_t a, double gap) {
   for (std::size_t k = 0; k < contacts_.size(); ++k) {
     if (contacts_[k].piece != edge.piece && contact_pieces_[k]->planeBound(edge.ground_point) - gap <= 0.0) {
       return through;  // covered: a seam's or a crease's edge
+    }
+  }
+  for (const detail::SurfacePoint& s : shadows_) {
+    if (detail::prismPlaneBound(s, edge.ground_point, gap) - gap <= 0.0) {
+      return through;
     }
   }
   through = edge.deflection - std::max(0.0, realEdgeClearance(a, gap));

@@ -78,14 +78,17 @@ void CompactHeightfield::makeTiles() {
   tile_top_.shrink_to_fit();
 }
 
+double CompactHeightfield::tileTop(int tile_row, int tile_col) const {
+  return field_.origin.z() + static_cast<double>(tile_top_[static_cast<std::size_t>(tile_row) * tile_cols_ + tile_col]);
+}
+
 bool CompactHeightfield::tileBeyond(int tile_row, int tile_col, const Eigen::Vector3d& point, double reach2) const {
   const Heightfield& f = field_;
   const int c0 = tile_col * kTileCells, c1 = std::min(c0 + kTileCells, f.cols - 1);
   const int r0 = tile_row * kTileCells, r1 = std::min(r0 + kTileCells, f.rows - 1);
   const double dx = std::max({0.0, f.origin.x() + c0 * f.spacing_x - point.x(), point.x() - (f.origin.x() + c1 * f.spacing_x)});
   const double dy = std::max({0.0, f.origin.y() + r0 * f.spacing_y - point.y(), point.y() - (f.origin.y() + r1 * f.spacing_y)});
-  const double top = f.origin.z() + static_cast<double>(tile_top_[static_cast<std::size_t>(tile_row) * tile_cols_ + tile_col]);
-  const double dz = std::max(0.0, point.z() - top);  // the pieces reach down to the base, below the point's ball
+  const double dz = std::max(0.0, point.z() - tileTop(tile_row, tile_col));  // the pieces reach down to the base, below the point's ball
   // Beyond with a margin far above the rounding of these sums: the cells'
   // own test decides whatever this one lets through.
   return dx * dx + dy * dy + dz * dz > reach2 * (1.0 + kTileSlack) + kTileSlack;
@@ -191,51 +194,137 @@ std::array<double, 2> CompactHeightfield::pieceTops(int r, int c) const {
   return {std::max({z00, z01, z11}), std::max({z00, z11, z10})};
 }
 
-void CompactHeightfield::within(const Eigen::Vector3d& point, double reach, PieceId first,
-                                std::vector<PieceId>& out) const {
+template <typename Run>
+void CompactHeightfield::walkRuns(const Eigen::Vector3d& point, double reach, Run&& run) const {
   const Heightfield& f = field_;
   const Aabb cube{point.array() - reach, point.array() + reach};
   // overlapping()'s tests on the cube, then each box's distance.
   int c0, c1, r0, r1;
   if (!cellsUnder(cube, c0, c1, r0, r1)) return;
-  const auto x = [&](int i) { return f.origin.x() + i * f.spacing_x; };  // as sample() computes them
-  const auto y = [&](int i) { return f.origin.y() + i * f.spacing_y; };
+  const auto y = [&](int i) { return f.origin.y() + i * f.spacing_y; };  // as sample() computes them
   const double reach2 = reach * reach;
   const auto cells_per_row = static_cast<std::size_t>(f.cols - 1);
-  const double lowest = cube.min.z();
+  // Each tile is tested once for the rows it spans: the answers of a tile
+  // row's first 64 tiles from c0 on are kept in two masks.
+  const int first_tile = c0 / kTileCells;
+  int tile_row = -1;
+  std::uint64_t asked = 0, beyond = 0;
+  const auto tileSkipped = [&](int tc) {
+    const int bit = tc - first_tile;
+    if (bit >= 64) return tileBeyond(tile_row, tc, point, reach2);
+    const std::uint64_t mask = std::uint64_t{1} << bit;
+    if ((asked & mask) == 0) {
+      asked |= mask;
+      if (tileBeyond(tile_row, tc, point, reach2)) beyond |= mask;
+    }
+    return (beyond & mask) != 0;
+  };
+  // The cells along x that a chord of half-width `half` about the point may
+  // meet, within [lo, hi]: a guess one cell wide of the division's, as each
+  // cell's own test decides.
+  const auto span = [&](double half, int lo, int hi, int& from, int& to) {
+    const double u0 = std::floor((point.x() - half - f.origin.x()) / f.spacing_x) - 1.0;
+    const double u1 = std::floor((point.x() + half - f.origin.x()) / f.spacing_x) + 1.0;
+    from = static_cast<int>(std::clamp(u0, static_cast<double>(lo), static_cast<double>(hi) + 1.0));
+    to = static_cast<int>(std::clamp(u1, static_cast<double>(lo) - 1.0, static_cast<double>(hi)));
+  };
+  const double slack2 = reach2 * (1.0 + kTileSlack) + kTileSlack;  // reach^2 with the tiles' margin
   for (int r = r0; r <= r1; ++r) {
     const double dy = std::max({0.0, y(r) - point.y(), point.y() - y(r + 1)});
     if (dy * dy > reach2) continue;
-    // The row's chord of the disc, a little wider than computed: the test
-    // below decides each cell exactly.
-    const double half = std::sqrt(reach2 - dy * dy) * (1.0 + kChordSlack) + kChordSlack;
-    int from, to;
-    cellSpan(point.x() - half, point.x() + half, f.origin.x(), f.spacing_x, f.cols - 1, from, to);
-    from = std::max(from, c0), to = std::min(to, c1);
-    if (from > to) continue;
-    const std::size_t row = static_cast<std::size_t>(r) * cells_per_row;
-    std::size_t k = piecesBefore(row + from);  // the next ground cell's first piece
-    for (int c = from; c <= to; ++c) {
-      if (c == from || c % kTileCells == 0) {
-        const int tile_end = std::min(to, (c / kTileCells + 1) * kTileCells - 1);
-        if (tileBeyond(r / kTileCells, c / kTileCells, point, reach2)) {
-          c = tile_end;  // the loop's ++c moves on to the next tile
-          if (c < to) k = piecesBefore(row + c + 1);
-          continue;
-        }
+    if (r / kTileCells != tile_row) {
+      tile_row = r / kTileCells, asked = 0, beyond = 0;
+      // A tile row whose tiles on the disc all lie beyond the reach is
+      // passed at once (on a fine field most of the disc's rows).
+      const int last = std::min(r1, (tile_row + 1) * kTileCells - 1);
+      const double dy_tiles = std::max({0.0, y(tile_row * kTileCells) - point.y(), point.y() - y(last + 1)});
+      int from, to;
+      span(std::sqrt(std::max(0.0, reach2 - dy_tiles * dy_tiles)) * (1.0 + kChordSlack) + kChordSlack, c0, c1, from,
+           to);
+      bool any = false;
+      for (int tile = from / kTileCells; tile <= to / kTileCells && from <= to && !any; ++tile) {
+        any = !tileSkipped(tile);
       }
+      if (!any) {
+        r = last;  // the loop's ++r moves on to the next tile row
+        continue;
+      }
+    }
+    // The row's chord of the disc, a little wider than computed.
+    int from, to;
+    span(std::sqrt(reach2 - dy * dy) * (1.0 + kChordSlack) + kChordSlack, c0, c1, from, to);
+    const std::size_t row = static_cast<std::size_t>(r) * cells_per_row;
+    for (int c = from; c <= to;) {
+      const int tile = c / kTileCells, tile_end = std::min(to, (tile + 1) * kTileCells - 1);
+      const int next = tile_end + 1;
+      if (tileSkipped(tile)) {
+        c = next;
+        continue;
+      }
+      // This row's chord narrowed by the tile's highest sample: its cells
+      // lie at least that far below the point.
+      const double dz = std::max(0.0, point.z() - tileTop(tile_row, tile));
+      const double rest = slack2 - dy * dy - dz * dz;
+      if (rest < 0.0) {
+        c = next;
+        continue;
+      }
+      int lo, hi;
+      span(std::sqrt(rest), c, tile_end, lo, hi);
+      if (lo > hi) {
+        c = next;
+        continue;
+      }
+      run(r, lo, hi, piecesBefore(row + lo), dy);
+      c = next;
+    }
+  }
+}
+
+void CompactHeightfield::within(const Eigen::Vector3d& point, double reach, PieceId first,
+                                std::vector<PieceId>& out) const {
+  const Heightfield& f = field_;
+  const auto x = [&](int i) { return f.origin.x() + i * f.spacing_x; };  // as sample() computes them
+  const auto y = [&](int i) { return f.origin.y() + i * f.spacing_y; };
+  const double reach2 = reach * reach, lowest = point.z() - reach;
+  const double slack2 = reach2 * (1.0 + kTileSlack) + kTileSlack;  // reach^2 with the tiles' margin
+  walkRuns(point, reach, [&](int r, int lo, int hi, std::size_t k, double dy) {
+    // The samples on the row's two lines, and the higher of each column's
+    // pair: a cell's top is the higher of its two columns' (origin.z + h
+    // rounds monotonically in h, so the highest sample gives the highest
+    // top).
+    const double* below = f.heights.data() + static_cast<std::size_t>(r) * f.cols;
+    const double* above = below + f.cols;
+    double left = std::max(below[lo], above[lo]);
+    for (int c = lo; c <= hi; ++c) {
+      const double right = std::max(below[c + 1], above[c + 1]);
+      const double cell_top = f.origin.z() + std::max(left, right);
+      left = right;
       if (f.isHole(r, c)) continue;
-      const Eigen::Vector3d low(x(c), y(r), base_z_);
       const auto id = first + static_cast<PieceId>(k);
       k += 2;
+      // The cell's box (both pieces' union) first, with the tiles' margin:
+      // one test turns both pieces away; their own boxes decide the rest.
+      const double dx = std::max({0.0, x(c) - point.x(), point.x() - x(c + 1)});
+      const double dz = std::max(0.0, point.z() - cell_top);
+      if (dx * dx + dy * dy + dz * dz > slack2) continue;
       const std::array<double, 2> top = pieceTops(r, c);
+      const Eigen::Vector3d low(x(c), y(r), base_z_);
       for (int t = 0; t < 2; ++t) {
         if (lowest <= top[t] && Aabb{low, {x(c + 1), y(r + 1), top[t]}}.squaredDistance(point) <= reach2) {
           out.push_back(id + t);
         }
       }
     }
-  }
+  });
+}
+
+bool CompactHeightfield::surfaceWithin(const Eigen::Vector3d& point, double reach, PieceId first, int part,
+                                       std::vector<SurfaceRun>& runs) const {
+  walkRuns(point, reach, [&](int r, int lo, int hi, std::size_t k, double) {
+    runs.push_back({first + static_cast<PieceId>(k), part, r, lo, hi});
+  });
+  return true;
 }
 
 std::size_t CompactHeightfield::memoryBytes() const {

@@ -49,6 +49,11 @@ class CompactHeightfield final : public FormedPieces {
   /// The cells of the disc the ball spans, row by row, each cell's two boxes
   /// made from its lines and corners as pieceBounds() makes them.
   void within(const Eigen::Vector3d& point, double reach, PieceId first, std::vector<PieceId>& out) const override;
+  /// within()'s cells as runs along rows, before each cell's own test: the
+  /// rows of the disc, less the tiles beyond the reach, each row's run in a
+  /// tile narrowed by the tile's highest sample.
+  bool surfaceWithin(const Eigen::Vector3d& point, double reach, PieceId first, int part,
+                     std::vector<SurfaceRun>& runs) const override;
   /// The union of all pieces' bounds.
   const Aabb& bounds() const override { return bounds_; }
   /// The field's samples and description (bytes).
@@ -73,7 +78,14 @@ class CompactHeightfield final : public FormedPieces {
   // The tops (m) of cell (r, c)'s two pieces, as their boxes have them.
   std::array<double, 2> pieceTops(int r, int c) const;
   void makeTiles();
+  // within()'s walk: run(r, lo, hi, k, dy) for each run of cells (r, lo
+  // ... hi) that may hold a piece within the reach, k the first piece of
+  // its first ground cell, dy the row's distance from the point along y.
+  template <typename Run>
+  void walkRuns(const Eigen::Vector3d& point, double reach, Run&& run) const;
   bool tileBeyond(int tile_row, int tile_col, const Eigen::Vector3d& point, double reach2) const;
+  // The tile's highest sample (m, world), rounded up.
+  double tileTop(int tile_row, int tile_col) const;
 
   // The cell (row-major index) piece k lies on.
   std::size_t cellOf(std::size_t k) const;

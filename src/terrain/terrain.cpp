@@ -300,7 +300,8 @@ PieceId Terrain::storedId(std::size_t stored) const {
 
 Terrain::CompactField Terrain::compactField(std::size_t k) const {
   const Field& f = fields_.at(k);
-  return {f.first, f.count, f.formed->heightfield(), f.formed->mesh(), f.formed->thickness(), f.material};
+  return {f.first, f.count, f.formed->heightfield(), f.formed->mesh(), f.formed->thickness(), f.material,
+          f.formed->bounds()};
 }
 
 PieceId Terrain::nearestPiece(const Eigen::Vector3d& point, PieceId first, PieceId count, double reach) const {
@@ -381,12 +382,23 @@ void Terrain::within(const Eigen::Vector3d& point, double reach, std::vector<Pie
   collect({point.array() - reach, point.array() + reach}, &ball, out);
 }
 
+void Terrain::withinSurfaces(const Eigen::Vector3d& point, double reach, std::vector<PieceId>& out,
+                             std::vector<SurfaceRun>& runs) const {
+  const detail::BoxTreeBall ball{point, reach};
+  collect({point.array() - reach, point.array() + reach}, &ball, out, &runs);
+}
+
 // overlapping() and within(): `box` holds `ball` when there is one.
-void Terrain::collect(const Aabb& box, const detail::BoxTreeBall* ball, std::vector<PieceId>& out) const {
+void Terrain::collect(const Aabb& box, const detail::BoxTreeBall* ball, std::vector<PieceId>& out,
+                      std::vector<SurfaceRun>* runs) const {
   // Each compact part is its own index; its bounds spare a part far away
   // the walk (a box with a NaN overlaps no bounds).
-  for (const Field& f : fields_) {
+  for (std::size_t part = 0; part < fields_.size(); ++part) {
+    const Field& f = fields_[part];
     if (!f.formed->bounds().overlaps(box)) continue;
+    if (runs != nullptr && f.formed->surfaceWithin(ball->centre, ball->radius, f.first, static_cast<int>(part), *runs)) {
+      continue;
+    }
     if (ball != nullptr) {
       f.formed->within(ball->centre, ball->radius, f.first, out);
     } else {

@@ -6,6 +6,7 @@
 // (surfaceMesh). docs/terrain.md.
 #include <btBulletDynamicsCommon.h>
 
+#include <algorithm>
 #include <limits>
 #include <optional>
 #include <random>
@@ -120,6 +121,15 @@ struct NamesItsPrism : btCollisionWorld::ContactResultCallback {
   }
 };
 
+// The check for `terrain` in `w`, counting the contacts from piece `far_from` on.
+NamesItsPrism namesItsPrism(BulletWorld& w, const Terrain& terrain, PieceId far_from) {
+  NamesItsPrism check;
+  check.object = &w.plugin->terrainShapes();
+  check.terrain = &terrain;
+  check.far_from = far_from;
+  return check;
+}
+
 // A 5 cm sphere in the world, pressed into the ground where asked, each
 // contact it makes with the terrain handed to `check`.
 struct SphereProbe {
@@ -180,11 +190,13 @@ TEST_P(BulletCompactTerrainTest, ABoxDroppedOnTheFieldRestsOnItsSurface) {
 }
 
 // Case: WTC answers the wheels from the terrain, not from Bullet's shapes:
-// a wheel rolled 2 s over a rough field moves bit for bit the same on the
-// compact field as on the stored prisms. (Where a cut cap touches, Bullet
+// a wheel rolled 2 s over a rough field moves on the compact field (met as
+// one surface, wtc/contact/wheel_contact.hpp) within a millimetre of its path
+// on the stored prisms (met prism by prism; the same contacts, rounded
+// differently). (Where a cut cap touches, Bullet
 // collides the wheel's own cylinder with its shapes, heightfield or
 // hulls; the field is gentle enough, +-4 cm, that none does.)
-TEST_P(BulletCompactTerrainTest, AWheelRollsBitForBitAsOnTheStoredPrisms) {
+TEST_P(BulletCompactTerrainTest, AWheelRollsWithinAMillimetreOfTheStoredPrisms) {
   std::vector<btVector3> path[2];
   for (const bool compact : {true, false}) {
     const PluginFieldScene scene = this->scene(compact, 0.04);
@@ -202,7 +214,9 @@ TEST_P(BulletCompactTerrainTest, AWheelRollsBitForBitAsOnTheStoredPrisms) {
     }
   }
   ASSERT_EQ(path[0].size(), path[1].size());
-  for (std::size_t k = 0; k < path[0].size(); ++k) ASSERT_EQ(path[0][k], path[1][k]) << "step " << k;
+  double apart = 0.0;  // the paths' largest distance (m)
+  for (std::size_t k = 0; k < path[0].size(); ++k) apart = std::max(apart, (path[0][k] - path[1][k]).length());
+  EXPECT_LT(apart, 1e-3);
   EXPECT_GT(path[0].back().x(), 0.0);  // it rolled over the field
 }
 
@@ -220,10 +234,7 @@ TEST(BulletCompactMeshTest, AMeshOfMoreTrianglesThanOneBulletPartCollidesAndName
   const Terrain terrain = std::move(builder).build();
   BulletWorld w(terrain, ContactMode::kForce);
   SphereProbe probe(w);
-  NamesItsPrism check;
-  check.object = &w.plugin->terrainShapes();
-  check.terrain = &terrain;
-  check.far_from = range.first + bullet::kMeshPartTriangles;
+  NamesItsPrism check = namesItsPrism(w, terrain, range.first + bullet::kMeshPartTriangles);
   std::mt19937 gen(13);
   for (int k = 0; k < 100; ++k) {
     // The last rows of cells: triangles 2^21 and beyond.
@@ -232,6 +243,31 @@ TEST(BulletCompactMeshTest, AMeshOfMoreTrianglesThanOneBulletPartCollidesAndName
   }
   EXPECT_GE(check.contacts, 100);
   EXPECT_EQ(check.far, check.contacts);
+}
+
+// Case: a compact field of many tiles (kFieldTileCells cells a side, the
+// last ones cut short): a contact on any tile names the prism under it, the
+// tile's first row and column added to Bullet's numbers.
+TEST(BulletCompactFieldTest, AContactOnAnyTileNamesItsPrism) {
+  testing::RandomGrid grid{.spacing_x = 0.05, .spacing_y = 0.04, .origin = {1.0, -2.0, 0.3}, .base_depth = 0.2};
+  const Heightfield field = testing::randomHeightfield(2 * bullet::kFieldTileCells + 20,
+                                                       3 * bullet::kFieldTileCells + 7, 0.02, 17, grid);
+  TerrainBuilder builder;
+  const PieceRange range = addCompactHeightfield(builder, field, builder.addMaterial({}));
+  const Terrain terrain = std::move(builder).build();
+  BulletWorld w(terrain, ContactMode::kForce);
+  SphereProbe probe(w);
+  // Beyond the first tile's rows and columns.
+  NamesItsPrism check = namesItsPrism(
+      w, terrain, range.first + 2 * (bullet::kFieldTileCells * (field.cols - 1) + bullet::kFieldTileCells));
+  std::mt19937 gen(19);
+  for (int k = 0; k < 200; ++k) {
+    const double x = 1.1 + (gen() / 4294967296.0) * (field.cols - 3) * grid.spacing_x;
+    const double y = -1.9 + (gen() / 4294967296.0) * (field.rows - 3) * grid.spacing_y;
+    probe.press(x, y, *surfaceHeight(field, x, y) + 0.04, check);
+  }
+  EXPECT_GE(check.contacts, 200);
+  EXPECT_GT(check.far, check.contacts / 2);  // most on tiles past the first
 }
 
 INSTANTIATE_TEST_SUITE_P(Parts, BulletCompactTerrainTest,

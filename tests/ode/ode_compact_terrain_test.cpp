@@ -6,6 +6,7 @@
 // docs/terrain.md.
 #include <ode/ode.h>
 
+#include <algorithm>
 #include <random>
 #include <string>
 #include <vector>
@@ -162,10 +163,12 @@ TEST_P(OdeCompactTerrainTest, BodiesDroppedOnTheFieldRestOnItsSurface) {
 }
 
 // Case: WTC answers the wheels from the terrain, not from ODE's geoms: a
-// wheel rolled 2 s over a rough field moves bit for bit the same on the
-// compact field as on the stored prisms (no cut cap touches: ODE would
-// collide the cap's cylinder with its geoms).
-TEST_P(OdeCompactTerrainTest, AWheelRollsBitForBitAsOnTheStoredPrisms) {
+// wheel rolled 2 s over a rough field moves on the compact field (met as one
+// surface, wtc/contact/wheel_contact.hpp) within a millimetre of its path on
+// the stored prisms (met prism by prism; the same contacts, rounded
+// differently; no cut cap touches: ODE would collide the cap's cylinder with
+// its geoms).
+TEST_P(OdeCompactTerrainTest, AWheelRollsWithinAMillimetreOfTheStoredPrisms) {
   std::vector<Eigen::Vector3d> path[2];
   for (const bool compact : {true, false}) {
     const PluginFieldScene scene = this->scene(compact, 0.04);
@@ -183,7 +186,9 @@ TEST_P(OdeCompactTerrainTest, AWheelRollsBitForBitAsOnTheStoredPrisms) {
     }
   }
   ASSERT_EQ(path[0].size(), path[1].size());
-  for (std::size_t k = 0; k < path[0].size(); ++k) ASSERT_EQ(path[0][k], path[1][k]) << "step " << k;
+  double apart = 0.0;  // the paths' largest distance (m)
+  for (std::size_t k = 0; k < path[0].size(); ++k) apart = std::max(apart, (path[0][k] - path[1][k]).norm());
+  EXPECT_LT(apart, 1e-3);
   EXPECT_GT(path[0].back().x(), 0.0);  // it rolled over the field
 }
 

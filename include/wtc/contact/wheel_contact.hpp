@@ -30,7 +30,9 @@
 // seams and ridges.
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <utility>
@@ -42,6 +44,36 @@
 #include "wtc/terrain/terrain.hpp"
 
 namespace wtc {
+
+namespace detail {
+/// A triangle of a compact heightfield's surface within a wheel's reach
+/// and its point nearest the wheel centre (src/contact/field_surface.hpp).
+struct SurfacePoint {
+  Eigen::Vector3d point{Eigen::Vector3d::Zero()};
+  double distance = 0.0;  ///< From the wheel centre (m).
+  const Heightfield* field = nullptr;
+  double base_z = 0.0;  ///< The field's base (m): its prisms' bottom.
+  PieceId id = -1;      ///< The prism whose top it is.
+  std::int32_t row = 0, col = 0;
+  std::uint8_t triangle = 0, feature = 0;
+  bool minimum = false;  ///< A local minimum: a contact.
+};
+/// A cell's two triangles' distances from the wheel centre (m), valid in
+/// the search numbered `stamp`.
+struct SurfaceSlot {
+  double distance[2] = {0.0, 0.0};
+  std::uint32_t stamp = 0;
+  bool exposed = false;  ///< Its prisms are queried as prisms.
+};
+/// The finder's scratch for a field's surface: the triangles within the
+/// reach, and a window of slots over the cells searched.
+struct SurfaceScratch {
+  std::vector<SurfacePoint> points;
+  std::vector<SurfaceSlot> window;
+  std::uint32_t stamp = 0;
+  std::size_t triangles = 0;  ///< Answered in closed form by the last search.
+};
+}  // namespace detail
 
 struct WheelGeometry {
   double free_radius = 0.19;  ///< r_f (m), > 0.
@@ -69,6 +101,12 @@ struct ContactOptions {
   bool multiple_contacts = true;  ///< Off: only the deepest contact is kept.
   bool tread_truncation = true;   ///< Off: the wheel is a full sphere.
   bool seam_rule = true;          ///< Off: every touching piece gives a contact.
+  /// A compact heightfield meets the wheel as one surface: its triangles
+  /// answered in closed form, a contact where the distance to the surface
+  /// has a local minimum (src/contact/field_surface.hpp), not a point query
+  /// and a contact per prism before the seam rule. Off: per prism, for
+  /// comparison (docs/terrain.md). Needs the seam rule.
+  bool field_surface = true;
 };
 
 struct WheelContact {
@@ -89,13 +127,17 @@ struct WheelContact {
 /// pieces the index gave (their boxes come within r_f of O), the point
 /// queries run on them (the others were put beyond the reach by their
 /// corners without forming them: compact parts only), the pieces found
-/// within the reach, and the contacts returned. Counted, not timed: a
+/// within the reach, and the contacts returned; `surface` counts the
+/// triangles of compact heightfields answered in closed form (field_surface),
+/// which are among the candidates but not queried, and touching when they
+/// are a local minimum. Counted, not timed: a
 /// query's cost is in docs/terrain.md.
 struct ContactSearchCounts {
   std::size_t candidates = 0;
   std::size_t queried = 0;
   std::size_t touching = 0;
   std::size_t contacts = 0;
+  std::size_t surface = 0;
 };
 
 /// Per-wheel state: scratch memory and warm-start caches, reused across
@@ -130,12 +172,28 @@ class WheelContactFinder {
   // (and contact_pieces_), before the rule erases any.
   void applySeamRule(double gap, double radius);
   bool onAnEdge(std::size_t b, double gap) const;
-  double realEdgeClearance(std::size_t b, double gap) const;
+  double realEdgeClearance(std::size_t b, double gap);
   double groundThroughEdge(std::size_t a, double gap);
   static constexpr double kNotMeasured = -1.0;  // through_edge_ before groundThroughEdge measures it (m)
+  // The field surfaces' triangles touching the wheel that are not contacts
+  // (not local minima) still shape the seam rule as the prisms under them
+  // did: they cut farther contacts and cover seams (shadows). Whether one is
+  // such a shadow nearer than contact b, or farther; its prism's exact
+  // distance from `p` (m), for a real edge's clearance.
+  bool shadowNearer(const detail::SurfacePoint& s, const WheelContact& b) const;
+  bool onSurface(PieceId id) const;  // a contact of this call's local minima
+  double shadowDistance(const detail::SurfacePoint& s, const Eigen::Vector3d& p);
+  double radius_ = 0.0;  // r_f of this call (m): the shadows are the touching triangles
   void exitWhereEntered(const ConvexPolyhedron& piece, PieceId id, const Eigen::Vector3d& centre, double radius,
                         WheelContact& c);
   std::vector<PieceId> candidates_;
+  // A compact heightfield's surface (field_surface): its triangles within the
+  // reach, and the local minima among them.
+  std::vector<Terrain::SurfaceRun> surface_runs_;
+  detail::SurfaceScratch surface_;
+  std::vector<detail::SurfacePoint> touches_, shadows_;
+  const Terrain* terrain_ = nullptr;                  // of this call, for a shadow's exact distance
+  std::optional<ConvexPolyhedron> shadow_piece_;      // a shadow prism formed for it
   ContactSearchCounts counts_;
   std::vector<WheelContact> contacts_, caps_;
   std::vector<std::pair<PieceId, QueryCache>> caches_, next_caches_;

@@ -164,6 +164,7 @@ class Terrain {
     const TriangleMesh* mesh = nullptr;
     double thickness = 0.0;
     MaterialId material = 0;  ///< Of every piece, unless the field has cell_materials.
+    Aabb bounds;              ///< Of its pieces: a heightfield's reaches down to its base.
   };
   std::size_t compactFieldCount() const { return fields_.size(); }
   CompactField compactField(std::size_t k) const;
@@ -189,6 +190,24 @@ class Terrain {
   /// radius is a disc a few cells wide, its cube a square of many.
   void within(const Eigen::Vector3d& point, double reach, std::vector<PieceId>& out) const;
 
+  /// A run of cells along one row of a compact heightfield
+  /// (withinSurfaces): cells (row, first_col ... last_col) of
+  /// compactField(part).field, the first ground cell among them holding
+  /// pieces first_piece and first_piece + 1 (addHeightfield's order: the
+  /// next ground cell the next two).
+  struct SurfaceRun {
+    PieceId first_piece = 0;
+    std::int32_t part = 0;
+    std::int32_t row = 0, first_col = 0, last_col = 0;
+  };
+  /// within(), but a compact heightfield's pieces come as runs of cells
+  /// (row-major within each part, parts in id order) that hold every
+  /// cell with a piece within the reach, and others near it: its caller
+  /// decides each cell (how a wheel meets a fine field as one surface,
+  /// wtc/contact/wheel_contact.hpp). Pieces of other parts go to `out`.
+  void withinSurfaces(const Eigen::Vector3d& point, double reach, std::vector<PieceId>& out,
+                      std::vector<SurfaceRun>& runs) const;
+
   /// Memory (bytes) of the pieces (stored pieces, and compact parts'
   /// samples, vertices and triangles) and of the index (the stored pieces'
   /// hierarchy and the compact meshes' own).
@@ -199,7 +218,8 @@ class Terrain {
   friend class TerrainBuilder;
   using Field = TerrainBuilder::Field;
   const ConvexPolyhedron& storedPiece(PieceId id) const;
-  void collect(const Aabb& box, const detail::BoxTreeBall* ball, std::vector<PieceId>& out) const;
+  void collect(const Aabb& box, const detail::BoxTreeBall* ball, std::vector<PieceId>& out,
+               std::vector<SurfaceRun>* runs = nullptr) const;
   // The compact part holding piece `id`; null for a stored piece or no piece.
   const Field* formedField(PieceId id) const;
   MaterialId fieldAwareMaterialId(PieceId id) const;

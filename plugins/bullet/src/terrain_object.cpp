@@ -47,22 +47,47 @@ std::vector<std::size_t> spatialOrder(std::span<const ConvexPolyhedron> pieces) 
   return order;
 }
 
-// A compact field as Bullet's heightfield shape over the field's own
-// samples: columns along x (Bullet's width), rows along y, heights[r cols +
-// c] (Bullet's layout), z up. flipQuadEdges splits each cell along
-// p00-p11, the prisms' diagonal (wtc/terrain/heightfield.hpp).
-std::unique_ptr<btHeightfieldTerrainShape> makeFieldShape(const Heightfield& f, btTransform& placement) {
-  const auto [lo, hi] = std::minmax_element(f.heights.begin(), f.heights.end());
-  auto shape = std::make_unique<btHeightfieldTerrainShape>(f.cols, f.rows, f.heights.data(), *lo, *hi,
-                                                           /*upAxis=*/2, /*flipQuadEdges=*/true);
-  shape->setLocalScaling(btVector3(f.spacing_x, f.spacing_y, 1.0));
-  shape->setMargin(kTerrainMarginM);
+// A tile of a compact field (kFieldTileCells cells a side, fewer at the far
+// edges) as Bullet's heightfield shape over the field's own samples:
+// Bullet asks for sample (x, y) of the tile, this reads sample (row0 + y,
+// col0 + x) of the field. Columns along x (Bullet's width), rows along y, z
+// up; flipQuadEdges splits each cell along p00-p11, the prisms' diagonal
+// (wtc/terrain/heightfield.hpp). Its box reaches only its own samples'
+// heights.
+class FieldTile final : public btHeightfieldTerrainShape {
+ public:
+  FieldTile(const Heightfield& f, int row0, int col0, int rows, int cols, double lo, double hi)
+      : btHeightfieldTerrainShape(cols, rows, f.heights.data(), lo, hi, /*upAxis=*/2, /*flipQuadEdges=*/true),
+        field_(f),
+        row0_(row0),
+        col0_(col0) {}
+  btScalar getRawHeightFieldValue(int x, int y) const override {
+    return field_.heights[static_cast<std::size_t>(row0_ + y) * field_.cols + (col0_ + x)];
+  }
+  int row0() const { return row0_; }
+  int col0() const { return col0_; }
+
+ private:
+  const Heightfield& field_;
+  int row0_, col0_;
+};
+
+// The tile of `f` whose first sample is (row0, col0), and where it goes.
+std::unique_ptr<FieldTile> makeFieldTile(const Heightfield& f, int row0, int col0, btTransform& placement) {
+  const int rows = std::min(kFieldTileCells + 1, f.rows - row0), cols = std::min(kFieldTileCells + 1, f.cols - col0);
+  double lo = f.height(row0, col0), hi = lo;
+  for (int r = row0; r < row0 + rows; ++r) {
+    for (int c = col0; c < col0 + cols; ++c) lo = std::min(lo, f.height(r, c)), hi = std::max(hi, f.height(r, c));
+  }
+  auto tile = std::make_unique<FieldTile>(f, row0, col0, rows, cols, lo, hi);
+  tile->setLocalScaling(btVector3(f.spacing_x, f.spacing_y, 1.0));
+  tile->setMargin(kTerrainMarginM);
   // Bullet centres the grid on its local origin, and the heights on the
   // middle of [lo, hi].
-  const Eigen::Vector3d centre =
-      f.origin + Eigen::Vector3d(0.5 * (f.cols - 1) * f.spacing_x, 0.5 * (f.rows - 1) * f.spacing_y, 0.5 * (*lo + *hi));
+  const Eigen::Vector3d centre = f.origin + Eigen::Vector3d((col0 + 0.5 * (cols - 1)) * f.spacing_x,
+                                                            (row0 + 0.5 * (rows - 1)) * f.spacing_y, 0.5 * (lo + hi));
   placement = btTransform(btQuaternion::getIdentity(), btVector3(centre.x(), centre.y(), centre.z()));
-  return shape;
+  return tile;
 }
 
 // A compact mesh as Bullet's triangle-mesh shape over its own arrays.
@@ -138,7 +163,21 @@ TerrainObject::TerrainObject(const Terrain& terrain) : terrain_(terrain) {
     const Terrain::CompactField part = terrain.compactField(k);
     btTransform placement = btTransform::getIdentity();
     if (part.field != nullptr && part.field->cell_holes.empty()) {
-      fields_.push_back(makeFieldShape(*part.field, placement));
+      // Tiles, in a compound of their own: a body beside a tall tile (a
+      // ledge) walks only the cells of the tiles its box meets in height.
+      const Heightfield& f = *part.field;
+      auto tiles = std::make_unique<btCompoundShape>(true);
+      for (int row0 = 0; row0 + 1 < f.rows; row0 += kFieldTileCells) {
+        for (int col0 = 0; col0 + 1 < f.cols; col0 += kFieldTileCells) {
+          btTransform at;
+          fields_.push_back(makeFieldTile(f, row0, col0, at));
+          fields_.back()->setUserIndex(k);
+          tiles->addChildShape(at, fields_.back().get());
+        }
+      }
+      compound_->addChildShape(placement, tiles.get());
+      groups_.push_back(std::move(tiles));
+      continue;
     } else if (part.field != nullptr) {
       // Bullet's heightfield has no holes: the field's surface as a mesh,
       // triangle k on piece k like a compact mesh's.
@@ -169,10 +208,13 @@ PieceId TerrainObject::pieceOf(const btCollisionObjectWrapper& ground) const {
     return terrain_.compactField(k).first + ground.m_partId * kMeshPartTriangles + ground.m_index;
   }
   // Bullet numbers a heightfield's triangles by part 2 column + (0 or 1)
-  // and index row; with flipQuadEdges part 2c is (p00, p10, p11), WTC's
-  // triangle 1, and part 2c + 1 is (p00, p11, p01), WTC's triangle 0.
+  // and index row, in its tile; with flipQuadEdges part 2c is (p00, p10,
+  // p11), WTC's triangle 1, and part 2c + 1 is (p00, p11, p01), WTC's
+  // triangle 0.
   const Terrain::CompactField field = terrain_.compactField(k);
-  const int column = ground.m_partId / 2, row = ground.m_index;
+  const auto* tile = dynamic_cast<const FieldTile*>(parent->getCollisionShape());
+  if (tile == nullptr) return -1;
+  const int column = tile->col0() + ground.m_partId / 2, row = tile->row0() + ground.m_index;
   return field.first + 2 * (row * (field.field->cols - 1) + column) + (ground.m_partId % 2 == 0 ? 1 : 0);
 }
 

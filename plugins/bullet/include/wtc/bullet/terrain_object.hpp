@@ -4,10 +4,11 @@
 // wheel-terrain (a chassis scraping the ledge) collides with the same ground
 // through Bullet's own algorithms.
 //
-// A compact heightfield (addCompactHeightfield) is one child: a
-// btHeightfieldTerrainShape that reads the field's own samples (Bullet
-// copies nothing), its cells split along the same diagonal p00-p11 as the
-// prisms (Bullet's flipQuadEdges), so a chassis meets the same surface. A
+// A compact heightfield (addCompactHeightfield) is one child: a compound of
+// tiles of kFieldTileCells cells a side, each a btHeightfieldTerrainShape
+// that reads the field's own samples (Bullet copies nothing), its cells
+// split along the same diagonal p00-p11 as the prisms (Bullet's
+// flipQuadEdges), so a chassis meets the same surface. A
 // compact triangle mesh (MeshExtrusionOptions::compact) is one child too:
 // a btBvhTriangleMeshShape over the mesh's own vertices and triangles.
 // Bullet's heightfield has no holes, so a compact field with holes is its
@@ -41,6 +42,14 @@ inline constexpr btScalar kTerrainMarginM = 0.001;
 /// square root of a large terrain's piece count.
 inline constexpr int kPiecesPerGroup = 64;
 
+/// Cells along a side of a compact heightfield's tile in Bullet (count).
+/// One heightfield shape's box spans all its heights, and Bullet walks
+/// every cell under a body whose box meets it: on a sampled ledge every
+/// body below the ledge's top walked the field under it at every step. A
+/// tile's box spans its own heights; 64 cells keep a 16 m x 6 m field at
+/// 1 cm to 250 tiles.
+inline constexpr int kFieldTileCells = 64;
+
 /// Triangles per part of a compact mesh's Bullet shape (count): Bullet's
 /// quantized tree keeps a triangle's index in 21 bits and its part's in 10
 /// (btQuantizedBvh.h, MAX_NUM_PARTS_IN_BITS), so a part of more than 2^21
@@ -71,10 +80,11 @@ class TerrainObject {
  private:
   const Terrain& terrain_;
   std::vector<std::unique_ptr<btConvexHullShape>> hulls_;
-  std::vector<std::unique_ptr<btConcaveShape>> fields_;      // one per compact field or mesh, in their order
+  std::vector<std::unique_ptr<btConcaveShape>> fields_;      // each compact field's tiles, or its mesh
+
   std::vector<std::unique_ptr<TriangleMesh>> field_meshes_;  // the surfaces of the compact fields with holes
   std::vector<std::unique_ptr<btTriangleIndexVertexArray>> mesh_arrays_;  // the compact meshes' views
-  std::vector<std::unique_ptr<btCompoundShape>> groups_;
+  std::vector<std::unique_ptr<btCompoundShape>> groups_;     // the stored pieces' groups, the fields' tiles
   std::unique_ptr<btCompoundShape> compound_;
   btCollisionObject object_;
 };

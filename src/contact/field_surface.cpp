@@ -1,0 +1,249 @@
+#include "field_surface.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <tuple>
+
+#include "geometry/triangle_closest_point.hpp"
+#include "wtc/terrain/heightfield.hpp"
+
+namespace wtc::detail {
+
+namespace {
+
+using Run = Terrain::SurfaceRun;
+
+// Relative and absolute (m^2) margin of a cell's box test: far above
+// rounding; the triangles' own distances decide.
+constexpr double kCellSlack = 1e-9;
+
+// A triangle named by its cell and its half: 0 (p00, p01, p11), 1 (p00,
+// p11, p10), closestOnTriangle's corners a, b, c in that order.
+struct Cell {
+  int row, col, t;
+};
+
+// The sample (row, col) at corner `corner` (0 a, 1 b, 2 c) of a triangle.
+std::array<int, 2> cornerSample(const Cell& x, int corner) {
+  if (corner == 0) return {x.row, x.col};
+  if (corner == 1) return x.t == 0 ? std::array<int, 2>{x.row, x.col + 1} : std::array<int, 2>{x.row + 1, x.col + 1};
+  return x.t == 0 ? std::array<int, 2>{x.row + 1, x.col + 1} : std::array<int, 2>{x.row + 1, x.col};
+}
+
+// The triangle across edge `edge` (0: ab, 1: bc, 2: ca).
+Cell acrossEdge(const Cell& x, int edge) {
+  if (x.t == 0) {
+    if (edge == 0) return {x.row - 1, x.col, 1};  // p00 p01: the cell below's (p11, p10)
+    if (edge == 1) return {x.row, x.col + 1, 1};  // p01 p11: the next cell's (p10, p00)
+    return {x.row, x.col, 1};                     // the diagonal
+  }
+  if (edge == 0) return {x.row, x.col, 0};      // the diagonal
+  if (edge == 1) return {x.row + 1, x.col, 0};  // p11 p10: the cell above's (p01, p00)
+  return {x.row, x.col - 1, 0};                 // p10 p00: the previous cell's (p11, p01)
+}
+
+// The six triangles around sample (i, j).
+std::array<Cell, 6> aroundSample(int i, int j) {
+  return {{{i, j, 0}, {i, j, 1}, {i, j - 1, 0}, {i - 1, j - 1, 0}, {i - 1, j - 1, 1}, {i - 1, j, 1}}};
+}
+
+// Cell (r, c) or one of its eight neighbours is a hole or beyond the field:
+// its prisms' walls may be ground. Every other wall is a neighbour's too,
+// bit for bit, inside the ground.
+bool exposed(const Heightfield& f, int r, int c) {
+  if (r == 0 || c == 0 || r + 2 >= f.rows || c + 2 >= f.cols) return true;
+  if (f.cell_holes.empty()) return false;
+  for (int dr = -1; dr <= 1; ++dr) {
+    for (int dc = -1; dc <= 1; ++dc) {
+      if (f.isHole(r + dr, c + dc)) return true;
+    }
+  }
+  return false;
+}
+
+// True when the centre is above the part's base and, over a ground cell,
+// above its surface by more than `tie` (m).
+bool above(const Terrain::CompactField& compact, const Eigen::Vector3d& o, double tie) {
+  const Heightfield& f = *compact.field;
+  if (!(o.z() > compact.bounds.min.z())) return false;
+  const double u = (o.x() - f.origin.x()) / f.spacing_x, v = (o.y() - f.origin.y()) / f.spacing_y;
+  if (!(u >= 0.0 && v >= 0.0 && u <= f.cols - 1 && v <= f.rows - 1)) return true;
+  const int c = std::min(static_cast<int>(u), f.cols - 2), r = std::min(static_cast<int>(v), f.rows - 2);
+  if (f.isHole(r, c)) return true;
+  const double fu = u - c, fv = v - r;
+  const double h00 = f.height(r, c), h01 = f.height(r, c + 1), h10 = f.height(r + 1, c), h11 = f.height(r + 1, c + 1);
+  // Triangle 0 (p00, p01, p11) holds fu >= fv, triangle 1 the rest.
+  const double h = fu >= fv ? h00 + fu * (h01 - h00) + fv * (h11 - h01) : h00 + fv * (h10 - h00) + fu * (h11 - h10);
+  return o.z() - f.origin.z() > h + tie;
+}
+
+}  // namespace
+
+bool surfaceLocalMinima(const Terrain& terrain, std::span<const Run> runs, const Eigen::Vector3d& o, double reach,
+                        double tie, SurfaceScratch& scratch, std::vector<PieceId>& prisms,
+                        std::vector<SurfacePoint>& touches) {
+  const double reach2 = reach * reach, slack2 = reach2 * (1.0 + kCellSlack) + kCellSlack;
+  scratch.points.clear();
+  scratch.triangles = 0;
+  for (std::size_t begin = 0; begin < runs.size();) {
+    const int part = runs[begin].part;
+    std::size_t end = begin;
+    int c_min = runs[begin].first_col, c_max = runs[begin].last_col;
+    for (; end < runs.size() && runs[end].part == part; ++end) {
+      c_min = std::min(c_min, runs[end].first_col), c_max = std::max(c_max, runs[end].last_col);
+    }
+    const std::span<const Run> own = runs.subspan(begin, end - begin);
+    begin = end;
+    const Terrain::CompactField compact = terrain.compactField(static_cast<std::size_t>(part));
+    const Heightfield& f = *compact.field;
+    // On or below the surface: the per-prism path, which knows the face
+    // the centre came in by.
+    if (!above(compact, o, tie)) return false;
+
+    // The window: the runs' rows by their columns' span.
+    const int r_min = own.front().row, r_max = own.back().row;
+    const auto width = static_cast<std::size_t>(c_max - c_min + 1);
+    const std::size_t cells = static_cast<std::size_t>(r_max - r_min + 1) * width;
+    if (cells > kMaxSurfaceWindowCells) return false;
+    if (scratch.window.size() < cells) scratch.window.resize(cells);
+    if (++scratch.stamp == 0) {  // wrapped: no slot may look current
+      for (SurfaceSlot& slot : scratch.window) slot.stamp = 0;
+      scratch.stamp = 1;
+    }
+    const std::uint32_t stamp = scratch.stamp;
+    const auto slot = [&](int r, int c) -> SurfaceSlot& {
+      return scratch.window[static_cast<std::size_t>(r - r_min) * width + static_cast<std::size_t>(c - c_min)];
+    };
+
+    // Each run's cells: the cell's box, then its two triangles.
+    const auto x = [&](int i) { return f.origin.x() + i * f.spacing_x; };  // as sample() computes them
+    const auto y = [&](int i) { return f.origin.y() + i * f.spacing_y; };
+    const std::size_t first_point = scratch.points.size();
+    for (const Run& run : own) {
+      const int r = run.row;
+      const double dy = std::max({0.0, y(r) - o.y(), o.y() - y(r + 1)});
+      const double* below = f.heights.data() + static_cast<std::size_t>(r) * f.cols;
+      const double* up = below + f.cols;
+      double left = std::max(below[run.first_col], up[run.first_col]);
+      PieceId id = run.first_piece;
+      for (int c = run.first_col; c <= run.last_col; ++c) {
+        const double right = std::max(below[c + 1], up[c + 1]);
+        const double top = f.origin.z() + std::max(left, right);
+        left = right;
+        if (f.isHole(r, c)) continue;
+        const PieceId cell_id = id;
+        id += 2;
+        const double dx = std::max({0.0, x(c) - o.x(), o.x() - x(c + 1)});
+        const double dz = std::max(0.0, o.z() - top);
+        if (dx * dx + dy * dy + dz * dz > slack2) continue;  // both triangles beyond
+        const Eigen::Vector3d p00 = f.sample(r, c), p01 = f.sample(r, c + 1);
+        const Eigen::Vector3d p10 = f.sample(r + 1, c), p11 = f.sample(r + 1, c + 1);
+        const std::array<TriangleClosestPoint, 2> q = {closestOnTriangle(o, p00, p01, p11),
+                                                      closestOnTriangle(o, p00, p11, p10)};
+        scratch.triangles += 2;
+        SurfaceSlot& s = slot(r, c);
+        s.stamp = stamp;
+        const bool walls = exposed(f, r, c);
+        s.exposed = walls;
+        for (int t = 0; t < 2; ++t) {
+          const double d = (q[t].point - o).norm();
+          s.distance[t] = d;
+          if (walls) {
+            // A prism with ground walls: queried as a prism when its box
+            // comes within the reach (Terrain::within's test).
+            const double top_t = std::max({p00.z(), p11.z(), t == 0 ? p01.z() : p10.z()});
+            const Aabb box{{x(c), y(r), compact.bounds.min.z()}, {x(c + 1), y(r + 1), top_t}};
+            if (box.squaredDistance(o) <= reach2 && o.z() - reach <= top_t) prisms.push_back(cell_id + t);
+          } else if (d < reach) {
+            scratch.points.push_back({q[t].point, d, &f, compact.bounds.min.z(), cell_id + t, r, c,
+                                      static_cast<std::uint8_t>(t), static_cast<std::uint8_t>(q[t].feature)});
+          }
+        }
+      }
+    }
+
+    // A triangle's slot, none beyond the reach (a cell not tested).
+    const auto tested = [&](const Cell& n) -> const SurfaceSlot* {
+      if (n.row < r_min || n.row > r_max || n.col < c_min || n.col > c_max) return nullptr;
+      const SurfaceSlot& s = slot(n.row, n.col);
+      return s.stamp == stamp ? &s : nullptr;
+    };
+    for (std::size_t k = first_point; k < scratch.points.size(); ++k) {
+      SurfacePoint& a = scratch.points[k];
+      const Cell self{a.row, a.col, a.triangle};
+      // Nearer, or as near (the same point) and first in id order (row,
+      // column, half); an exposed prism, queried as a prism, takes a point
+      // it shares.
+      const auto beats = [&](const Cell& n) {
+        const SurfaceSlot* s = tested(n);
+        if (s == nullptr) return false;
+        const double d = s->distance[n.t];
+        if (d < a.distance - tie) return true;
+        if (d > a.distance + tie) return false;
+        return s->exposed || std::tie(n.row, n.col, n.t) < std::tie(self.row, self.col, self.t);
+      };
+      bool dominated = false;
+      switch (static_cast<TriangleFeature>(a.feature)) {
+        case TriangleFeature::kFace:
+          break;
+        case TriangleFeature::kEdgeAB:
+          dominated = beats(acrossEdge(self, 0));
+          break;
+        case TriangleFeature::kEdgeBC:
+          dominated = beats(acrossEdge(self, 1));
+          break;
+        case TriangleFeature::kEdgeCA:
+          dominated = beats(acrossEdge(self, 2));
+          break;
+        default: {
+          const int corner = a.feature - static_cast<int>(TriangleFeature::kVertexA);
+          const std::array<int, 2> s = cornerSample(self, corner);
+          for (const Cell& n : aroundSample(s[0], s[1])) {
+            if ((n.row != self.row || n.col != self.col || n.t != self.t) && beats(n)) {
+              dominated = true;
+              break;
+            }
+          }
+        }
+      }
+      if (dominated) continue;
+      a.minimum = true;
+      touches.push_back(a);  // row-major: in id order
+    }
+  }
+  return true;
+}
+
+double prismPlaneBound(const SurfacePoint& s, const Eigen::Vector3d& p, double enough) {
+  const Heightfield& f = *s.field;
+  const int r = s.row, c = s.col;
+  const double x0 = f.origin.x() + c * f.spacing_x, y0 = f.origin.y() + r * f.spacing_y;  // as sample() has them
+  const double dx = p.x() - x0, dy = p.y() - y0;
+  // The base and the three walls (the cell's two sides the triangle
+  // spans, and the diagonal; the triangle counter-clockwise seen from
+  // above, each wall's normal the edge's direction turned clockwise).
+  const double length = std::sqrt(f.spacing_x * f.spacing_x + f.spacing_y * f.spacing_y);  // the diagonal's (m)
+  // Beside the cell by `beside` (m), one wall stands at least
+  // beside min(sx, sy) / (length + max(sx, sy)) off the point.
+  const double beside = std::max({x0 - p.x(), dx - f.spacing_x, y0 - p.y(), dy - f.spacing_y});
+  if (beside * std::min(f.spacing_x, f.spacing_y) > enough * (length + std::max(f.spacing_x, f.spacing_y))) {
+    return beside * std::min(f.spacing_x, f.spacing_y) / (length + std::max(f.spacing_x, f.spacing_y));
+  }
+  const double diagonal = (f.spacing_y * dx - f.spacing_x * dy) / length;
+  double bound = s.base_z - p.z();
+  if (s.triangle == 0) {  // (p00, p01, p11): the walls y = y0, x = x1 and the diagonal, outward up-left
+    bound = std::max({bound, y0 - p.y(), p.x() - (f.origin.x() + (c + 1) * f.spacing_x), -diagonal});
+  } else {  // (p00, p11, p10): x = x0, y = y1 and the diagonal, outward down-right
+    bound = std::max({bound, x0 - p.x(), p.y() - (f.origin.y() + (r + 1) * f.spacing_y), diagonal});
+  }
+  if (bound > enough) return bound;
+  // The top.
+  const Cell cell{r, c, s.triangle};
+  const std::array<int, 2> ia = cornerSample(cell, 0), ib = cornerSample(cell, 1), ic = cornerSample(cell, 2);
+  const Eigen::Vector3d a = f.sample(ia[0], ia[1]);
+  const Eigen::Vector3d n = (f.sample(ib[0], ib[1]) - a).cross(f.sample(ic[0], ic[1]) - a).normalized();
+  return std::max(bound, n.dot(p - a));
+}
+
+}  // namespace wtc::detail

@@ -1,0 +1,66 @@
+#pragma once
+// A compact heightfield met as one surface (internal to wtc::core; issue 53).
+//
+// The ground a heightfield makes is the union of its prisms. Away from its
+// edges and holes every prism's walls are its neighbours' walls too, inside
+// the ground, so seen from a point above the surface the ground is the
+// surface itself, a mesh of triangles. Where the ground touches a wheel is
+// where the distance from the wheel centre O to that surface has a local
+// minimum: one on a smooth patch (its deepest point), one more for every
+// kerb's edge, crack's lip or second face of a crease.
+//
+// Each triangle's closest point is found in closed form
+// (triangle_closest_point.hpp). Triangle T's closest point q is a local
+// minimum unless a triangle that also holds q (its neighbour across the edge
+// q lies on, or one of the six around the vertex q is) is nearer to O:
+// the distance on that triangle then falls away from q. Of triangles tied on
+// one q (the same edge point or vertex), the lowest id is kept.
+//
+// These local minima are exactly the per-prism contacts that the seam rule
+// keeps: a prism whose closest point is not one lies on a nearer prism and
+// is dropped (share 0) by it. Only the seam rule's partial shares can
+// differ, as the dropped contacts no longer cut the kept ones (a concave
+// crease's second face): docs/terrain.md measures it.
+//
+// Exposed cells (a hole or the field's edge within one cell: walls that are
+// ground) and a centre inside the ground are left to the per-prism path.
+//
+// The cells come as runs along rows (Terrain::withinSurfaces); each cell's
+// box is tested first (most of a disc's cells lie below the reach), and the
+// two distances of each cell tested are kept in a window over the runs'
+// cells, where a triangle finds its neighbours'.
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "wtc/contact/wheel_contact.hpp"
+#include "wtc/terrain/terrain.hpp"
+
+namespace wtc::detail {
+
+/// The local minima within `reach` (m) of `centre` on the compact
+/// heightfields' surfaces, from Terrain::withinSurfaces's `runs` for the
+/// same centre and reach: appended to `touches` in id order; ties within
+/// `tie` (m) keep the lower id. The pieces of exposed cells whose boxes
+/// come within the reach go to `prisms`, to be queried as prisms. False
+/// when the centre is inside or below a part's ground, or the runs span
+/// more than kMaxSurfaceWindowCells cells: the per-prism path answers then
+/// (what was appended is to be dropped).
+bool surfaceLocalMinima(const Terrain& terrain, std::span<const Terrain::SurfaceRun> runs,
+                        const Eigen::Vector3d& centre, double reach, double tie, SurfaceScratch& scratch,
+                        std::vector<PieceId>& prisms, std::vector<SurfacePoint>& touches);
+
+/// The plane bound (ConvexPolyhedron::planeBound, m) at `p` of the prism
+/// whose top is `s`'s triangle, from the field's samples; any value above
+/// `enough` (m) once the base and the walls pass it.
+double prismPlaneBound(const SurfacePoint& s, const Eigen::Vector3d& p,
+                       double enough = std::numeric_limits<double>::infinity());
+
+/// Cells of the largest window of distances a search keeps (24 bytes a
+/// cell): a 0.19 m wheel on a 1 mm field spans 145,000.
+inline constexpr std::size_t kMaxSurfaceWindowCells = std::size_t{1} << 18;
+
+}  // namespace wtc::detail

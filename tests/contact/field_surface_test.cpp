@@ -1,0 +1,190 @@
+// A compact heightfield met as one surface (ContactOptions::field_surface,
+// issue 53: its triangles in closed form, a contact where the distance to
+// the surface has a local minimum) against the same field met prism by
+// prism, the answer before it (field_surface off): the same contacts at the
+// same points, the load they carry within a millimetre of deflection, on a
+// fine rough field with a kerb and a crack (holes) sampled in it.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <span>
+#include <random>
+#include <vector>
+
+#include "wtc/contact/wheel_contact.hpp"
+#include "wtc/terrain/heightfield.hpp"
+#include "wtc/terrain/terrain.hpp"
+
+namespace wtc {
+namespace {
+
+constexpr double kSpacing = 0.01;            // m
+constexpr double kKerbX = 1.6, kKerbM = 0.05;  // a 5 cm kerb from x = 1.6 m on
+constexpr double kCrackX = 0.9;              // a 2 cm crack across the middle third
+
+double relief(double x, double y) {
+  return 0.03 * std::sin(2.1 * x) * std::sin(3.3 * y) + 0.004 * std::sin(90.0 * x) * std::sin(81.0 * y) +
+         (x >= kKerbX ? kKerbM : 0.0);
+}
+
+Heightfield fineField() {
+  Heightfield f;
+  f.cols = 241, f.rows = 81;  // 2.4 m x 0.8 m
+  f.spacing_x = f.spacing_y = kSpacing;
+  f.origin = {0.0, -0.4, 0.0};
+  f.base_depth = 0.3;
+  f.heights.resize(static_cast<std::size_t>(f.rows) * f.cols);
+  for (int r = 0; r < f.rows; ++r)
+    for (int c = 0; c < f.cols; ++c) f.heights[static_cast<std::size_t>(r) * f.cols + c] = relief(c * kSpacing, -0.4 + r * kSpacing);
+  f.cell_holes.assign(static_cast<std::size_t>(f.rows - 1) * (f.cols - 1), 0);
+  for (int r = 27; r < 53; ++r)
+    for (int c = 90; c < 92; ++c) f.cell_holes[static_cast<std::size_t>(r) * (f.cols - 1) + c] = 1;
+  return f;
+}
+
+Terrain fineTerrain() {
+  TerrainBuilder builder;
+  const MaterialId material = builder.addMaterial({});
+  addCompactHeightfield(builder, fineField(), material);
+  return std::move(builder).build();
+}
+
+// The load the contacts carry, as deflection: sum of share x Z (m).
+double carried(std::span<const WheelContact> contacts) {
+  double sum = 0.0;
+  for (const WheelContact& c : contacts) sum += c.load_share * c.deflection;
+  return sum;
+}
+
+// The per-prism answer's own roundoff: GJK's closest point can lie a
+// fraction of a micrometre outside the prisms that share it, beyond the seam
+// rule's gap (0.19 um for this wheel), where the closed form puts it on
+// them. The seam rule then takes a seam for a real edge and raises its share
+// (up to clear / Z). True when `p` lies that close to one of `touching`
+// other than `piece`, neither clearly on it nor clearly off it.
+bool onARoundedSeam(const Terrain& terrain, std::span<const WheelContact> touching, PieceId piece,
+                    const Eigen::Vector3d& p) {
+  std::optional<ConvexPolyhedron> scratch;
+  for (const WheelContact& other : touching) {
+    if (other.piece == piece) continue;
+    const double bound = terrain.piece(other.piece, scratch).planeBound(p);
+    if (bound > 0.0 && bound < 1e-5) return true;
+  }
+  return false;
+}
+
+TEST(FieldSurfaceTest, MeetsAFineFieldAtThePrismsContactsWithinAMillimetre) {
+  const Terrain terrain = fineTerrain();
+  const WheelGeometry wheel{.free_radius = 0.19, .tread_width = 0.12};
+  ContactOptions per_prism, every_piece;
+  per_prism.field_surface = false;
+  every_piece.field_surface = false, every_piece.seam_rule = false;
+  WheelContactFinder surface, prisms, pieces;
+  int steps = 0, same_load = 0, two_faces = 0, on_surface = 0, rounded = 0;
+  double worst_load = 0.0;
+  // Along the field, over the crack and onto the kerb, 7 mm a step, the
+  // centre bobbing so that it sinks 0-24 mm into the relief.
+  for (double x = 0.2; x < 2.2; x += 0.007, ++steps) {
+    const double y = 0.1 * std::sin(3.0 * x);
+    const WheelPose pose{.center = {x, y, relief(x, y) + 0.19 - 0.012 * (1.0 + std::sin(11.0 * x))},
+                         .axle = {0.03, 1.0, 0.05}};
+    const auto a = prisms.find(terrain, wheel, pose, per_prism);
+    const std::vector<WheelContact> expected(a.begin(), a.end());
+    const auto b = surface.find(terrain, wheel, pose);
+    on_surface += surface.counts().surface > 0;
+    two_faces += b.size() >= 2;
+    // Every contact of the surface is one of the prisms', at the same point
+    // (of two triangles tied on one edge's point the lower id, where GJK
+    // may have put a rounding nearer the other), and the prisms' are all
+    // there: within the seam gap of the same points.
+    ASSERT_EQ(b.size(), expected.size()) << "x " << x;
+    bool shares_agree = true;
+    for (const WheelContact& got : b) {
+      const auto match = std::find_if(expected.begin(), expected.end(), [&](const WheelContact& c) {
+        return (c.ground_point - got.ground_point).norm() < 1e-6;
+      });
+      ASSERT_NE(match, expected.end()) << "x " << x << ": piece " << got.piece << " is no prism's contact";
+      EXPECT_NEAR(got.deflection, match->deflection, 1e-9) << "x " << x;
+      EXPECT_LT((got.e - match->e).norm(), 1e-6) << "x " << x;
+      shares_agree = shares_agree && std::abs(got.load_share - match->load_share) < 1e-9;
+    }
+    const double difference = std::abs(carried(b) - carried(expected));
+    if (shares_agree) {
+      ++same_load;
+      EXPECT_LT(difference, 1e-9) << "x " << x;
+    } else {
+      // Only where the prisms' answer rounded a seam into a real edge.
+      const auto all = pieces.find(terrain, wheel, pose, every_piece);
+      const std::vector<WheelContact> touching(all.begin(), all.end());
+      bool explained = false;
+      for (const WheelContact& c : expected) explained = explained || onARoundedSeam(terrain, touching, c.piece, c.ground_point);
+      EXPECT_TRUE(explained) << "x " << x << ": the shares differ by " << difference << " m of deflection";
+      ++rounded;
+    }
+    worst_load = std::max(worst_load, difference);
+    if (::testing::Test::HasFailure()) FAIL() << "x " << x;
+  }
+  EXPECT_GT(same_load, 0.97 * steps);  // the same load, to roundoff, almost everywhere
+  EXPECT_GT(two_faces, 20);            // the kerb's edge and the crack's lips kept their own
+  EXPECT_GT(on_surface, 0.8 * steps);  // answered as a surface most of the way
+  EXPECT_LT(worst_load, 1e-3) << rounded << " steps' prisms rounded a seam";  // a millimetre at worst
+}
+
+// A centre inside the ground (a wheel pushed through it) is the per-prism
+// path's, bit for bit: it knows the face the centre came in by.
+TEST(FieldSurfaceTest, LeavesACentreInsideTheGroundToThePrisms) {
+  const Terrain terrain = fineTerrain();
+  const WheelGeometry wheel{.free_radius = 0.06, .tread_width = 0.05};
+  ContactOptions per_prism;
+  per_prism.field_surface = false;
+  WheelContactFinder surface, prisms;
+  for (double x = 0.3; x < 0.32; x += 0.004) {  // a few poses: a centre inside touches a disc of prisms
+    const WheelPose pose{.center = {x, 0.0, relief(x, 0.0) - 0.01}, .axle = {0.0, 1.0, 0.0}};
+    const auto a = prisms.find(terrain, wheel, pose, per_prism);
+    const std::vector<WheelContact> expected(a.begin(), a.end());
+    const auto b = surface.find(terrain, wheel, pose);
+    EXPECT_EQ(surface.counts().surface, 0u);
+    ASSERT_EQ(b.size(), expected.size());
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      EXPECT_EQ(b[i].piece, expected[i].piece);
+      EXPECT_EQ(b[i].ground_point, expected[i].ground_point);
+      EXPECT_EQ(b[i].load_share, expected[i].load_share);
+    }
+  }
+}
+
+// Terrain::withinSurfaces's runs hold every piece Terrain::within finds
+// (random balls over the field, its holes and beyond its edges).
+TEST(FieldSurfaceTest, RunsHoldEveryPieceWithinTheReach) {
+  const Terrain terrain = fineTerrain();
+  const Heightfield& f = *terrain.compactField(0).field;
+  std::mt19937 gen(5);
+  std::uniform_real_distribution<double> along(-0.2, 2.6), across(-0.6, 0.6), up(-0.4, 0.4), reach(0.005, 0.3);
+  std::vector<PieceId> within, others, in_runs;
+  std::vector<Terrain::SurfaceRun> runs;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const Eigen::Vector3d p(along(gen), across(gen), up(gen));
+    const double r = reach(gen);
+    within.clear(), others.clear(), runs.clear(), in_runs.clear();
+    terrain.within(p, r, within);
+    terrain.withinSurfaces(p, r, others, runs);
+    EXPECT_TRUE(others.empty());
+    for (const Terrain::SurfaceRun& run : runs) {
+      PieceId id = run.first_piece;
+      for (int c = run.first_col; c <= run.last_col; ++c) {
+        if (f.isHole(run.row, c)) continue;
+        in_runs.push_back(id), in_runs.push_back(id + 1);
+        id += 2;
+      }
+    }
+    std::sort(in_runs.begin(), in_runs.end());
+    for (const PieceId id : within) {
+      ASSERT_TRUE(std::binary_search(in_runs.begin(), in_runs.end(), id)) << "trial " << trial << ", piece " << id;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace wtc
