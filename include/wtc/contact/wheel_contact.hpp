@@ -4,9 +4,13 @@
 // from the wheel centre O to the piece is below the free radius r_f.
 //
 // One call reads top to bottom:
-//   candidate pieces (terrain index: boxes within r_f of O, Terrain::within)
+//   candidate pieces (terrain index: boxes within r_f of O, Terrain::within;
+//     a compact heightfield's interior as one surface, Terrain::withinSurfaces:
+//     its triangles in closed form, a candidate only at a local minimum of
+//     the distance, src/contact/field_surface.hpp)
 //   -> point queries (modified GJK, max_distance = r_f, warm-started)
-//   -> seam rule (drop contacts that are internal seams of the ground)
+//   -> seam rule (drop contacts that are internal seams of the ground; a
+//     surface's other touching triangles cut and cover as their prisms do)
 //   -> tread filter (drop contacts on the cut caps of the truncated sphere)
 //   -> optionally keep only the deepest.
 //
