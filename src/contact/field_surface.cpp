@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <tuple>
 
 #include "geometry/triangle_closest_point.hpp"
+#include "terrain/field_cells.hpp"
 #include "wtc/terrain/heightfield.hpp"
 
 namespace wtc::detail {
@@ -13,10 +15,6 @@ namespace wtc::detail {
 namespace {
 
 using Run = Terrain::SurfaceRun;
-
-// Relative and absolute (m^2) margin of a cell's box test: far above
-// rounding; the triangles' own distances decide.
-constexpr double kCellSlack = 1e-9;
 
 // A triangle named by its cell and its half: 0 (p00, p01, p11), 1 (p00,
 // p11, p10), closestOnTriangle's corners a, b, c in that order.
@@ -65,17 +63,9 @@ bool exposed(const Heightfield& f, int r, int c) {
 // True when the centre is above the part's base and, over a ground cell,
 // above its surface by more than `tie` (m).
 bool above(const Terrain::CompactField& compact, const Eigen::Vector3d& o, double tie) {
-  const Heightfield& f = *compact.field;
   if (!(o.z() > compact.bounds.min.z())) return false;
-  const double u = (o.x() - f.origin.x()) / f.spacing_x, v = (o.y() - f.origin.y()) / f.spacing_y;
-  if (!(u >= 0.0 && v >= 0.0 && u <= f.cols - 1 && v <= f.rows - 1)) return true;
-  const int c = std::min(static_cast<int>(u), f.cols - 2), r = std::min(static_cast<int>(v), f.rows - 2);
-  if (f.isHole(r, c)) return true;
-  const double fu = u - c, fv = v - r;
-  const double h00 = f.height(r, c), h01 = f.height(r, c + 1), h10 = f.height(r + 1, c), h11 = f.height(r + 1, c + 1);
-  // Triangle 0 (p00, p01, p11) holds fu >= fv, triangle 1 the rest.
-  const double h = fu >= fv ? h00 + fu * (h01 - h00) + fv * (h11 - h01) : h00 + fv * (h10 - h00) + fu * (h11 - h10);
-  return o.z() - f.origin.z() > h + tie;
+  const std::optional<double> surface = surfaceHeight(*compact.field, o.x(), o.y());  // none beyond it or over a hole
+  return !surface || o.z() > *surface + tie;
 }
 
 }  // namespace
@@ -83,7 +73,6 @@ bool above(const Terrain::CompactField& compact, const Eigen::Vector3d& o, doubl
 bool surfaceLocalMinima(const Terrain& terrain, std::span<const Run> runs, const Eigen::Vector3d& o, double reach,
                         double tie, SurfaceScratch& scratch, std::vector<PieceId>& prisms,
                         std::vector<SurfacePoint>& touches) {
-  const double reach2 = reach * reach, slack2 = reach2 * (1.0 + kCellSlack) + kCellSlack;
   scratch.points.clear();
   scratch.triangles = 0;
   for (std::size_t begin = 0; begin < runs.size();) {
@@ -117,26 +106,11 @@ bool surfaceLocalMinima(const Terrain& terrain, std::span<const Run> runs, const
     };
 
     // Each run's cells: the cell's box, then its two triangles.
-    const auto x = [&](int i) { return f.origin.x() + i * f.spacing_x; };  // as sample() computes them
-    const auto y = [&](int i) { return f.origin.y() + i * f.spacing_y; };
+    const double base_z = compact.bounds.min.z();
     const std::size_t first_point = scratch.points.size();
     for (const Run& run : own) {
       const int r = run.row;
-      const double dy = std::max({0.0, y(r) - o.y(), o.y() - y(r + 1)});
-      const double* below = f.heights.data() + static_cast<std::size_t>(r) * f.cols;
-      const double* up = below + f.cols;
-      double left = std::max(below[run.first_col], up[run.first_col]);
-      PieceId id = run.first_piece;
-      for (int c = run.first_col; c <= run.last_col; ++c) {
-        const double right = std::max(below[c + 1], up[c + 1]);
-        const double top = f.origin.z() + std::max(left, right);
-        left = right;
-        if (f.isHole(r, c)) continue;
-        const PieceId cell_id = id;
-        id += 2;
-        const double dx = std::max({0.0, x(c) - o.x(), o.x() - x(c + 1)});
-        const double dz = std::max(0.0, o.z() - top);
-        if (dx * dx + dy * dy + dz * dz > slack2) continue;  // both triangles beyond
+      forEachCellNear(f, r, run.first_col, run.last_col, run.first_piece, o, reach, [&](int c, PieceId cell_id) {
         const Eigen::Vector3d p00 = f.sample(r, c), p01 = f.sample(r, c + 1);
         const Eigen::Vector3d p10 = f.sample(r + 1, c), p11 = f.sample(r + 1, c + 1);
         const std::array<TriangleClosestPoint, 2> q = {closestOnTriangle(o, p00, p01, p11),
@@ -152,15 +126,13 @@ bool surfaceLocalMinima(const Terrain& terrain, std::span<const Run> runs, const
           if (walls) {
             // A prism with ground walls: queried as a prism when its box
             // comes within the reach (Terrain::within's test).
-            const double top_t = std::max({p00.z(), p11.z(), t == 0 ? p01.z() : p10.z()});
-            const Aabb box{{x(c), y(r), compact.bounds.min.z()}, {x(c + 1), y(r + 1), top_t}};
-            if (box.squaredDistance(o) <= reach2 && o.z() - reach <= top_t) prisms.push_back(cell_id + t);
+            if (prismBoxWithin(f, r, c, t, base_z, o, reach)) prisms.push_back(cell_id + t);
           } else if (d < reach) {
-            scratch.points.push_back({q[t].point, d, &f, compact.bounds.min.z(), cell_id + t, r, c,
-                                      static_cast<std::uint8_t>(t), static_cast<std::uint8_t>(q[t].feature)});
+            scratch.points.push_back({q[t].point, d, &f, base_z, cell_id + t, r, c, static_cast<std::uint8_t>(t),
+                                      static_cast<std::uint8_t>(q[t].feature)});
           }
         }
-      }
+      });
     }
 
     // A triangle's slot, none beyond the reach (a cell not tested).

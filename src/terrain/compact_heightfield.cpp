@@ -1,5 +1,6 @@
 // Heightfield prisms formed on demand (design note in compact_heightfield.hpp).
 #include "compact_heightfield.hpp"
+#include "field_cells.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -275,7 +276,7 @@ void CompactHeightfield::walkRuns(const Eigen::Vector3d& point, double reach, Ru
         c = next;
         continue;
       }
-      run(r, lo, hi, piecesBefore(row + lo), dy);
+      run(r, lo, hi, piecesBefore(row + lo));
       c = next;
     }
   }
@@ -283,45 +284,20 @@ void CompactHeightfield::walkRuns(const Eigen::Vector3d& point, double reach, Ru
 
 void CompactHeightfield::within(const Eigen::Vector3d& point, double reach, PieceId first,
                                 std::vector<PieceId>& out) const {
-  const Heightfield& f = field_;
-  const auto x = [&](int i) { return f.origin.x() + i * f.spacing_x; };  // as sample() computes them
-  const auto y = [&](int i) { return f.origin.y() + i * f.spacing_y; };
-  const double reach2 = reach * reach, lowest = point.z() - reach;
-  const double slack2 = reach2 * (1.0 + kTileSlack) + kTileSlack;  // reach^2 with the tiles' margin
-  walkRuns(point, reach, [&](int r, int lo, int hi, std::size_t k, double dy) {
-    // The samples on the row's two lines, and the higher of each column's
-    // pair: a cell's top is the higher of its two columns' (origin.z + h
-    // rounds monotonically in h, so the highest sample gives the highest
-    // top).
-    const double* below = f.heights.data() + static_cast<std::size_t>(r) * f.cols;
-    const double* above = below + f.cols;
-    double left = std::max(below[lo], above[lo]);
-    for (int c = lo; c <= hi; ++c) {
-      const double right = std::max(below[c + 1], above[c + 1]);
-      const double cell_top = f.origin.z() + std::max(left, right);
-      left = right;
-      if (f.isHole(r, c)) continue;
-      const auto id = first + static_cast<PieceId>(k);
-      k += 2;
-      // The cell's box (both pieces' union) first, with the tiles' margin:
-      // one test turns both pieces away; their own boxes decide the rest.
-      const double dx = std::max({0.0, x(c) - point.x(), point.x() - x(c + 1)});
-      const double dz = std::max(0.0, point.z() - cell_top);
-      if (dx * dx + dy * dy + dz * dz > slack2) continue;
-      const std::array<double, 2> top = pieceTops(r, c);
-      const Eigen::Vector3d low(x(c), y(r), base_z_);
+  walkRuns(point, reach, [&](int r, int lo, int hi, std::size_t k) {
+    // The cell's box (both pieces' union) first: one test turns both
+    // pieces away; their own boxes decide the rest.
+    forEachCellNear(field_, r, lo, hi, first + static_cast<PieceId>(k), point, reach, [&](int c, PieceId id) {
       for (int t = 0; t < 2; ++t) {
-        if (lowest <= top[t] && Aabb{low, {x(c + 1), y(r + 1), top[t]}}.squaredDistance(point) <= reach2) {
-          out.push_back(id + t);
-        }
+        if (prismBoxWithin(field_, r, c, t, base_z_, point, reach)) out.push_back(id + t);
       }
-    }
+    });
   });
 }
 
 bool CompactHeightfield::surfaceWithin(const Eigen::Vector3d& point, double reach, PieceId first, int part,
                                        std::vector<SurfaceRun>& runs) const {
-  walkRuns(point, reach, [&](int r, int lo, int hi, std::size_t k, double) {
+  walkRuns(point, reach, [&](int r, int lo, int hi, std::size_t k) {
     runs.push_back({first + static_cast<PieceId>(k), part, r, lo, hi});
   });
   return true;

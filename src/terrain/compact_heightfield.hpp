@@ -78,9 +78,9 @@ class CompactHeightfield final : public FormedPieces {
   // The tops (m) of cell (r, c)'s two pieces, as their boxes have them.
   std::array<double, 2> pieceTops(int r, int c) const;
   void makeTiles();
-  // within()'s walk: run(r, lo, hi, k, dy) for each run of cells (r, lo
-  // ... hi) that may hold a piece within the reach, k the first piece of
-  // its first ground cell, dy the row's distance from the point along y.
+  // within()'s walk: run(r, lo, hi, k) for each run of cells (r, lo ...
+  // hi) that may hold a piece within the reach, k the first piece of its
+  // first ground cell.
   template <typename Run>
   void walkRuns(const Eigen::Vector3d& point, double reach, Run&& run) const;
   bool tileBeyond(int tile_row, int tile_col, const Eigen::Vector3d& point, double reach2) const;

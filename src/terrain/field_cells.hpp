@@ -1,0 +1,64 @@
+#pragma once
+// A run of a compact heightfield's cells along one row, cell by cell
+// (internal to wtc::core): what CompactHeightfield::within and a wheel's
+// meeting with the field as one surface (src/contact/field_surface.cpp) both
+// read from a run of Terrain::withinSurfaces.
+#include <algorithm>
+#include <cstddef>
+
+#include <Eigen/Core>
+
+#include "wtc/geometry/aabb.hpp"
+#include "wtc/terrain/heightfield.hpp"
+#include "wtc/terrain/terrain.hpp"
+
+namespace wtc::detail {
+
+/// Relative and absolute (m^2) margin of a cell's box test: far above
+/// rounding; the pieces' own boxes (or distances) decide what it lets by.
+inline constexpr double kCellSlack = 1e-9;
+
+/// visit(c, id) for each ground cell (r, c), lo <= c <= hi, whose box (its
+/// two prisms' union up to its highest sample) comes within `reach` (m) of
+/// `point`, with kCellSlack's margin; `id` is the cell's first prism,
+/// counted on from `first`, the first ground cell's, over the ground cells.
+template <typename Visit>
+void forEachCellNear(const Heightfield& f, int r, int lo, int hi, PieceId first, const Eigen::Vector3d& point,
+                     double reach, Visit&& visit) {
+  const auto x = [&](int i) { return f.origin.x() + i * f.spacing_x; };  // as sample() computes them
+  const auto y = [&](int i) { return f.origin.y() + i * f.spacing_y; };
+  const double slack2 = reach * reach * (1.0 + kCellSlack) + kCellSlack;
+  const double dy = std::max({0.0, y(r) - point.y(), point.y() - y(r + 1)});
+  // The samples on the row's two lines, and the higher of each column's
+  // pair: a cell's top is the higher of its two columns' (origin.z + h
+  // rounds monotonically in h, so the highest sample gives the highest top).
+  const double* below = f.heights.data() + static_cast<std::size_t>(r) * f.cols;
+  const double* above = below + f.cols;
+  double left = std::max(below[lo], above[lo]);
+  PieceId id = first;
+  for (int c = lo; c <= hi; ++c) {
+    const double right = std::max(below[c + 1], above[c + 1]);
+    const double top = f.origin.z() + std::max(left, right);
+    left = right;
+    if (f.isHole(r, c)) continue;
+    const PieceId cell_first = id;
+    id += 2;
+    const double dx = std::max({0.0, x(c) - point.x(), point.x() - x(c + 1)});
+    const double dz = std::max(0.0, point.z() - top);
+    if (dx * dx + dy * dy + dz * dz <= slack2) visit(c, cell_first);
+  }
+}
+
+/// Whether prism t of cell (r, c), its box from `base_z` (m) to its top
+/// triangle's highest corner, comes within `reach` (m) of `point`: exactly
+/// Terrain::within's test on the prism's bounds.
+inline bool prismBoxWithin(const Heightfield& f, int r, int c, int t, double base_z, const Eigen::Vector3d& point,
+                           double reach) {
+  const double z00 = f.origin.z() + f.height(r, c), z11 = f.origin.z() + f.height(r + 1, c + 1);
+  const double top = std::max({z00, z11, f.origin.z() + (t == 0 ? f.height(r, c + 1) : f.height(r + 1, c))});
+  const Aabb box{{f.origin.x() + c * f.spacing_x, f.origin.y() + r * f.spacing_y, base_z},
+                 {f.origin.x() + (c + 1) * f.spacing_x, f.origin.y() + (r + 1) * f.spacing_y, top}};
+  return point.z() - reach <= top && box.squaredDistance(point) <= reach * reach;
+}
+
+}  // namespace wtc::detail
