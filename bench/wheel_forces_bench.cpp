@@ -39,6 +39,11 @@
 // lap before timing. Counters: contacts_per_step, multi_contact_fraction,
 // allocs_per_step (heap allocations per step, counted by the operator new of
 // allocation_count.cpp: tyre_model.hpp says a warm step allocates nothing).
+//
+//   WheelSoil/<ground>  TyreModel::step of the full model with soft_soil on a
+//       flat slab: <ground> a shipped soil (wtc::namedSoil), or hard (the same
+//       slab without a soil: the same run's baseline). Ishigami's wheel
+//       (r 0.09 m, b 0.11 m) 15 mm deep, rolling at 0.1 m/s with slip 0.2.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -47,6 +52,7 @@
 #include <utility>
 #include <vector>
 
+#include <wtc/terrain/soil.hpp>
 #include <wtc/tyre/effects.hpp>
 #include <wtc/terrain/heightfield.hpp>
 #include <wtc/terrain/terrain_primitives.hpp>
@@ -243,7 +249,37 @@ void wheelForcesOnly(benchmark::State& state, wtc::EffectSet effects) {
               wtc::bench::allocationCount() - allocations);
 }
 
+// A wheel rolling on a flat slab of `soil` (none: hard ground).
+void wheelSoil(benchmark::State& state, const std::string& soil) {
+  wtc::Material material;
+  if (!soil.empty()) material.soil = wtc::namedSoil(soil);
+  wtc::TerrainBuilder builder;
+  wtc::SlabParams slab;
+  slab.size_x = slab.size_y = 40.0;
+  wtc::addSlab(builder, slab, builder.addMaterial(material));
+  const wtc::Terrain terrain = std::move(builder).build();
+  wtc::WheelDescription wheel;
+  wheel.geometry.free_radius = 0.09;
+  wheel.geometry.tread_width = 0.11;
+  const wtc::TyreModel model(wtc::EffectSet::full().with(wtc::Effect::kSoftSoil));
+  wtc::WheelState wheel_state;
+  wtc::WheelMotion motion;
+  const double speed = 0.1, slip = 0.2;
+  motion.velocity = speed * kForward;
+  motion.angular_velocity = speed / (wheel.geometry.free_radius * (1.0 - slip)) * kAxle;
+  Vector3d centre{-15.0, 0.0, wheel.geometry.free_radius - 0.015};
+  for (auto _ : state) {
+    centre.x() = centre.x() > 15.0 ? -15.0 : centre.x() + speed * kStepSeconds;
+    const wtc::WheelForces& result = model.step(terrain, wheel, {centre, kAxle}, motion, kStepSeconds, wheel_state);
+    benchmark::DoNotOptimize(result.force);
+  }
+}
+
 const bool kRegistered = [] {
+  benchmark::RegisterBenchmark("WheelSoil/hard", wheelSoil, std::string());
+  for (const std::string& soil : wtc::soilNames()) {
+    benchmark::RegisterBenchmark(("WheelSoil/" + soil).c_str(), wheelSoil, soil);
+  }
   // minimal, each effect alone on top of it (enumerator order), full.
   std::vector<std::pair<std::string, wtc::EffectSet>> sets = {{"minimal", wtc::EffectSet::minimal()}};
   for (int k = 0; k < static_cast<int>(wtc::Effect::kCount); ++k) {

@@ -22,6 +22,7 @@ void validate(const Material& material, const std::string& where) {
   requirePositive(material.s1, context.c_str(), "s1", "dimensionless");
   requireNonNegative(material.s2, context.c_str(), "s2", "dimensionless");
   requireNonNegative(material.rolling_resistance, context.c_str(), "rolling_resistance", "dimensionless");
+  if (material.soil) validate(*material.soil, "material '" + material.name + "', " + where);
 }
 
 }  // namespace wtc

@@ -10,7 +10,7 @@ namespace {
 // The registry: one row per effect, in enumerator order.
 constexpr std::array<std::string_view, static_cast<std::size_t>(Effect::kCount)> kNames = {
     "normal_damping",     "slip_traction",     "coulomb_friction",
-    "rolling_resistance", "multiple_contacts", "tread_truncation"};
+    "rolling_resistance", "multiple_contacts", "tread_truncation", "soft_soil"};
 
 std::string knownNames() {
   std::string text = "full, minimal";

@@ -34,6 +34,7 @@ struct KernelInputs {
   std::array<double, 2> tread_damping_time{};  ///< tau (s), faded with V_t.
   double spin_ramp_gain = 0.0;                 ///< h / (kappa I) (s / (kg m^2)): ramp width per N m.
   double spin_floor = 0.0;                     ///< Smallest ramp width (rad/s).
+  double travel_ramp_gain = 0.0;               ///< h / (kappa m) (s/kg): soft soil's rest ramp per N of pull.
 };
 
 /// A force kernel: the forces of `contacts` into `out`, the tread's next state into `tread_out`.

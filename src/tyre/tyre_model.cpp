@@ -9,6 +9,7 @@
 #include <string>
 
 #include "base/scratch_capacity.hpp"
+#include "soil_contact.hpp"
 #include "tyre_kernels.hpp"
 #include "wtc/base/error.hpp"
 #include "wtc/base/tolerances.hpp"
@@ -57,6 +58,12 @@ TyreModel::TyreModel(EffectSet effects, ContactMode mode) : effects_(effects), m
       detail::selectKernel(effects.has(Effect::kNormalDamping), traction, effects.has(Effect::kRollingResistance));
   contact_options_.multiple_contacts = effects.has(Effect::kMultipleContacts);
   contact_options_.tread_truncation = effects.has(Effect::kTreadTruncation);
+  // The soil's stresses are a force of the state of the step; the engines'
+  // solved rows hold a spring and a friction cone, not the soil's arc.
+  if (effects.has(Effect::kSoftSoil) && mode != ContactMode::kForce) {
+    throw InvalidInputError("wtc::TyreModel: the soft_soil effect is applied in force mode only, not in " +
+                            std::string(contactModeName(mode)) + " mode (docs/soft-soil.md)");
+  }
 }
 
 const WheelForces& TyreModel::step(const Terrain& terrain, const WheelDescription& wheel, const WheelPose& pose,
@@ -131,10 +138,14 @@ const WheelForces& TyreModel::forces(std::span<const Material> materials, const 
   }
   in.spin_ramp_gain = h / (kappa * inertia.axial_inertia);
   in.spin_floor = tyre.spin_floor;
+  in.travel_ramp_gain = h / (kappa * m);
 
   state.forces_.resize(contacts.size());
   state.next_tread_.clear();
   detail::kernel(kernel_)(in, contacts, state.tread_, state.next_tread_, state.forces_.data());
+  if (effects_.has(Effect::kSoftSoil)) {
+    detail::applySoil(in, wheel.geometry.tread_width, contacts, state.forces_.data());
+  }
   std::swap(state.tread_, state.next_tread_);
 
   // Totals about O and the axial/bearing split (wheel_forces.hpp).

@@ -12,6 +12,7 @@
 #include "temp_dir.hpp"
 #include "wtc/base/error.hpp"
 #include "wtc/terrain/heightfield.hpp"
+#include "wtc/terrain/soil.hpp"
 #include "wtc/geometry/point_query.hpp"
 #include "wtc/terrain/terrain_primitives.hpp"
 
@@ -369,6 +370,41 @@ TEST_F(TerrainFileTest, DegenerateMeshTrianglesAreWarnedOfAndAMeshOfNothingElseI
   ASSERT_EQ(report.warnings.size(), 1u);
   EXPECT_EQ(report.warnings[0], at(5, 5) + "pieces[1] (mesh): " + (dir() / "some.obj").string() +
                                     ": 1 of 3 triangles are degenerate (zero area), skipped");
+}
+
+}  // namespace
+}  // namespace wtc::io
+
+namespace wtc::io {
+namespace {
+
+// A material's soil: a shipped one by name, a map of its fields over a
+// shipped base, and a value out of range refused with the file, line and field.
+TEST_F(TerrainFileTest, AMaterialTakesASoilByNameOrByItsFields) {
+  const auto path = write("soil.yaml",
+                          "materials:\n"
+                          "  sand: {soil: toyoura_sand}\n"
+                          "  loam: {soil: {base: lete_sand, name: wet_lete, cohesion: 2500, damping: 0}}\n"
+                          "pieces:\n"
+                          "  - {type: box, material: sand, size: [1, 1, 1]}\n");
+  const Terrain terrain = loadTerrain(path);
+  ASSERT_EQ(terrain.materials().size(), 2u);
+  const Material& sand = terrain.materials()[0].name == "sand" ? terrain.materials()[0] : terrain.materials()[1];
+  const Material& loam = terrain.materials()[0].name == "loam" ? terrain.materials()[0] : terrain.materials()[1];
+  ASSERT_TRUE(sand.soil && loam.soil);
+  EXPECT_EQ(sand.soil->k_phi, namedSoil("toyoura_sand")->k_phi);
+  EXPECT_EQ(loam.soil->name, "wet_lete");
+  EXPECT_EQ(loam.soil->cohesion, 2500.0);
+  EXPECT_EQ(loam.soil->damping, 0.0);
+  EXPECT_EQ(loam.soil->k_phi, namedSoil("lete_sand")->k_phi);
+
+  EXPECT_THAT(loadError("materials:\n  sand: {soil: quicksand}\npieces:\n  - {type: box, size: [1, 1, 1]}\n"),
+              AllOf(HasSubstr(at(2, 16)), HasSubstr("unknown soil 'quicksand'"), HasSubstr("toyoura_sand")));
+  EXPECT_THAT(loadError("materials:\n  sand:\n    soil: {base: dry_sand, friction_angle_deg: -3}\n"
+                        "pieces:\n  - {type: box, size: [1, 1, 1]}\n"),
+              AllOf(HasSubstr(at(3, 11)), HasSubstr("friction_angle_deg = -3 must be in (0, 90) (deg)")));
+  EXPECT_THAT(loadError("materials:\n  sand: {soil: {k_phi: 1e6, bekker: 2}}\npieces:\n  - {type: box, size: [1, 1, 1]}\n"),
+              HasSubstr("bekker"));
 }
 
 }  // namespace

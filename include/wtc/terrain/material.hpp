@@ -1,5 +1,8 @@
 #pragma once
+#include <optional>
 #include <string>
+
+#include "wtc/terrain/soil.hpp"
 
 namespace wtc {
 
@@ -14,10 +17,13 @@ struct Material {
   double s1 = 0.1;                  ///< Slip scale of the initial slope (dimensionless, > 0).
   double s2 = 0.0;                  ///< Adhesion boost at small slip (dimensionless, >= 0).
   double rolling_resistance = 0.018;  ///< f_r (dimensionless, >= 0).
+  /// Soft ground: with the soft_soil effect a wheel on this material meets
+  /// the soil's stresses instead of the tyre's spring and slip law.
+  std::optional<Soil> soil{};
 };
 
 /// Throws InvalidInputError naming the field and the material if a value is
-/// non-finite or out of range. `where` says where the material came from.
+/// non-finite or out of range (its soil's too). `where` says where the material came from.
 void validate(const Material& material, const std::string& where);
 
 }  // namespace wtc

@@ -26,6 +26,7 @@ enum class Effect : std::uint8_t {
   kRollingResistance,  ///< M_r = -f_r R_z r_0 sign(omega_rel . a) a.
   kMultipleContacts,   ///< Every contact of a wheel (off: only the deepest).
   kTreadTruncation,    ///< The wheel is a sphere cut at +-w/2 (off: the full sphere).
+  kSoftSoil,           ///< A contact on a material with a soil: the soil's stresses (wheel_soil.hpp).
   kCount
 };
 

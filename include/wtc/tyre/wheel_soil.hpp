@@ -1,0 +1,80 @@
+#pragma once
+// The stresses of soft soil on a rigid wheel, integrated over the contact
+// arc (docs/soft-soil.md), after Wong & Reece (1967) and Ishigami, Miwa,
+// Nagatani & Yoshida (2007, J. Field Robotics 24(3)). Angles from the
+// downward vertical, positive toward the wheel's travel: the rim meets the
+// soil at the entry angle theta_1 = acos(1 - z / r) and leaves it at the
+// exit angle theta_2 = -acos(1 - lambda z / r) (0 unless the soil rebounds).
+//
+//   sigma(theta) = (k_c / b + k_phi) r^n (cos theta - cos theta_1)^n          theta_m <= theta <= theta_1
+//   sigma(theta) = (k_c / b + k_phi) r^n (cos theta* - cos theta_1)^n,
+//       theta* = theta_1 - (theta - theta_2) / (theta_m - theta_2) (theta_1 - theta_m)   below theta_m
+//   theta_m = (a_0 + a_1 i) theta_1
+//   j(theta)   = r [p (theta_1 - theta) - q (sin theta_1 - sin theta)]     (shear displacement)
+//   j_y(theta) = r q (theta_1 - theta) tan beta                             (side slip)
+//   tau = sign(j) (c + sigma tan phi) (1 - exp(-|j| / K))
+// with p = 1, q = 1 - i when driving (Ishigami's j) and p = 1 + i, q = 1
+// when braking (the same slip over the time the ground takes to pass).
+// On the wheel (b the width):
+//   W  = r b int (sigma cos theta + tau sin theta) d theta      up
+//   DP = r b int (tau cos theta - sigma sin theta) d theta      forward
+//   T  = r^2 b int tau d theta                                  resisting the spin
+//   F_y = -(r b int tau_y d theta + F_u)                        against the side slip
+// F_u the bulldozing of the wheel's leading side (Ishigami et al. 2007, after
+// Bekker's passive earth pressure), with h(theta) = r (cos theta - cos theta_1):
+//   F_u = int R_b(h) (r - h cos theta) d theta,  R_b = D_1 c h + D_2 rho g h^2,
+//   D_1 = cot X_c + tan(X_c + phi),  D_2 = (cot X_c + cot^2 X_c / cot phi) / 2,  X_c = 45 deg - phi / 2.
+#include "wtc/terrain/soil.hpp"
+
+namespace wtc {
+
+/// A wheel's state against a flat soil surface, in its travel frame.
+struct WheelSoilState {
+  double radius = 0.0;      ///< r (m, > 0).
+  double width = 0.0;       ///< b (m, > 0).
+  double sinkage = 0.0;     ///< z, the rim's lowest point below the surface (m, [0, r]).
+  double slip = 0.0;        ///< i in [-1, 1]: 1 - v / (r omega) driving, r omega / v - 1 braking.
+  double slip_angle = 0.0;  ///< beta = atan(v_y / v_x) (rad, (-pi/2, pi/2)); > 0 sliding toward +axle.
+  /// How far the contact is made symmetric, in [0, 1]: 0 the rolling
+  /// wheel's arc (theta_2, theta_m as above), 1 a wheel at rest in its own
+  /// hollow (theta_2 = -theta_1, theta_m = 0, no compaction resistance,
+  /// and no shear: j and j_y scale with 1 - symmetry).
+  double symmetry = 0.0;
+};
+
+/// What the soil does to the wheel.
+struct WheelSoilForces {
+  double normal = 0.0;            ///< W (N), along the surface normal.
+  double drawbar_pull = 0.0;      ///< DP (N), along the travel.
+  double torque = 0.0;            ///< T (N m), resisting the spin (the drive supplies it).
+  double lateral = 0.0;           ///< F_y (N), along the axle: shear and bulldozing.
+  double bulldozing = 0.0;        ///< F_u (N, >= 0), its bulldozing part's size.
+  double entry_angle = 0.0;       ///< theta_1 (rad).
+  double exit_angle = 0.0;        ///< theta_2 (rad, <= 0).
+  double max_stress_angle = 0.0;  ///< theta_m (rad).
+};
+
+/// The stresses integrated over the arc (Gauss-Legendre on [theta_2, theta_m]
+/// and [theta_m, theta_1], where sigma is smooth). Preconditions: a
+/// validated soil, the state in its stated ranges (TyreModel checks both).
+WheelSoilForces wheelSoilForces(const Soil& soil, const WheelSoilState& state);
+
+/// The steady state of a wheel carrying `load` (N) at slip `slip` and slip
+/// angle `slip_angle`: the sinkage where W = load (bisection; W grows with
+/// z) and the forces there. Throws InvalidInputError if the load is not
+/// finite and > 0, or the soil cannot carry it before the axle sinks in
+/// (naming the load and the most the soil carries).
+struct SoilSteadyState {
+  double sinkage = 0.0;  ///< z (m).
+  WheelSoilForces forces;
+};
+SoilSteadyState steadyWheelOnSoil(const Soil& soil, double radius, double width, double load, double slip,
+                                  double slip_angle = 0.0);
+
+/// Terramechanics' slip from the travel speed v and the rim speed r omega
+/// (both along the travel): (r omega - v) / max(|r omega|, |v|, floor),
+/// clamped to [-1, 1]: 1 - v / (r omega) driving, r omega / v - 1 braking,
+/// fading to 0 below `floor` (m/s) where neither is defined.
+double soilSlip(double travel_speed, double rim_speed, double floor);
+
+}  // namespace wtc

@@ -1,0 +1,14 @@
+#pragma once
+// A contact on soft soil: the soil's stresses (wtc/tyre/wheel_soil.hpp) as
+// the contact's force, for the soft_soil effect (internal to wtc).
+#include <span>
+
+#include "tyre_kernels.hpp"
+
+namespace wtc::detail {
+
+/// Replaces the force of every contact in `out` whose material has a soil
+/// by the soil's, for a rigid wheel of radius r_f and width `width`.
+void applySoil(const KernelInputs& in, double width, std::span<const WheelContact> contacts, ContactForce* out);
+
+}  // namespace wtc::detail
