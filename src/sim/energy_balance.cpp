@@ -30,7 +30,11 @@ double EnergyBalance::tyresEnergy(std::span<const WheelForces* const> wheel_forc
   double e = 0.0;
   for (const int w : wheels_) {
     const double c = vehicle_.bodies[w].wheel->tyre.radial_stiffness;
-    for (const ContactForce& f : wheel_forces[w]->contacts) e += 0.5 * c * f.contact.deflection * f.contact.deflection;
+    for (const ContactForce& f : wheel_forces[w]->contacts) {
+      // Soft soil stores nothing: its W(z) does work on the way down that it
+      // gives back at most in part (damping), counted as lost (docs/soft-soil.md).
+      if (!f.soft_soil) e += 0.5 * c * f.contact.deflection * f.contact.deflection;
+    }
   }
   return e;
 }

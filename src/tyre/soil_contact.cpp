@@ -37,6 +37,7 @@ void applySoil(const KernelInputs& in, double width, std::span<const WheelContac
     ContactForce& f = out[k];
     f = ContactForce{};
     f.contact = c;
+    f.soft_soil = true;
     // A wheel on its side (axle along the normal) has no arc to integrate.
     if (across < 1e-9) continue;
     travel /= across;

@@ -27,6 +27,8 @@
 // hitch is internal to the vehicle, P on the towed body and -P on the
 // tug). Gravity is in E. Constraint mode's contact is the same spring and
 // damper, implicit (engine_contact.hpp), so its c Z^2 / 2 is stored alike.
+// A contact on soft soil (ContactForce::soft_soil) stores nothing: the soil
+// takes work as the wheel sinks and gives back at most a part of it.
 //
 // So the unexplained growth G = E - E_0 - W - W_rig stays at or below zero but for
 // the integrators' error. The balance starts before the first step (start):

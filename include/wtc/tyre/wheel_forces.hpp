@@ -51,6 +51,10 @@ struct ContactForce {
   TreadRows tread_rows;
   Eigen::Vector3d force{Eigen::Vector3d::Zero()};           ///< R = -R_z e + R_xy, applied at P (N).
   Eigen::Vector3d rolling_moment{Eigen::Vector3d::Zero()};  ///< M_r, along the axle (N m).
+  /// The soil's stresses (the soft_soil effect, docs/soft-soil.md), not the
+  /// tyre's spring: normal_force is W, slip_ratio the soil's slip i,
+  /// rolling_moment the shear's moment less OP x R's, and no c Z^2 / 2 is stored.
+  bool soft_soil = false;
 };
 
 /// The wheel's totals. force and torque are the wrench on the wheel body

@@ -1,0 +1,101 @@
+// The single-wheel test bed on soft soil (scenes/soil_test_bed.yaml) in
+// Bullet and ODE, force mode: each of the cart's wheels, at the slip its
+// rate and the carriage's speed impose, settles at the steady state the
+// soil's equations give for its own load (wtc::steadyWheelOnSoil, itself
+// checked against an independent quadrature in tests/tyre/wheel_soil_test.cpp):
+// sinkage, drawbar pull and torque to 2 % (the pull to 2 % of the load:
+// it crosses zero). The drive torques tilt the cart, so its rear wheels
+// carry more than its front ones; each is compared at the load it carries.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "wtc/sim/engine_table.hpp"
+#include "wtc/sim/run.hpp"
+#include "wtc/sim/run_observer.hpp"
+#include "wtc/sim/scene_file.hpp"
+#include "wtc/sim/scene_run.hpp"
+#include "wtc/tyre/wheel_soil.hpp"
+
+namespace wtc::testing {
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path kScene = fs::path(WTC_SOURCE_DIR) / "scenes" / "soil_test_bed.yaml";
+constexpr double kSettledS = 4.0;  // the means start here (s): the cart has settled by 2 s
+
+// Means over the settled stretch, per wheel body.
+struct WheelMeans {
+  double load = 0, pull = 0, torque = 0, sinkage = 0, rate = 0;
+};
+
+class Means : public sim::RunObserver {
+ public:
+  explicit Means(const vehicle::VehicleDescription& vehicle) : wheels_(vehicle.wheels()), sums_(wheels_.size()) {}
+  void observe(const sim::Run& run) override {
+    if (run.time() < kSettledS) return;
+    ++n_;
+    speed_ += run.state().bodies[0].linear_velocity.x();
+    for (std::size_t k = 0; k < wheels_.size(); ++k) {
+      const int b = wheels_[k];
+      const WheelForces& f = run.wheelForces(b);
+      const vehicle::BodyKinematics& body = run.state().bodies[static_cast<std::size_t>(b)];
+      const Eigen::Vector3d axle = body.pose.linear().col(1);
+      sums_[k].load += f.force.z();
+      sums_[k].pull += f.force.x();
+      sums_[k].torque += -f.axial_moment.dot(axle);
+      sums_[k].sinkage += -body.pose.translation().z();  // + r below
+      sums_[k].rate += (body.angular_velocity - run.state().bodies[0].angular_velocity).dot(axle);
+    }
+  }
+  WheelMeans wheel(std::size_t k, double radius) const {
+    WheelMeans m = sums_[k];
+    for (double* x : {&m.load, &m.pull, &m.torque, &m.sinkage, &m.rate}) *x /= n_;
+    m.sinkage += radius;
+    return m;
+  }
+  double speed() const { return speed_ / n_; }
+  std::size_t wheels() const { return wheels_.size(); }
+
+ private:
+  std::vector<int> wheels_;
+  std::vector<WheelMeans> sums_;
+  double speed_ = 0;
+  int n_ = 0;
+};
+
+TEST(SoilTestBedTest, EachWheelSettlesAtTheSoilsSteadyStateInBothEngines) {
+  const Soil soil = *namedSoil("toyoura_sand");
+  for (const char* engine : {"bullet", "ode"}) {
+    for (const double slip : {0.2, 0.6}) {
+      const double speed = 0.05, radius = 0.09, width = 0.11;
+      const double rate = speed / (radius * (1.0 - slip));
+      const sim::Scene scene =
+          sim::loadScene(kScene, std::vector<sim::Override>{{"engine", engine}, {"wheel_rate", std::to_string(rate)}});
+      const auto world = sim::makeEngine(scene.engine, *scene.terrain, scene.vehicle, scene.placement);
+      Means means(scene.vehicle);
+      sim::RunOptions options;
+      options.observer = &means;
+      const sim::RunSummary summary = sim::runScene(scene, *world, options);
+      ASSERT_TRUE(summary.success) << engine;
+      ASSERT_EQ(means.wheels(), 4u);
+      for (std::size_t k = 0; k < means.wheels(); ++k) {
+        const WheelMeans m = means.wheel(k, radius);
+        const double i = 1.0 - means.speed() / (radius * m.rate);  // the slip the run imposed
+        EXPECT_NEAR(i, slip, 2e-3) << engine;
+        const SoilSteadyState want = steadyWheelOnSoil(soil, radius, width, m.load, i);
+        const std::string label = std::string(engine) + " wheel " + std::to_string(k) + " slip " +
+                                  std::to_string(slip) + " load " + std::to_string(m.load);
+        EXPECT_NEAR(m.sinkage, want.sinkage, 0.02 * want.sinkage) << label;
+        EXPECT_NEAR(m.pull, want.forces.drawbar_pull, 0.02 * m.load) << label;
+        EXPECT_NEAR(m.torque, want.forces.torque, 0.02 * want.forces.torque) << label;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace wtc::testing
