@@ -31,7 +31,9 @@ def main():
     if drawbar:
         fig, ax = plt.subplots(figsize=(6, 4))
         bound = sorted((r["slip"], r["bound"]) for r in drawbar)
-        ax.plot([b[0] * 100 for b in bound], [b[1] for b in bound], "k--", label="bound: mu(s) at the driven wheels")
+        soil = report.get("ground", {}).get("soil")
+        label = f"bound: the soil's steady state ({soil})" if soil else "bound: mu(s) at the driven wheels"
+        ax.plot([b[0] * 100 for b in bound], [b[1] for b in bound], "k--", label=label)
         for key in sorted({(r["engine"], r["mode"]) for r in drawbar}):
             pts = sorted((r["slip"], r["measured"]) for r in drawbar
                          if (r["engine"], r["mode"]) == key and r["measured"] is not None)

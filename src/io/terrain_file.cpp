@@ -3,12 +3,12 @@
 // terrains/README.md).
 #include "wtc/io/terrain_file.hpp"
 
+#include "soil_node.hpp"
 #include "terrain_node.hpp"
 
 #include <cmath>
 #include <map>
 #include <numbers>
-#include <optional>
 
 #include "file_support.hpp"
 #include "wtc/base/error.hpp"
@@ -16,7 +16,6 @@
 #include "wtc/io/heightfield_file.hpp"
 #include "wtc/io/mesh_file.hpp"
 #include "wtc/terrain/heightfield.hpp"
-#include "wtc/terrain/soil.hpp"
 #include "wtc/terrain/triangle_mesh.hpp"
 #include "wtc/tyre/traction_law.hpp"
 #include "yaml_reader.hpp"
@@ -375,47 +374,6 @@ void addPiece(TerrainBuilder& builder, const YamlReader& in, const YAML::Node& p
   in.fail(p["type"], "unknown piece type '" + type + "' (expected " + known + ")");
 }
 
-// `soil: name` (a shipped soil) or a map of its fields, `base: name` first
-// when it only changes some of a shipped soil's.
-Soil readSoil(const YamlReader& in, const YAML::Node& node) {
-  auto shipped = [&](const YAML::Node& name_node) {
-    const std::string name = in.string(name_node, "soil");
-    std::optional<Soil> found = namedSoil(name);
-    if (!found) {
-      std::string known;
-      for (const std::string& n : soilNames()) known += (known.empty() ? "" : ", ") + n;
-      in.fail(name_node, "unknown soil '" + name + "' (shipped: " + known + ")");
-    }
-    return *found;
-  };
-  if (!node.IsMap()) return shipped(node);
-  in.checkKeys(node, {"base", "name", "k_c", "k_phi", "n", "cohesion", "friction_angle_deg", "shear_modulus_x",
-                      "shear_modulus_y", "a0", "a1", "unloading_stiffness", "damping", "density", "rebound_ratio"});
-  Soil soil;
-  if (const auto base = YamlReader::get(node, "base")) soil = shipped(*base);
-  if (const auto name = YamlReader::get(node, "name")) soil.name = in.string(*name, "name");
-  if (soil.name.empty()) soil.name = "custom";
-  soil.k_c = in.number(node, "k_c", soil.k_c);
-  soil.k_phi = in.number(node, "k_phi", soil.k_phi);
-  soil.n = in.number(node, "n", soil.n);
-  soil.cohesion = in.number(node, "cohesion", soil.cohesion);
-  soil.friction_angle_deg = in.number(node, "friction_angle_deg", soil.friction_angle_deg);
-  soil.shear_modulus_x = in.number(node, "shear_modulus_x", soil.shear_modulus_x);
-  soil.shear_modulus_y = in.number(node, "shear_modulus_y", soil.shear_modulus_y);
-  soil.a0 = in.number(node, "a0", soil.a0);
-  soil.a1 = in.number(node, "a1", soil.a1);
-  soil.unloading_stiffness = in.number(node, "unloading_stiffness", soil.unloading_stiffness);
-  soil.damping = in.number(node, "damping", soil.damping);
-  soil.density = in.number(node, "density", soil.density);
-  soil.rebound_ratio = in.number(node, "rebound_ratio", soil.rebound_ratio);
-  try {
-    validate(soil, "soil");
-  } catch (const InvalidInputError& e) {
-    in.fail(node, e.what());
-  }
-  return soil;
-}
-
 }  // namespace
 
 TerrainFileReport detail::addTerrainNode(TerrainBuilder& builder, const YamlReader& in, const YAML::Node& root) {
@@ -447,7 +405,7 @@ TerrainFileReport detail::addTerrainNode(TerrainBuilder& builder, const YamlRead
       material.s2 = adhesionBoostForPeakRatio(mu_peak / material.mu_max);
     }
     material.rolling_resistance = m.number(entry.second, "rolling_resistance", material.rolling_resistance);
-    if (const auto soil = YamlReader::get(entry.second, "soil")) material.soil = readSoil(m, *soil);
+    if (const auto soil = YamlReader::get(entry.second, "soil")) material.soil = detail::readSoil(m, *soil);
     try {
       materials[name] = builder.addMaterial(material);
     } catch (const InvalidInputError& e) {

@@ -122,8 +122,18 @@ std::string onlyOthersHeld(const EventVehicle& v) {
 }
 
 std::string ground(const Material& g) {
+  std::string soil;
+  if (g.soil) {
+    const Soil& o = *g.soil;
+    soil = ", soil: {name: " + o.name + ", k_c: " + num(o.k_c) + ", k_phi: " + num(o.k_phi) + ", n: " + num(o.n) +
+           ", cohesion: " + num(o.cohesion) + ", friction_angle_deg: " + num(o.friction_angle_deg) +
+           ", shear_modulus_x: " + num(o.shear_modulus_x) + ", shear_modulus_y: " + num(o.shear_modulus_y) +
+           ", a0: " + num(o.a0) + ", a1: " + num(o.a1) + ", unloading_stiffness: " + num(o.unloading_stiffness) +
+           ", damping: " + num(o.damping) + ", density: " + num(o.density) + ", rebound_ratio: " + num(o.rebound_ratio) +
+           "}";
+  }
   return "terrain:\n  materials:\n    ground: {mu_max: " + num(g.mu_max) + ", s1: " + num(g.s1) + ", s2: " + num(g.s2) +
-         ", rolling_resistance: " + num(g.rolling_resistance) + "}\n  pieces:\n";
+         ", rolling_resistance: " + num(g.rolling_resistance) + soil + "}\n  pieces:\n";
 }
 
 // How far the vehicle frame must rise for its lowest wheel to stand on the
@@ -157,11 +167,11 @@ std::string quoted(const std::string& text) {
 }
 
 std::string head(const EventVehicle& v, const std::string& event, double value, const std::string& description,
-                 double duration) {
+                 double duration, const Material& ground) {
   return "# A mobility event's trial, written by wtc-mobility (docs/mobility.md): replay it with wtc-sim.\n"
          "name: " +
          sceneName(v, event, value) + "\ndescription: '" + quoted(description) + "'\nduration: " + num(duration) +
-         "\neffects: [full]\noutput: {rate_hz: 100}\n";
+         "\neffects: [full" + (ground.soil ? ", soft_soil" : "") + "]\noutput: {rate_hz: 100}\n";
 }
 
 // A flat slab around the vehicle's path from x0 to x1 (m).
@@ -237,7 +247,7 @@ std::string eventScene(const EventVehicle& v, const std::string& event, double v
                            (own ? "the vehicle's climbing controller" : "plain drive forward") + " at " + num(speed) +
                            " m/s."
                      : "The widest gap: " + num(value) + " m, plain drive forward at " + num(speed) + " m/s.",
-                duration);
+                duration, s.ground);
     text += ground(s.ground);
     if (step) {
       text += "    - {type: ledge, material: ground, height: " + num(value) +
@@ -278,7 +288,7 @@ std::string eventScene(const EventVehicle& v, const std::string& event, double v
     text = head(v, event, value,
                 std::string(side ? "Across a tilt table" : "Up a tilt table") + ", wheels held: the table turns at " +
                     num(tilt.rate_deg_s) + " deg/s to " + num(top) + " deg; the angle where it tips or slides.",
-                duration);
+                duration, s.ground);
     text += ground(s.ground);
     const double reach = std::max({e.front, -e.rear, e.half_width}) + kMarginM;
     text += "    - {type: slab, material: ground, size: [" + num(2.0 * reach + 2.0) + ", " + num(2.0 * reach + 2.0) +
@@ -311,7 +321,7 @@ std::string eventScene(const EventVehicle& v, const std::string& event, double v
     const std::string what = grade
                                  ? "The steepest grade climbed from rest: "
                                  : (side ? "Parked across a slope, wheels held: " : "Parked up a grade, wheels held: ");
-    text = head(v, event, value, what + num(value) + " deg.", duration);
+    text = head(v, event, value, what + num(value) + " deg.", duration, s.ground);
     text += ground(s.ground);
     text += "    - {type: incline, material: ground, degrees: " + num(value) + ", length: " + num(slope_length) +
             ", width: " + num(2.0 * (side ? length : e.half_width) + 4.0) + ", thickness: " + num(kPieceThicknessM) +
@@ -345,7 +355,7 @@ std::string eventScene(const EventVehicle& v, const std::string& event, double v
              event == "drawbar" ? "Drawbar pull at driving slip " + num(value) + ", anchor at " + num(speed) + " m/s."
                                 : (event == "coast" ? "Coast-down from " + num(speed) + " m/s, drives off."
                                                     : "Locked-wheel stop from " + num(speed) + " m/s."),
-             duration);
+             duration, s.ground);
     text += ground(s.ground) + slab(e.rear - kMarginM, e.front + travel, e.half_width);
     text += placement(v, Eigen::Vector3d::Zero(), I, ", velocity: [" + num(speed) + ", 0, 0]");
     if (event == "drawbar") {
@@ -376,7 +386,7 @@ std::string eventScene(const EventVehicle& v, const std::string& event, double v
     text = head(v, event, value,
                 "Turning in place: left wheels at -" + num(s.turn.wheel_rate_radps) + " rad/s, right at +" +
                     num(s.turn.wheel_rate_radps) + " rad/s.",
-                duration);
+                duration, s.ground);
     text += ground(s.ground) + slab(-length - 2.0, length + 2.0, length + 2.0);
     text += placement(v, Eigen::Vector3d::Zero(), I);
     std::vector<std::string> left, right;

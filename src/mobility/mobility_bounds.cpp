@@ -11,6 +11,7 @@
 
 #include "wtc/base/constants.hpp"
 #include "wtc/tyre/traction_law.hpp"
+#include "wtc/tyre/wheel_soil.hpp"
 
 namespace wtc::mobility {
 namespace {
@@ -267,6 +268,38 @@ std::optional<Bound> turn(const VehicleStatics& v, const Material& g, const Turn
   return b;
 }
 
+// DP/W and sum T / (r_f W) on soft soil: each driven wheel at the soil's
+// steady state under its static load at slip i (steadyWheelOnSoil), each
+// free wheel at the slip where the soil's torque on it is zero (it rolls
+// on its bearing, pulling its compaction resistance).
+std::vector<DrawbarPoint> soilDrawbar(const VehicleStatics& v, const Soil& soil, const Loads& n0,
+                                      const std::vector<double>& slips) {
+  std::vector<DrawbarPoint> points;
+  for (const double i : slips) {
+    double pull = 0.0, torque = 0.0;
+    for (std::size_t k = 0; k < v.wheels.size(); ++k) {
+      const WheelInfo& w = v.wheels[k];
+      const double load = n0.normal_N[k];
+      if (!(load > 0.0)) continue;
+      auto at = [&](double slip) { return steadyWheelOnSoil(soil, w.radius_m, w.width_m, load, slip).forces; };
+      if (w.driven) {
+        const WheelSoilForces f = at(i);
+        pull += f.drawbar_pull;
+        torque += f.torque / w.radius_m;
+        continue;
+      }
+      double lo = -1.0, hi = 0.0;  // T(lo) < 0 <= T(hi): a free wheel skids a little
+      for (int step = 0; step < 60; ++step) {
+        const double mid = 0.5 * (lo + hi);
+        (at(mid).torque < 0.0 ? lo : hi) = mid;
+      }
+      pull += at(0.5 * (lo + hi)).drawbar_pull;
+    }
+    points.push_back({.slip = i, .dp_per_weight = pull / v.weight(), .torque_coefficient = torque / v.weight()});
+  }
+  return points;
+}
+
 }  // namespace
 
 double slipLawPeak(const Material& g) { return tractionPeak(g); }
@@ -283,7 +316,10 @@ VehicleBounds computeBounds(const VehicleStatics& v, const MobilitySettings& set
 
   const Loads n0 = wheelLoads(v);
   const double weight = v.weight(), k = g.rolling_resistance * v.wheels.front().r0_ratio;
-  for (const double i : settings.drawbar.slips) {
+  if (g.soil) {
+    out.drawbar = soilDrawbar(v, *g.soil, n0, settings.drawbar.slips);
+  }
+  for (const double i : g.soil ? std::vector<double>{} : settings.drawbar.slips) {
     const double mu = tractionCoefficient(g, i / (1.0 - i));
     // DP = mu(s) N_driven - f_r (r0/r_f) N_free; the drives also carry their wheels' rolling moment.
     out.drawbar.push_back({.slip = i,

@@ -56,6 +56,7 @@ void writeReport(const EventVehicle& v, const MobilitySettings& s, const Mobilit
                  {"s1", s.ground.s1},
                  {"s2", s.ground.s2},
                  {"rolling_resistance", s.ground.rolling_resistance}};
+  if (s.ground.soil) j["ground"]["soil"] = s.ground.soil->name;
   j["command"] = command;
   j["complete"] = outcome.pending_jobs == 0;
   nlohmann::json results = nlohmann::json::array();
@@ -82,7 +83,9 @@ void writeReport(const EventVehicle& v, const MobilitySettings& s, const Mobilit
      << "`" << command << "`\n\n"
      << "Vehicle " << v.file.string() << ": " << num(v.statics.mass_kg) << " kg. Ground: mu_max "
      << num(s.ground.mu_max) << ", s1 " << num(s.ground.s1) << ", s2 " << num(s.ground.s2) << ", f_r "
-     << num(s.ground.rolling_resistance) << ".\n\n"
+     << num(s.ground.rolling_resistance)
+     << (s.ground.soil ? "; soft soil " + s.ground.soil->name + " (soft_soil: docs/soft-soil.md)" : std::string())
+     << ".\n\n"
      << (outcome.pending_jobs ? "**Incomplete**: " + std::to_string(outcome.pending_jobs) +
                                     " runs of the next round are in jobs.txt.\n\n"
                               : std::string())

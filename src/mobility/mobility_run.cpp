@@ -240,7 +240,8 @@ MobilityOutcome runMobility(const EventVehicle& v, const MobilitySettings& s, co
           d.result.quantity = "DP/W at i = " + formatNumber(p.slip);
           d.result.unit = "";
           d.result.bound = p.dp_per_weight;
-          d.result.governs = "mu(s) at the driven wheels";
+          d.result.governs = s.ground.soil ? "the soil's steady state (" + s.ground.soil->name + ") at the static loads"
+                                           : "mu(s) at the driven wheels";
           units.push_back(d);
         }
       }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "io/soil_node.hpp"
 #include "io/yaml_reader.hpp"
 #include "wtc/base/error.hpp"
 #include "wtc/sim/engine.hpp"
@@ -149,7 +150,7 @@ std::vector<std::string> readNames(const YamlReader& in, const YAML::Node& node,
 
 void readGround(const YamlReader& in, const YAML::Node& node, Material& m) {
   in.requireMap(node, "ground");
-  in.checkKeys(node, {"mu_max", "s1", "s2", "mu_peak", "rolling_resistance"});
+  in.checkKeys(node, {"mu_max", "s1", "s2", "mu_peak", "rolling_resistance", "soil"});
   m.name = "ground";
   m.mu_max = in.number(node, "mu_max", m.mu_max);
   m.s1 = in.number(node, "s1", m.s1);
@@ -163,6 +164,7 @@ void readGround(const YamlReader& in, const YAML::Node& node, Material& m) {
     m.s2 = adhesionBoostForPeakRatio(mu_peak / m.mu_max);
   }
   m.rolling_resistance = in.number(node, "rolling_resistance", m.rolling_resistance);
+  if (const auto soil = YamlReader::get(node, "soil")) m.soil = io::detail::readSoil(in, *soil);
   try {
     validate(m, "ground");
   } catch (const InvalidInputError& e) {
@@ -298,6 +300,22 @@ void validate(const MobilitySettings& settings) {
     if (const std::string p = slipProblem(i); !p.empty()) throw InvalidInputError(where + "drawbar.slips: " + p);
   }
   if (copy.drawbar.slips.empty()) throw InvalidInputError(where + "drawbar.slips: none");
+  // On soft soil (part 1, docs/soft-soil.md) the drawbar event's bound is the
+  // soil's steady state; the other events' bounds come from the slip law.
+  if (copy.ground.soil) {
+    for (const std::string& e : copy.events) {
+      if (e != "drawbar") {
+        throw InvalidInputError(where + "events: '" + e + "' on a soil ground (" + copy.ground.soil->name +
+                                "): on soft soil wtc-mobility runs the drawbar event only (docs/soft-soil.md)");
+      }
+    }
+    for (const std::string& m : copy.modes) {
+      if (m != "force") {
+        throw InvalidInputError(where + "modes: '" + m + "' on a soil ground (" + copy.ground.soil->name +
+                                "): soft soil is force mode only (docs/soft-soil.md)");
+      }
+    }
+  }
 }
 
 }  // namespace wtc::mobility

@@ -147,6 +147,7 @@ VehicleStatics describeStatics(const vehicle::VehicleDescription& v) {
     w.root = root;
     w.position = b.pose.translation();
     w.radius_m = b.wheel->geometry.free_radius;
+    w.width_m = b.wheel->geometry.tread_width;
     w.r0_ratio = b.wheel->tyre.rolling_radius_ratio;
     w.stiffness_Npm = b.wheel->tyre.radial_stiffness;
     w.spin_inertia = b.wheel->axle.cwiseAbs().dot(b.inertia);  // the axle along a principal axis

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "wtc/base/error.hpp"
+#include "wtc/tyre/wheel_soil.hpp"
 #include "wtc/vehicle/vehicle_file.hpp"
 
 namespace wtc::mobility {
@@ -96,6 +97,32 @@ TEST(MobilityBoundsTest, TheTowedSystemsBoundsAreTheDocsNumbers) {
       EXPECT_NEAR(p.dp_per_weight, 0.123, 0.0005);
     }
   }
+}
+
+// On soft soil the drawbar bound is the soil's steady state: the test cart's
+// four driven wheels each carry a quarter of its weight, so DP/W is one
+// wheel's DP at W/4 over W/4 (steadyWheelOnSoil), and sum T/(r W) likewise;
+// the events whose bounds come from the slip law are refused on a soil.
+TEST(MobilityBoundsTest, OnSoftSoilTheDrawbarBoundIsTheSoilsSteadyState) {
+  MobilitySettings sand;
+  sand.ground.soil = namedSoil("toyoura_sand");
+  sand.events = {"drawbar"};
+  const VehicleStatics cart = shipped("soil_test_cart.yaml");
+  const VehicleBounds b = computeBounds(cart, sand);
+  ASSERT_EQ(b.drawbar.size(), sand.drawbar.slips.size());
+  const double quarter = cart.weight() / 4;
+  for (const DrawbarPoint& p : b.drawbar) {
+    const SoilSteadyState one = steadyWheelOnSoil(*sand.ground.soil, 0.09, 0.11, quarter, p.slip);
+    EXPECT_NEAR(p.dp_per_weight, one.forces.drawbar_pull / quarter, 1e-9) << p.slip;
+    EXPECT_NEAR(p.torque_coefficient, one.forces.torque / 0.09 / quarter, 1e-9) << p.slip;
+  }
+  EXPECT_NO_THROW(validate(sand));
+  MobilitySettings grade = sand;
+  grade.events = {"drawbar", "grade"};
+  EXPECT_THROW(validate(grade), InvalidInputError);
+  MobilitySettings implicit = sand;
+  implicit.modes = {"implicit"};
+  EXPECT_THROW(validate(implicit), InvalidInputError);
 }
 
 TEST(VehicleStaticsTest, AVehicleWithoutWheelsIsRefusedByName) {

@@ -29,6 +29,7 @@ struct WheelInfo {
   int root = -1;               ///< The root body it hangs from.
   Eigen::Vector3d position;    ///< Its centre in the vehicle frame (m).
   double radius_m = 0.0;       ///< r_f.
+  double width_m = 0.0;        ///< w, the tread's width.
   double r0_ratio = 0.97;      ///< r_0 / r_f.
   double stiffness_Npm = 0.0;  ///< c.
   double spin_inertia = 0.0;   ///< I about the axle (kg m^2).
