@@ -46,5 +46,6 @@ void bindRuns(py::module_& m);
 void bindSimulation(py::module_& m);
 void bindTerrain(py::module_& m);
 void bindControllers(py::module_& m);
+void bindSoil(py::module_& m);
 
 }  // namespace wtc::python

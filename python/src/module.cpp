@@ -11,4 +11,5 @@ PYBIND11_MODULE(_wtc, m) {
   wtc::python::bindControllers(m);
   wtc::python::bindRuns(m);
   wtc::python::bindSimulation(m);
+  wtc::python::bindSoil(m);
 }

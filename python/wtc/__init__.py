@@ -11,11 +11,11 @@ Units are SI throughout (m, s, N, rad); see docs/python.md for each function.
 import os
 
 from ._wtc import (Error, InvalidInputError, Scene, Sensors, Simulation as _Simulation, Terrain, __version__,
-                   heightfield, load_terrain, write_dem)
+                   heightfield, load_terrain, soils, wheel_on_soil, write_dem)
 from . import _wtc
 
 __all__ = ["__version__", "Error", "InvalidInputError", "Scene", "Sensors", "Simulation", "Terrain", "heightfield", "load_scene",
-           "load_terrain", "run", "write_dem"]
+           "load_terrain", "run", "soils", "wheel_on_soil", "write_dem"]
 
 
 def _yaml_text(value):

@@ -6,6 +6,7 @@
 // file shares none of its code.
 #include "wtc/tyre/wheel_soil.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <numbers>
@@ -120,6 +121,7 @@ TEST(WheelSoilTest, OutOfRangeValuesAreRefusedWithFieldAndRange) {
 // of the same equations (n = 1 Toyoura sand, n = 0.79 LETE sand, n = 1.1
 // dry sand: a root at the entry for n < 1).
 TEST(WheelSoilTest, StressIntegralsMatchAnIndependentQuadrature) {
+  double worst = 0.0;  // |difference| / W over every case and quantity
   for (const std::string& name : soilNames()) {
     const Soil soil = *namedSoil(name);
     for (const double z : {0.002, 0.01, 0.03}) {
@@ -130,15 +132,19 @@ TEST(WheelSoilTest, StressIntegralsMatchAnIndependentQuadrature) {
         EXPECT_NEAR(got.normal, want.w, 1e-4 * scale) << name << " z " << z << " i " << i;
         EXPECT_NEAR(got.drawbar_pull, want.dp, 1e-4 * scale) << name << " z " << z << " i " << i;
         EXPECT_NEAR(got.torque, want.t, 1e-4 * scale * kRadiusM) << name << " z " << z << " i " << i;
+        worst = std::max({worst, std::abs(got.normal - want.w) / scale, std::abs(got.drawbar_pull - want.dp) / scale,
+                          std::abs(got.torque - want.t) / (scale * kRadiusM)});
       }
     }
   }
+  RecordProperty("worst_difference_over_W", std::to_string(worst));
 }
 
 // The steady state: Ishigami's wheel under 64.68 N on Toyoura sand,
 // and on LETE sand, at slips 0-0.9: sinkage, DP and T to 2 % (they agree
 // far closer).
 TEST(WheelSoilTest, SteadyStateUnderLoadMatchesTheQuadrature) {
+  double worst_sinkage = 0.0, worst_torque = 0.0;  // relative
   for (const char* name : {"toyoura_sand", "lete_sand"}) {
     const Soil soil = *namedSoil(name);
     for (int k = 0; k <= 9; ++k) {
@@ -150,8 +156,12 @@ TEST(WheelSoilTest, SteadyStateUnderLoadMatchesTheQuadrature) {
       EXPECT_NEAR(got.forces.normal, kLoadN, 1e-9 * kLoadN);
       EXPECT_NEAR(got.forces.drawbar_pull, want.dp, 0.02 * std::abs(want.dp) + 1e-3) << name << " i " << i;
       EXPECT_NEAR(got.forces.torque, want.t, 0.02 * std::abs(want.t)) << name << " i " << i;
+      worst_sinkage = std::max(worst_sinkage, std::abs(got.sinkage / z - 1));
+      worst_torque = std::max(worst_torque, std::abs(got.forces.torque / want.t - 1));
     }
   }
+  RecordProperty("worst_sinkage_relative", std::to_string(worst_sinkage));
+  RecordProperty("worst_torque_relative", std::to_string(worst_torque));
 }
 
 // Bekker's static sinkage of a rigid wheel (Wong, Theory of Ground Vehicles,
@@ -171,6 +181,7 @@ TEST(WheelSoilTest, StaticSinkageApproachesBekkersClosedForm) {
         std::pow(3 * load / ((3 - n) * (soil.k_c + kWidthM * soil.k_phi) * std::sqrt(d)), 2 / (2 * n + 1));
     const double z = steadyWheelOnSoil(soil, kRadiusM, kWidthM, load, 0.0).sinkage;
     const double difference = std::abs(z / bekker - 1);
+    RecordProperty("difference_at_" + std::to_string(static_cast<int>(load)) + "_N", std::to_string(difference));
     EXPECT_LT(difference, previous) << load;
     if (load <= 20.0) {
       EXPECT_LT(difference, 0.02) << load;
