@@ -3,7 +3,6 @@
 #include <pybind11/stl.h>
 
 #include <string>
-#include <utility>
 
 #include "bindings.hpp"
 #include "wtc/base/error.hpp"
@@ -11,22 +10,6 @@
 
 namespace wtc::python {
 namespace {
-
-// A soil's fields by name, as terrain files write them.
-constexpr std::pair<const char*, double Soil::*> kFields[] = {
-    {"k_c", &Soil::k_c},
-    {"k_phi", &Soil::k_phi},
-    {"n", &Soil::n},
-    {"cohesion", &Soil::cohesion},
-    {"friction_angle_deg", &Soil::friction_angle_deg},
-    {"shear_modulus_x", &Soil::shear_modulus_x},
-    {"shear_modulus_y", &Soil::shear_modulus_y},
-    {"a0", &Soil::a0},
-    {"a1", &Soil::a1},
-    {"unloading_stiffness", &Soil::unloading_stiffness},
-    {"damping", &Soil::damping},
-    {"density", &Soil::density},
-    {"rebound_ratio", &Soil::rebound_ratio}};
 
 Soil shipped(const std::string& name) {
   const std::optional<Soil> soil = namedSoil(name);
@@ -54,9 +37,9 @@ Soil soilOf(const py::object& given) {
       continue;
     }
     bool known = false;
-    for (const auto& [field, member] : kFields) {
-      if (name == field) {
-        soil.*member = value.cast<double>();
+    for (const SoilField& f : soilFields()) {
+      if (name == f.name) {
+        soil.*f.member = value.cast<double>();
         known = true;
       }
     }
@@ -69,7 +52,7 @@ Soil soilOf(const py::object& given) {
 py::dict fieldsOf(const Soil& soil) {
   py::dict d;
   d["name"] = soil.name;
-  for (const auto& [field, member] : kFields) d[field] = soil.*member;
+  for (const SoilField& f : soilFields()) d[f.name] = soil.*f.member;
   return d;
 }
 

@@ -3,30 +3,10 @@
 
 #include <optional>
 #include <string>
-#include <utility>
 
 #include "wtc/base/error.hpp"
 
 namespace wtc::io::detail {
-namespace {
-
-// A soil's numbers as a terrain file names them (units in wtc/terrain/soil.hpp).
-constexpr std::pair<const char*, double Soil::*> kSoilFields[] = {
-    {"k_c", &Soil::k_c},
-    {"k_phi", &Soil::k_phi},
-    {"n", &Soil::n},
-    {"cohesion", &Soil::cohesion},
-    {"friction_angle_deg", &Soil::friction_angle_deg},
-    {"shear_modulus_x", &Soil::shear_modulus_x},
-    {"shear_modulus_y", &Soil::shear_modulus_y},
-    {"a0", &Soil::a0},
-    {"a1", &Soil::a1},
-    {"unloading_stiffness", &Soil::unloading_stiffness},
-    {"damping", &Soil::damping},
-    {"density", &Soil::density},
-    {"rebound_ratio", &Soil::rebound_ratio}};
-
-}  // namespace
 
 // `soil: name` (a shipped soil) or a map of its fields, `base: name` first
 // when it only changes some of a shipped soil's.
@@ -48,7 +28,7 @@ Soil readSoil(const YamlReader& in, const YAML::Node& node) {
   if (const auto base = YamlReader::get(node, "base")) soil = shipped(*base);
   if (const auto name = YamlReader::get(node, "name")) soil.name = in.string(*name, "name");
   if (soil.name.empty()) soil.name = "custom";
-  for (const auto& [key, member] : kSoilFields) soil.*member = in.number(node, key, soil.*member);
+  for (const SoilField& f : soilFields()) soil.*f.member = in.number(node, f.name, soil.*f.member);
   try {
     validate(soil, "soil");
   } catch (const InvalidInputError& e) {

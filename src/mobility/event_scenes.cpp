@@ -124,13 +124,9 @@ std::string onlyOthersHeld(const EventVehicle& v) {
 std::string ground(const Material& g) {
   std::string soil;
   if (g.soil) {
-    const Soil& o = *g.soil;
-    soil = ", soil: {name: " + o.name + ", k_c: " + num(o.k_c) + ", k_phi: " + num(o.k_phi) + ", n: " + num(o.n) +
-           ", cohesion: " + num(o.cohesion) + ", friction_angle_deg: " + num(o.friction_angle_deg) +
-           ", shear_modulus_x: " + num(o.shear_modulus_x) + ", shear_modulus_y: " + num(o.shear_modulus_y) +
-           ", a0: " + num(o.a0) + ", a1: " + num(o.a1) + ", unloading_stiffness: " + num(o.unloading_stiffness) +
-           ", damping: " + num(o.damping) + ", density: " + num(o.density) + ", rebound_ratio: " + num(o.rebound_ratio) +
-           "}";
+    soil = ", soil: {name: " + g.soil->name;
+    for (const SoilField& f : soilFields()) soil += ", " + std::string(f.name) + ": " + num((*g.soil).*f.member);
+    soil += "}";
   }
   return "terrain:\n  materials:\n    ground: {mu_max: " + num(g.mu_max) + ", s1: " + num(g.s1) + ", s2: " + num(g.s2) +
          ", rolling_resistance: " + num(g.rolling_resistance) + soil + "}\n  pieces:\n";

@@ -28,7 +28,23 @@ void requireWithin(double value, double low, double high, bool high_open, const 
   }
 }
 
+constexpr SoilField kFields[] = {{"k_c", &Soil::k_c},
+                                 {"k_phi", &Soil::k_phi},
+                                 {"n", &Soil::n},
+                                 {"cohesion", &Soil::cohesion},
+                                 {"friction_angle_deg", &Soil::friction_angle_deg},
+                                 {"shear_modulus_x", &Soil::shear_modulus_x},
+                                 {"shear_modulus_y", &Soil::shear_modulus_y},
+                                 {"a0", &Soil::a0},
+                                 {"a1", &Soil::a1},
+                                 {"unloading_stiffness", &Soil::unloading_stiffness},
+                                 {"damping", &Soil::damping},
+                                 {"density", &Soil::density},
+                                 {"rebound_ratio", &Soil::rebound_ratio}};
+
 }  // namespace
+
+std::span<const SoilField> soilFields() { return kFields; }
 
 void validate(const Soil& soil, const std::string& where) {
   if (soil.name.empty()) throw InvalidInputError("wtc::Soil (" + where + "): the name is empty");

@@ -12,6 +12,7 @@
 // soft_soil effect; without it, the material's slip law applies as on any
 // hard ground.
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -43,6 +44,14 @@ struct Soil {
 /// Throws InvalidInputError naming `where`, the soil, the field, its value,
 /// range and unit if a value is non-finite or out of range.
 void validate(const Soil& soil, const std::string& where);
+
+/// A soil's numeric fields by the names terrain files, wtc-mobility's
+/// settings and Python give them (k_c, k_phi, n, cohesion, ...).
+struct SoilField {
+  const char* name;
+  double Soil::*member;
+};
+std::span<const SoilField> soilFields();
 
 /// A shipped soil by name (its published source in src/terrain/soil_catalog.cpp),
 /// or nullopt. soilNames() lists them.
