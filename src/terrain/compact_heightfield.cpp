@@ -10,8 +10,8 @@
 namespace wtc::detail {
 
 namespace {
-// Relative and absolute (m^2) margin of a tile's test: far above rounding.
-constexpr double kTileSlack = 1e-9;
+// A tile's test takes a cell's margin (kCellSlack, field_cells.hpp): far above rounding.
+constexpr double kTileSlack = kCellSlack;
 }  // namespace
 
 CompactHeightfield::CompactHeightfield(Heightfield field) : field_(std::move(field)) {
@@ -188,11 +188,7 @@ bool CompactHeightfield::cellsUnder(const Aabb& box, int& c0, int& c1, int& r0, 
 }
 
 std::array<double, 2> CompactHeightfield::pieceTops(int r, int c) const {
-  // The corners' z as sample() computes them; (p00, p01, p11), then (p00, p11, p10).
-  const Heightfield& f = field_;
-  const double z00 = f.origin.z() + f.height(r, c), z01 = f.origin.z() + f.height(r, c + 1);
-  const double z10 = f.origin.z() + f.height(r + 1, c), z11 = f.origin.z() + f.height(r + 1, c + 1);
-  return {std::max({z00, z01, z11}), std::max({z00, z11, z10})};
+  return {prismTop(field_, r, c, 0), prismTop(field_, r, c, 1)};
 }
 
 template <typename Run>

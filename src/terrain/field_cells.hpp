@@ -49,13 +49,19 @@ void forEachCellNear(const Heightfield& f, int r, int lo, int hi, PieceId first,
   }
 }
 
+/// The top of prism t of cell (r, c): its triangle's highest corner, the
+/// corners' z as sample() computes them; t = 0 (p00, p01, p11), 1 (p00, p11, p10).
+inline double prismTop(const Heightfield& f, int r, int c, int t) {
+  const double z00 = f.origin.z() + f.height(r, c), z11 = f.origin.z() + f.height(r + 1, c + 1);
+  return std::max({z00, z11, f.origin.z() + (t == 0 ? f.height(r, c + 1) : f.height(r + 1, c))});
+}
+
 /// Whether prism t of cell (r, c), its box from `base_z` (m) to its top
-/// triangle's highest corner, comes within `reach` (m) of `point`: exactly
+/// (prismTop), comes within `reach` (m) of `point`: exactly
 /// Terrain::within's test on the prism's bounds.
 inline bool prismBoxWithin(const Heightfield& f, int r, int c, int t, double base_z, const Eigen::Vector3d& point,
                            double reach) {
-  const double z00 = f.origin.z() + f.height(r, c), z11 = f.origin.z() + f.height(r + 1, c + 1);
-  const double top = std::max({z00, z11, f.origin.z() + (t == 0 ? f.height(r, c + 1) : f.height(r + 1, c))});
+  const double top = prismTop(f, r, c, t);
   const Aabb box{{f.origin.x() + c * f.spacing_x, f.origin.y() + r * f.spacing_y, base_z},
                  {f.origin.x() + (c + 1) * f.spacing_x, f.origin.y() + (r + 1) * f.spacing_y, top}};
   return point.z() - reach <= top && box.squaredDistance(point) <= reach * reach;

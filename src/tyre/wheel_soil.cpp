@@ -59,7 +59,7 @@ double signedShear(double strength, double displacement, double modulus) {
 
 // Everything the integrand needs, fixed for one call.
 struct Arc {
-  double r, b, moving, theta1, theta2, theta_m, cos1, sin1, pressure_scale, n, cohesion, tan_phi, kx, ky, p, q, tan_beta;
+  double r, moving, theta1, theta2, theta_m, cos1, sin1, pressure_scale, n, cohesion, phi, tan_phi, kx, ky, p, q, tan_beta;
 };
 
 // The integrals over one sub-arc [lo, hi]; `front` says which sigma applies.
@@ -97,11 +97,10 @@ void integrate(const Arc& a, double lo, double hi, bool front, Sums& sums) {
 // R_b = D_1 c h + D_2 rho g h^2 (Ishigami et al.'s eq. 15; their D_1 4.03 and
 // D_2 2.55 for phi = 37.2 deg are these expressions).
 double bulldozing(const Soil& soil, const Arc& a) {
-  const double phi = soil.friction_angle_deg * std::numbers::pi / 180.0;
-  const double xc = 0.25 * std::numbers::pi - 0.5 * phi;
+  const double xc = 0.25 * std::numbers::pi - 0.5 * a.phi;
   const double cot_xc = 1.0 / std::tan(xc);
-  const double d1 = cot_xc + std::tan(xc + phi);
-  const double d2 = 0.5 * (cot_xc + cot_xc * cot_xc * std::tan(phi));
+  const double d1 = cot_xc + std::tan(xc + a.phi);
+  const double d2 = 0.5 * (cot_xc + cot_xc * cot_xc * a.tan_phi);
   const double weight_density = soil.density * kGravityMps2;
   const GaussLegendre& rule = gaussLegendre();
   const double half = 0.5 * (a.theta1 - a.theta2), mid = 0.5 * (a.theta1 + a.theta2);
@@ -128,7 +127,6 @@ WheelSoilForces wheelSoilForces(const Soil& soil, const WheelSoilState& state) {
 
   Arc a{};
   a.r = r;
-  a.b = b;
   a.moving = 1.0 - sym;  // the shear displacement is the rolling's; a wheel at rest has none
   a.theta1 = std::acos(1.0 - z / r);
   const double rolling_exit = -std::acos(1.0 - soil.rebound_ratio * z / r);
@@ -139,7 +137,8 @@ WheelSoilForces wheelSoilForces(const Soil& soil, const WheelSoilState& state) {
   a.pressure_scale = (soil.k_c / b + soil.k_phi) * std::pow(r, soil.n);
   a.n = soil.n;
   a.cohesion = soil.cohesion;
-  a.tan_phi = std::tan(soil.friction_angle_deg * std::numbers::pi / 180.0);
+  a.phi = soil.friction_angle_deg * std::numbers::pi / 180.0;
+  a.tan_phi = std::tan(a.phi);
   a.kx = soil.shear_modulus_x;
   a.ky = soil.shear_modulus_y;
   a.p = i >= 0.0 ? 1.0 : 1.0 + i;
