@@ -88,8 +88,6 @@ int main(int argc, char** argv) {
         try {
           const wtc::sim::Scene scene =
               wtc::sim::loadScene(file, std::vector<wtc::sim::Override>{{"engine", engine}, {"mode", mode}});
-          // Soft soil is force mode only (docs/soft-soil.md).
-          if (scene.engine.tyre_effects.has(wtc::Effect::kSoftSoil) && mode != "force") continue;
           const Survey s = survey(scene);
           const bool ok = !s.stopped && s.max_growth <= s.limit && s.beyond <= wtc::sim::kTerrainBoundsMarginM;
           std::printf("| %s | %s | %s | %.3g | %.3g | %.4g | %.3g | %s |\n", scene.name.c_str(), engine, mode.c_str(),

@@ -6,7 +6,8 @@
 // went non-finite, and turn the result into what the engine takes for the
 // contact mode: in force mode the whole tyre wrench about the wheel centre
 // O; in constraint mode the engine contacts (engine_contact.hpp) plus the
-// rolling-resistance moment, which stays explicit. That lives here once; an
+// rolling-resistance moment and the soft-soil contacts' wrench, which stay
+// explicit. That lives here once; an
 // adapter reads the wheel's kinematics from its engine, calls step, writes
 // the result to its bodies and solver, and calls tell for its listener.
 #include <span>
@@ -28,10 +29,11 @@ struct MountedWheelStep {
   /// The body's pose or motion was not finite: apply nothing, add no
   /// contact (WheelState::nonFiniteSteps counts it).
   bool skipped = false;
-  /// Through O (N): the tyre force in force mode; zero in constraint mode.
+  /// Through O (N): the tyre force in force mode; in constraint mode the
+  /// soft-soil contacts' force (zero without one).
   Eigen::Vector3d force{Eigen::Vector3d::Zero()};
   /// About O (N m): the tyre torque in force mode; the rolling-resistance
-  /// moment in constraint mode.
+  /// moment and the soft-soil contacts' moment in constraint mode.
   Eigen::Vector3d torque{Eigen::Vector3d::Zero()};
   /// Constraint mode: the engine contacts for this step (empty in force
   /// mode). Valid until the wheel's next step.

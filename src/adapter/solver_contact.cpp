@@ -10,6 +10,7 @@ namespace wtc {
 
 SolverContact toSolverContact(const ContactForce& f, const TyreParameters& tyre, const TyreModel& model,
                               const Eigen::Vector3d& rest_load) {
+  if (f.soft_soil) return soilRow(f);
   const double stiffness = tyre.radial_stiffness;
   const double damping = model.effects().has(Effect::kNormalDamping) ? tyre.radial_damping : 0.0;
   SolverContact c;
@@ -19,6 +20,7 @@ SolverContact toSolverContact(const ContactForce& f, const TyreParameters& tyre,
   c.depth = f.contact.deflection;
   c.stiffness = f.contact.load_share * stiffness;
   c.damping = f.contact.load_share * damping;
+  c.load = f.normal_force;
   if (model.mode() == ContactMode::kImplicit) {  // the tread's rows, as the model made them
     const TreadRows& rows = f.tread_rows;
     c.friction = rows.damping[0] > 0.0 ? rows.limit[0] : 0.0;
@@ -42,6 +44,18 @@ SolverContact toSolverContact(const ContactForce& f, const TyreParameters& tyre,
   } else {
     c.friction_direction = c.normal.unitOrthogonal();
   }
+  return c;
+}
+
+SolverContact soilRow(const ContactForce& f) {
+  SolverContact c;
+  c.ground_point = f.contact.ground_point;
+  c.tread_point = f.contact.point;
+  c.normal = -f.contact.e;
+  c.depth = f.soil_depth;
+  c.stiffness = f.soil_stiffness;
+  c.damping = f.soil_damping;
+  c.friction_direction = c.normal.unitOrthogonal();  // no friction: the shear stays a force
   return c;
 }
 

@@ -3,7 +3,7 @@
 // terrains/README.md).
 #include "wtc/io/terrain_file.hpp"
 
-#include "soil_node.hpp"
+#include "material_node.hpp"
 #include "terrain_node.hpp"
 
 #include <cmath>
@@ -17,7 +17,6 @@
 #include "wtc/io/mesh_file.hpp"
 #include "wtc/terrain/heightfield.hpp"
 #include "wtc/terrain/triangle_mesh.hpp"
-#include "wtc/tyre/traction_law.hpp"
 #include "yaml_reader.hpp"
 
 namespace wtc::io {
@@ -387,25 +386,7 @@ TerrainFileReport detail::addTerrainNode(TerrainBuilder& builder, const YamlRead
   for (const auto& entry : material_map) {
     const std::string name = entry.first.Scalar();
     const YamlReader m = in.with("material '" + name + "': ");
-    m.requireMap(entry.second, "a material");
-    m.checkKeys(entry.second, {"mu_max", "s1", "s2", "mu_peak", "rolling_resistance", "soil"});
-    Material material;
-    material.name = name;
-    material.mu_max = m.number(entry.second, "mu_max", material.mu_max);
-    material.s1 = m.number(entry.second, "s1", material.s1);
-    material.s2 = m.number(entry.second, "s2", material.s2);
-    // A static coefficient (the peak of mu(s)) instead of s2: the spec's
-    // mapping of a static/dynamic pair onto the slip law.
-    if (const auto peak = YamlReader::get(entry.second, "mu_peak")) {
-      if (YamlReader::get(entry.second, "s2")) m.fail(*peak, "give either s2 or mu_peak, not both");
-      const double mu_peak = m.number(*peak, "mu_peak");
-      if (!(mu_peak > material.mu_max)) {
-        m.fail(*peak, "mu_peak " + formatNumber(mu_peak) + " must exceed mu_max " + formatNumber(material.mu_max));
-      }
-      material.s2 = adhesionBoostForPeakRatio(mu_peak / material.mu_max);
-    }
-    material.rolling_resistance = m.number(entry.second, "rolling_resistance", material.rolling_resistance);
-    if (const auto soil = YamlReader::get(entry.second, "soil")) material.soil = detail::readSoil(m, *soil);
+    const Material material = detail::readMaterial(m, entry.second, name);
     try {
       materials[name] = builder.addMaterial(material);
     } catch (const InvalidInputError& e) {

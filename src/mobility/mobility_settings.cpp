@@ -6,12 +6,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "io/soil_node.hpp"
+#include "io/material_node.hpp"
 #include "io/yaml_reader.hpp"
 #include "wtc/base/error.hpp"
 #include "wtc/sim/engine.hpp"
 #include "wtc/sim/engine_table.hpp"
-#include "wtc/tyre/traction_law.hpp"
 
 namespace wtc::mobility {
 namespace {
@@ -149,22 +148,7 @@ std::vector<std::string> readNames(const YamlReader& in, const YAML::Node& node,
 }
 
 void readGround(const YamlReader& in, const YAML::Node& node, Material& m) {
-  in.requireMap(node, "ground");
-  in.checkKeys(node, {"mu_max", "s1", "s2", "mu_peak", "rolling_resistance", "soil"});
-  m.name = "ground";
-  m.mu_max = in.number(node, "mu_max", m.mu_max);
-  m.s1 = in.number(node, "s1", m.s1);
-  m.s2 = in.number(node, "s2", m.s2);
-  if (const auto peak = YamlReader::get(node, "mu_peak")) {
-    if (YamlReader::get(node, "s2")) in.fail(*peak, "ground: give either s2 or mu_peak, not both");
-    const double mu_peak = in.number(*peak, "ground.mu_peak");
-    if (!(mu_peak > m.mu_max)) {
-      in.fail(*peak, "ground.mu_peak " + formatNumber(mu_peak) + " must exceed mu_max " + formatNumber(m.mu_max));
-    }
-    m.s2 = adhesionBoostForPeakRatio(mu_peak / m.mu_max);
-  }
-  m.rolling_resistance = in.number(node, "rolling_resistance", m.rolling_resistance);
-  if (const auto soil = YamlReader::get(node, "soil")) m.soil = io::detail::readSoil(in, *soil);
+  m = io::detail::readMaterial(in.with("ground: "), node, "ground");
   try {
     validate(m, "ground");
   } catch (const InvalidInputError& e) {
@@ -310,9 +294,9 @@ void validate(const MobilitySettings& settings) {
       }
     }
     for (const std::string& m : copy.modes) {
-      if (m != "force") {
+      if (m.starts_with("engine_")) {
         throw InvalidInputError(where + "modes: '" + m + "' on a soil ground (" + copy.ground.soil->name +
-                                "): soft soil is force mode only (docs/soft-soil.md)");
+                                "): soft soil acts on WTC's wheels, not the engine's own (docs/soft-soil.md)");
       }
     }
   }

@@ -219,6 +219,28 @@ void readEffects(const YamlReader& in, const YAML::Node& node, sim::Scene& scene
   }
 }
 
+// The soft_soil effect integrates the soil's stresses over the rim of
+// WTC's wheel taken as a cylinder (docs/soft-soil.md): not the engine's own
+// wheels (their contact knows no soil), not a full sphere (w >= 2 r_f).
+void checkSoilWheels(const YamlReader& in, const YAML::Node& at, const Scene& scene) {
+  if (!scene.engine.tyre_effects.has(Effect::kSoftSoil)) return;
+  const auto& materials = scene.terrain->materials();
+  if (std::none_of(materials.begin(), materials.end(), [](const Material& m) { return m.soil.has_value(); })) return;
+  if (scene.engine.native_wheels) {
+    in.fail(at, "effects: soft_soil acts on WTC's wheels; mode " + std::string(modeName(scene.engine)) +
+                    " gives the wheels to the engine, whose contact knows no soil (docs/soft-soil.md)");
+  }
+  for (const int b : scene.vehicle.wheels()) {
+    const WheelGeometry& g = scene.vehicle.bodies[static_cast<std::size_t>(b)].wheel->geometry;
+    if (g.tread_width >= 2.0 * g.free_radius) {
+      in.fail(at, "effects: soft_soil: wheel '" + scene.vehicle.bodies[static_cast<std::size_t>(b)].name +
+                      "' is a sphere (width " + formatNumber(g.tread_width) + " m >= twice its radius " +
+                      formatNumber(g.free_radius) + " m); the soil's stresses are integrated over a cylinder's rim "
+                      "(docs/soft-soil.md)");
+    }
+  }
+}
+
 // `drawbar: {body, point, force}` or `{body, point, speed, stiffness,
 // damping}` (wtc/sim/drawbar.hpp).
 Drawbar readDrawbar(const YamlReader& in, const YAML::Node& node, const vehicle::VehicleDescription& vehicle) {
@@ -409,6 +431,7 @@ sim::Scene readSceneFile(const std::filesystem::path& path, std::span<const Over
   if (const auto t = YamlReader::get(root, "tilt_table")) scene.tilt_table = readTiltTable(in, *t, scene.duration_seconds);
 
   readEffects(in, YamlReader::get(root, "effects").value_or(YAML::Load("[full]")), scene);
+  checkSoilWheels(in, YamlReader::get(root, "effects").value_or(root), scene);
   readController(in, in.require(root, "controller"), scene);
 
   if (const auto o = YamlReader::get(root, "output")) {

@@ -308,13 +308,13 @@ RunSummary SceneRun::summary() const {
   summary.max_joint_angle = run.maxJointError().angle;
   for (const int b : v.actuated()) {
     const vehicle::DriveReport& d = run.drives()[b];
-    summary.drives.push_back({.name = v.bodies[b].name,
-                              .joint = v.bodies[b].joint.type == vehicle::JointType::kPrismatic ? "prismatic"
-                                                                                                 : "revolute",
-                              .steps = d.steps,
-                              .saturated_steps = d.saturated_steps,
-                              .peak_effort = d.peak_effort,
-                              .mean_effort = d.steps > 0 ? x.effort_sum[b] / static_cast<double>(d.steps) : 0.0});
+    summary.drives.push_back(
+        {.name = v.bodies[b].name,
+         .joint = v.bodies[b].joint.type == vehicle::JointType::kPrismatic ? "prismatic" : "revolute",
+         .steps = d.steps,
+         .saturated_steps = d.saturated_steps,
+         .peak_effort = d.peak_effort,
+         .mean_effort = d.steps > 0 ? x.effort_sum[b] / static_cast<double>(d.steps) : 0.0});
     summary.saturation_steps += d.saturated_steps;
     if (d.saturated_steps > 0) {
       summary.warnings.push_back("drive " + v.bodies[b].name + " saturated in " + std::to_string(d.saturated_steps) +
@@ -330,9 +330,17 @@ RunSummary SceneRun::summary() const {
     }
     const std::uint64_t unstable = engine.wheelState(w).unstableSteps();
     if (unstable > 0) {
-      summary.warnings.push_back("wheel " + v.bodies[w].name + ": tyre spring beyond its explicit stability limit in " +
+      // The spring is the tyre's, or soft soil's (describe names which).
+      summary.warnings.push_back("wheel " + v.bodies[w].name + ": spring beyond its explicit stability limit in " +
                                  std::to_string(unstable) + " steps (" + spring_watch.first(wheel_index) +
                                  " at the first; reduce dt or use constraint mode)");
+    }
+    const std::uint64_t sunk = engine.wheelState(w).sunkSteps();
+    if (sunk > 0) {
+      summary.warnings.push_back("wheel " + v.bodies[w].name + ": sank to its axle in soft soil in " +
+                                 std::to_string(sunk) +
+                                 " steps (the soil cannot carry its load: docs/soft-soil.md; the stresses beyond are"
+                                 " those of a sinkage of one radius)");
     }
     ++wheel_index;
   }

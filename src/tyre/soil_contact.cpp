@@ -12,14 +12,19 @@
 // The stresses of a fresh surface depend on z alone, a spring without
 // loss; the soil's damping R (Pa s/m, as Project Chrono's SCM adds to its
 // Bekker pressure) over the patch b L damps the wheel's bounce:
-//   the stresses scale by max(0, W + R b L v_z) / W,  L = r (sin theta_1 - sin theta_2),
-// v_z the rim's speed into the soil. Plastic sinkage and its elastic
-// unloading need a ground that remembers: part 2 (issue 55).
+//   the normal force is max(0, W + R b L v_z),  L = r (sin theta_1 - sin theta_2),
+// v_z the rim's speed into the soil. The shear scales with the normal
+// stress only as the damping unloads it (by min(1, that ratio)): on a soil
+// too weak to carry the wheel W -> 0 while R b L v_z does not, and a ratio
+// above one multiplied the cohesion's shear, which does not grow with the
+// pressure, into a cart thrown 33 m (docs/soft-soil.md). Plastic sinkage
+// and its elastic unloading need a ground that remembers: part 2 (issue 55).
 #include "soil_contact.hpp"
 
 #include <algorithm>
 #include <cmath>
 
+#include "wtc/base/tolerances.hpp"
 #include "wtc/tyre/wheel_soil.hpp"
 
 namespace wtc::detail {
@@ -39,7 +44,7 @@ void applySoil(const KernelInputs& in, double width, std::span<const WheelContac
     f.contact = c;
     f.soft_soil = true;
     // A wheel on its side (axle along the normal) has no arc to integrate.
-    if (across < 1e-9) continue;
+    if (across < tolerance::kWheelOnItsSideSine) continue;
     travel /= across;
     const Eigen::Vector3d lateral = n.cross(travel);
     const double v_x = in.motion->velocity.dot(travel);
@@ -68,11 +73,20 @@ void applySoil(const KernelInputs& in, double width, std::span<const WheelContac
     // The soil's damping R v_z over the contact patch b L, L = r (sin theta_1 - sin theta_2).
     const double length = r * (std::sin(soil.entry_angle) - std::sin(soil.exit_angle));
     const double damped = std::max(0.0, soil.normal + material.soil->damping * width * length * f.deflection_rate);
-    const double scale = soil.normal > 0.0 ? damped / soil.normal : 0.0;
+    const double scale = soil.normal > 0.0 ? std::min(1.0, damped / soil.normal) : 0.0;
 
+    // The soil as a spring about z for the stability report and the
+    // engine-solved modes' normal row: Bekker's W ~ z^(n + 1/2) (the closed
+    // form of docs/soft-soil.md) has dW/dz = (n + 1/2) W / z.
+    const double exponent = material.soil->n + 0.5;
+    if (state.sinkage > 0.0) {
+      f.soil_stiffness = c.load_share * exponent * soil.normal / state.sinkage;
+      f.soil_depth = state.sinkage / exponent;
+    }
+    f.soil_damping = c.load_share * material.soil->damping * width * length;
     const double share = c.load_share * scale;
     const Eigen::Vector3d tangential = share * (soil.drawbar_pull * travel + soil.lateral * lateral);
-    f.normal_force = share * soil.normal;
+    f.normal_force = c.load_share * damped;
     f.tangential_force = tangential;
     f.force = f.normal_force * n + tangential;
     f.slip_velocity = point_velocity - f.deflection_rate * c.e;

@@ -58,12 +58,6 @@ TyreModel::TyreModel(EffectSet effects, ContactMode mode) : effects_(effects), m
       detail::selectKernel(effects.has(Effect::kNormalDamping), traction, effects.has(Effect::kRollingResistance));
   contact_options_.multiple_contacts = effects.has(Effect::kMultipleContacts);
   contact_options_.tread_truncation = effects.has(Effect::kTreadTruncation);
-  // The soil's stresses are a force of the state of the step; the engines'
-  // solved rows hold a spring and a friction cone, not the soil's arc.
-  if (effects.has(Effect::kSoftSoil) && mode != ContactMode::kForce) {
-    throw InvalidInputError("wtc::TyreModel: the soft_soil effect is applied in force mode only, not in " +
-                            std::string(contactModeName(mode)) + " mode (docs/soft-soil.md)");
-  }
 }
 
 const WheelForces& TyreModel::step(const Terrain& terrain, const WheelDescription& wheel, const WheelPose& pose,
@@ -143,8 +137,18 @@ const WheelForces& TyreModel::forces(std::span<const Material> materials, const 
   state.forces_.resize(contacts.size());
   state.next_tread_.clear();
   detail::kernel(kernel_)(in, contacts, state.tread_, state.next_tread_, state.forces_.data());
+  bool on_soil_only = false;
   if (effects_.has(Effect::kSoftSoil)) {
     detail::applySoil(in, wheel.geometry.tread_width, contacts, state.forces_.data());
+    // Sunk to the axle: the soil cannot carry the wheel (the stresses are
+    // those of z = r beyond; steadyWheelOnSoil names the most it carries).
+    bool sunk = false;
+    on_soil_only = !state.forces_.empty();
+    for (const ContactForce& f : state.forces_) {
+      sunk = sunk || (f.soft_soil && f.contact.deflection >= in.free_radius);
+      on_soil_only = on_soil_only && f.soft_soil;
+    }
+    if (sunk) ++state.sunk_steps_;
   }
   std::swap(state.tread_, state.next_tread_);
 
@@ -165,14 +169,28 @@ const WheelForces& TyreModel::forces(std::span<const Material> materials, const 
   result.contacts = state.forces_;
 
   // The springs of several contacts act in parallel on the wheel: their
-  // load shares add (two full contacts in a V-valley double c and b).
-  double shares = 0.0;
-  for (const ContactForce& f : state.forces_) shares += f.contact.load_share;
+  // load shares add (two full contacts in a V-valley double c and b). A
+  // contact on soft soil adds the soil's spring instead (soil_contact.cpp);
+  // the report is the spring nearer its limit.
+  double shares = 0.0, soil_stiffness = 0.0, soil_damping = 0.0;
+  for (const ContactForce& f : state.forces_) {
+    if (f.soft_soil) {
+      soil_stiffness += f.soil_stiffness;
+      soil_damping += f.soil_damping;
+    } else {
+      shares += f.contact.load_share;
+    }
+  }
   shares = std::max(shares, 1.0);
   const double damping = effects_.has(Effect::kNormalDamping) ? tyre.radial_damping : 0.0;
-  result.normal_stability =
-      explicitSpringStability(shares * tyre.radial_stiffness, shares * damping, inertia.effective_mass, h);
-  if (engineSolvesContacts(mode_)) result.normal_stability.limit = std::numeric_limits<double>::infinity();
+  SpringStability& stability = result.normal_stability;
+  stability = explicitSpringStability(shares * tyre.radial_stiffness, shares * damping, inertia.effective_mass, h);
+  if (soil_stiffness > 0.0) {
+    SpringStability soil = explicitSpringStability(soil_stiffness, soil_damping, inertia.effective_mass, h);
+    soil.soil = true;
+    if (on_soil_only || soil.step_number / soil.limit > stability.step_number / stability.limit) stability = soil;
+  }
+  if (engineSolvesContacts(mode_)) stability.limit = std::numeric_limits<double>::infinity();
   ++state.steps_;
   state.first_unstable_ = !result.normal_stability.stable() && state.unstable_steps_ == 0;
   if (!result.normal_stability.stable()) ++state.unstable_steps_;

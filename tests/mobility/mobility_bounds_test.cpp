@@ -121,8 +121,11 @@ TEST(MobilityBoundsTest, OnSoftSoilTheDrawbarBoundIsTheSoilsSteadyState) {
   grade.events = {"drawbar", "grade"};
   EXPECT_THROW(validate(grade), InvalidInputError);
   MobilitySettings implicit = sand;
-  implicit.modes = {"implicit"};
-  EXPECT_THROW(validate(implicit), InvalidInputError);
+  implicit.modes = {"force", "constraint", "implicit"};
+  EXPECT_NO_THROW(validate(implicit));
+  MobilitySettings native = sand;
+  native.modes = {"engine_cylinder"};
+  EXPECT_THROW(validate(native), InvalidInputError);
 }
 
 TEST(VehicleStaticsTest, AVehicleWithoutWheelsIsRefusedByName) {

@@ -183,8 +183,6 @@ TEST(EnergyBalanceTest, ShippedScenesPassBothChecksInEveryEngineAndMode) {
       for (const char* mode : {"force", "constraint", "implicit"}) {
         const sim::Scene s = sim::loadScene(
             entry.path(), std::vector<sim::Override>{{"engine", engine}, {"mode", mode}, {"duration", "2"}});
-        // Soft soil is force mode only (docs/soft-soil.md; VehicleScenesTest checks the refusal).
-        if (s.engine.tyre_effects.has(Effect::kSoftSoil) && std::string(mode) != "force") continue;
         const RunSummary r = run(s);
         EXPECT_EQ(find(r, "energy"), nullptr) << entry.path().stem() << " " << engine << " " << mode;
         EXPECT_EQ(find(r, "bounds"), nullptr) << entry.path().stem() << " " << engine << " " << mode;

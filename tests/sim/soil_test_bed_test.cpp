@@ -1,5 +1,5 @@
 // The single-wheel test bed on soft soil (scenes/soil_test_bed.yaml) in
-// Bullet and ODE, force mode: each of the cart's wheels, at the slip its
+// Bullet and ODE, in every mode (a soil contact is a force in each): each of the cart's wheels, at the slip its
 // rate and the carriage's speed impose, settles at the steady state the
 // soil's equations give for its own load (wtc::steadyWheelOnSoil, itself
 // checked against an independent quadrature in tests/tyre/wheel_soil_test.cpp):
@@ -73,31 +73,34 @@ TEST(SoilTestBedTest, EachWheelSettlesAtTheSoilsSteadyStateInBothEngines) {
   const Soil soil = *namedSoil("toyoura_sand");
   double worst_sinkage = 0.0, worst_torque = 0.0, worst_pull = 0.0;  // relative (the pull: to the load)
   for (const char* engine : {"bullet", "ode"}) {
-    for (const double slip : {0.2, 0.6}) {
-      const double speed = 0.05, radius = 0.09, width = 0.11;
-      const double rate = speed / (radius * (1.0 - slip));
-      const sim::Scene scene =
-          sim::loadScene(kScene, std::vector<sim::Override>{{"engine", engine}, {"wheel_rate", std::to_string(rate)}});
-      const auto world = sim::makeEngine(scene.engine, *scene.terrain, scene.vehicle, scene.placement);
-      Means means(scene.vehicle);
-      sim::RunOptions options;
-      options.observer = &means;
-      const sim::RunSummary summary = sim::runScene(scene, *world, options);
-      ASSERT_TRUE(summary.success) << engine;
-      ASSERT_EQ(means.wheels(), 4u);
-      for (std::size_t k = 0; k < means.wheels(); ++k) {
-        const WheelMeans m = means.wheel(k, radius);
-        const double i = 1.0 - means.speed() / (radius * m.rate);  // the slip the run imposed
-        EXPECT_NEAR(i, slip, 2e-3) << engine;
-        const SoilSteadyState want = steadyWheelOnSoil(soil, radius, width, m.load, i);
-        const std::string label = std::string(engine) + " wheel " + std::to_string(k) + " slip " +
-                                  std::to_string(slip) + " load " + std::to_string(m.load);
-        EXPECT_NEAR(m.sinkage, want.sinkage, 0.02 * want.sinkage) << label;
-        EXPECT_NEAR(m.pull, want.forces.drawbar_pull, 0.02 * m.load) << label;
-        EXPECT_NEAR(m.torque, want.forces.torque, 0.02 * want.forces.torque) << label;
-        worst_sinkage = std::max(worst_sinkage, std::abs(m.sinkage / want.sinkage - 1));
-        worst_torque = std::max(worst_torque, std::abs(m.torque / want.forces.torque - 1));
-        worst_pull = std::max(worst_pull, std::abs(m.pull - want.forces.drawbar_pull) / m.load);
+    for (const char* mode : {"force", "constraint", "implicit"}) {
+      for (const double slip : {0.2, 0.6}) {
+        const double speed = 0.05, radius = 0.09, width = 0.11;
+        const double rate = speed / (radius * (1.0 - slip));
+        const sim::Scene scene = sim::loadScene(
+            kScene,
+            std::vector<sim::Override>{{"engine", engine}, {"mode", mode}, {"wheel_rate", std::to_string(rate)}});
+        const auto world = sim::makeEngine(scene.engine, *scene.terrain, scene.vehicle, scene.placement);
+        Means means(scene.vehicle);
+        sim::RunOptions options;
+        options.observer = &means;
+        const sim::RunSummary summary = sim::runScene(scene, *world, options);
+        ASSERT_TRUE(summary.success) << engine << "/" << mode;
+        ASSERT_EQ(means.wheels(), 4u);
+        for (std::size_t k = 0; k < means.wheels(); ++k) {
+          const WheelMeans m = means.wheel(k, radius);
+          const double i = 1.0 - means.speed() / (radius * m.rate);  // the slip the run imposed
+          EXPECT_NEAR(i, slip, 2e-3) << engine;
+          const SoilSteadyState want = steadyWheelOnSoil(soil, radius, width, m.load, i);
+          const std::string label = std::string(engine) + "/" + mode + " wheel " + std::to_string(k) + " slip " +
+                                    std::to_string(slip) + " load " + std::to_string(m.load);
+          EXPECT_NEAR(m.sinkage, want.sinkage, 0.02 * want.sinkage) << label;
+          EXPECT_NEAR(m.pull, want.forces.drawbar_pull, 0.02 * m.load) << label;
+          EXPECT_NEAR(m.torque, want.forces.torque, 0.02 * want.forces.torque) << label;
+          worst_sinkage = std::max(worst_sinkage, std::abs(m.sinkage / want.sinkage - 1));
+          worst_torque = std::max(worst_torque, std::abs(m.torque / want.forces.torque - 1));
+          worst_pull = std::max(worst_pull, std::abs(m.pull - want.forces.drawbar_pull) / m.load);
+        }
       }
     }
   }
@@ -105,7 +108,6 @@ TEST(SoilTestBedTest, EachWheelSettlesAtTheSoilsSteadyStateInBothEngines) {
   RecordProperty("worst_torque_relative", std::to_string(worst_torque));
   RecordProperty("worst_pull_over_load", std::to_string(worst_pull));
 }
-
 
 // Skid steering on sand (Ishigami's side slip: the lateral shear and the
 // bulldozing of the wheels' sides): the cart with its left wheels back and
@@ -120,10 +122,15 @@ TEST(SoilTestBedTest, ASkidSteeredCartTurnsInPlaceOnSand) {
   const std::string yaml =
       "name: soil_turn\nduration: 4\nterrain:\n  materials: {sand: {soil: toyoura_sand}}\n"
       "  pieces: [{type: slab, size: [6, 6], thickness: 0.5}]\n"
-      "vehicle: {file: '" + (fs::path(WTC_SOURCE_DIR) / "vehicles" / "soil_test_cart.yaml").string() + "'}\n"
+      "vehicle: {file: '" +
+      (fs::path(WTC_SOURCE_DIR) / "vehicles" / "soil_test_cart.yaml").string() +
+      "'}\n"
       "effects: [full, soft_soil]\ncontroller:\n  type: schedule\n  schedules:\n"
-      "    - {drives: [front_left_wheel, rear_left_wheel], mode: velocity, points: [[0, 0], [1, -" + std::to_string(rate) + "]]}\n"
-      "    - {drives: [front_right_wheel, rear_right_wheel], mode: velocity, points: [[0, 0], [1, " + std::to_string(rate) + "]]}\n";
+      "    - {drives: [front_left_wheel, rear_left_wheel], mode: velocity, points: [[0, 0], [1, -" +
+      std::to_string(rate) +
+      "]]}\n"
+      "    - {drives: [front_right_wheel, rear_right_wheel], mode: velocity, points: [[0, 0], [1, " +
+      std::to_string(rate) + "]]}\n";
   const fs::path file = fs::temp_directory_path() / "wtc_soil_turn.yaml";
   { std::ofstream(file) << yaml; }
   for (const char* engine : {"bullet", "ode"}) {
@@ -145,9 +152,9 @@ TEST(SoilTestBedTest, ASkidSteeredCartTurnsInPlaceOnSand) {
     EXPECT_FALSE(summary.nan) << engine;
     const double mean = yaw.sum / yaw.n;
     RecordProperty(std::string(engine) + "_yaw_rate_radps", std::to_string(mean));
-    EXPECT_GT(mean, 0.02) << engine;                             // it turns, left (over 1 deg/s)
-    EXPECT_LT(mean, radius * rate / half_track) << engine;       // and slips doing it
-    EXPECT_GT(yaw.lowest_wheel, 0.0) << engine;                  // no wheel sank past its axle
+    EXPECT_GT(mean, 0.02) << engine;                        // it turns, left (over 1 deg/s)
+    EXPECT_LT(mean, radius * rate / half_track) << engine;  // and slips doing it
+    EXPECT_GT(yaw.lowest_wheel, 0.0) << engine;             // no wheel sank past its axle
   }
   fs::remove(file);
 }

@@ -29,7 +29,11 @@
 // a compliance 1/K_i: ODE's dContactMotion and dContactSlip, a CFM in
 // Bullet's multibody rows (wheel_friction_constraint.hpp).
 //
-// Rolling resistance stays an explicit moment in every mode.
+// Rolling resistance stays an explicit moment in every mode. A contact on
+// soft soil (the soft_soil effect) hands the engine its normal as a
+// frictionless row whose spring is the soil's tangent stiffness about the
+// sinkage (soilRow); its shear, a law of the soil's slip over the arc and
+// not a friction cone, stays a force (MountedWheel; docs/soft-soil.md).
 #include <array>
 
 #include <Eigen/Core>
@@ -53,6 +57,7 @@ struct SolverContact {
   double stiffness = 0.0;                                        ///< share x c (N/m).
   double damping = 0.0;                                          ///< share x b, 0 without normal damping (N s/m).
   double friction = 0.0;                                         ///< mu for the engine's friction (dimensionless).
+  double load = 0.0;  ///< R_z the tyre model gives the contact this step (N): what implicit mode's rows scale mu by.
   Eigen::Vector3d friction_direction{Eigen::Vector3d::UnitX()};  ///< Unit, normal to `normal`: along the traction.
   /// Implicit mode's tread rows (wtc::TreadRows; zero in constraint mode:
   /// rigid friction along friction_direction only). Row 0 runs along
@@ -75,6 +80,13 @@ struct SolverContact {
 /// else against the slip, else any.
 SolverContact toSolverContact(const ContactForce& force, const TyreParameters& tyre, const TyreModel& model,
                               const Eigen::Vector3d& rest_load);
+
+/// A contact on soft soil (ContactForce::soft_soil, with a sinkage) as a
+/// frictionless row: the soil's spring about this step's sinkage, its
+/// stiffness (n + 1/2) W / z and damping R b L, pressing W at depth
+/// z / (n + 1/2). The shear stays a force (MountedWheel). toSolverContact
+/// gives it for such a contact.
+SolverContact soilRow(const ContactForce& force);
 
 /// ERP and CFM of an implicit spring-damper (ODE's convention: CFM in
 /// m/(N s) per unit of the constraint force; Bullet derives the same pair

@@ -74,6 +74,11 @@ inline constexpr double kSeamGapRelative = 1e-6;
 /// is a direction, its length is discarded).
 inline constexpr double kMinAxleNorm = 1e-9;
 
+/// |a x n| below which a wheel lies on its side on soft soil, its axle
+/// along the surface normal, and has no arc to integrate (the sine of the
+/// angle between them; src/tyre/soil_contact.cpp).
+inline constexpr double kWheelOnItsSideSine = 1e-9;
+
 }  // namespace wtc::tolerance
 
 namespace wtc::tolerance {

@@ -20,6 +20,7 @@ struct SpringStability {
   double damping = 0.0;        ///< b the step saw (N s/m), summed likewise.
   double mass = 0.0;           ///< m (kg).
   double step_seconds = 0.0;   ///< h (s).
+  bool soil = false;           ///< The spring is soft soil's (soft_soil effect), not the tyre's.
   bool stable() const { return step_number < limit; }
 };
 

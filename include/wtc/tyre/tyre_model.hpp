@@ -76,6 +76,9 @@ class WheelState {
   /// True when the last step was the wheel's first beyond its explicit
   /// stability limit (adapters tell their listener once per wheel).
   bool firstUnstableStep() const { return first_unstable_; }
+  /// Steps in which a contact on soft soil reached the axle (sinkage >= r):
+  /// the soil could not carry the wheel (the soft_soil effect).
+  std::uint64_t sunkSteps() const { return sunk_steps_; }
   /// The last step's contacts on the wheel's cut caps (no tyre force; see
   /// WheelContactFinder::capContacts).
   std::span<const WheelContact> capContacts() const { return finder_.capContacts(); }
@@ -88,7 +91,7 @@ class WheelState {
   std::vector<ContactForce> forces_;
   std::vector<TreadState> tread_, next_tread_;
   WheelForces result_;
-  std::uint64_t steps_ = 0, unstable_steps_ = 0, non_finite_steps_ = 0;
+  std::uint64_t steps_ = 0, unstable_steps_ = 0, non_finite_steps_ = 0, sunk_steps_ = 0;
   bool last_skipped_ = false, first_unstable_ = false;
 };
 

@@ -54,7 +54,16 @@ struct ContactForce {
   /// The soil's stresses (the soft_soil effect, docs/soft-soil.md), not the
   /// tyre's spring: normal_force is W, slip_ratio the soil's slip i,
   /// rolling_moment the shear's moment less OP x R's, and no c Z^2 / 2 is stored.
+  /// In the engine-solved modes its normal becomes a row (the soil's
+  /// spring below) and its shear stays a force (wtc/adapter/solver_contact.hpp).
   bool soft_soil = false;
+  /// On soft soil, the soil as a spring about this step's sinkage z
+  /// (soil_contact.cpp): W's tangent stiffness (n + 1/2) W / z, Bekker's
+  /// W ~ z^(n + 1/2), its damping R b L, and the depth at which that spring
+  /// carries the undamped W, z / (n + 1/2); each times the load share.
+  double soil_stiffness = 0.0;  ///< N/m.
+  double soil_damping = 0.0;    ///< N s/m.
+  double soil_depth = 0.0;      ///< m.
 };
 
 /// The wheel's totals. force and torque are the wrench on the wheel body

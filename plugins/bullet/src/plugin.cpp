@@ -247,7 +247,7 @@ void detail::PluginState::stepWheels(double h) {
     if (r.skipped) {
       // Its body's state is not finite: no force and no contact this step
       // (an exception here would leave Bullet's world half-stepped).
-      if (w.friction != nullptr) w.friction->set({}, {}, h);
+      if (w.friction != nullptr) w.friction->set({}, h);
       w.mounted.tell(listener, static_cast<WheelId>(id), h);
       continue;
     }
@@ -255,7 +255,7 @@ void detail::PluginState::stepWheels(double h) {
     // algorithm (wheel_terrain_algorithm.cpp); the wrench is then the
     // rolling moment alone.
     applyWrench(w, k, toBt(r.force), toBt(r.torque), h);
-    if (w.friction != nullptr) w.friction->set(r.contacts, w.mounted.forces().contacts, h);
+    if (w.friction != nullptr) w.friction->set(r.contacts, h);
     w.mounted.tell(listener, static_cast<WheelId>(id), h);
   }
 }

@@ -32,13 +32,11 @@ void WheelFrictionConstraint::add(const Row& row) {
   active_.push_back(row);
 }
 
-void WheelFrictionConstraint::set(std::span<const SolverContact> contacts, std::span<const ContactForce> model,
-                                  double h) {
+void WheelFrictionConstraint::set(std::span<const SolverContact> contacts, double h) {
   active_.clear();
-  const std::size_t n = std::min(contacts.size(), model.size());
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
     const SolverContact& c = contacts[i];
-    const double load = model[i].normal_force;  // R_z (N)
+    const double load = c.load;  // R_z (N)
     const auto compliance = [&](int row) {
       return c.friction_damping[row] > 0.0 ? 1.0 / (h * c.friction_damping[row]) : 0.0;
     };

@@ -36,9 +36,9 @@ class WheelFrictionConstraint final : public btMultiBodyConstraint {
   /// contacts beyond are left free.
   WheelFrictionConstraint(btMultiBody* multibody, int link, int rows);
 
-  /// This step's rows: contacts[i] with the normal force of model[i]
-  /// (same order), step h.
-  void set(std::span<const SolverContact> contacts, std::span<const ContactForce> model, double h);
+  /// This step's rows: each contact's, bounded by its mu times its load
+  /// (SolverContact::load), step h.
+  void set(std::span<const SolverContact> contacts, double h);
   /// The force (N, world) the solver applied on the wheel at contact i of
   /// the last set(), along its rows; zero for a contact without a row.
   /// (Not const: this Bullet's getAppliedImpulse is not.)
