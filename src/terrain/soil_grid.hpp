@@ -1,0 +1,123 @@
+#pragma once
+// The memory of a soft ground (internal to wtc::core; issue 55, the ground
+// that remembers; docs/soft-soil.md): a grid of nodes over a soil region,
+// each with the plastic sinkage it keeps (a rut; negative where bulldozed
+// soil was raised) and the largest pressure it has carried (what a second
+// pass reloads elastically up to).
+//
+// Only touched nodes cost memory. Nodes live in tiles of kTileNodes x
+// kTileNodes, allocated the first time one of their nodes is written, kept
+// in chunks (no copy of them all as they grow); an open-addressing index
+// maps a tile's coordinates to it (8 bytes a slot, at most half full).
+// Untouched ground costs nothing, and a long run over the same ground
+// touches no new tiles. A node holds 6 bytes: the sinkage as a float (a
+// rut's millimetres need no more than single precision's 7 digits) and the
+// largest pressure as a bfloat16 (a float's upper half, rounded up: within
+// 0.8 % above the pressure, so a reload is never taken for a first load).
+// Small tiles keep a rut's stored nodes close to its touched ones: a rut
+// five nodes wide (a 0.11 m wheel at 2 cm) fills 5/8 of the tiles it
+// crosses at worst.
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace wtc::detail {
+
+/// A soil region's grid, as a terrain file gives it.
+struct SoilGridSpec {
+  Eigen::Vector2d origin{Eigen::Vector2d::Zero()};  ///< The node (0, 0) (world x, y; m).
+  Eigen::Vector2d size{Eigen::Vector2d::Zero()};    ///< The region's extent along x and y (m, > 0).
+  double spacing = 0.02;                            ///< Between nodes (m, >= kMinSoilSpacingM).
+  /// The most the region may hold with every node touched (bytes): a
+  /// region beyond it is refused before a run, not found out during one.
+  double memory_cap_bytes = 2.0 * 1024 * 1024 * 1024;
+};
+
+/// The finest grid a region may have (m): below a millimetre a node is
+/// smaller than a sand grain's neighbourhood the stresses average over.
+inline constexpr double kMinSoilSpacingM = 1e-3;
+
+/// Throws InvalidInputError naming `where`, the field, its value and its
+/// range: a spacing below kMinSoilSpacingM, a size that is not positive,
+/// anything not finite, or a region whose nodes, all touched, would pass
+/// the memory cap (naming both).
+void validate(const SoilGridSpec& spec, const std::string& where);
+
+/// One node's memory.
+struct SoilNode {
+  float plastic_sinkage = 0.0f;  ///< Below the base surface (m); < 0 where raised.
+  float max_pressure = 0.0f;     ///< The largest normal stress it has carried (Pa).
+};
+
+class SoilGrid {
+ public:
+  static constexpr int kTileNodes = 4;
+  /// The most nodes a region may have along x or y: a tile's coordinate
+  /// fits in 16 bits.
+  static constexpr int kMaxNodesAcross = 65535 * kTileNodes;
+
+  /// Validates `spec` (where: "soil grid").
+  explicit SoilGrid(const SoilGridSpec& spec);
+
+  const SoilGridSpec& spec() const { return spec_; }
+  /// Nodes along x and y: size / spacing + 1, each.
+  int columns() const { return columns_; }
+  int rows() const { return rows_; }
+  /// Whether (x, y) lies in the region (its nodes' hull).
+  bool contains(double x, double y) const;
+
+  /// Node (i, j): the stored one, or a fresh one (zeros) where none is.
+  /// Precondition: 0 <= i < columns(), 0 <= j < rows().
+  SoilNode node(int i, int j) const;
+  /// Writes node (i, j) (its max_pressure rounded up to a bfloat16),
+  /// allocating its tile the first time.
+  void set(int i, int j, const SoilNode& node);
+
+  /// The nodes' memory at (x, y), bilinear between the four nodes around
+  /// it (a fresh node outside the region).
+  SoilNode sample(double x, double y) const;
+
+  std::size_t touchedNodes() const { return touched_; }
+  std::size_t tiles() const { return tile_count_; }
+  /// What the memory holds now (bytes): the tiles, the index's nodes and
+  /// buckets as libstdc++ lays them out.
+  std::size_t bytes() const;
+  /// The most a region of these nodes may hold, every node touched (bytes).
+  static double fullBytes(double nodes);
+
+ private:
+  static constexpr int kNodes = kTileNodes * kTileNodes;
+  static constexpr std::size_t kChunkTiles = 256;
+  struct Tile {
+    std::uint16_t touched = 0;                     ///< Bit k: node k has been written.
+    std::array<std::uint16_t, kNodes> pressure{};  ///< bfloat16.
+    std::array<float, kNodes> sinkage{};
+  };
+  using Chunk = std::array<Tile, kChunkTiles>;
+  /// An index slot: a tile's key (tile_j << 16 | tile_i; kEmpty: none) and
+  /// its number.
+  struct Slot {
+    std::uint32_t key;
+    std::uint32_t tile;
+  };
+  static constexpr std::uint32_t kEmpty = 0xffffffffu;
+  static std::uint32_t key(int i, int j);
+  /// The slot of `key`: its own, or the empty one where it would go.
+  std::size_t slot(std::uint32_t key) const;
+  const Tile* find(int i, int j) const;
+  void grow();
+
+  SoilGridSpec spec_;
+  int columns_ = 0, rows_ = 0;
+  std::vector<std::unique_ptr<Chunk>> chunks_;
+  std::size_t tile_count_ = 0;
+  std::vector<Slot> index_;
+  std::size_t touched_ = 0;
+};
+
+}  // namespace wtc::detail
