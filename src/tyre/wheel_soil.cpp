@@ -57,10 +57,22 @@ double signedShear(double strength, double displacement, double modulus) {
   return std::copysign(strength * -std::expm1(-std::abs(displacement) / modulus), displacement);
 }
 
-// Everything the integrand needs, fixed for one call.
+// Everything the integrand needs, fixed for one call. With a memory, depth
+// is the rim's lowest point below the fresh surface and b the width.
 struct Arc {
   double r, moving, theta1, theta2, theta_m, cos1, sin1, pressure_scale, n, cohesion, phi, tan_phi, kx, ky, p, q, tan_beta;
+  const Soil* soil = nullptr;
+  const SoilMemoryProfile* memory = nullptr;
+  double depth = 0.0, b = 0.0;
 };
+
+// sigma where the rim's stress is that of the front at angle theta (its
+// cosine given): part 1's on a fresh surface, else the memory's at the
+// point of the ground under that angle.
+double normalStress(const Arc& a, double cos_theta, double theta) {
+  if (a.memory == nullptr) return a.pressure_scale * std::pow(std::max(0.0, cos_theta - a.cos1), a.n);
+  return reloadStress(*a.soil, a.b, a.memory->at(a.r * std::sin(theta)), a.depth - a.r * (1.0 - cos_theta));
+}
 
 // The integrals over one sub-arc [lo, hi]; `front` says which sigma applies.
 struct Sums {
@@ -76,10 +88,9 @@ void integrate(const Arc& a, double lo, double hi, bool front, Sums& sums) {
     const double c = std::cos(theta), s = std::sin(theta);
     // The rear maps [theta_2, theta_m] onto the front's [theta_1, theta_m]
     // (Wong & Reece): theta* = theta_1 - (theta - theta_2)/(theta_m - theta_2) (theta_1 - theta_m).
-    const double c_stress =
-        front ? c
-              : std::cos(a.theta1 - (theta - a.theta2) / (a.theta_m - a.theta2) * (a.theta1 - a.theta_m));
-    const double sigma = a.pressure_scale * std::pow(std::max(0.0, c_stress - a.cos1), a.n);
+    const double theta_stress =
+        front ? theta : a.theta1 - (theta - a.theta2) / (a.theta_m - a.theta2) * (a.theta1 - a.theta_m);
+    const double sigma = normalStress(a, front ? c : std::cos(theta_stress), theta_stress);
     const double strength = a.cohesion + sigma * a.tan_phi;
     const double j = a.moving * a.r * (a.p * (a.theta1 - theta) - a.q * (a.sin1 - s));
     const double tau = signedShear(strength, j, a.kx);
@@ -115,12 +126,38 @@ double bulldozing(const Soil& soil, const Arc& a) {
   return sum;
 }
 
+// The entry angle where the rim meets the remembered surface,
+// Z(theta_1) = z_p(r sin theta_1), Z(theta) = depth - r (1 - cos theta):
+// a fixed point from the fresh entry (exact for a uniform rut at once; a
+// rut's slope under the entry settles within the iterations).
+constexpr int kEntryIterations = 4;
+
+double rememberedEntrySinkage(const WheelSoilState& state) {
+  const double r = state.radius;
+  double z = std::min(state.sinkage, r);
+  for (int k = 0; k < kEntryIterations && z > 0.0; ++k) {
+    const double theta1 = std::acos(1.0 - std::min(z, r) / r);
+    z = state.sinkage - state.memory->at(r * std::sin(theta1)).plastic_sinkage;
+  }
+  return z;
+}
+
 }  // namespace
+
+double reloadStress(const Soil& soil, double width, const SoilMemory& m, double depth) {
+  const double k = soil.k_c / width + soil.k_phi;
+  const double virgin = k * std::pow(std::max(0.0, depth), soil.n);
+  if (m.fresh) return virgin;
+  if (!(depth > m.plastic_sinkage)) return 0.0;
+  return std::min(soil.unloading_stiffness * (depth - m.plastic_sinkage), std::max(m.max_pressure, virgin));
+}
 
 WheelSoilForces wheelSoilForces(const Soil& soil, const WheelSoilState& state) {
   WheelSoilForces out;
   const double r = state.radius, b = state.width;
-  const double z = std::clamp(state.sinkage, 0.0, r);
+  // The sinkage below the surface the rim meets: the fresh one, or the
+  // remembered one at the entry.
+  const double z = std::clamp(state.memory != nullptr ? rememberedEntrySinkage(state) : state.sinkage, 0.0, r);
   if (!(z > 0.0)) return out;
   const double i = std::clamp(state.slip, -1.0, 1.0);
   const double sym = std::clamp(state.symmetry, 0.0, 1.0);
@@ -144,6 +181,10 @@ WheelSoilForces wheelSoilForces(const Soil& soil, const WheelSoilState& state) {
   a.p = i >= 0.0 ? 1.0 : 1.0 + i;
   a.q = i >= 0.0 ? 1.0 - i : 1.0;
   a.tan_beta = std::tan(state.slip_angle);
+  a.soil = &soil;
+  a.memory = state.memory;
+  a.depth = state.sinkage;
+  a.b = b;
 
   Sums sums;
   integrate(a, a.theta2, a.theta_m, false, sums);
@@ -156,11 +197,12 @@ WheelSoilForces wheelSoilForces(const Soil& soil, const WheelSoilState& state) {
   out.entry_angle = a.theta1;
   out.exit_angle = a.theta2;
   out.max_stress_angle = a.theta_m;
+  out.peak_stress = normalStress(a, std::cos(a.theta_m), a.theta_m);
   return out;
 }
 
 SoilSteadyState steadyWheelOnSoil(const Soil& soil, double radius, double width, double load, double slip,
-                                  double slip_angle) {
+                                  double slip_angle, const SoilMemoryProfile* memory) {
   if (!(std::isfinite(load) && load > 0.0)) {
     throw InvalidInputError("wtc::steadyWheelOnSoil: load = " + formatNumber(load) + " must be finite and > 0 (N)");
   }
@@ -169,11 +211,16 @@ SoilSteadyState steadyWheelOnSoil(const Soil& soil, double radius, double width,
   state.width = width;
   state.slip = slip;
   state.slip_angle = slip_angle;
+  state.memory = memory;
   auto at = [&](double z) {
     state.sinkage = z;
     return wheelSoilForces(soil, state);
   };
-  const double most = at(radius).normal;
+  // Below the fresh surface, z runs from above the remembered one (raised
+  // soil) to the axle in the rut under the wheel.
+  const double rut = memory != nullptr ? memory->at(0.0).plastic_sinkage : 0.0;
+  double lo = std::min(0.0, rut), hi = radius + std::max(0.0, rut);
+  const double most = at(hi).normal;
   if (!(most >= load)) {
     throw InvalidInputError("wtc::steadyWheelOnSoil: soil '" + soil.name + "' carries at most " +
                             formatNumber(most) + " N under a wheel of radius " + formatNumber(radius) +
@@ -181,7 +228,6 @@ SoilSteadyState steadyWheelOnSoil(const Soil& soil, double radius, double width,
                             " before the axle sinks in; the load is " + formatNumber(load) + " N");
   }
   // W(z) grows with z: bisection to a relative 1e-12 of the radius.
-  double lo = 0.0, hi = radius;
   while (hi - lo > 1e-12 * radius) {
     const double mid = 0.5 * (lo + hi);
     (at(mid).normal < load ? lo : hi) = mid;

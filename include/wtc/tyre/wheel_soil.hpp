@@ -24,9 +24,37 @@
 // Bekker's passive earth pressure), with h(theta) = r (cos theta - cos theta_1):
 //   F_u = int R_b(h) (r - h cos theta) d theta,  R_b = D_1 c h + D_2 rho g h^2,
 //   D_1 = cot X_c + tan(X_c + phi),  D_2 = (cot X_c + cot^2 X_c / cot phi) / 2,  X_c = 45 deg - phi / 2.
+//
+// Ground that remembers (issue 55): a point the soil has been loaded at
+// keeps its plastic sinkage z_p (below the fresh surface) and the largest
+// stress sigma_m it carried. At a depth Z below the fresh surface it answers
+// along Wong's unloading-reloading line up to the virgin curve:
+//   sigma = min(k_u (Z - z_p), max(sigma_m, k Z^n))   for Z > z_p, else 0,
+// k = k_c / b + k_phi, k_u the soil's unloading stiffness; a fresh point
+// answers k Z^n. The rim then enters the soil where it meets the remembered
+// surface, Z(theta_1) = z_p, and the angles above follow from that entry.
 #include "wtc/terrain/soil.hpp"
 
 namespace wtc {
+
+/// What the ground remembers at a point.
+struct SoilMemory {
+  double plastic_sinkage = 0.0;  ///< z_p, the surface below the fresh one (m); < 0 where raised.
+  double max_pressure = 0.0;     ///< sigma_m, the largest normal stress it carried (Pa).
+  bool fresh = true;             ///< Never loaded: the virgin curve from the fresh surface.
+};
+
+/// The ground's memory along a wheel's travel, at `ahead` (m) from below the
+/// rim's lowest point (negative behind it).
+class SoilMemoryProfile {
+ public:
+  virtual ~SoilMemoryProfile() = default;
+  virtual SoilMemory at(double ahead) const = 0;
+};
+
+/// Wong's repetitive loading at depth Z below the fresh surface (m), for a
+/// wheel of width b (m): the stress the box above states (Pa).
+double reloadStress(const Soil& soil, double width, const SoilMemory& memory, double depth);
 
 /// A wheel's state against a flat soil surface, in its travel frame.
 struct WheelSoilState {
@@ -40,6 +68,10 @@ struct WheelSoilState {
   /// hollow (theta_2 = -theta_1, theta_m = 0, no compaction resistance,
   /// and no shear: j and j_y scale with 1 - symmetry).
   double symmetry = 0.0;
+  /// The ground's memory under the wheel, or none (a fresh surface). With
+  /// one, `sinkage` is measured below the fresh surface and may exceed r
+  /// in a rut.
+  const SoilMemoryProfile* memory = nullptr;
 };
 
 /// What the soil does to the wheel.
@@ -52,6 +84,7 @@ struct WheelSoilForces {
   double entry_angle = 0.0;       ///< theta_1 (rad).
   double exit_angle = 0.0;        ///< theta_2 (rad, <= 0).
   double max_stress_angle = 0.0;  ///< theta_m (rad).
+  double peak_stress = 0.0;       ///< sigma at theta_m (Pa): what the soil there has carried.
 };
 
 /// The stresses integrated over the arc (Gauss-Legendre on [theta_2, theta_m]
@@ -69,7 +102,7 @@ struct SoilSteadyState {
   WheelSoilForces forces;
 };
 SoilSteadyState steadyWheelOnSoil(const Soil& soil, double radius, double width, double load, double slip,
-                                  double slip_angle = 0.0);
+                                  double slip_angle = 0.0, const SoilMemoryProfile* memory = nullptr);
 
 /// Terramechanics' slip from the travel speed v and the rim speed r omega
 /// (both along the travel): (r omega - v) / max(|r omega|, |v|, floor),
