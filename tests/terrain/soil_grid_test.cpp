@@ -3,6 +3,7 @@
 // does not grow over the same ground, interpolates between its nodes, and
 // refuses a grid too fine or too large with the numbers.
 #include "terrain/soil_grid.hpp"
+#include "tyre/soil_grid_profile.hpp"
 
 #include <cmath>
 
@@ -10,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "wtc/base/error.hpp"
+#include "wtc/tyre/wheel_soil.hpp"
 
 namespace wtc::detail {
 namespace {
@@ -117,6 +119,38 @@ TEST(SoilGridTest, AGridTooFineOrTooLargeIsRefusedWithItsNumbers) {
   EXPECT_THROW(validate(flat, "soil"), InvalidInputError);
   flat.size.y() = std::nan("");
   EXPECT_THROW(validate(flat, "soil"), InvalidInputError);
+}
+
+// The wheel reads the grid through GridProfile: untouched ground is fresh
+// (part 1's forces to 1e-12), and a rut written into the nodes answers as the
+// same rut given directly, to the nodes' single precision.
+TEST(SoilGridTest, AProfileReadsUntouchedGroundAsFreshAndARutAsItsNodes) {
+  const Soil soil = *namedSoil("toyoura_sand");
+  SoilGrid grid(field(4.0, 0.02));
+  WheelSoilState wheel{.radius = 0.09, .width = 0.11, .sinkage = 0.023, .slip = 0.2};
+  const WheelSoilForces part1 = wheelSoilForces(soil, wheel);
+  const GridProfile profile(grid, {0.3, 0.1}, {1.0, 0.0});
+  wheel.memory = &profile;
+  EXPECT_NEAR(wheelSoilForces(soil, wheel).normal, part1.normal, 1e-12 * part1.normal);
+  for (int i = 0; i < grid.columns(); ++i) {
+    for (int j = 0; j < grid.rows(); ++j) grid.set(i, j, {0.02f, 1.5e4f});
+  }
+  const SoilMemory rut{.plastic_sinkage = 0.02f, .max_pressure = grid.node(0, 0).max_pressure, .fresh = false};
+  class Uniform final : public SoilMemoryProfile {
+   public:
+    explicit Uniform(SoilMemory m) : m_(m) {}
+    SoilMemory at(double) const override { return m_; }
+
+   private:
+    SoilMemory m_;
+  } uniform(rut);
+  wheel.sinkage = 0.026;
+  const WheelSoilForces from_grid = wheelSoilForces(soil, wheel);
+  wheel.memory = &uniform;
+  const WheelSoilForces direct = wheelSoilForces(soil, wheel);
+  EXPECT_GT(direct.normal, 0.0);
+  EXPECT_NEAR(from_grid.normal, direct.normal, 1e-6 * direct.normal);
+  EXPECT_NEAR(from_grid.torque, direct.torque, 1e-6 * std::abs(direct.torque));
 }
 
 }  // namespace
