@@ -6,10 +6,10 @@
 // went non-finite, and turn the result into what the engine takes for the
 // contact mode: in force mode the whole tyre wrench about the wheel centre
 // O; in constraint mode the engine contacts (engine_contact.hpp) plus the
-// rolling-resistance moment and the soft-soil contacts' wrench, which stay
-// explicit. That lives here once; an
-// adapter reads the wheel's kinematics from its engine, calls step, writes
-// the result to its bodies and solver, and calls tell for its listener.
+// rolling-resistance moment and the soft-soil contacts' shear, which stay
+// explicit. That lives here once; an adapter reads the wheel's kinematics
+// from its engine, calls step, writes the result to its bodies and solver,
+// and calls tell for its listener.
 #include <span>
 #include <vector>
 

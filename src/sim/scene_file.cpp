@@ -231,12 +231,12 @@ void checkSoilWheels(const YamlReader& in, const YAML::Node& at, const Scene& sc
                     " gives the wheels to the engine, whose contact knows no soil (docs/soft-soil.md)");
   }
   for (const int b : scene.vehicle.wheels()) {
-    const WheelGeometry& g = scene.vehicle.bodies[static_cast<std::size_t>(b)].wheel->geometry;
+    const auto& body = scene.vehicle.bodies[static_cast<std::size_t>(b)];
+    const WheelGeometry& g = body.wheel->geometry;
     if (g.tread_width >= 2.0 * g.free_radius) {
-      in.fail(at, "effects: soft_soil: wheel '" + scene.vehicle.bodies[static_cast<std::size_t>(b)].name +
-                      "' is a sphere (width " + formatNumber(g.tread_width) + " m >= twice its radius " +
-                      formatNumber(g.free_radius) + " m); the soil's stresses are integrated over a cylinder's rim "
-                      "(docs/soft-soil.md)");
+      in.fail(at, "effects: soft_soil: wheel '" + body.name + "' is a sphere (width " + formatNumber(g.tread_width) +
+                      " m >= twice its radius " + formatNumber(g.free_radius) +
+                      " m); the soil's stresses are integrated over a cylinder's rim (docs/soft-soil.md)");
     }
   }
 }

@@ -26,11 +26,11 @@ SpringStability explicitSpringStability(double c, double b, double m, double h) 
 
 std::string describe(const SpringStability& s) {
   const double c = s.stiffness, b = s.damping, m = s.mass, h = s.step_seconds;
-  return std::string(s.soil ? "soil spring" : "tyre spring") + " c = " + formatNumber(c) + " N/m, b = " + formatNumber(b) + " N s/m on m = " + formatNumber(m) +
-         " kg at h = " + formatNumber(h) + " s: h sqrt(c/m) = " + formatNumber(s.step_number) +
-         (s.stable() ? " < " : " >= ") + "limit " + formatNumber(s.limit) + " (damping ratio " +
-         formatNumber(s.damping_ratio) + "); the largest stable step is " + formatNumber(largestStableStep(c, b, m)) +
-         " s";
+  return std::string(s.soil ? "soil spring" : "tyre spring") + " c = " + formatNumber(c) +
+         " N/m, b = " + formatNumber(b) + " N s/m on m = " + formatNumber(m) + " kg at h = " + formatNumber(h) +
+         " s: h sqrt(c/m) = " + formatNumber(s.step_number) + (s.stable() ? " < " : " >= ") + "limit " +
+         formatNumber(s.limit) + " (damping ratio " + formatNumber(s.damping_ratio) + "); the largest stable step is " +
+         formatNumber(largestStableStep(c, b, m)) + " s";
 }
 
 double largestStableStep(double c, double b, double m, double fraction) {

@@ -137,18 +137,12 @@ const WheelForces& TyreModel::forces(std::span<const Material> materials, const 
   state.forces_.resize(contacts.size());
   state.next_tread_.clear();
   detail::kernel(kernel_)(in, contacts, state.tread_, state.next_tread_, state.forces_.data());
-  bool on_soil_only = false;
   if (effects_.has(Effect::kSoftSoil)) {
     detail::applySoil(in, wheel.geometry.tread_width, contacts, state.forces_.data());
     // Sunk to the axle: the soil cannot carry the wheel (the stresses are
     // those of z = r beyond; steadyWheelOnSoil names the most it carries).
-    bool sunk = false;
-    on_soil_only = !state.forces_.empty();
-    for (const ContactForce& f : state.forces_) {
-      sunk = sunk || (f.soft_soil && f.contact.deflection >= in.free_radius);
-      on_soil_only = on_soil_only && f.soft_soil;
-    }
-    if (sunk) ++state.sunk_steps_;
+    const auto sunk = [&](const ContactForce& f) { return f.soft_soil && f.contact.deflection >= in.free_radius; };
+    if (std::any_of(state.forces_.begin(), state.forces_.end(), sunk)) ++state.sunk_steps_;
   }
   std::swap(state.tread_, state.next_tread_);
 
@@ -173,12 +167,14 @@ const WheelForces& TyreModel::forces(std::span<const Material> materials, const 
   // contact on soft soil adds the soil's spring instead (soil_contact.cpp);
   // the report is the spring nearer its limit.
   double shares = 0.0, soil_stiffness = 0.0, soil_damping = 0.0;
+  bool tyre_contact = false;
   for (const ContactForce& f : state.forces_) {
     if (f.soft_soil) {
       soil_stiffness += f.soil_stiffness;
       soil_damping += f.soil_damping;
     } else {
       shares += f.contact.load_share;
+      tyre_contact = true;
     }
   }
   shares = std::max(shares, 1.0);
@@ -188,7 +184,7 @@ const WheelForces& TyreModel::forces(std::span<const Material> materials, const 
   if (soil_stiffness > 0.0) {
     SpringStability soil = explicitSpringStability(soil_stiffness, soil_damping, inertia.effective_mass, h);
     soil.soil = true;
-    if (on_soil_only || soil.step_number / soil.limit > stability.step_number / stability.limit) stability = soil;
+    if (!tyre_contact || soil.step_number / soil.limit > stability.step_number / stability.limit) stability = soil;
   }
   if (engineSolvesContacts(mode_)) stability.limit = std::numeric_limits<double>::infinity();
   ++state.steps_;

@@ -60,7 +60,8 @@ double signedShear(double strength, double displacement, double modulus) {
 // Everything the integrand needs, fixed for one call. With a memory, depth
 // is the rim's lowest point below the fresh surface and b the width.
 struct Arc {
-  double r, moving, theta1, theta2, theta_m, cos1, sin1, pressure_scale, n, cohesion, phi, tan_phi, kx, ky, p, q, tan_beta;
+  double r, moving, theta1, theta2, theta_m, cos1, sin1, pressure_scale, n, cohesion, phi, tan_phi, kx, ky, p, q,
+      tan_beta;
   const Soil* soil = nullptr;
   const SoilMemoryProfile* memory = nullptr;
   double depth = 0.0, b = 0.0;
@@ -222,10 +223,10 @@ SoilSteadyState steadyWheelOnSoil(const Soil& soil, double radius, double width,
   double lo = std::min(0.0, rut), hi = radius + std::max(0.0, rut);
   const double most = at(hi).normal;
   if (!(most >= load)) {
-    throw InvalidInputError("wtc::steadyWheelOnSoil: soil '" + soil.name + "' carries at most " +
-                            formatNumber(most) + " N under a wheel of radius " + formatNumber(radius) +
-                            " m, width " + formatNumber(width) + " m at slip " + formatNumber(slip) +
-                            " before the axle sinks in; the load is " + formatNumber(load) + " N");
+    throw InvalidInputError("wtc::steadyWheelOnSoil: soil '" + soil.name + "' carries at most " + formatNumber(most) +
+                            " N under a wheel of radius " + formatNumber(radius) + " m, width " + formatNumber(width) +
+                            " m at slip " + formatNumber(slip) + " before the axle sinks in; the load is " +
+                            formatNumber(load) + " N");
   }
   // W(z) grows with z: bisection to a relative 1e-12 of the radius.
   while (hi - lo > 1e-12 * radius) {
