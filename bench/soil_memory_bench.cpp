@@ -31,7 +31,7 @@ using wtc::detail::SoilGrid;
 constexpr double kRadiusM = 0.09, kWidthM = 0.11, kSinkageM = 0.023, kPathM = 10.0, kStepM = 1e-4;
 
 SoilGrid makeGrid(bool rutted) {
-  wtc::detail::SoilGridSpec spec;
+  wtc::SoilRegion spec;
   spec.origin = {-1.0, -1.0};
   spec.size = {kPathM + 2.0, 2.0};
   spec.spacing = 0.02;

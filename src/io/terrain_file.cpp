@@ -373,11 +373,36 @@ void addPiece(TerrainBuilder& builder, const YamlReader& in, const YAML::Node& p
   in.fail(p["type"], "unknown piece type '" + type + "' (expected " + known + ")");
 }
 
+// soil_regions: where the soft ground remembers (wtc/terrain/soil_region.hpp),
+//   - {corners: [x0, y0, x1, y1], spacing: 0.02, memory_cap_mb: 2048}
+constexpr double kMiB = static_cast<double>(kBytesPerMiB);
+
+void addSoilRegions(TerrainBuilder& builder, const YamlReader& in, const YAML::Node& regions) {
+  if (!regions.IsSequence()) in.fail(regions, "soil_regions must be a list (lines starting with '- ')");
+  for (std::size_t i = 0; i < regions.size(); ++i) {
+    const YAML::Node r = regions[i];
+    const YamlReader region_in = in.with("soil_regions[" + std::to_string(i) + "]: ");
+    region_in.requireMap(r, "a soil region");
+    region_in.checkKeys(r, {"corners", "spacing", "memory_cap_mb"});
+    const Eigen::Vector4d corners = region_in.vector<4>(region_in.require(r, "corners"), "corners");
+    SoilRegion region;
+    region.origin = corners.head<2>();
+    region.size = corners.tail<2>() - corners.head<2>();
+    region.spacing = region_in.number(r, "spacing", region.spacing);
+    region.memory_cap_bytes = region_in.number(r, "memory_cap_mb", region.memory_cap_bytes / kMiB) * kMiB;
+    try {
+      builder.addSoilRegion(region, "soil region");
+    } catch (const InvalidInputError& e) {
+      region_in.fail(r, e.what());
+    }
+  }
+}
+
 }  // namespace
 
 TerrainFileReport detail::addTerrainNode(TerrainBuilder& builder, const YamlReader& in, const YAML::Node& root) {
   if (!root.IsMap()) in.fail(root, "expected a mapping with 'materials' and 'pieces'");
-  in.checkKeys(root, {"description", "materials", "pieces"});
+  in.checkKeys(root, {"description", "materials", "pieces", "soil_regions"});
 
   TerrainFileReport report;
   MaterialNames materials;
@@ -422,6 +447,7 @@ TerrainFileReport detail::addTerrainNode(TerrainBuilder& builder, const YamlRead
     }
   }
   report.pieces.count = static_cast<PieceId>(builder.pieceCount()) - report.pieces.first;
+  if (const auto regions = YamlReader::get(root, "soil_regions")) addSoilRegions(builder, in, *regions);
   return report;
 }
 

@@ -29,34 +29,6 @@ constexpr std::size_t kFirstSlots = 64;
 
 }  // namespace
 
-void validate(const SoilGridSpec& s, const std::string& where) {
-  const auto fail = [&](const std::string& what) { throw InvalidInputError(where + ": " + what); };
-  if (!s.origin.allFinite()) fail("origin is not finite");
-  if (!(std::isfinite(s.spacing) && s.spacing >= kMinSoilSpacingM)) {
-    fail("spacing " + formatNumber(s.spacing) + " m: must be at least " + formatNumber(kMinSoilSpacingM) + " m");
-  }
-  for (int axis = 0; axis < 2; ++axis) {
-    const char* name = axis == 0 ? "x" : "y";
-    if (!(std::isfinite(s.size[axis]) && s.size[axis] > 0.0)) {
-      fail(std::string("size along ") + name + " " + formatNumber(s.size[axis]) + " m: must be finite and > 0");
-    }
-  }
-  if (!(std::isfinite(s.memory_cap_bytes) && s.memory_cap_bytes > 0.0)) {
-    fail("memory cap " + formatNumber(s.memory_cap_bytes) + " bytes: must be finite and > 0");
-  }
-  const double across_x = std::floor(s.size.x() / s.spacing) + 1.0, across_y = std::floor(s.size.y() / s.spacing) + 1.0;
-  const double nodes = across_x * across_y;
-  if (SoilGrid::fullBytes(nodes) > s.memory_cap_bytes) {
-    fail(formatNumber(nodes) + " nodes (" + formatNumber(s.size.x()) + " x " + formatNumber(s.size.y()) + " m at " +
-         formatNumber(s.spacing) + " m) would hold " + formatNumber(SoilGrid::fullBytes(nodes)) +
-         " bytes once all are touched, beyond the cap of " + formatNumber(s.memory_cap_bytes) +
-         " bytes: a coarser spacing, a smaller region or a larger memory cap");
-  }
-  if (std::max(across_x, across_y) > SoilGrid::kMaxNodesAcross) {
-    fail(formatNumber(std::max(across_x, across_y)) + " nodes across: at most " +
-         std::to_string(SoilGrid::kMaxNodesAcross) + " (a coarser spacing, or several regions)");
-  }
-}
 
 double SoilGrid::fullBytes(double nodes) {
   // A tile, and its index slot at the least full the index gets (a quarter).
@@ -64,7 +36,7 @@ double SoilGrid::fullBytes(double nodes) {
   return std::ceil(nodes / kNodes) * kPerTile;
 }
 
-SoilGrid::SoilGrid(const SoilGridSpec& spec) : spec_(spec) {
+SoilGrid::SoilGrid(const SoilRegion& region) : spec_(region) {
   validate(spec_, "soil grid");
   columns_ = static_cast<int>(std::floor(spec_.size.x() / spec_.spacing)) + 1;
   rows_ = static_cast<int>(std::floor(spec_.size.y() / spec_.spacing)) + 1;

@@ -26,27 +26,9 @@
 
 #include <Eigen/Core>
 
+#include "wtc/terrain/soil_region.hpp"
+
 namespace wtc::detail {
-
-/// A soil region's grid, as a terrain file gives it.
-struct SoilGridSpec {
-  Eigen::Vector2d origin{Eigen::Vector2d::Zero()};  ///< The node (0, 0) (world x, y; m).
-  Eigen::Vector2d size{Eigen::Vector2d::Zero()};    ///< The region's extent along x and y (m, > 0).
-  double spacing = 0.02;                            ///< Between nodes (m, >= kMinSoilSpacingM).
-  /// The most the region may hold with every node touched (bytes): a
-  /// region beyond it is refused before a run, not found out during one.
-  double memory_cap_bytes = 2.0 * 1024 * 1024 * 1024;
-};
-
-/// The finest grid a region may have (m): below a millimetre a node is
-/// smaller than a sand grain's neighbourhood the stresses average over.
-inline constexpr double kMinSoilSpacingM = 1e-3;
-
-/// Throws InvalidInputError naming `where`, the field, its value and its
-/// range: a spacing below kMinSoilSpacingM, a size that is not positive,
-/// anything not finite, or a region whose nodes, all touched, would pass
-/// the memory cap (naming both).
-void validate(const SoilGridSpec& spec, const std::string& where);
 
 /// One node's memory.
 struct SoilNode {
@@ -62,9 +44,9 @@ class SoilGrid {
   static constexpr int kMaxNodesAcross = 65535 * kTileNodes;
 
   /// Validates `spec` (where: "soil grid").
-  explicit SoilGrid(const SoilGridSpec& spec);
+  explicit SoilGrid(const SoilRegion& region);
 
-  const SoilGridSpec& spec() const { return spec_; }
+  const SoilRegion& spec() const { return spec_; }
   /// Nodes along x and y: size / spacing + 1, each.
   int columns() const { return columns_; }
   int rows() const { return rows_; }
@@ -112,7 +94,7 @@ class SoilGrid {
   const Tile* find(int i, int j) const;
   void grow();
 
-  SoilGridSpec spec_;
+  SoilRegion spec_;
   int columns_ = 0, rows_ = 0;
   std::vector<std::unique_ptr<Chunk>> chunks_;
   std::size_t tile_count_ = 0;

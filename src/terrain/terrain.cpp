@@ -37,6 +37,11 @@ MaterialId TerrainBuilder::addMaterial(const Material& material) {
   return static_cast<MaterialId>(materials_.size() - 1);
 }
 
+void TerrainBuilder::addSoilRegion(const SoilRegion& region, const std::string& where) {
+  validate(region, where);
+  soil_regions_.push_back(region);
+}
+
 void TerrainBuilder::requireMaterial(MaterialId material, const char* where) const {
   if (material < 0 || material >= materialCount()) {
     throw InvalidInputError(std::string(where) + ": material id " + std::to_string(material) + " is not registered (" +
@@ -203,6 +208,7 @@ Terrain TerrainBuilder::build() && {
   terrain.pieces_ = std::move(pieces_);
   terrain.piece_material_ = std::move(piece_material_);
   terrain.materials_ = std::move(materials_);
+  terrain.soil_regions_ = std::move(soil_regions_);
   terrain.fields_ = std::move(fields_);
   terrain.piece_count_ = next_id_;
   std::vector<const detail::PendingPrisms*> pending;
@@ -215,6 +221,7 @@ Terrain::Terrain(const Terrain& other)
     : pieces_(other.pieces_),  // each copy in a block of its own, until gathered
       piece_material_(other.piece_material_),
       materials_(other.materials_),
+      soil_regions_(other.soil_regions_),
       fields_(other.fields_),
       piece_count_(other.piece_count_),
       tree_(other.tree_),

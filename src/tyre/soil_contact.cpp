@@ -17,19 +17,27 @@
 // stress only as the damping unloads it (by min(1, that ratio)): on a soil
 // too weak to carry the wheel W -> 0 while R b L v_z does not, and a ratio
 // above one multiplied the cohesion's shear, which does not grow with the
-// pressure, into a cart thrown 33 m (docs/soft-soil.md). Plastic sinkage
-// and its elastic unloading need a ground that remembers: part 2 (issue 55).
+// pressure, into a cart thrown 33 m (docs/soft-soil.md).
+// Where the ground remembers (a GroundMemory region under the rim's lowest
+// point P), Z is the depth below the fresh surface, the stresses meet the
+// remembered one along the travel's horizontal direction (GridProfile), and
+// the rim then presses the nodes under its arc (pressNodes): the wheels
+// after it meet the rut it leaves.
 #include "soil_contact.hpp"
+
+#include <optional>
 
 #include <algorithm>
 #include <cmath>
 
+#include "ground_memory_access.hpp"
 #include "wtc/base/tolerances.hpp"
 #include "wtc/tyre/wheel_soil.hpp"
 
 namespace wtc::detail {
 
-void applySoil(const KernelInputs& in, double width, std::span<const WheelContact> contacts, ContactForce* out) {
+void applySoil(const KernelInputs& in, double width, std::span<const WheelContact> contacts, GroundMemory* memory,
+               ContactForce* out) {
   const double r = in.free_radius, eps = in.slip_speed_floor;
   const Eigen::Vector3d& a = in.axle;
   for (std::size_t k = 0; k < contacts.size(); ++k) {
@@ -54,10 +62,23 @@ void applySoil(const KernelInputs& in, double width, std::span<const WheelContac
     const double v = direction * v_x, rim = direction * rim_x;
     const double v_y = in.motion->velocity.dot(lateral);
 
+    // The ground's memory under P along the travel's horizontal direction
+    // (none on a travel near the vertical: a wheel falling into the soil).
+    SoilGrid* grid = memory != nullptr ? GroundMemoryAccess::gridAt(*memory, c.point.x(), c.point.y()) : nullptr;
+    const Eigen::Vector2d bottom = c.point.head<2>();
+    Eigen::Vector2d level = travel.head<2>();
+    if (grid != nullptr && level.norm() < tolerance::kWheelOnItsSideSine) grid = nullptr;
+    std::optional<GridProfile> profile;
+    if (grid != nullptr) {
+      level.normalize();
+      profile.emplace(*grid, bottom, level);
+    }
+
     WheelSoilState state;
     state.radius = r;
     state.width = width;
-    state.sinkage = std::min(c.deflection, r);
+    state.sinkage = grid != nullptr ? c.deflection : std::min(c.deflection, r);
+    if (profile) state.memory = &*profile;
     state.slip = soilSlip(v, rim, eps);
     state.slip_angle = std::atan2(v_y, std::max(v, eps));
     WheelSoilForces soil = wheelSoilForces(*material.soil, state);
@@ -79,9 +100,11 @@ void applySoil(const KernelInputs& in, double width, std::span<const WheelContac
     // engine-solved modes' normal row: Bekker's W ~ z^(n + 1/2) (the closed
     // form of docs/soft-soil.md) has dW/dz = (n + 1/2) W / z.
     const double exponent = material.soil->n + 0.5;
-    if (state.sinkage > 0.0) {
-      f.soil_stiffness = c.load_share * exponent * soil.normal / state.sinkage;
-      f.soil_depth = state.sinkage / exponent;
+    const double z = profile ? r * (1.0 - std::cos(soil.entry_angle)) : state.sinkage;
+    f.soil_sinkage = z;
+    if (z > 0.0) {
+      f.soil_stiffness = c.load_share * exponent * soil.normal / z;
+      f.soil_depth = z / exponent;
     }
     f.soil_damping = c.load_share * material.soil->damping * width * length;
     const double share = c.load_share * scale;
@@ -95,6 +118,11 @@ void applySoil(const KernelInputs& in, double width, std::span<const WheelContac
     f.friction_limit = f.mu;
     const Eigen::Vector3d spin_axis = direction * a;
     f.rolling_moment = -share * soil.torque * spin_axis - a.dot((r * c.e).cross(f.force)) * a;
+    if (profile) {
+      pressNodes(*grid, *material.soil,
+                 {.bottom = bottom, .travel = level, .radius = r, .width = width, .depth = c.deflection,
+                  .entry_angle = soil.entry_angle, .at_rest = state.symmetry});
+    }
   }
 }
 

@@ -10,6 +10,14 @@
 
 namespace wtc::detail {
 
+/// A node as the stresses read it: a node written carried a load (its
+/// pressure is positive, bfloat16 rounding up), so zeros are ground no
+/// wheel has pressed: fresh.
+inline SoilMemory memoryOf(const SoilNode& n) {
+  const bool fresh = n.max_pressure == 0.0f && n.plastic_sinkage == 0.0f;
+  return {.plastic_sinkage = n.plastic_sinkage, .max_pressure = n.max_pressure, .fresh = fresh};
+}
+
 class GridProfile final : public SoilMemoryProfile {
  public:
   /// `bottom`: the ground point under the rim's lowest point (world x, y);

@@ -138,10 +138,10 @@ const WheelForces& TyreModel::forces(std::span<const Material> materials, const 
   state.next_tread_.clear();
   detail::kernel(kernel_)(in, contacts, state.tread_, state.next_tread_, state.forces_.data());
   if (effects_.has(Effect::kSoftSoil)) {
-    detail::applySoil(in, wheel.geometry.tread_width, contacts, state.forces_.data());
+    detail::applySoil(in, wheel.geometry.tread_width, contacts, state.ground_memory_, state.forces_.data());
     // Sunk to the axle: the soil cannot carry the wheel (the stresses are
     // those of z = r beyond; steadyWheelOnSoil names the most it carries).
-    const auto sunk = [&](const ContactForce& f) { return f.soft_soil && f.contact.deflection >= in.free_radius; };
+    const auto sunk = [&](const ContactForce& f) { return f.soft_soil && f.soil_sinkage >= in.free_radius; };
     if (std::any_of(state.forces_.begin(), state.forces_.end(), sunk)) ++state.sunk_steps_;
   }
   std::swap(state.tread_, state.next_tread_);

@@ -127,20 +127,53 @@ double bulldozing(const Soil& soil, const Arc& a) {
   return sum;
 }
 
-// The entry angle where the rim meets the remembered surface,
-// Z(theta_1) = z_p(r sin theta_1), Z(theta) = depth - r (1 - cos theta):
-// a fixed point from the fresh entry (exact for a uniform rut at once; a
-// rut's slope under the entry settles within the iterations).
-constexpr int kEntryIterations = 4;
+// The entry angle where the rim meets the remembered surface: the
+// outermost theta at which the rim is below it,
+//   g(theta) = Z(theta) - z_p(r sin theta) > 0,  Z(theta) = depth - r (1 - cos theta).
+// At the fresh surface's entry theta_f = acos(1 - depth / r), Z = 0: where
+// the ground there is fresh (or raised) the rim enters at theta_f, as on
+// part 1's surface. Otherwise the search steps in from theta_f to the first
+// crossing and closes on it by regula falsi (Illinois), to 1e-9 r in z. The
+// outermost crossing, not a fixed point of Z(theta_1) = z_p: under a wheel
+// at rest in its own hollow z_p follows the rim at sigma / k_u above it, and
+// a fixed-point iteration drifted along it toward the bottom (a wheel half
+// again as heavy sank 8 % past the fresh surface's answer).
+constexpr int kEntrySteps = 6, kEntryRefinements = 12;
 
 double rememberedEntrySinkage(const WheelSoilState& state) {
-  const double r = state.radius;
-  double z = std::min(state.sinkage, r);
-  for (int k = 0; k < kEntryIterations && z > 0.0; ++k) {
-    const double theta1 = std::acos(1.0 - std::min(z, r) / r);
-    z = state.sinkage - state.memory->at(r * std::sin(theta1)).plastic_sinkage;
+  const double r = state.radius, depth = state.sinkage;
+  if (!(depth > 0.0)) return 0.0;
+  const auto g = [&](double theta) {
+    return depth - r * (1.0 - std::cos(theta)) - state.memory->at(r * std::sin(theta)).plastic_sinkage;
+  };
+  const double fresh = std::acos(1.0 - std::min(depth, r) / r);
+  double outer = fresh, g_outer = g(outer);
+  if (g_outer >= -1e-12 * r) return depth;
+  double inner = outer, g_inner = g_outer;
+  for (int k = 1; k <= kEntrySteps && g_inner <= 0.0; ++k) {
+    outer = inner;
+    g_outer = g_inner;
+    inner = fresh * (1.0 - static_cast<double>(k) / kEntrySteps);  // the last step reaches the bottom
+    g_inner = g(inner);
   }
-  return z;
+  if (g_inner <= 0.0) return 0.0;  // above the remembered surface all along the arc
+  for (int k = 0, side = 0; k < kEntryRefinements && outer - inner > 1e-9; ++k) {
+    const double theta = (inner * g_outer - outer * g_inner) / (g_outer - g_inner);
+    const double g_theta = g(theta);
+    if (g_theta > 0.0) {
+      inner = theta;
+      g_inner = g_theta;
+      if (side == 1) g_outer *= 0.5;  // Illinois: the stale end's value halved
+      side = 1;
+    } else {
+      outer = theta;
+      g_outer = g_theta;
+      if (side == -1) g_inner *= 0.5;
+      side = -1;
+    }
+    if (std::abs(g_theta) < 1e-9 * r) break;
+  }
+  return r * (1.0 - std::cos(inner));
 }
 
 }  // namespace
@@ -151,6 +184,14 @@ double reloadStress(const Soil& soil, double width, const SoilMemory& m, double 
   if (m.fresh) return virgin;
   if (!(depth > m.plastic_sinkage)) return 0.0;
   return std::min(soil.unloading_stiffness * (depth - m.plastic_sinkage), std::max(m.max_pressure, virgin));
+}
+
+SoilMemory pressedSoil(const Soil& soil, double width, const SoilMemory& before, double depth) {
+  const double sigma = reloadStress(soil, width, before, depth);
+  if (!(sigma > 0.0)) return before;
+  return {.plastic_sinkage = std::max(before.plastic_sinkage, depth - sigma / soil.unloading_stiffness),
+          .max_pressure = std::max(before.max_pressure, sigma),
+          .fresh = false};
 }
 
 WheelSoilForces wheelSoilForces(const Soil& soil, const WheelSoilState& state) {

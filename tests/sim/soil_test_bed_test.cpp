@@ -12,6 +12,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -31,14 +32,15 @@ constexpr double kSettledS = 4.0;  // the means start here (s): the cart has set
 
 // Means over the settled stretch, per wheel body.
 struct WheelMeans {
-  double load = 0, pull = 0, torque = 0, sinkage = 0, rate = 0;
+  double load = 0, pull = 0, torque = 0, sinkage = 0, rate = 0, ahead = 0;  // ahead: of the chassis, along x
 };
 
 class Means : public sim::RunObserver {
  public:
-  explicit Means(const vehicle::VehicleDescription& vehicle) : wheels_(vehicle.wheels()), sums_(wheels_.size()) {}
+  explicit Means(const vehicle::VehicleDescription& vehicle, double from = kSettledS)
+      : wheels_(vehicle.wheels()), sums_(wheels_.size()), from_(from) {}
   void observe(const sim::Run& run) override {
-    if (run.time() < kSettledS) return;
+    if (run.time() < from_) return;
     ++n_;
     speed_ += run.state().bodies[0].linear_velocity.x();
     for (std::size_t k = 0; k < wheels_.size(); ++k) {
@@ -51,11 +53,12 @@ class Means : public sim::RunObserver {
       sums_[k].torque += -f.axial_moment.dot(axle);
       sums_[k].sinkage += -body.pose.translation().z();  // + r below
       sums_[k].rate += (body.angular_velocity - run.state().bodies[0].angular_velocity).dot(axle);
+      sums_[k].ahead += body.pose.translation().x() - run.state().bodies[0].pose.translation().x();
     }
   }
   WheelMeans wheel(std::size_t k, double radius) const {
     WheelMeans m = sums_[k];
-    for (double* x : {&m.load, &m.pull, &m.torque, &m.sinkage, &m.rate}) *x /= n_;
+    for (double* x : {&m.load, &m.pull, &m.torque, &m.sinkage, &m.rate, &m.ahead}) *x /= n_;
     m.sinkage += radius;
     return m;
   }
@@ -65,6 +68,7 @@ class Means : public sim::RunObserver {
  private:
   std::vector<int> wheels_;
   std::vector<WheelMeans> sums_;
+  double from_;
   double speed_ = 0;
   int n_ = 0;
 };
@@ -107,6 +111,80 @@ TEST(SoilTestBedTest, EachWheelSettlesAtTheSoilsSteadyStateInBothEngines) {
   RecordProperty("worst_sinkage_relative", std::to_string(worst_sinkage));
   RecordProperty("worst_torque_relative", std::to_string(worst_torque));
   RecordProperty("worst_pull_over_load", std::to_string(worst_pull));
+}
+
+// The test bed on ground that remembers (a soil region under the whole
+// slab): the front wheels meet fresh sand and settle at part 1's steady
+// state; the rear ones run in the ruts the front ones leave, and settle at
+// the steady state on that rut (steadyWheelOnSoil with the uniform memory
+// pressedSoil gives for the front wheel's sinkage), deeper than on fresh
+// sand. At 0.2 m/s the rear wheels reach the ruts the fronts left once
+// settled (the wheelbase is 0.5 m) by 4.5 s.
+TEST(SoilTestBedTest, TheRearWheelsRunInTheFrontWheelsRutsAsTheModelPredicts) {
+  const Soil soil = *namedSoil("toyoura_sand");
+  std::string yaml;
+  {
+    std::ifstream in(kScene);
+    yaml.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  const std::string slab = "    - {type: slab, size: [8, 4], thickness: 0.5}\n";
+  const std::size_t at = yaml.find(slab);
+  ASSERT_NE(at, std::string::npos);
+  yaml.insert(at + slab.size(), "  soil_regions: [{corners: [-4, -2, 4, 2], spacing: 0.02}]\n");
+  const std::string cart = "../vehicles/";
+  yaml.replace(yaml.find(cart), cart.size(), (fs::path(WTC_SOURCE_DIR) / "vehicles").string() + "/");
+  const fs::path file = fs::temp_directory_path() / "wtc_soil_test_bed_ruts.yaml";
+  { std::ofstream(file) << yaml; }
+  const double speed = 0.2, slip = 0.3, radius = 0.09, width = 0.11;
+  double worst_front = 0.0, worst_rear = 0.0;
+  for (const char* engine : {"bullet", "ode"}) {
+    for (const char* mode : {"force", "implicit"}) {
+      const sim::Scene scene = sim::loadScene(
+          file, std::vector<sim::Override>{{"engine", engine},
+                                           {"mode", mode},
+                                           {"speed", std::to_string(speed)},
+                                           {"wheel_rate", std::to_string(speed / (radius * (1.0 - slip)))},
+                                           {"duration", "8"}});
+      const auto world = sim::makeEngine(scene.engine, *scene.terrain, scene.vehicle, scene.placement);
+      Means means(scene.vehicle, 5.0);
+      sim::RunOptions options;
+      options.observer = &means;
+      const sim::RunSummary summary = sim::runScene(scene, *world, options);
+      ASSERT_TRUE(summary.success) << engine << "/" << mode;
+      for (std::size_t k = 0; k < means.wheels(); ++k) {
+        const WheelMeans m = means.wheel(k, radius);
+        const double i = 1.0 - means.speed() / (radius * m.rate);
+        const std::string label = std::string(engine) + "/" + mode + " wheel " + std::to_string(k);
+        if (m.ahead > 0.0) {  // a front wheel, on fresh sand
+          const SoilSteadyState want = steadyWheelOnSoil(soil, radius, width, m.load, i);
+          EXPECT_NEAR(m.sinkage, want.sinkage, 0.02 * want.sinkage) << label;
+          worst_front = std::max(worst_front, std::abs(m.sinkage / want.sinkage - 1));
+          continue;
+        }
+        // The rut its front wheel left: that wheel's steady sinkage pressed
+        // into fresh sand (its load is the other front wheel's, by symmetry).
+        double front_load = 0.0;
+        for (std::size_t f = 0; f < means.wheels(); ++f) {
+          if (means.wheel(f, radius).ahead > 0.0) front_load += 0.5 * means.wheel(f, radius).load;
+        }
+        const double front_sinkage = steadyWheelOnSoil(soil, radius, width, front_load, i).sinkage;
+        struct Uniform final : SoilMemoryProfile {
+          SoilMemory rut;
+          SoilMemory at(double) const override { return rut; }
+        } rut;
+        rut.rut = pressedSoil(soil, width, SoilMemory{}, front_sinkage);
+        const SoilSteadyState want = steadyWheelOnSoil(soil, radius, width, m.load, i, 0.0, &rut);
+        EXPECT_NEAR(m.sinkage, want.sinkage, 0.03 * want.sinkage) << label;
+        EXPECT_GT(m.sinkage, steadyWheelOnSoil(soil, radius, width, m.load, i).sinkage) << label << ": in a rut";
+        worst_rear = std::max(worst_rear, std::abs(m.sinkage / want.sinkage - 1));
+        RecordProperty(std::string(engine) + "_" + mode + "_rear_sinkage_mm", std::to_string(m.sinkage * 1e3));
+        RecordProperty(std::string(engine) + "_" + mode + "_rear_predicted_mm", std::to_string(want.sinkage * 1e3));
+      }
+    }
+  }
+  RecordProperty("worst_front_relative", std::to_string(worst_front));
+  RecordProperty("worst_rear_relative", std::to_string(worst_rear));
+  fs::remove(file);
 }
 
 // Skid steering on sand (Ishigami's side slip: the lateral shear and the

@@ -16,8 +16,8 @@
 namespace wtc::detail {
 namespace {
 
-SoilGridSpec field(double size_m, double spacing_m) {
-  SoilGridSpec spec;
+SoilRegion field(double size_m, double spacing_m) {
+  SoilRegion spec;
   spec.origin = {-0.5 * size_m, -0.5 * size_m};
   spec.size = {size_m, size_m};
   spec.spacing = spacing_m;
@@ -27,7 +27,7 @@ SoilGridSpec field(double size_m, double spacing_m) {
 // A straight rut, a wheel 0.11 m wide driven `length` along x at y = y0:
 // every node under its width touched, as a pass writes them.
 void rut(SoilGrid& grid, double y0, double length, float depth) {
-  const SoilGridSpec& s = grid.spec();
+  const SoilRegion& s = grid.spec();
   const int j0 = static_cast<int>(std::ceil((y0 - 0.055 - s.origin.y()) / s.spacing));
   const int j1 = static_cast<int>(std::floor((y0 + 0.055 - s.origin.y()) / s.spacing));
   const int i1 = static_cast<int>(std::floor((-0.5 * s.size.x() + length) / s.spacing));
@@ -104,7 +104,7 @@ TEST(SoilGridTest, AGridTooFineOrTooLargeIsRefusedWithItsNumbers) {
   } catch (const InvalidInputError& e) {
     EXPECT_THAT(e.what(), ::testing::HasSubstr("soil 'sand': spacing 5e-04 m: must be at least 0.001 m"));
   }
-  SoilGridSpec large = field(2000.0, 0.01);  // 4e10 nodes
+  SoilRegion large = field(2000.0, 0.01);  // 4e10 nodes
   try {
     validate(large, "soil 'sand'");
     FAIL() << "no exception";
@@ -114,7 +114,7 @@ TEST(SoilGridTest, AGridTooFineOrTooLargeIsRefusedWithItsNumbers) {
   }
   large.memory_cap_bytes = 1e12;
   EXPECT_NO_THROW(validate(large, "soil 'sand'"));
-  SoilGridSpec flat = field(1.0, 0.02);
+  SoilRegion flat = field(1.0, 0.02);
   flat.size.y() = 0.0;
   EXPECT_THROW(validate(flat, "soil"), InvalidInputError);
   flat.size.y() = std::nan("");

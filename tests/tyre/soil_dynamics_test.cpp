@@ -133,7 +133,9 @@ TEST(SoilDynamicsTest, AWheelTheSoilCannotCarryIsCountedAtItsAxle) {
     wheel.mass = load / kGravityMps2;
     for (int k = 0; k < 2000; ++k) {
       const WheelForces& f = step(model, ground, 1e-3, wheel);
-      if (!f.contacts.empty()) ASSERT_TRUE(f.normal_stability.soil) << k;
+      if (!f.contacts.empty()) {
+        ASSERT_TRUE(f.normal_stability.soil) << k;
+      }
     }
     if (load == kLoadN) {
       EXPECT_EQ(wheel.state.sunkSteps(), 0u);

@@ -60,22 +60,16 @@ double restingSinkage(const Soil& soil, const SoilMemoryProfile* memory, double 
 
 // Wong's repetitive loading: pressed to W, each point under the wheel at
 // depth Z(x) carried sigma(x) = k Z^n and keeps z_p = Z - sigma / k_u once
-// the wheel is lifted. Pressed again at W the wheel returns to the same
-// depth: from the rebounded surface it sinks by sigma / k_u, the elastic
-// part, and no more. (LETE sand with the catalogue's assumed k_u = 1e7 Pa/m
-// rebounds 2.9 mm from a 1.1 mm hollow, above the fresh surface: k_u must
-// exceed the loading curve's secant k Z^(n-1), which Wong's
-// k_u = k_0 + A_u z_u per soil will give; recorded, issue 55.)
+// the wheel is lifted (pressedSoil). Pressed again at W the wheel returns
+// to the same depth: from the rebounded surface it sinks by sigma / k_u,
+// the elastic part, and no more.
 TEST(SoilMemoryTest, PressedAgainAtTheSameLoadAWheelSinksByTheElasticPartOnly) {
   for (const char* name : {"toyoura_sand", "lete_sand"}) {
     const Soil soil = *namedSoil(name);
     const double first = restingSinkage(soil, nullptr, kLoadN);
-    const double k = soil.k_c / kWidthM + soil.k_phi;
     const Profile hollow([&](double x) {
       const double depth = first - (kRadiusM - std::sqrt(std::max(0.0, kRadiusM * kRadiusM - x * x)));
-      if (!(depth > 0.0)) return SoilMemory{};
-      const double sigma = k * std::pow(depth, soil.n);
-      return SoilMemory{.plastic_sinkage = depth - sigma / soil.unloading_stiffness, .max_pressure = sigma, .fresh = false};
+      return pressedSoil(soil, kWidthM, SoilMemory{}, depth);
     });
     const double elastic = hollow.at(0.0).max_pressure / soil.unloading_stiffness;
     const double again = restingSinkage(soil, &hollow, kLoadN);
@@ -90,11 +84,38 @@ TEST(SoilMemoryTest, PressedAgainAtTheSameLoadAWheelSinksByTheElasticPartOnly) {
   }
 }
 
-// Rolling passes in one rut (slip 0.2): each leaves its depth below the
-// rim's exit (no rebound: the rut's floor is the wheel's lowest point) and
-// its peak stress; the next wheel meets that uniform rut. The rut deepens
-// with each pass, by less each time: the model's own prediction that the
-// ground's memory in a run is checked against.
+// The foot of the unloading line: a fresh point pressed to Z keeps
+// Z - k Z^n / k_u and k Z^n; pressed again to Z or less it keeps that (a
+// wheel at rest presses the same nodes every step), deeper it follows the
+// virgin curve again.
+TEST(SoilMemoryTest, APressedPointKeepsTheFootOfItsUnloadingLine) {
+  for (const std::string& name : soilNames()) {
+    const Soil soil = *namedSoil(name);
+    const double k = soil.k_c / kWidthM + soil.k_phi, z = 0.015;
+    const SoilMemory once = pressedSoil(soil, kWidthM, SoilMemory{}, z);
+    const double sigma = k * std::pow(z, soil.n);
+    EXPECT_FALSE(once.fresh);
+    EXPECT_DOUBLE_EQ(once.max_pressure, sigma) << name;
+    EXPECT_DOUBLE_EQ(once.plastic_sinkage, z - sigma / soil.unloading_stiffness) << name;
+    EXPECT_GT(once.plastic_sinkage, 0.9 * z) << name << ": the elastic part is small";
+    for (const double again : {z, 0.5 * z, once.plastic_sinkage, -0.01}) {
+      const SoilMemory twice = pressedSoil(soil, kWidthM, once, again);
+      EXPECT_NEAR(twice.plastic_sinkage, once.plastic_sinkage, 1e-12 * z) << name << " at " << again;
+      EXPECT_EQ(twice.max_pressure, once.max_pressure) << name << " at " << again;
+    }
+    const SoilMemory deeper = pressedSoil(soil, kWidthM, once, 2 * z);
+    EXPECT_DOUBLE_EQ(deeper.max_pressure, k * std::pow(2 * z, soil.n)) << name;
+    EXPECT_GT(deeper.plastic_sinkage, once.plastic_sinkage) << name;
+    EXPECT_EQ(pressedSoil(soil, kWidthM, SoilMemory{}, -0.01).fresh, true) << "above the surface nothing changes";
+  }
+}
+
+// Rolling passes in one rut (slip 0.2): the rim's lowest point presses
+// the ground under it to the wheel's sinkage, which keeps the foot of its
+// unloading line (pressedSoil); the next wheel meets that uniform rut. The
+// rut deepens with each pass, by less each time: the model's own prediction
+// that the ground's memory in a run is checked against
+// (tests/tyre/ground_memory_test.cpp).
 TEST(SoilMemoryTest, RollingPassesDeepenARutByLessEachTime) {
   const Soil soil = *namedSoil("toyoura_sand");
   SoilMemory rut;
@@ -103,14 +124,16 @@ TEST(SoilMemoryTest, RollingPassesDeepenARutByLessEachTime) {
     const Profile uniform([&](double) { return rut; });
     const SoilSteadyState s =
         steadyWheelOnSoil(soil, kRadiusM, kWidthM, kLoadN, 0.2, 0.0, pass == 0 ? nullptr : &uniform);
-    const double floor = s.sinkage - kRadiusM * (1.0 - std::cos(s.forces.exit_angle));
-    rut = {.plastic_sinkage = floor, .max_pressure = std::max(rut.max_pressure, s.forces.peak_stress), .fresh = false};
+    rut = pressedSoil(soil, kWidthM, rut, s.sinkage);
+    const double floor = rut.plastic_sinkage;
     depths.push_back(floor);
     RecordProperty("rut_after_pass_" + std::to_string(pass + 1) + "_mm", std::to_string(floor * 1e3));
   }
   for (std::size_t k = 1; k < depths.size(); ++k) {
     EXPECT_GT(depths[k], depths[k - 1]) << k;
-    if (k >= 2) EXPECT_LT(depths[k] - depths[k - 1], depths[k - 1] - depths[k - 2]) << k;
+    if (k >= 2) {
+      EXPECT_LT(depths[k] - depths[k - 1], depths[k - 1] - depths[k - 2]) << k;
+    }
   }
 }
 

@@ -278,7 +278,9 @@ TEST(WheelSoilTest, AgainstDingEtAl2011sMeasuredWheel) {
       EXPECT_NEAR(model.forces.torque, m.torque, 0.2 * m.torque) << m.slip;
       worst_torque = std::max(worst_torque, std::abs(model.forces.torque / m.torque - 1.0));
     }
-    if (m.slip >= 0.2) EXPECT_GT(model.forces.drawbar_pull, 0.0) << m.slip;
+    if (m.slip >= 0.2) {
+      EXPECT_GT(model.forces.drawbar_pull, 0.0) << m.slip;
+    }
     worst_pull = std::max(worst_pull, std::abs(model.forces.drawbar_pull - m.pull));
     worst_sinkage = std::max(worst_sinkage, std::abs(model.sinkage - m.sinkage));
   }

@@ -12,6 +12,8 @@
 //       height: 0.65                # the fields of the builder's Params (m, rad)
 //       translation: [0, 0, 0]      # optional placement (m)
 //       rotation: {axis: [0, 0, 1], degrees: 90}   # optional (or radians:)
+//   soil_regions:                   # optional: where soft ground remembers
+//     - {corners: [x0, y0, x1, y1], spacing: 0.02, memory_cap_mb: 2048}
 //
 // `material` may be left out when the file defines exactly one material.
 // Paths (a heightfield's or a mesh's `file`) are relative to the YAML

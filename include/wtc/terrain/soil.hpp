@@ -33,7 +33,7 @@ struct Soil {
   /// k_u, sigma's slope when the load is taken off (Pa/m, > 0): Wong's
   /// unloading line, read by the ground that remembers (issue 55); a fresh
   /// surface (part 1) is loaded at every step.
-  double unloading_stiffness = 1e7;
+  double unloading_stiffness = 2e8;
   /// R, a damping pressure per speed into the soil (Pa s/m, >= 0), added to
   /// sigma as Project Chrono's SCM does: the loss a spring without memory lacks.
   double damping = 3e4;

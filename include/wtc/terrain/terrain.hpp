@@ -28,6 +28,7 @@
 #include "wtc/geometry/aabb.hpp"
 #include "wtc/geometry/convex_polyhedron.hpp"
 #include "wtc/terrain/material.hpp"
+#include "wtc/terrain/soil_region.hpp"
 
 namespace wtc {
 
@@ -77,6 +78,10 @@ class TerrainBuilder {
   /// Pieces added so far, stored and formed: the next piece's id.
   std::size_t pieceCount() const { return next_id_; }
   MaterialId materialCount() const { return static_cast<MaterialId>(materials_.size()); }
+  /// Adds a region where the soft ground remembers (validated, naming
+  /// `where`): its soil's ruts and the pressures it carried
+  /// (wtc/tyre/ground_memory.hpp).
+  void addSoilRegion(const SoilRegion& region, const std::string& where = "TerrainBuilder::addSoilRegion");
   /// Builds the index. Throws InvalidInputError if there are no pieces.
   Terrain build() &&;
 
@@ -98,6 +103,7 @@ class TerrainBuilder {
   std::vector<ConvexPolyhedron> pieces_;  // a pending prism's place holds an empty piece
   std::vector<MaterialId> piece_material_;
   std::vector<Material> materials_;
+  std::vector<SoilRegion> soil_regions_;
   std::vector<Field> fields_;
   std::vector<std::shared_ptr<const detail::PendingPrisms>> pending_;  // by first stored position
   std::size_t next_id_ = 0;
@@ -176,6 +182,8 @@ class Terrain {
   const Material& material(PieceId id) const { return materials_[materialId(id)]; }
   MaterialId materialId(PieceId id) const { return fields_.empty() ? piece_material_[id] : fieldAwareMaterialId(id); }
   std::span<const Material> materials() const { return materials_; }
+  /// Where the soft ground remembers (none: every soil forgets).
+  std::span<const SoilRegion> soilRegions() const { return soil_regions_; }
   const Aabb& bounds() const { return bounds_; }
 
   /// Appends to `out` every piece whose bounding box overlaps `box`
@@ -234,6 +242,7 @@ class Terrain {
   std::vector<ConvexPolyhedron> pieces_;
   std::vector<MaterialId> piece_material_;
   std::vector<Material> materials_;
+  std::vector<SoilRegion> soil_regions_;
   std::vector<Field> fields_;
   std::size_t piece_count_ = 0;
   std::shared_ptr<const detail::BoxTree> tree_;  // over the stored pieces; null when there are none

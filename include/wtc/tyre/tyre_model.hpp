@@ -46,6 +46,8 @@
 
 namespace wtc {
 
+class GroundMemory;
+
 /// One contact's tread deflection, carried from step to step.
 struct TreadState {
   Eigen::Vector3d e{Eigen::Vector3d::UnitZ()};       ///< The contact's direction toward the ground.
@@ -84,6 +86,11 @@ class WheelState {
   std::span<const WheelContact> capContacts() const { return finder_.capContacts(); }
   /// Forgets the tread deflections (a wheel teleported by the user).
   void resetTread() { tread_.clear(); }
+  /// The ground's memory this wheel reads and presses on soft soil (not
+  /// owned; it must outlive its use here), or null: the soil forgets, each
+  /// step loading a fresh surface. The engine plugins set their world's.
+  void setGroundMemory(GroundMemory* memory) { ground_memory_ = memory; }
+  GroundMemory* groundMemory() const { return ground_memory_; }
 
  private:
   friend class TyreModel;
@@ -91,6 +98,7 @@ class WheelState {
   std::vector<ContactForce> forces_;
   std::vector<TreadState> tread_, next_tread_;
   WheelForces result_;
+  GroundMemory* ground_memory_ = nullptr;
   std::uint64_t steps_ = 0, unstable_steps_ = 0, non_finite_steps_ = 0, sunk_steps_ = 0;
   bool last_skipped_ = false, first_unstable_ = false;
 };

@@ -64,6 +64,9 @@ struct ContactForce {
   double soil_stiffness = 0.0;  ///< N/m.
   double soil_damping = 0.0;    ///< N s/m.
   double soil_depth = 0.0;      ///< m.
+  /// On soft soil, z: the rim's lowest point below the surface it meets,
+  /// the fresh one or, where the ground remembers, the rut (m, [0, r]).
+  double soil_sinkage = 0.0;
 };
 
 /// The wheel's totals. force and torque are the wrench on the wheel body

@@ -56,6 +56,15 @@ class SoilMemoryProfile {
 /// wheel of width b (m): the stress the box above states (Pa).
 double reloadStress(const Soil& soil, double width, const SoilMemory& memory, double depth);
 
+/// What a point remembers once the rim has pressed it to depth Z below the
+/// fresh surface (m): the foot of the unloading line it is on and the stress
+/// it carried,
+///   z_p' = max(z_p, Z - sigma / k_u),   sigma_m' = max(sigma_m, sigma),
+/// sigma = reloadStress(soil, width, before, Z). Where sigma is 0 (the rim
+/// above the remembered surface) nothing changes. Idempotent: a wheel at
+/// rest presses the same nodes every step and they stay as they are.
+SoilMemory pressedSoil(const Soil& soil, double width, const SoilMemory& before, double depth);
+
 /// A wheel's state against a flat soil surface, in its travel frame.
 struct WheelSoilState {
   double radius = 0.0;      ///< r (m, > 0).

@@ -102,7 +102,7 @@ void applyWrench(Wheel& w, const Kinematics& k, const btVector3& force, const bt
 }  // namespace
 
 detail::PluginState::PluginState(btDiscreteDynamicsWorld& w, const Terrain& t, ContactMode m)
-    : world(w), dispatcher(dynamic_cast<btCollisionDispatcher*>(w.getDispatcher())), terrain(t), mode(m) {
+    : world(w), dispatcher(dynamic_cast<btCollisionDispatcher*>(w.getDispatcher())), terrain(t), ground_memory(t), mode(m) {
   if (dispatcher == nullptr) fail("wtc::bullet::Plugin", "the world's dispatcher is not a btCollisionDispatcher");
   world.addCollisionObject(&terrain.object(), btBroadphaseProxy::StaticFilter,
                            btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
@@ -204,6 +204,7 @@ WheelId detail::PluginState::add(std::unique_ptr<Wheel> w, const char* where) {
   w->collider->setCollisionShape(w->shape.get());
   w->collider->setActivationState(DISABLE_DEACTIVATION);
   if (w->collider->getBroadphaseHandle() != nullptr) world.updateSingleAabb(w->collider);
+  if (ground_memory.regionCount() > 0) w->mounted.state().setGroundMemory(&ground_memory);
   const auto id = static_cast<WheelId>(wheels.size());
   wheel_of.emplace(w->collider, id);
   wheels.push_back(std::move(w));
@@ -417,6 +418,7 @@ const WheelForces& Plugin::applied(WheelId wheel) const {
 const WheelState& Plugin::state(WheelId wheel) const {
   return state_->wheels.at(static_cast<std::size_t>(wheel))->mounted.state();
 }
+const GroundMemory& Plugin::groundMemory() const { return state_->ground_memory; }
 int Plugin::wheelCount() const { return static_cast<int>(state_->wheels.size()); }
 double Plugin::contactSeconds() const { return state_->clock.seconds(); }
 ContactMode Plugin::mode() const { return state_->mode; }

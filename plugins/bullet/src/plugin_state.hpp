@@ -13,6 +13,7 @@
 #include "rigid_tread_rows.hpp"
 #include "wheel_friction_constraint.hpp"
 #include "wheel_shape.hpp"
+#include "wtc/tyre/ground_memory.hpp"
 #include "wtc/bullet/plugin.hpp"
 #include "wtc/bullet/terrain_object.hpp"
 
@@ -82,6 +83,9 @@ struct PluginState {
   btDiscreteDynamicsWorld& world;
   btCollisionDispatcher* dispatcher;
   TerrainObject terrain;
+  // The soil regions' memory, which every wheel reads and presses (null
+  // in a wheel's state when the terrain has none).
+  GroundMemory ground_memory;
   ContactMode mode;
   std::vector<std::unique_ptr<Wheel>> wheels;
   std::unordered_map<const btCollisionObject*, int> wheel_of;

@@ -72,7 +72,7 @@ void requireGeomHoldsTread(const RigidWheel& spec, const Eigen::Vector3d& centre
 }  // namespace
 
 detail::PluginState::PluginState(dWorldID w, dSpaceID space, const Terrain& t, ContactMode m, TerrainShape shape)
-    : world(w), terrain(t, space, shape), mode(m) {}
+    : world(w), terrain(t, space, shape), ground_memory(t), mode(m) {}
 
 const Wheel& detail::PluginState::wheel(WheelId id) const {
   if (id < 0 || static_cast<std::size_t>(id) >= wheels.size()) {
@@ -121,6 +121,7 @@ WheelId detail::PluginState::add(const RigidWheel& spec) {
   dRFromZAxis(rotation, a.x(), a.y(), a.z());
   dGeomSetOffsetRotation(w->cap_geom, rotation);
   dBodySetAutoDisableFlag(spec.body, 0);  // the tread state needs every step
+  if (ground_memory.regionCount() > 0) w->mounted.state().setGroundMemory(&ground_memory);
   const auto id = static_cast<WheelId>(wheels.size());
   wheel_of.emplace(spec.geom, id);
   wheels.push_back(std::move(w));
@@ -291,6 +292,7 @@ const WheelForces& Plugin::forces(WheelId wheel) const { return state_->wheel(wh
 const WheelForces& Plugin::applied(WheelId wheel) const { return state_->applied(wheel); }
 
 const WheelState& Plugin::state(WheelId wheel) const { return state_->wheel(wheel).mounted.state(); }
+const GroundMemory& Plugin::groundMemory() const { return state_->ground_memory; }
 std::span<const SolvedContact> Plugin::solvedContacts(WheelId wheel) const { return state_->wheel(wheel).contacts; }
 const WheelDiagnostics& Plugin::diagnostics(WheelId wheel) const { return state_->wheel(wheel).diagnostics; }
 int Plugin::wheelCount() const { return static_cast<int>(state_->wheels.size()); }

@@ -6,6 +6,7 @@
 
 #include "adapter/mounted_wheel.hpp"
 #include "adapter/step_clock.hpp"
+#include "wtc/tyre/ground_memory.hpp"
 #include "wtc/ode/plugin.hpp"
 
 namespace wtc::ode {
@@ -48,6 +49,9 @@ struct PluginState {
 
   dWorldID world;
   TerrainGeoms terrain;
+  // The soil regions' memory, which every wheel reads and presses (null
+  // in a wheel's state when the terrain has none).
+  GroundMemory ground_memory;
   ContactMode mode;
   double step_seconds = 0.0;  // of the current step, for the joints' ERP and CFM
   std::vector<std::unique_ptr<Wheel>> wheels;

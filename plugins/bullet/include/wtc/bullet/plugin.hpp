@@ -54,6 +54,7 @@
 #include "wtc/bullet/terrain_object.hpp"
 #include "wtc/terrain/terrain.hpp"
 #include "wtc/tyre/contact_mode.hpp"
+#include "wtc/tyre/ground_memory.hpp"
 #include "wtc/tyre/tyre_model.hpp"
 
 class btMultiBody;
@@ -108,6 +109,9 @@ class Plugin {
   /// contact forces of a constraint-mode run.
   const WheelForces& applied(WheelId wheel) const;
   const WheelState& state(WheelId wheel) const;
+  /// What the terrain's soil regions remember (wtc/tyre/ground_memory.hpp):
+  /// every wheel reads and presses it; empty without a region.
+  const GroundMemory& groundMemory() const;
   int wheelCount() const;
   /// Wall time (s) the plugin's own per-step work took since construction:
   /// reading the wheels' state, their contacts, the tyre model and handing

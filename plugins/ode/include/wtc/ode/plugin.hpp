@@ -55,6 +55,7 @@
 #include "wtc/adapter/wheel_spec.hpp"
 #include "wtc/ode/terrain_geoms.hpp"
 #include "wtc/terrain/terrain.hpp"
+#include "wtc/tyre/ground_memory.hpp"
 #include "wtc/tyre/tyre_model.hpp"
 
 namespace wtc::ode {
@@ -136,6 +137,9 @@ class Plugin {
   /// throw std::out_of_range for an id that is not registered).
   const WheelForces& forces(WheelId wheel) const;
   const WheelState& state(WheelId wheel) const;
+  /// What the terrain's soil regions remember (wtc/tyre/ground_memory.hpp):
+  /// every wheel reads and presses it; empty without a region.
+  const GroundMemory& groundMemory() const;
   /// What acted on the wheel in the last world step (call it after the
   /// step): forces() in force mode; in constraint mode the forces ODE's
   /// solver applied at each contact (the joints' feedback), their wrench
