@@ -374,7 +374,7 @@ void addPiece(TerrainBuilder& builder, const YamlReader& in, const YAML::Node& p
 }
 
 // soil_regions: where the soft ground remembers (wtc/terrain/soil_region.hpp),
-//   - {corners: [x0, y0, x1, y1], spacing: 0.02, memory_cap_mb: 2048}
+//   - {corners: [x0, y0, x1, y1], spacing: 0.02, memory_cap_mb: 2048, flow_factor: 0, repose_angle_deg: 30}
 constexpr double kMiB = static_cast<double>(kBytesPerMiB);
 
 void addSoilRegions(TerrainBuilder& builder, const YamlReader& in, const YAML::Node& regions) {
@@ -383,13 +383,15 @@ void addSoilRegions(TerrainBuilder& builder, const YamlReader& in, const YAML::N
     const YAML::Node r = regions[i];
     const YamlReader region_in = in.with("soil_regions[" + std::to_string(i) + "]: ");
     region_in.requireMap(r, "a soil region");
-    region_in.checkKeys(r, {"corners", "spacing", "memory_cap_mb"});
+    region_in.checkKeys(r, {"corners", "spacing", "memory_cap_mb", "flow_factor", "repose_angle_deg"});
     const Eigen::Vector4d corners = region_in.vector<4>(region_in.require(r, "corners"), "corners");
     SoilRegion region;
     region.origin = corners.head<2>();
     region.size = corners.tail<2>() - corners.head<2>();
     region.spacing = region_in.number(r, "spacing", region.spacing);
     region.memory_cap_bytes = region_in.number(r, "memory_cap_mb", region.memory_cap_bytes / kMiB) * kMiB;
+    region.flow_factor = region_in.number(r, "flow_factor", region.flow_factor);
+    region.repose_angle_deg = region_in.number(r, "repose_angle_deg", region.repose_angle_deg);
     try {
       builder.addSoilRegion(region, "soil region");
     } catch (const InvalidInputError& e) {

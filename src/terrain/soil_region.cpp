@@ -21,6 +21,12 @@ void validate(const SoilRegion& s, const std::string& where) {
       fail(std::string("size along ") + name + " " + formatNumber(s.size[axis]) + " m: must be finite and > 0");
     }
   }
+  if (!(s.flow_factor >= 0.0 && s.flow_factor <= 1.0)) {
+    fail("flow_factor " + formatNumber(s.flow_factor) + ": must be in [0, 1] (the fraction of pressed soil raised)");
+  }
+  if (!(s.repose_angle_deg > 0.0 && s.repose_angle_deg < 90.0)) {
+    fail("repose_angle_deg " + formatNumber(s.repose_angle_deg) + ": must be in (0, 90) (deg)");
+  }
   if (!(std::isfinite(s.memory_cap_bytes) && s.memory_cap_bytes > 0.0)) {
     fail("memory cap " + formatNumber(s.memory_cap_bytes) + " bytes: must be finite and > 0");
   }

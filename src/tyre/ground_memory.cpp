@@ -2,7 +2,9 @@
 #include "wtc/tyre/ground_memory.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "ground_memory_access.hpp"
@@ -55,6 +57,59 @@ SoilGrid* GroundMemoryAccess::gridAt(GroundMemory& memory, double x, double y) {
   return nullptr;
 }
 
+namespace {
+
+// How far raised soil may slide from the rut, in nodes: a berm a few
+// nodes wide (its slope is settled within a step's few passes).
+constexpr int kMaxSlideNodes = 8;
+// A slide smaller than this is settled (m): a float's resolution on a
+// rut's centimetres.
+constexpr double kSettledSlideM = 1e-7;
+
+// Raises the node nearest `at` by `height` (m; a negative plastic
+// sinkage), then lets the raised soil slide outward, node by node along
+// `outward`, wherever a node stands above its outer neighbour by more than
+// the angle of repose allows over their distance: the excess is shared so
+// that the pair stands exactly at the slope, the volume (height times the
+// equal node areas) kept. Sweeps repeat until none moves (lowering a node
+// steepens the pair inside it). The slide stops at the region's edge.
+void bulldoze(SoilGrid& grid, const Eigen::Vector2d& at, const Eigen::Vector2d& outward, double height) {
+  const SoilRegion& spec = grid.spec();
+  std::array<Eigen::Vector2i, kMaxSlideNodes + 1> chain;
+  int nodes = 0;
+  for (int k = 0; k <= kMaxSlideNodes; ++k) {
+    const Eigen::Vector2d u = (at + k * spec.spacing * outward - spec.origin) / spec.spacing;
+    const Eigen::Vector2i n(static_cast<int>(std::lround(u.x())), static_cast<int>(std::lround(u.y())));
+    if (n.x() < 0 || n.y() < 0 || n.x() >= grid.columns() || n.y() >= grid.rows()) break;
+    if (nodes > 0 && n == chain[nodes - 1]) continue;
+    chain[nodes++] = n;
+  }
+  if (nodes == 0) return;
+  const auto sinkage = [&](int k) { return grid.node(chain[k].x(), chain[k].y()).plastic_sinkage; };
+  const auto raise = [&](int k, double by) {
+    SoilNode node = grid.node(chain[k].x(), chain[k].y());
+    node.plastic_sinkage = static_cast<float>(node.plastic_sinkage - by);
+    grid.set(chain[k].x(), chain[k].y(), node);
+  };
+  raise(0, height);
+  const double slope = std::tan(spec.repose_angle_deg * std::numbers::pi / 180.0);
+  for (int sweep = 0; sweep < kMaxSlideNodes; ++sweep) {
+    bool moved = false;
+    for (int k = 0; k + 1 < nodes; ++k) {
+      const double run = spec.spacing * (chain[k + 1] - chain[k]).cast<double>().norm();
+      // How far node k stands above node k + 1 beyond the slope.
+      const double excess = sinkage(k + 1) - sinkage(k) - slope * run;
+      if (!(excess > kSettledSlideM)) continue;
+      raise(k, -0.5 * excess);
+      raise(k + 1, 0.5 * excess);
+      moved = true;
+    }
+    if (!moved) return;
+  }
+}
+
+}  // namespace
+
 void pressNodes(SoilGrid& grid, const Soil& soil, const RimPress& p) {
   const double r = p.radius, half = 0.5 * p.width;
   const double ahead = p.at_rest * r * std::sin(p.entry_angle), behind = -r * std::sin(p.entry_angle);
@@ -72,14 +127,20 @@ void pressNodes(SoilGrid& grid, const Soil& soil, const RimPress& p) {
   for (int j = j0; j <= j1; ++j) {
     for (int i = i0; i <= i1; ++i) {
       const Eigen::Vector2d d = spec.origin + spec.spacing * Eigen::Vector2d(i, j) - p.bottom;
-      const double s = d.dot(p.travel);
-      if (std::abs(d.dot(side)) > half || s > ahead || s < behind) continue;
+      const double s = d.dot(p.travel), across = d.dot(side);
+      if (std::abs(across) > half || s > ahead || s < behind) continue;
       const double depth = p.depth - (r - std::sqrt(std::max(0.0, r * r - s * s)));
       const SoilNode node = grid.node(i, j);
       const SoilMemory before = memoryOf(node);
       const SoilMemory after = pressedSoil(soil, p.width, before, depth);
-      if (after.plastic_sinkage != before.plastic_sinkage || after.max_pressure > node.max_pressure) {
-        grid.set(i, j, {static_cast<float>(after.plastic_sinkage), static_cast<float>(after.max_pressure)});
+      if (after.plastic_sinkage == before.plastic_sinkage && !(after.max_pressure > node.max_pressure)) continue;
+      const SoilNode pressed{static_cast<float>(after.plastic_sinkage), static_cast<float>(after.max_pressure)};
+      grid.set(i, j, pressed);
+      const double drop = static_cast<double>(pressed.plastic_sinkage) - node.plastic_sinkage;
+      if (spec.flow_factor > 0.0 && drop > 0.0) {
+        const Eigen::Vector2d outward = (across >= 0.0 ? 1.0 : -1.0) * side;
+        bulldoze(grid, spec.origin + spec.spacing * Eigen::Vector2d(i, j) + (half + spec.spacing - std::abs(across)) * outward,
+                 outward, spec.flow_factor * drop);
       }
     }
   }

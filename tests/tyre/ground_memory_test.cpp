@@ -4,7 +4,9 @@
 // the hollow it left sinks by the elastic part only, and rolling passes over
 // one track leave, pass after pass, the rut the model predicts; outside a
 // region the soil forgets as in part 1.
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -28,7 +30,7 @@ constexpr double kSpacingM = 0.02;  // the soil regions' grid
 
 // A 4 x 4 m slab of Toyoura sand (top z = 0), remembering over `region`
 // ([x0, y0, x1, y1], m) at a 2 cm spacing, or nowhere.
-Terrain sandSlab(const std::vector<double>& region) {
+Terrain sandSlab(const std::vector<double>& region, double flow_factor = 0.0) {
   TerrainBuilder builder;
   Material sand;
   sand.name = "sand";
@@ -41,6 +43,7 @@ Terrain sandSlab(const std::vector<double>& region) {
     r.origin = {region[0], region[1]};
     r.size = {region[2] - region[0], region[3] - region[1]};
     r.spacing = kSpacingM;
+    r.flow_factor = flow_factor;
     builder.addSoilRegion(r);
   }
   return std::move(builder).build();
@@ -176,6 +179,48 @@ TEST(GroundMemoryTest, RollingPassesLeaveTheRutTheModelPredicts) {
   RecordProperty("touched_nodes", std::to_string(memory.touchedNodes()));
   RecordProperty("memory_bytes", std::to_string(memory.bytes()));
   EXPECT_LE(memory.touchedNodes(), 6u * 41u);
+}
+
+// Bulldozing (flow factor 0.5, repose 30 deg): of the soil one pass
+// presses down, half is raised beside the track, the volume kept to a
+// float's rounding, and no raised node stands above its outer neighbour by
+// more than the angle of repose allows.
+TEST(GroundMemoryTest, BulldozingRaisesTheFlowFactorsShareBesideTheTrack) {
+  const TyreModel model(EffectSet{Effect::kSoftSoil});
+  const double flow = 0.5;
+  const Terrain ground = sandSlab({-1, -1, 1, 1}, flow);
+  GroundMemory memory(ground);
+  SimWheel wheel = ishigamiWheel(memory);
+  wheel.center.x() = -0.5;
+  wheel.locked = true;
+  wheel.spin = 0.05 / (kRadiusM * 0.7);
+  for (int k = 0; k < 10000; ++k) {
+    wheel.velocity.x() = 0.05;
+    step(model, ground, kStepS, wheel);
+  }
+  double pressed = 0.0, raised = 0.0, steepest = 0.0;
+  const int n = static_cast<int>(std::lround(2.0 / kSpacingM));
+  const auto height = [&](int i, int j) {  // of the surface above the fresh one (m)
+    return -memory.at(-1.0 + i * kSpacingM, -1.0 + j * kSpacingM).plastic_sinkage;
+  };
+  for (int i = 0; i <= n; ++i) {
+    for (int j = 0; j <= n; ++j) {
+      const double h = height(i, j);
+      (h < 0.0 ? pressed : raised) += std::abs(h) * kSpacingM * kSpacingM;
+      // Outward across the track (y), beside it (|y| > b / 2).
+      const double y = -1.0 + j * kSpacingM;
+      if (std::abs(y) > 0.5 * kWidthM && j > 0 && j < n) {
+        const int out = y > 0.0 ? j + 1 : j - 1;
+        steepest = std::max(steepest, (h - height(i, out)) / kSpacingM);
+      }
+    }
+  }
+  EXPECT_GT(pressed, 0.0);
+  EXPECT_NEAR(raised, flow * pressed, 1e-5 * pressed);
+  EXPECT_LE(steepest, std::tan(30.0 * std::numbers::pi / 180.0) * 1.01);
+  RecordProperty("pressed_volume_m3", std::to_string(pressed));
+  RecordProperty("raised_volume_m3", std::to_string(raised));
+  RecordProperty("steepest_outer_slope", std::to_string(steepest));
 }
 
 // Outside its regions the ground forgets: a wheel rolling there meets the

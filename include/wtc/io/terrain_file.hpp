@@ -13,7 +13,8 @@
 //       translation: [0, 0, 0]      # optional placement (m)
 //       rotation: {axis: [0, 0, 1], degrees: 90}   # optional (or radians:)
 //   soil_regions:                   # optional: where soft ground remembers
-//     - {corners: [x0, y0, x1, y1], spacing: 0.02, memory_cap_mb: 2048}
+//     - {corners: [x0, y0, x1, y1], spacing: 0.02, memory_cap_mb: 2048,
+//        flow_factor: 0, repose_angle_deg: 30}    # bulldozing: off by default
 //
 // `material` may be left out when the file defines exactly one material.
 // Paths (a heightfield's or a mesh's `file`) are relative to the YAML

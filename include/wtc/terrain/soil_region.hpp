@@ -4,7 +4,9 @@
 // nodes keeps each point's plastic sinkage and the largest pressure it has
 // carried (wtc/tyre/ground_memory.hpp); elsewhere a soil forgets, each step
 // loading a fresh surface (part 1). The region is a rectangle in world x, y
-// over the base terrain, whose surface is the fresh one.
+// over the base terrain, whose surface is the fresh one. Where the scene
+// asks (flow_factor > 0), the soil a wheel presses down is partly raised
+// beside its track, as a berm no steeper than the angle of repose.
 #include <string>
 
 #include <Eigen/Core>
@@ -22,6 +24,13 @@ struct SoilRegion {
   /// The most the region may hold with every node touched (bytes): a
   /// region beyond it is refused before a run, not found out during one.
   double memory_cap_bytes = 2.0 * 1024 * 1024 * 1024;
+  /// Bulldozing: of the soil a wheel presses down, the fraction raised
+  /// beside its track ([0, 1]; 0, the default: it is compacted, as
+  /// Bekker's sinkage assumes), the rest compacted.
+  double flow_factor = 0.0;
+  /// The steepest slope raised soil keeps (deg, (0, 90)): beyond it, it
+  /// slides outward.
+  double repose_angle_deg = 30.0;
 };
 
 /// Throws InvalidInputError naming `where`, the field, its value and its
