@@ -44,6 +44,12 @@
 //       flat slab: <ground> a shipped soil (wtc::namedSoil), or hard (the same
 //       slab without a soil: the same run's baseline). Ishigami's wheel
 //       (r 0.09 m, b 0.11 m) 15 mm deep, rolling at 0.1 m/s with slip 0.2.
+//   WheelSoil/toyoura_sand_remembers_<s>/<pass>  the same on Toyoura sand
+//       whose slab is a soil region of spacing s (wtc::GroundMemory, issue
+//       55): first_pass, every step reading the ground ahead and pressing
+//       the nodes the lowest point passes (the lap of 30 m is not completed
+//       in a run); rut, after one untimed lap, 19 mm deep in the rut it left
+//       (every read a stored node).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -53,6 +59,7 @@
 #include <vector>
 
 #include <wtc/terrain/soil.hpp>
+#include <wtc/tyre/ground_memory.hpp>
 #include <wtc/tyre/effects.hpp>
 #include <wtc/terrain/heightfield.hpp>
 #include <wtc/terrain/terrain_primitives.hpp>
@@ -249,36 +256,62 @@ void wheelForcesOnly(benchmark::State& state, wtc::EffectSet effects) {
               wtc::bench::allocationCount() - allocations);
 }
 
-// A wheel rolling on a flat slab of `soil` (none: hard ground).
-void wheelSoil(benchmark::State& state, const std::string& soil) {
+// A wheel rolling on a flat slab of `soil` (none: hard ground), the slab a
+// soil region of `spacing` (m; 0: none), timed in its own rut from a lap
+// before when `rut`.
+void wheelSoil(benchmark::State& state, const std::string& soil, double spacing, bool rut) {
   wtc::Material material;
   if (!soil.empty()) material.soil = wtc::namedSoil(soil);
   wtc::TerrainBuilder builder;
   wtc::SlabParams slab;
   slab.size_x = slab.size_y = 40.0;
   wtc::addSlab(builder, slab, builder.addMaterial(material));
+  if (spacing > 0.0) {
+    wtc::SoilRegion region;
+    region.origin = {-20.0, -20.0};
+    region.size = {40.0, 40.0};
+    region.spacing = spacing;
+    builder.addSoilRegion(region);
+  }
   const wtc::Terrain terrain = std::move(builder).build();
+  wtc::GroundMemory memory(terrain);
   wtc::WheelDescription wheel;
   wheel.geometry.free_radius = 0.09;
   wheel.geometry.tread_width = 0.11;
   const wtc::TyreModel model(wtc::EffectSet::full().with(wtc::Effect::kSoftSoil));
   wtc::WheelState wheel_state;
+  if (spacing > 0.0) wheel_state.setGroundMemory(&memory);
   wtc::WheelMotion motion;
   const double speed = 0.1, slip = 0.2;
   motion.velocity = speed * kForward;
   motion.angular_velocity = speed / (wheel.geometry.free_radius * (1.0 - slip)) * kAxle;
   Vector3d centre{-15.0, 0.0, wheel.geometry.free_radius - 0.015};
-  for (auto _ : state) {
+  const auto roll = [&] {
     centre.x() = centre.x() > 15.0 ? -15.0 : centre.x() + speed * kStepSeconds;
-    const wtc::WheelForces& result = model.step(terrain, wheel, {centre, kAxle}, motion, kStepSeconds, wheel_state);
-    benchmark::DoNotOptimize(result.force);
+    return &model.step(terrain, wheel, {centre, kAxle}, motion, kStepSeconds, wheel_state);
+  };
+  if (rut) {
+    while (centre.x() <= 15.0) roll();
+    centre.z() = wheel.geometry.free_radius - 0.019;
+  }
+  for (auto _ : state) benchmark::DoNotOptimize(roll()->force);
+  if (spacing > 0.0) {
+    state.counters["touched_nodes"] = static_cast<double>(memory.touchedNodes());
+    state.counters["bytes_per_touched_node"] =
+        memory.touchedNodes() > 0 ? static_cast<double>(memory.bytes()) / static_cast<double>(memory.touchedNodes()) : 0;
   }
 }
 
 const bool kRegistered = [] {
-  benchmark::RegisterBenchmark("WheelSoil/hard", wheelSoil, std::string());
+  benchmark::RegisterBenchmark("WheelSoil/hard", wheelSoil, std::string(), 0.0, false);
   for (const std::string& soil : wtc::soilNames()) {
-    benchmark::RegisterBenchmark(("WheelSoil/" + soil).c_str(), wheelSoil, soil);
+    benchmark::RegisterBenchmark(("WheelSoil/" + soil).c_str(), wheelSoil, soil, 0.0, false);
+  }
+  for (const auto& [name, spacing] : {std::pair{"2cm", 0.02}, std::pair{"1cm", 0.01}}) {
+    for (const bool rut : {false, true}) {
+      const std::string label = std::string("WheelSoil/toyoura_sand_remembers_") + name + (rut ? "/rut" : "/first_pass");
+      benchmark::RegisterBenchmark(label.c_str(), wheelSoil, std::string("toyoura_sand"), spacing, rut);
+    }
   }
   // minimal, each effect alone on top of it (enumerator order), full.
   std::vector<std::pair<std::string, wtc::EffectSet>> sets = {{"minimal", wtc::EffectSet::minimal()}};

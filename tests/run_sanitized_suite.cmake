@@ -41,7 +41,9 @@ set(ENV{LSAN_OPTIONS} "suppressions=${SOURCE_DIR}/tests/sanitizer_suppressions.t
 # S-curve and lowest-friction runs; the ledge climb's step out of reach for
 # its two climbs; the event scenes' turn in place for the skid steer's at
 # every step; the rover driving straight for its climb; GroundMemoryTest's
-# ruts stepped without an engine for the test bed's ruts in both engines).
+# ruts stepped without an engine for the test bed's ruts in both engines;
+# SoilDynamicsTest's carriage and the skid-steered cart on sand for the test
+# bed's twelve runs).
 # Each of these ran
 # 9-45 s unsanitized, several times that here. The replay page's tests
 # (label page) stay out too: chromium runs the page's JavaScript, which the
@@ -59,7 +61,8 @@ set(long_runs "VehicleScenesTest.EveryShippedSceneRunsShortenedInEveryEngineWith
               "LedgeClimbTest.ClimbsTwoHeightsInBothEnginesAndMeasuresEachStep"
               "VehicleScenesTest.ASkidSteerTurnsInPlaceAlikeAtEveryStepInEveryEngine"
               "RoverScenesTest.ClimbsALowStepInBothEnginesAndModes"
-              "SoilTestBedTest.TheRearWheelsRunInTheFrontWheelsRutsAsTheModelPredicts")
+              "SoilTestBedTest.TheRearWheelsRunInTheFrontWheelsRutsAsTheModelPredicts"
+              "SoilTestBedTest.EachWheelSettlesAtTheSoilsSteadyStateInBothEngines")
 list(JOIN long_runs "|" long_runs)
 execute_process(COMMAND ${CMAKE_CTEST_COMMAND} --test-dir ${BUILD_DIR} -j2 --output-on-failure -E "${long_runs}"
                         -LE "cluster|page" RESULT_VARIABLE rc)

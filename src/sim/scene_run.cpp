@@ -17,6 +17,7 @@
 #include "wtc/sim/sim_constants.hpp"
 #include "wtc/sim/start_velocity.hpp"
 #include "wtc/sim/step_count.hpp"
+#include "wtc/tyre/ground_memory.hpp"
 
 namespace wtc::sim {
 namespace {
@@ -343,6 +344,13 @@ RunSummary SceneRun::summary() const {
                                  " those of a sinkage of one radius)");
     }
     ++wheel_index;
+  }
+  // What the ground's memory holds at the end (soil regions: docs/soft-soil.md).
+  if (!v.wheels().empty()) {
+    if (const GroundMemory* memory = engine.wheelState(v.wheels().front()).groundMemory()) {
+      summary.fields["soil_memory_touched_nodes"] = static_cast<double>(memory->touchedNodes());
+      summary.fields["soil_memory_bytes"] = static_cast<double>(memory->bytes());
+    }
   }
   // What the engine's solver said instead of printing it (ODE's LCP giving up
   // in a step: docs/ode-plugin.md).

@@ -175,7 +175,9 @@ TEST(SoilTestBedTest, TheRearWheelsRunInTheFrontWheelsRutsAsTheModelPredicts) {
         rut.rut = pressedSoil(soil, width, SoilMemory{}, front_sinkage);
         const SoilSteadyState want = steadyWheelOnSoil(soil, radius, width, m.load, i, 0.0, &rut);
         EXPECT_NEAR(m.sinkage, want.sinkage, 0.03 * want.sinkage) << label;
-        EXPECT_GT(m.sinkage, steadyWheelOnSoil(soil, radius, width, m.load, i).sinkage) << label << ": in a rut";
+        const double on_fresh = steadyWheelOnSoil(soil, radius, width, m.load, i).sinkage;
+        EXPECT_GT(m.sinkage, on_fresh) << label << ": in a rut";
+        RecordProperty(std::string(engine) + "_" + mode + "_rear_on_fresh_sand_mm", std::to_string(on_fresh * 1e3));
         worst_rear = std::max(worst_rear, std::abs(m.sinkage / want.sinkage - 1));
         RecordProperty(std::string(engine) + "_" + mode + "_rear_sinkage_mm", std::to_string(m.sinkage * 1e3));
         RecordProperty(std::string(engine) + "_" + mode + "_rear_predicted_mm", std::to_string(want.sinkage * 1e3));

@@ -76,7 +76,9 @@ struct RunSummary {
   /// The scene's own figures: distance_m (horizontal, first body),
   /// final_speed_mps, yaw_change_deg, max_tilt_deg; with a hitch,
   /// hitch_force_peak_N (horizontal) and hitch_force_mean_x_N (along the
-  /// tug, positive pulling); and the controller's (Controller::summarize).
+  /// tug, positive pulling); on ground that remembers,
+  /// soil_memory_touched_nodes and soil_memory_bytes (GroundMemory at the
+  /// end); and the controller's (Controller::summarize).
   std::map<std::string, double> fields;
   std::map<std::string, double> parameters;  ///< The scene's, after overrides.
 };
