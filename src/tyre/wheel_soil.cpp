@@ -10,6 +10,7 @@
 
 #include "wtc/base/constants.hpp"
 #include "wtc/base/error.hpp"
+#include "wtc/base/tolerances.hpp"
 
 namespace wtc {
 namespace {
@@ -133,7 +134,7 @@ double bulldozing(const Soil& soil, const Arc& a) {
 // At the fresh surface's entry theta_f = acos(1 - depth / r), Z = 0: where
 // the ground there is fresh (or raised) the rim enters at theta_f, as on
 // part 1's surface. Otherwise the search steps in from theta_f to the first
-// crossing and closes on it by regula falsi (Illinois), to 1e-9 r in z. The
+// crossing and closes on it by regula falsi (Illinois; tolerances.hpp). The
 // outermost crossing, not a fixed point of Z(theta_1) = z_p: under a wheel
 // at rest in its own hollow z_p follows the rim at sigma / k_u above it, and
 // a fixed-point iteration drifted along it toward the bottom (a wheel half
@@ -148,7 +149,7 @@ double rememberedEntrySinkage(const WheelSoilState& state) {
   };
   const double fresh = std::acos(1.0 - std::min(depth, r) / r);
   double outer = fresh, g_outer = g(outer);
-  if (g_outer >= -1e-12 * r) return depth;
+  if (g_outer >= -tolerance::kSoilFreshEntryRelative * r) return depth;
   double inner = outer, g_inner = g_outer;
   for (int k = 1; k <= kEntrySteps && g_inner <= 0.0; ++k) {
     outer = inner;
@@ -157,7 +158,7 @@ double rememberedEntrySinkage(const WheelSoilState& state) {
     g_inner = g(inner);
   }
   if (g_inner <= 0.0) return 0.0;  // above the remembered surface all along the arc
-  for (int k = 0, side = 0; k < kEntryRefinements && outer - inner > 1e-9; ++k) {
+  for (int k = 0, side = 0; k < kEntryRefinements && outer - inner > tolerance::kSoilEntryRad; ++k) {
     const double theta = (inner * g_outer - outer * g_inner) / (g_outer - g_inner);
     const double g_theta = g(theta);
     if (g_theta > 0.0) {
@@ -171,7 +172,7 @@ double rememberedEntrySinkage(const WheelSoilState& state) {
       if (side == -1) g_inner *= 0.5;
       side = -1;
     }
-    if (std::abs(g_theta) < 1e-9 * r) break;
+    if (std::abs(g_theta) < tolerance::kSoilEntryRelative * r) break;
   }
   return r * (1.0 - std::cos(inner));
 }

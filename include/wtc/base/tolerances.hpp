@@ -79,6 +79,16 @@ inline constexpr double kMinAxleNorm = 1e-9;
 /// angle between them; src/tyre/soil_contact.cpp).
 inline constexpr double kWheelOnItsSideSine = 1e-9;
 
+/// Where the ground remembers, the rim's entry (src/tyre/wheel_soil.cpp):
+/// at the fresh surface's entry a rim within this fraction of its radius
+/// above the remembered surface meets it there, as on fresh ground (the
+/// round trip acos / cos leaves ~1e-16 r), and the search for an entry
+/// inside stops within kSoilEntryRad of the crossing or where the rim is
+/// within kSoilEntryRelative of the radius of the remembered surface.
+inline constexpr double kSoilFreshEntryRelative = 1e-12;
+inline constexpr double kSoilEntryRelative = 1e-9;
+inline constexpr double kSoilEntryRad = 1e-9;
+
 }  // namespace wtc::tolerance
 
 namespace wtc::tolerance {
