@@ -5,8 +5,6 @@
 #include <bit>
 #include <cmath>
 
-#include "wtc/base/error.hpp"
-
 namespace wtc::detail {
 
 namespace {
@@ -28,7 +26,6 @@ std::size_t hashSlot(std::uint32_t key, std::size_t mask) {
 constexpr std::size_t kFirstSlots = 64;
 
 }  // namespace
-
 
 double SoilGrid::fullBytes(double nodes) {
   // A tile, and its index slot at the least full the index gets (a quarter).

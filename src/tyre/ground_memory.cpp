@@ -13,6 +13,13 @@ namespace wtc {
 
 struct GroundMemory::Impl {
   std::vector<detail::SoilGrid> grids;
+  /// The region's grid holding world (x, y), or null outside every region.
+  detail::SoilGrid* gridAt(double x, double y) {
+    for (detail::SoilGrid& grid : grids) {
+      if (grid.contains(x, y)) return &grid;
+    }
+    return nullptr;
+  }
 };
 
 GroundMemory::GroundMemory(const Terrain& terrain) : impl_(std::make_unique<Impl>()) {
@@ -26,10 +33,8 @@ GroundMemory& GroundMemory::operator=(GroundMemory&&) noexcept = default;
 std::size_t GroundMemory::regionCount() const { return impl_->grids.size(); }
 
 SoilMemory GroundMemory::at(double x, double y) const {
-  for (const detail::SoilGrid& grid : impl_->grids) {
-    if (grid.contains(x, y)) return detail::memoryOf(grid.sample(x, y));
-  }
-  return {};
+  const detail::SoilGrid* grid = impl_->gridAt(x, y);
+  return grid != nullptr ? detail::memoryOf(grid->sample(x, y)) : SoilMemory{};
 }
 
 std::size_t GroundMemory::touchedNodes() const {
@@ -50,12 +55,7 @@ void GroundMemory::clear() {
 
 namespace detail {
 
-SoilGrid* GroundMemoryAccess::gridAt(GroundMemory& memory, double x, double y) {
-  for (SoilGrid& grid : memory.impl_->grids) {
-    if (grid.contains(x, y)) return &grid;
-  }
-  return nullptr;
-}
+SoilGrid* GroundMemoryAccess::gridAt(GroundMemory& memory, double x, double y) { return memory.impl_->gridAt(x, y); }
 
 namespace {
 
@@ -126,7 +126,7 @@ void pressNodes(SoilGrid& grid, const Soil& soil, const RimPress& p) {
   const int j1 = std::min(grid.rows() - 1, static_cast<int>(std::floor(hi.y())));
   for (int j = j0; j <= j1; ++j) {
     for (int i = i0; i <= i1; ++i) {
-      const Eigen::Vector2d d = spec.origin + spec.spacing * Eigen::Vector2d(i, j) - p.bottom;
+      const Eigen::Vector2d at = spec.origin + spec.spacing * Eigen::Vector2d(i, j), d = at - p.bottom;
       const double s = d.dot(p.travel), across = d.dot(side);
       if (std::abs(across) > half || s > ahead || s < behind) continue;
       const double depth = p.depth - (r - std::sqrt(std::max(0.0, r * r - s * s)));
@@ -139,8 +139,7 @@ void pressNodes(SoilGrid& grid, const Soil& soil, const RimPress& p) {
       const double drop = static_cast<double>(pressed.plastic_sinkage) - node.plastic_sinkage;
       if (spec.flow_factor > 0.0 && drop > 0.0) {
         const Eigen::Vector2d outward = (across >= 0.0 ? 1.0 : -1.0) * side;
-        bulldoze(grid, spec.origin + spec.spacing * Eigen::Vector2d(i, j) + (half + spec.spacing - std::abs(across)) * outward,
-                 outward, spec.flow_factor * drop);
+        bulldoze(grid, at + (half + spec.spacing - std::abs(across)) * outward, outward, spec.flow_factor * drop);
       }
     }
   }

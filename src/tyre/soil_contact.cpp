@@ -25,10 +25,9 @@
 // after it meet the rut it leaves.
 #include "soil_contact.hpp"
 
-#include <optional>
-
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "ground_memory_access.hpp"
 #include "wtc/base/tolerances.hpp"
