@@ -62,7 +62,8 @@ set(long_runs "VehicleScenesTest.EveryShippedSceneRunsShortenedInEveryEngineWith
               "VehicleScenesTest.ASkidSteerTurnsInPlaceAlikeAtEveryStepInEveryEngine"
               "RoverScenesTest.ClimbsALowStepInBothEnginesAndModes"
               "SoilTestBedTest.TheRearWheelsRunInTheFrontWheelsRutsAsTheModelPredicts"
-              "SoilTestBedTest.EachWheelSettlesAtTheSoilsSteadyStateInBothEngines")
+              "SoilTestBedTest.EachWheelSettlesAtTheSoilsSteadyStateInBothEngines"
+              "SoilVehiclesTest.EachSoilSceneSucceedsAndTheGroundCarriesTheVehicleInBothEnginesAndModes")
 list(JOIN long_runs "|" long_runs)
 execute_process(COMMAND ${CMAKE_CTEST_COMMAND} --test-dir ${BUILD_DIR} -j2 --output-on-failure -E "${long_runs}"
                         -LE "cluster|page" RESULT_VARIABLE rc)

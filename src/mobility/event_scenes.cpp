@@ -17,7 +17,6 @@
 namespace wtc::mobility {
 namespace {
 
-constexpr double kRampSeconds = 1.0;      // drives ramp to their rate over this (s)
 constexpr double kMarginM = 0.5;          // ground beyond what the run needs, each way (m)
 constexpr double kPieceThicknessM = 0.5;  // every piece's thickness (m)
 constexpr double kRunsOnFactor = 1.5;     // a search run lasts this many times its nominal travel time
@@ -231,12 +230,12 @@ std::string eventScene(const EventVehicle& v, const std::string& event, double v
     const double far = step ? 0.0 : value;
     const double travel = approach + length + far + kMarginM;
     const double duration = roundDuration(
-        std::max(step ? s.step.duration_s : s.gap.duration_s, kRunsOnFactor * travel / speed + kRampSeconds));
+        std::max(step ? s.step.duration_s : s.gap.duration_s, kRunsOnFactor * travel / speed + kEventRampS));
     const bool own = step && s.step.vehicle_controller && hasClimbingController(v.description);
     // The ground past the face (the far edge) holds the whole travel and, for a plain drive that never
     // stops, all it can roll in the run: its front at most speed (duration - ramp / 2) from the start,
     // rolling without slip (a short vehicle's run is long: the settings' duration is the robot's climb).
-    const double reach = own ? 0.0 : speed * (duration - 0.5 * kRampSeconds) - approach - far + kMarginM;
+    const double reach = own ? 0.0 : speed * (duration - 0.5 * kEventRampS) - approach - far + kMarginM;
     const double beyond = std::max(length + 2.0 + travel, reach);
     text = head(v, event, value,
                 step ? "The tallest step: a ledge of " + num(value) + " m, " +
@@ -262,7 +261,7 @@ std::string eventScene(const EventVehicle& v, const std::string& event, double v
     if (own) {
       text += "controller: {type: climb, approach_speed: " + num(speed) + "}\n";
     } else {
-      text += schedule(v, "[[0, 0], [" + num(kRampSeconds) + ", " + num(speed / r) + "]]");
+      text += schedule(v, "[[0, 0], [" + num(kEventRampS) + ", " + num(speed / r) + "]]");
     }
     // The climbing controller stops once on top: every wheel's centre above the top (equal radii, as the
     // controller's robot has); a plain drive keeps driving: the rearmost wheel past the face (the far edge).
@@ -324,7 +323,7 @@ std::string eventScene(const EventVehicle& v, const std::string& event, double v
             "}\n";
     text += placement(v, Eigen::Vector3d(x_s, 0.0, x_s * std::tan(theta)), R);
     if (grade) {
-      text += schedule(v, "[[0, 0], [" + num(kRampSeconds) + ", " + num(s.grade.wheel_rate_radps) + "]]");
+      text += schedule(v, "[[0, 0], [" + num(kEventRampS) + ", " + num(s.grade.wheel_rate_radps) + "]]");
       text +=
           "success: {min_advance: " + num(progress * std::cos(theta)) + ", max_tilt_deg: " + num(value + 30.0) + "}\n";
     } else {
@@ -387,7 +386,7 @@ std::string eventScene(const EventVehicle& v, const std::string& event, double v
     text += placement(v, Eigen::Vector3d::Zero(), I);
     std::vector<std::string> left, right;
     for (const WheelInfo& w : v.statics.wheels) (w.position.y() > 0.0 ? left : right).push_back(w.name);
-    const std::string ramp = "[[0, 0], [" + num(kRampSeconds) + ", ";
+    const std::string ramp = "[[0, 0], [" + num(kEventRampS) + ", ";
     text += "controller:\n  type: schedule\n  schedules:\n";
     text +=
         "    - {drives: " + list(left) + ", mode: velocity, points: " + ramp + num(-s.turn.wheel_rate_radps) + "]]}\n";

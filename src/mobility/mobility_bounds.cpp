@@ -42,6 +42,16 @@ double bisect(F f, double lo, double hi) {
 
 double stepHeight(double r, double alpha) { return r * (1.0 - std::cos(std::min(alpha, std::numbers::pi / 2))); }
 
+// A single-body vehicle facing up a grade tips back over its rearmost
+// wheels when its centre of mass passes above them: tan theta = (x_com -
+// x_rear) / z_com (pi / 2 for a vehicle of several bodies).
+double tipGrade(const VehicleStatics& v) {
+  if (v.roots.size() != 1) return std::numbers::pi / 2;
+  double rear = v.wheels.front().position.x();
+  for (const WheelInfo& w : v.wheels) rear = std::min(rear, w.position.x());
+  return std::atan2(v.com.x() - rear, v.com.z());
+}
+
 Bound grade(const VehicleStatics& v, const Material& g, double peak) {
   const double weight = v.weight();
   const double r0 = v.wheels.front().r0_ratio;
@@ -72,12 +82,7 @@ Bound grade(const VehicleStatics& v, const Material& g, double peak) {
   const double kt = torque / (r_d * weight), a = g.rolling_resistance * r0;
   const double by_torque =
       kt < std::hypot(1.0, a) ? std::asin(kt / std::hypot(1.0, a)) - std::atan(a) : std::numbers::pi / 2;
-  double tip = std::numbers::pi / 2;
-  if (v.roots.size() == 1) {
-    double rear = v.wheels.front().position.x();
-    for (const WheelInfo& w : v.wheels) rear = std::min(rear, w.position.x());
-    tip = std::atan2(v.com.x() - rear, v.com.z());
-  }
+  const double tip = tipGrade(v);
   Bound b;
   b.value = std::min({traction, by_torque, tip}) * kDegPerRad;
   b.governs = traction <= by_torque && traction <= tip ? "traction" : (by_torque <= tip ? "drive torque" : "tip-over");
@@ -268,6 +273,76 @@ std::optional<Bound> turn(const VehicleStatics& v, const Material& g, const Turn
   return b;
 }
 
+// A free wheel on a soil rolls on its bearing at the slip where the soil's
+// torque on it is zero (it skids a little: T(-1) < 0 <= T(0)); there it
+// pulls its compaction resistance (DP < 0).
+double freeWheelPull(const Soil& soil, const WheelInfo& w, double load) {
+  auto at = [&](double slip) { return steadyWheelOnSoil(soil, w.radius_m, w.width_m, load, slip).forces; };
+  const double slip = bisect([&](double i) { return at(i).torque; }, -1.0, 0.0);
+  return at(slip).drawbar_pull;
+}
+
+// The steepest grade climbed on soft soil (docs/soft-soil.md, the grade on
+// sand). Facing up theta, each wheel carries its share N_k(theta) of W cos
+// theta and more (wheelLoads); the driven wheels, at one slip i, pull
+// DP(N_k, i) from the soil's steady state, the free ones their compaction
+// resistance; the vehicle climbs while sum DP >= W sin theta. The event
+// calls it climbed when the vehicle advances min_progress along the slope
+// in its duration, while its wheels turn omega (T - ramp / 2) (the drive's
+// rate limit clamps omega): the slip may be at most i_max = 1 - d / (r
+// omega (T - ramp / 2)). A drive at its torque limit holds the slip
+// below that. Tip-over as on hard ground.
+Bound soilGrade(const VehicleStatics& v, const Soil& soil, const GradeSettings& s) {
+  double rate = s.wheel_rate_radps, r = 0.0;
+  for (const WheelInfo& w : v.wheels) {
+    if (!w.driven) continue;
+    if (w.max_rate_radps > 0.0) rate = std::min(rate, w.max_rate_radps);
+    r = w.radius_m;
+  }
+  Bound b;
+  const double travel = r * rate * (s.duration_s - 0.5 * kEventRampS);
+  const double slip_max = 1.0 - s.min_progress_m / travel;
+  if (!(slip_max > 0.0)) {
+    b.governs = "the drives' rate";
+    b.detail = "the wheels roll " + num(travel) + " m in the run, less than min_progress " + num(s.min_progress_m) +
+               " m";
+    return b;
+  }
+  // Sum DP - W sin theta at slip i, or nullopt where a drive's torque is past its limit.
+  const auto margin = [&](double theta, double i) -> std::optional<double> {
+    const Loads n = wheelLoads(v, theta);
+    if (!n.equilibrium) return -v.weight();
+    double pull = 0.0;
+    for (std::size_t k = 0; k < v.wheels.size(); ++k) {
+      const WheelInfo& w = v.wheels[k];
+      const double load = n.normal_N[k];
+      if (!(load > 0.0)) continue;
+      if (!w.driven) {
+        pull += freeWheelPull(soil, w, load);
+        continue;
+      }
+      const WheelSoilForces f = steadyWheelOnSoil(soil, w.radius_m, w.width_m, load, i).forces;
+      if (w.max_torque_Nm > 0.0 && f.torque > w.max_torque_Nm) return std::nullopt;
+      pull += f.drawbar_pull;
+    }
+    return pull - v.weight() * std::sin(theta);
+  };
+  // The largest slip the drives' torques allow on theta, up to slip_max.
+  const auto slipOn = [&](double theta) {
+    if (margin(theta, slip_max)) return slip_max;
+    return bisect([&](double i) { return margin(theta, i) ? 1.0 : -1.0; }, 0.0, slip_max);
+  };
+  const double traction = bisect([&](double theta) { return margin(theta, slipOn(theta)).value_or(-v.weight()); }, 0.0, kSearchTopRad);
+  const double slip = slipOn(traction), tip = tipGrade(v);
+  b.value = std::min(traction, tip) * kDegPerRad;
+  b.governs = tip < traction ? "tip-over" : (slip < slip_max ? "drive torque on " : "the pull of ") + soil.name;
+  b.detail = "sum DP(N_k(theta), i) = W sin theta at i = " + num(slip) + " (i_max " + num(slip_max) +
+             ": min_progress " + num(s.min_progress_m) + " m of " + num(travel) + " m of rim travel): " +
+             num(traction * kDegPerRad) + " deg" + (v.roots.size() == 1 ? ", tip-over " + num(tip * kDegPerRad) +
+             " deg" : "");
+  return b;
+}
+
 // DP/W and sum T / (r_f W) on soft soil: each driven wheel at the soil's
 // steady state under its static load at slip i (steadyWheelOnSoil), each
 // free wheel at the slip where the soil's torque on it is zero (it rolls
@@ -288,12 +363,7 @@ std::vector<DrawbarPoint> soilDrawbar(const VehicleStatics& v, const Soil& soil,
         torque += f.torque / w.radius_m;
         continue;
       }
-      double lo = -1.0, hi = 0.0;  // T(lo) < 0 <= T(hi): a free wheel skids a little
-      for (int step = 0; step < 60; ++step) {
-        const double mid = 0.5 * (lo + hi);
-        (at(mid).torque < 0.0 ? lo : hi) = mid;
-      }
-      pull += at(0.5 * (lo + hi)).drawbar_pull;
+      pull += freeWheelPull(soil, w, load);
     }
     points.push_back({.slip = i, .dp_per_weight = pull / v.weight(), .torque_coefficient = torque / v.weight()});
   }
@@ -308,7 +378,18 @@ VehicleBounds computeBounds(const VehicleStatics& v, const MobilitySettings& set
   const Material& g = settings.ground;
   const double peak = tractionPeak(g);
   VehicleBounds out;
-  out.grade_deg = grade(v, g, peak);
+  // On a soil the grade's bound costs a steady state per wheel per trial
+  // grade and slip, and a soil too weak for the vehicle refuses it: made
+  // only when the event is asked for.
+  const bool grade_asked =
+      std::find(settings.events.begin(), settings.events.end(), "grade") != settings.events.end();
+  if (!g.soil) {
+    out.grade_deg = grade(v, g, peak);
+  } else if (grade_asked) {
+    out.grade_deg = soilGrade(v, *g.soil, settings.grade);
+  } else {
+    out.grade_deg.governs = "not computed: the grade event was not asked for on this soil";
+  }
   out.parked_deg = parked(v, peak);
   sideSlope(v, peak, out);
   stepAndGap(v, g, peak, out.step_m, out.gap_m);

@@ -284,13 +284,15 @@ void validate(const MobilitySettings& settings) {
     if (const std::string p = slipProblem(i); !p.empty()) throw InvalidInputError(where + "drawbar.slips: " + p);
   }
   if (copy.drawbar.slips.empty()) throw InvalidInputError(where + "drawbar.slips: none");
-  // On soft soil (part 1, docs/soft-soil.md) the drawbar event's bound is the
-  // soil's steady state; the other events' bounds come from the slip law.
+  // On soft soil (docs/soft-soil.md) the drawbar and grade events' bounds
+  // come from the soil's steady state; the other events' come from the slip
+  // law, which a soil replaces.
   if (copy.ground.soil) {
     for (const std::string& e : copy.events) {
-      if (e != "drawbar") {
+      if (e != "drawbar" && e != "grade") {
         throw InvalidInputError(where + "events: '" + e + "' on a soil ground (" + copy.ground.soil->name +
-                                "): on soft soil wtc-mobility runs the drawbar event only (docs/soft-soil.md)");
+                                "): on soft soil wtc-mobility runs the drawbar and grade events only "
+                                "(docs/soft-soil.md)");
       }
     }
     for (const std::string& m : copy.modes) {

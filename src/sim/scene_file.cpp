@@ -447,7 +447,8 @@ sim::Scene readSceneFile(const std::filesystem::path& path, std::span<const Over
   if (const auto s = YamlReader::get(root, "success")) {
     in.requireMap(*s, "success");
     in.checkKeys(
-        *s, {"min_distance", "max_distance", "min_advance", "max_final_speed", "max_tilt_deg", "min_wheel_height"});
+        *s, {"min_distance", "max_distance", "min_advance", "max_final_speed", "max_tilt_deg", "min_wheel_height",
+             "min_turn_deg"});
     if (const auto d = YamlReader::get(*s, "min_distance")) scene.success.min_distance = in.number(*d, "min_distance");
     if (const auto d = YamlReader::get(*s, "max_distance")) scene.success.max_distance = in.number(*d, "max_distance");
     if (const auto d = YamlReader::get(*s, "min_advance")) scene.success.min_advance = in.number(*d, "min_advance");
@@ -458,6 +459,7 @@ sim::Scene readSceneFile(const std::filesystem::path& path, std::span<const Over
     if (const auto d = YamlReader::get(*s, "min_wheel_height")) {
       scene.success.min_wheel_height = in.number(*d, "min_wheel_height");
     }
+    if (const auto d = YamlReader::get(*s, "min_turn_deg")) scene.success.min_turn_deg = in.number(*d, "min_turn_deg");
   }
   return scene;
 }

@@ -448,6 +448,10 @@ RunSummary SceneRun::summary() const {
     if (c.min_wheel_height && !(lowest_wheel >= *c.min_wheel_height)) {
       fail("min_wheel_height", *c.min_wheel_height, lowest_wheel, "m", "the lowest wheel centre at the end");
     }
+    const double turned = std::abs(summary.fields.at("yaw_change_deg"));
+    if (c.min_turn_deg && !(turned >= *c.min_turn_deg)) {
+      fail("min_turn_deg", *c.min_turn_deg, turned, "deg", "about the vertical, either way");
+    }
   }
   summary.success = failed.empty();
   return summary;

@@ -39,8 +39,8 @@ Soil make(const char* name, double k_c, double k_phi, double n, double cohesion,
   return soil;
 }
 
-const std::array<Soil, 4>& catalog() {
-  static const std::array<Soil, 4> soils = {
+const std::array<Soil, 5>& catalog() {
+  static const std::array<Soil, 5> soils = {
       // Toyoura sand as Ishigami's group measured it in their single-wheel
       // test bed: Ishigami, Mizuuchi & Yoshida, "Terramechanics-based
       // analysis on locomotion mechanics of wheeled mobile robots (part 1)",
@@ -67,6 +67,14 @@ const std::array<Soil, 4>& catalog() {
       // Curiosity-on-SCM demo: n 1, k_c 1.4 kN/m^(n+1), k_phi 820 kN/m^(n+2),
       // c 0.17 kPa, phi 35 deg, K 1.78 cm); theta_m as Toyoura sand's.
       make("lunar_regolith", 1.4e3, 820e3, 1.0, 170.0, 35.0, 0.0178, 0.0178, 0.40, 0.15, 0.0, 2e8),
+      // Sandy loam at 15 % moisture (Land Locomotion Laboratory): Wong,
+      // Theory of Ground Vehicles, the same table (n 0.7, k_c 5.27
+      // kN/m^(n+1), k_phi 1515.04 kN/m^(n+2), c 1.72 kPa, phi 29 deg); K 2
+      // cm (assumed, as dry sand's; Chrono's SCM demo takes the same);
+      // theta_m Wong & Reece 1967's compact sand (c_1 0.43, c_2 0.32,
+      // assumed: they give none for a loam); k_u as dry sand's, whose k_phi
+      // it shares.
+      make("sandy_loam", 5.27e3, 1515.04e3, 0.7, 1.72e3, 29.0, 0.02, 0.02, 0.43, 0.32, 0.0, 3.5e8),
   };
   return soils;
 }

@@ -6,9 +6,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <numbers>
 #include <string>
 
 #include "wtc/base/error.hpp"
+#include "wtc/mobility/mobility_settings.hpp"
+#include "wtc/mobility/vehicle_statics.hpp"
 #include "wtc/tyre/wheel_soil.hpp"
 #include "wtc/vehicle/vehicle_file.hpp"
 
@@ -119,13 +123,46 @@ TEST(MobilityBoundsTest, OnSoftSoilTheDrawbarBoundIsTheSoilsSteadyState) {
   EXPECT_NO_THROW(validate(sand));
   MobilitySettings grade = sand;
   grade.events = {"drawbar", "grade"};
-  EXPECT_THROW(validate(grade), InvalidInputError);
+  EXPECT_NO_THROW(validate(grade));
+  MobilitySettings parked = sand;
+  parked.events = {"drawbar", "parked"};
+  EXPECT_THROW(validate(parked), InvalidInputError);
   MobilitySettings implicit = sand;
   implicit.modes = {"force", "constraint", "implicit"};
   EXPECT_NO_THROW(validate(implicit));
   MobilitySettings native = sand;
   native.modes = {"engine_cylinder"};
   EXPECT_THROW(validate(native), InvalidInputError);
+}
+
+// On soft soil the grade's bound is where the driven wheels' pull at the
+// largest slip the event allows balances the weight down the grade: the
+// test cart (four driven wheels, r 0.09 m, drives up to 20 rad/s) at
+// 2 rad/s for 6 s must advance 0.3 m, so its rims roll 0.09 x 2 x 5.5 =
+// 0.99 m and i_max = 1 - 0.3 / 0.99; on the bound's grade the soil's
+// steady state at each wheel's load there pulls exactly W sin theta.
+TEST(MobilityBoundsTest, OnSoftSoilTheGradeBoundBalancesTheSoilsPullAgainstTheWeight) {
+  MobilitySettings sand;
+  sand.ground.soil = namedSoil("toyoura_sand");
+  sand.events = {"grade"};
+  sand.grade.wheel_rate_radps = 2.0;
+  sand.grade.min_progress_m = 0.3;
+  sand.grade.duration_s = 6.0;
+  const VehicleStatics cart = shipped("soil_test_cart.yaml");
+  const double slip = 1.0 - 0.3 / (0.09 * 2.0 * (6.0 - 0.5 * kEventRampS));
+  const Bound b = computeBounds(cart, sand).grade_deg;
+  const double theta = b.value * std::numbers::pi / 180.0;
+  ASSERT_GT(theta, 0.0);
+  double pull = 0.0;
+  const Loads n = wheelLoads(cart, theta);
+  for (std::size_t k = 0; k < cart.wheels.size(); ++k) {
+    pull += steadyWheelOnSoil(*sand.ground.soil, 0.09, 0.11, n.normal_N[k], slip).forces.drawbar_pull;
+  }
+  EXPECT_NEAR(pull, cart.weight() * std::sin(theta), 1e-6 * cart.weight()) << b.detail;
+  EXPECT_EQ(b.governs, "the pull of toyoura_sand") << b.detail;
+  // A run too short to make the progress even without slip climbs nothing.
+  sand.grade.duration_s = 1.5;
+  EXPECT_EQ(computeBounds(cart, sand).grade_deg.value, 0.0);
 }
 
 TEST(VehicleStaticsTest, AVehicleWithoutWheelsIsRefusedByName) {

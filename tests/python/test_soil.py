@@ -31,7 +31,7 @@ def forces(soil, z, slip):
 
 def test_the_shipped_soils_are_listed_with_their_fields():
     soils = wtc.soils()
-    assert sorted(soils) == ["dry_sand", "lete_sand", "lunar_regolith", "toyoura_sand"]
+    assert sorted(soils) == ["dry_sand", "lete_sand", "lunar_regolith", "sandy_loam", "toyoura_sand"]
     assert soils["toyoura_sand"]["friction_angle_deg"] == 37.2
     assert soils["lete_sand"]["n"] == 0.79
 

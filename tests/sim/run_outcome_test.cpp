@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cmath>
 #include <filesystem>
 
 #include "scratch_path.hpp"
@@ -56,6 +57,19 @@ TEST(RunOutcomeTest, ASuccessHasNoFailedCriteriaAndAFailureNamesWhatItMissed) {
   EXPECT_EQ(f.unit, "m");
   EXPECT_THAT(describe(f), ::testing::StartsWith("min_distance: 0."));
   EXPECT_THAT(describe(f), HasSubstr(" m (limit 3 m)"));
+  // Case: the robot turning in place for 1.2 s (wheels ramped over the first second) asked to turn 90 deg:
+  // min_turn_deg, with the |yaw change| it made; asked for less than it made, it passes.
+  const RunSummary turn = run(scene("robot_turn_in_place", {{"duration", "1.2"}, {"success.min_turn_deg", "90"}}));
+  const FailedCriterion* short_turn = find(turn, "min_turn_deg");
+  ASSERT_NE(short_turn, nullptr);
+  ASSERT_TRUE(short_turn->measured);
+  EXPECT_EQ(*short_turn->measured, std::abs(turn.fields.at("yaw_change_deg")));
+  EXPECT_GT(*short_turn->measured, 0.0);
+  EXPECT_EQ(short_turn->unit, "deg");
+  const double made = *short_turn->measured;
+  const RunSummary enough = run(scene("robot_turn_in_place", {{"duration", "1.2"},
+                                                              {"success.min_turn_deg", std::to_string(0.5 * made)}}));
+  EXPECT_EQ(find(enough, "min_turn_deg"), nullptr);
 }
 
 TEST(RunOutcomeTest, AnInterruptedRunSaysWhenItStopped) {

@@ -83,7 +83,7 @@ WheelSoilState at(double z, double i, double beta = 0.0) {
 }
 
 TEST(WheelSoilTest, EveryShippedSoilIsValidAndNamed) {
-  ASSERT_EQ(soilNames().size(), 4u);
+  ASSERT_EQ(soilNames().size(), 5u);
   for (const std::string& name : soilNames()) {
     const std::optional<Soil> soil = namedSoil(name);
     ASSERT_TRUE(soil) << name;

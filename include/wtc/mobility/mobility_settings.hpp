@@ -13,6 +13,10 @@
 
 namespace wtc::mobility {
 
+/// Every event's drives ramp from rest to their rate over this (s): the
+/// event scenes' schedules, and the bounds that count the wheels' travel.
+inline constexpr double kEventRampS = 1.0;
+
 /// A bisection: the largest value that passes in [low, high], to `resolution`.
 struct Search {
   double low = 0.0;         ///< Assumed to pass (not run).

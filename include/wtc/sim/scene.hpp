@@ -40,6 +40,9 @@ struct SuccessCriteria {
   double max_tilt_deg = 45.0;  ///< Every root's z axis within this of the vertical (deg).
   /// At the end every wheel's centre at least this high (world z, m): on top of a ledge.
   std::optional<double> min_wheel_height;
+  /// The first body turned at least this far about the vertical, either way
+  /// (|yaw change| over the run, deg): a turn in place that turned.
+  std::optional<double> min_turn_deg;
 };
 
 struct Scene {
