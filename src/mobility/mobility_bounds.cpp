@@ -304,8 +304,8 @@ Bound soilGrade(const VehicleStatics& v, const Soil& soil, const GradeSettings& 
   const double slip_max = 1.0 - s.min_progress_m / travel;
   if (!(slip_max > 0.0)) {
     b.governs = "the drives' rate";
-    b.detail = "the wheels roll " + num(travel) + " m in the run, less than min_progress " + num(s.min_progress_m) +
-               " m";
+    b.detail =
+        "the wheels roll " + num(travel) + " m in the run, less than min_progress " + num(s.min_progress_m) + " m";
     return b;
   }
   // Sum DP - W sin theta at slip i, or nullopt where a drive's torque is past its limit.
@@ -332,14 +332,15 @@ Bound soilGrade(const VehicleStatics& v, const Soil& soil, const GradeSettings& 
     if (margin(theta, slip_max)) return slip_max;
     return bisect([&](double i) { return margin(theta, i) ? 1.0 : -1.0; }, 0.0, slip_max);
   };
-  const double traction = bisect([&](double theta) { return margin(theta, slipOn(theta)).value_or(-v.weight()); }, 0.0, kSearchTopRad);
+  const double traction =
+      bisect([&](double theta) { return margin(theta, slipOn(theta)).value_or(-v.weight()); }, 0.0, kSearchTopRad);
   const double slip = slipOn(traction), tip = tipGrade(v);
   b.value = std::min(traction, tip) * kDegPerRad;
   b.governs = tip < traction ? "tip-over" : (slip < slip_max ? "drive torque on " : "the pull of ") + soil.name;
   b.detail = "sum DP(N_k(theta), i) = W sin theta at i = " + num(slip) + " (i_max " + num(slip_max) +
-             ": min_progress " + num(s.min_progress_m) + " m of " + num(travel) + " m of rim travel): " +
-             num(traction * kDegPerRad) + " deg" + (v.roots.size() == 1 ? ", tip-over " + num(tip * kDegPerRad) +
-             " deg" : "");
+             ": min_progress " + num(s.min_progress_m) + " m of " + num(travel) +
+             " m of rim travel): " + num(traction * kDegPerRad) + " deg" +
+             (v.roots.size() == 1 ? ", tip-over " + num(tip * kDegPerRad) + " deg" : "");
   return b;
 }
 
@@ -381,8 +382,7 @@ VehicleBounds computeBounds(const VehicleStatics& v, const MobilitySettings& set
   // On a soil the grade's bound costs a steady state per wheel per trial
   // grade and slip, and a soil too weak for the vehicle refuses it: made
   // only when the event is asked for.
-  const bool grade_asked =
-      std::find(settings.events.begin(), settings.events.end(), "grade") != settings.events.end();
+  const bool grade_asked = std::find(settings.events.begin(), settings.events.end(), "grade") != settings.events.end();
   if (!g.soil) {
     out.grade_deg = grade(v, g, peak);
   } else if (grade_asked) {

@@ -1,5 +1,6 @@
 #include "wtc/sim/replay.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -7,12 +8,14 @@
 #include "wtc/base/error.hpp"
 #include "wtc/geometry/convex_polyhedron.hpp"
 #include "wtc/sim/replay_terrain.hpp"
+#include "wtc/tyre/ground_memory.hpp"
 
 namespace wtc::sim {
 namespace {
 
 constexpr double kMmPerM = 1000.0;
 constexpr double kQuaternionScale = 1e4;
+constexpr double kSinkageScale = 1e4;  // 0.1 mm a unit
 
 long long mm(double metres) { return std::llround(metres * kMmPerM); }
 
@@ -127,10 +130,49 @@ Replay::Replay(const Scene& scene, double fps) : scene_(scene), period_(1.0 / fp
   if (!(fps > 0.0) || !std::isfinite(fps)) {
     throw InvalidInputError("wtc::sim::Replay: frame rate " + formatNumber(fps) + " must be finite and > 0");
   }
+  for (const SoilRegion& region : scene.terrain->soilRegions()) {
+    soil_spacing_ = soil_spacing_ > 0.0 ? std::min(soil_spacing_, region.spacing) : region.spacing;
+  }
+}
+
+// The nodes whose sinkage changed since the last snapshot, as of the frame
+// just kept; a node seen for the first time gets its place and the
+// terrain's top there.
+void Replay::keepSoil(const Run& run) {
+  const std::vector<int> wheels = scene_.vehicle.wheels();
+  if (wheels.empty()) return;
+  const GroundMemory* memory = run.engine().wheelState(wheels.front()).groundMemory();
+  if (memory == nullptr) return;
+  std::vector<long long> update{static_cast<long long>(times_ms_.size()) - 1};
+  memory->forEachTouchedNode([&](double x, double y, const SoilMemory& m) {
+    const long long x_mm = mm(x), y_mm = mm(y), sinkage = std::llround(m.plastic_sinkage * kSinkageScale);
+    const std::uint64_t key =
+        static_cast<std::uint64_t>(static_cast<std::uint32_t>(x_mm)) << 32 | static_cast<std::uint32_t>(y_mm);
+    const auto [shown, first] = soil_shown_.try_emplace(key, ShownNode{soil_nodes_.size() / 3, 0});
+    if (first) {
+      soil_nodes_.insert(soil_nodes_.end(), {x_mm, y_mm, mm(terrainTopAt(*scene_.terrain, x, y).value_or(0.0))});
+    } else if (shown->second.sinkage == sinkage) {
+      return;
+    }
+    shown->second.sinkage = sinkage;
+    update.insert(update.end(), {static_cast<long long>(shown->second.index), sinkage});
+  });
+  if (update.size() == 1) return;
+  // The end's snapshot may fall on the frame of the one before: one update a frame (the later pairs win).
+  if (!soil_updates_.empty() && soil_updates_.back().front() == update.front()) {
+    soil_updates_.back().insert(soil_updates_.back().end(), update.begin() + 1, update.end());
+  } else {
+    soil_updates_.push_back(std::move(update));
+  }
 }
 
 void Replay::observe(const Run& run) {
-  if (run.time() + 1e-12 < next_) return;
+  // The ruts at the run's end, at its last frame, whenever that falls.
+  const bool end = run.time() + 1e-9 >= scene_.duration_seconds;
+  if (run.time() + 1e-12 < next_) {
+    if (end && soil_spacing_ > 0.0 && !times_ms_.empty()) keepSoil(run);
+    return;
+  }
   next_ += period_;
   times_ms_.push_back(std::llround(run.time() * 1e3));
   for (const vehicle::BodyKinematics& k : run.state().bodies) {
@@ -147,6 +189,10 @@ void Replay::observe(const Run& run) {
       c.insert(c.end(), {mm(p.x()), mm(p.y()), mm(p.z()), std::llround(f.force.x()), std::llround(f.force.y()),
                          std::llround(f.force.z())});
     }
+  }
+  if (soil_spacing_ > 0.0 && (end || run.time() + 1e-12 >= next_soil_)) {
+    next_soil_ += kReplaySoilPeriodS;
+    keepSoil(run);
   }
 }
 
@@ -181,7 +227,18 @@ void Replay::write(const std::filesystem::path& path, const RunSummary& summary)
     if (i) out << ',';
     writeArray(out, contacts_[i]);
   }
-  out << "]};\n";
+  out << ']';
+  if (soil_spacing_ > 0.0) {
+    out << ",\"soil\":{\"spacing\":" << mm(soil_spacing_) << ",\"nodes\":";
+    writeArray(out, soil_nodes_);
+    out << ",\"updates\":[";
+    for (std::size_t i = 0; i < soil_updates_.size(); ++i) {
+      if (i) out << ',';
+      writeArray(out, soil_updates_[i]);
+    }
+    out << ']' << '}';
+  }
+  out << "};\n";
   if (!out) throw InvalidInputError("wtc::sim::Replay: writing " + path.string() + " failed");
 }
 

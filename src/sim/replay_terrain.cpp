@@ -84,6 +84,20 @@ std::optional<double> topAt(const ConvexPolyhedron& piece, double x, double y) {
   return high;
 }
 
+// The highest of the pieces' tops on the vertical line through (x, y)
+// between z_low and z_high, or nullopt where no piece is (`near` and
+// `scratch`: the caller's, reused).
+std::optional<double> highestTop(const Terrain& terrain, double x, double y, double z_low, double z_high,
+                                 std::vector<PieceId>& near, std::optional<ConvexPolyhedron>& scratch) {
+  near.clear();
+  terrain.overlapping({{x, y, z_low}, {x, y, z_high}}, near);
+  std::optional<double> top;
+  for (const PieceId id : near) {
+    if (const auto z = topAt(terrain.piece(id, scratch), x, y); z && (!top || *z > *top)) top = z;
+  }
+  return top;
+}
+
 // The region's top surface on a grid of at most `max_triangles` triangles.
 void appendGrid(const Terrain& terrain, long long max_triangles, ReplayTerrain& out) {
   const double width = out.region.extent().x(), depth = out.region.extent().y();
@@ -102,12 +116,8 @@ void appendGrid(const Terrain& terrain, long long max_triangles, ReplayTerrain& 
     for (long long i = 0; i <= nx; ++i) {
       const double x = out.region.min.x() + static_cast<double>(i) * sx;
       const double y = out.region.min.y() + static_cast<double>(j) * sy;
-      near.clear();
-      terrain.overlapping({{x, y, out.region.min.z()}, {x, y, out.region.max.z()}}, near);
-      std::optional<double> top;
-      for (const PieceId id : near) {
-        if (const auto z = topAt(terrain.piece(id, scratch), x, y); z && (!top || *z > *top)) top = z;
-      }
+      const std::optional<double> top =
+          highestTop(terrain, x, y, out.region.min.z(), out.region.max.z(), near, scratch);
       if (!top) continue;
       vertex[j * (nx + 1) + i] = static_cast<long long>(out.positions.size() / 3);
       out.positions.insert(out.positions.end(), {mm(x), mm(y), mm(*top)});
@@ -184,6 +194,13 @@ ReplayTerrain replayTerrain(const Terrain& terrain, const Aabb& path, long long 
   out.kind = ReplayTerrain::Kind::kGrid;
   appendGrid(terrain, max_triangles, out);
   return out;
+}
+
+std::optional<double> terrainTopAt(const Terrain& terrain, double x, double y) {
+  std::vector<PieceId> near;
+  std::optional<ConvexPolyhedron> scratch;
+  const Aabb box = terrain.bounds();
+  return highestTop(terrain, x, y, box.min.z(), box.max.z(), near, scratch);
 }
 
 }  // namespace wtc::sim

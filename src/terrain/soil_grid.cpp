@@ -16,8 +16,6 @@ std::uint16_t toBfloat16(float value) {
   return static_cast<std::uint16_t>((bits & 0xffffu) != 0 ? upper + 1 : upper);
 }
 
-float fromBfloat16(std::uint16_t half) { return std::bit_cast<float>(static_cast<std::uint32_t>(half) << 16); }
-
 // Fibonacci hashing of a tile's key into mask + 1 slots (a power of two).
 std::size_t hashSlot(std::uint32_t key, std::size_t mask) {
   return static_cast<std::size_t>((key * 0x9e3779b97f4a7c15ull) >> 32) & mask;

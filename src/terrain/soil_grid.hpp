@@ -18,6 +18,7 @@
 // five nodes wide (a 0.11 m wheel at 2 cm) fills 5/8 of the tiles it
 // crosses at worst.
 #include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -29,6 +30,9 @@
 #include "wtc/terrain/soil_region.hpp"
 
 namespace wtc::detail {
+
+/// A bfloat16's float: its bits as a float's upper half.
+inline float fromBfloat16(std::uint16_t half) { return std::bit_cast<float>(static_cast<std::uint32_t>(half) << 16); }
 
 /// One node's memory.
 struct SoilNode {
@@ -63,6 +67,11 @@ class SoilGrid {
   /// The nodes' memory at (x, y), bilinear between the four nodes around
   /// it (a fresh node outside the region).
   SoilNode sample(double x, double y) const;
+
+  /// Calls visit(i, j, node) for every touched node, tile by tile (in the
+  /// index's order: no set one).
+  template <class Visit>
+  void forEachTouched(Visit&& visit) const;
 
   std::size_t touchedNodes() const { return touched_; }
   std::size_t tiles() const { return tile_count_; }
@@ -101,5 +110,20 @@ class SoilGrid {
   std::vector<Slot> index_;
   std::size_t touched_ = 0;
 };
+
+template <class Visit>
+void SoilGrid::forEachTouched(Visit&& visit) const {
+  // A tile's coordinates live in its index slot's key (tile_j << 16 | tile_i).
+  for (const Slot& s : index_) {
+    if (s.key == kEmpty) continue;
+    const Tile& tile = (*chunks_[s.tile / kChunkTiles])[s.tile % kChunkTiles];
+    const int ti = static_cast<int>(s.key & 0xffffu) * kTileNodes, tj = static_cast<int>(s.key >> 16) * kTileNodes;
+    for (int n = 0; n < kNodes; ++n) {
+      if ((tile.touched & (1u << n)) == 0) continue;
+      const auto k = static_cast<std::size_t>(n);
+      visit(ti + n % kTileNodes, tj + n / kTileNodes, SoilNode{tile.sinkage[k], fromBfloat16(tile.pressure[k])});
+    }
+  }
+}
 
 }  // namespace wtc::detail

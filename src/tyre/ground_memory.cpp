@@ -43,6 +43,17 @@ std::size_t GroundMemory::touchedNodes() const {
   return sum;
 }
 
+void GroundMemory::forEachTouchedNode(
+    const std::function<void(double x, double y, const SoilMemory& memory)>& visit) const {
+  for (const detail::SoilGrid& grid : impl_->grids) {
+    const SoilRegion& spec = grid.spec();
+    grid.forEachTouched([&](int i, int j, const detail::SoilNode& node) {
+      const Eigen::Vector2d at = spec.origin + spec.spacing * Eigen::Vector2d(i, j);
+      visit(at.x(), at.y(), detail::memoryOf(node));
+    });
+  }
+}
+
 std::size_t GroundMemory::bytes() const {
   std::size_t sum = 0;
   for (const detail::SoilGrid& grid : impl_->grids) sum += grid.bytes();

@@ -67,8 +67,8 @@ TEST(RunOutcomeTest, ASuccessHasNoFailedCriteriaAndAFailureNamesWhatItMissed) {
   EXPECT_GT(*short_turn->measured, 0.0);
   EXPECT_EQ(short_turn->unit, "deg");
   const double made = *short_turn->measured;
-  const RunSummary enough = run(scene("robot_turn_in_place", {{"duration", "1.2"},
-                                                              {"success.min_turn_deg", std::to_string(0.5 * made)}}));
+  const RunSummary enough =
+      run(scene("robot_turn_in_place", {{"duration", "1.2"}, {"success.min_turn_deg", std::to_string(0.5 * made)}}));
   EXPECT_EQ(find(enough, "min_turn_deg"), nullptr);
 }
 

@@ -29,7 +29,7 @@ namespace {
 
 namespace fs = std::filesystem;
 const fs::path kScenes = fs::path(WTC_SOURCE_DIR) / "scenes";
-constexpr double kBalanceOfWeight = 0.01;   // Newton's balance to 1 % of the weight
+constexpr double kBalanceOfWeight = 0.01;    // Newton's balance to 1 % of the weight
 constexpr double kAgreementRelative = 0.01;  // engines and modes: distance and turn to 1 %
 
 // From `from` on: the mean of the wheels' ground forces (world) and the
@@ -97,8 +97,8 @@ TEST(SoilVehiclesTest, EachSoilSceneSucceedsAndTheGroundCarriesTheVehicleInBothE
         worst_balance = std::max(worst_balance, off.norm());
         worst_agreement = std::max(worst_agreement, std::abs(distance / first_distance - 1.0));
         const Eigen::Vector3d f = balance.meanForce();
-        std::printf("%s: %.4f m, turned %.2f deg, ground force (%.1f, %.1f, %.1f) N, off %.2g of W\n",
-                    label.c_str(), distance, turn, f.x(), f.y(), f.z(), off.norm());
+        std::printf("%s: %.4f m, turned %.2f deg, ground force (%.1f, %.1f, %.1f) N, off %.2g of W\n", label.c_str(),
+                    distance, turn, f.x(), f.y(), f.z(), off.norm());
       }
     }
     RecordProperty(std::string(name) + "_distance_m", std::to_string(first_distance));

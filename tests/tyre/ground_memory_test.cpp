@@ -217,6 +217,23 @@ TEST(GroundMemoryTest, BulldozingRaisesTheFlowFactorsShareBesideTheTrack) {
   }
   EXPECT_GT(pressed, 0.0);
   EXPECT_NEAR(raised, flow * pressed, 1e-5 * pressed);
+  // The touched nodes, listed (what the replay page draws), are the grid's
+  // nodes the scan found changed, each with the memory at(x, y) reads there.
+  std::size_t listed = 0;
+  double listed_pressed = 0.0, listed_raised = 0.0;
+  memory.forEachTouchedNode([&](double x, double y, const SoilMemory& m) {
+    ++listed;
+    const double i = (x + 1.0) / kSpacingM, j = (y + 1.0) / kSpacingM;
+    EXPECT_NEAR(i, std::round(i), 1e-9);
+    EXPECT_NEAR(j, std::round(j), 1e-9);
+    // at() interpolates: at a node, to the rounding of (x - x0) / s.
+    EXPECT_NEAR(m.plastic_sinkage, memory.at(x, y).plastic_sinkage, 1e-12);
+    EXPECT_NEAR(m.max_pressure, memory.at(x, y).max_pressure, 1e-9 * m.max_pressure);
+    (m.plastic_sinkage > 0.0 ? listed_pressed : listed_raised) += std::abs(m.plastic_sinkage) * kSpacingM * kSpacingM;
+  });
+  EXPECT_EQ(listed, memory.touchedNodes());
+  EXPECT_NEAR(listed_pressed, pressed, 1e-12 * pressed);
+  EXPECT_NEAR(listed_raised, raised, 1e-12 * pressed);
   EXPECT_LE(steepest, std::tan(30.0 * std::numbers::pi / 180.0) * 1.01);
   RecordProperty("pressed_volume_m3", std::to_string(pressed));
   RecordProperty("raised_volume_m3", std::to_string(raised));

@@ -16,6 +16,7 @@
 //
 // Faces that look down (outward normal z below -0.7) are left out in every
 // way: nobody sees them from above.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,5 +45,9 @@ struct ReplayTerrain {
 /// every body's positions over the run (m; only x and y are used).
 ReplayTerrain replayTerrain(const Terrain& terrain, const Aabb& path,
                             long long max_triangles = kReplayTerrainMaxTriangles);
+
+/// The terrain's top on the vertical line through (x, y): the highest of
+/// its pieces there, or nullopt where there is no ground.
+std::optional<double> terrainTopAt(const Terrain& terrain, double x, double y);
 
 }  // namespace wtc::sim

@@ -71,6 +71,11 @@ inline constexpr long long kReplayTerrainMaxTriangles = 100'000;
 /// to draw whole is drawn (m, horizontally): more than the page's camera,
 /// 6 m from the vehicle, shows around it.
 inline constexpr double kReplayTerrainMarginM = 10.0;
+/// How often a run's replay keeps the ruts of soil that remembers (s of
+/// simulated time): a wheel at 0.2 m/s moves 5 cm between two; each looks
+/// at every touched node, so a long run's snapshots cost its nodes times
+/// its duration over this.
+inline constexpr double kReplaySoilPeriodS = 0.25;
 
 /// A mimic joint (URDF's <mimic>) is held as a velocity constraint with its
 /// position error fed back at this fraction per step (dimensionless), as a

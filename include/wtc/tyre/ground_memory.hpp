@@ -12,6 +12,7 @@
 // Not thread-safe: the wheels of one world write it in turn, as an engine
 // steps them; a world per thread needs a memory per world.
 #include <cstddef>
+#include <functional>
 #include <memory>
 
 #include "wtc/terrain/terrain.hpp"
@@ -42,6 +43,10 @@ class GroundMemory {
   /// Nodes pressed so far, and the memory they hold (bytes, the regions'
   /// tiles and indices): what a long run costs.
   std::size_t touchedNodes() const;
+  /// Calls visit(x, y, memory) for every pressed node of every region, at
+  /// its world (x, y), in no set order (the replay page draws the ruts from
+  /// it; a node raised by bulldozing has a negative plastic sinkage).
+  void forEachTouchedNode(const std::function<void(double x, double y, const SoilMemory& memory)>& visit) const;
   std::size_t bytes() const;
   /// Forgets every rut (a new run on the same terrain).
   void clear();
