@@ -12,11 +12,22 @@ import os
 import re
 import signal
 import subprocess
+import tempfile
 
 CHROMIUM_FLAGS = ["--no-sandbox", "--enable-unsafe-swiftshader", "--use-angle=swiftshader",
                   "--window-size=900,600", "--virtual-time-budget=4000", "--hide-scrollbars"]
 CHROMIUM_TIMEOUT_S = 120
 CHROMIUM_ATTEMPTS = 2
+
+
+def run_with_replay(wtc_sim, scene, duration, prefix, fail):
+    """Runs `scene` for `duration` s with its replay; returns its output directory and the page's data."""
+    out = os.path.join(tempfile.mkdtemp(prefix=prefix), "run")
+    command = [wtc_sim, scene, "--duration", str(duration), "--out", out, "--no-plots", "--quiet"]
+    if subprocess.run(command).returncode not in (0, 1):
+        fail("wtc-sim failed: " + " ".join(command))
+    with open(os.path.join(out, "replay_data.js")) as f:
+        return out, json.loads(f.read().split("=", 1)[1].rstrip().rstrip(";"))
 
 
 def run_chromium(chromium, args):

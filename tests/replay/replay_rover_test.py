@@ -8,11 +8,8 @@ its mesh's convex hull and the mast's box, each rocker a compound of two boxes. 
 hull as triangles), and the page loads without JavaScript errors and draws one mesh per part: a compound's parts,
 a wheel's tread and spoke, a plain shape.
 """
-import json
 import os
-import subprocess
 import sys
-import tempfile
 
 import headless_page  # beside this file
 
@@ -25,13 +22,8 @@ def fail(message):
 
 def main():
     wtc_sim, chromium, source = sys.argv[1:4]
-    out = os.path.join(tempfile.mkdtemp(prefix="wtc_replay_rover_"), "run")
-    command = [wtc_sim, os.path.join(source, "scenes/rover_flat.yaml"), "--duration", "1", "--out", out,
-               "--no-plots", "--quiet"]
-    if subprocess.run(command).returncode not in (0, 1):
-        fail("wtc-sim failed: " + " ".join(command))
-    with open(os.path.join(out, "replay_data.js")) as f:
-        data = json.loads(f.read().split("=", 1)[1].rstrip().rstrip(";"))
+    out, data = headless_page.run_with_replay(wtc_sim, os.path.join(source, "scenes/rover_flat.yaml"), 1,
+                                              "wtc_replay_rover_", fail)
     bodies = {b["name"]: b for b in data["bodies"]}
 
     chassis = bodies["chassis"]

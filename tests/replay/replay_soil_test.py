@@ -12,9 +12,7 @@ last, and some but not all part-way.
 """
 import json
 import os
-import subprocess
 import sys
-import tempfile
 
 import headless_page  # beside this file
 
@@ -32,13 +30,8 @@ def fail(message):
 
 def main():
     wtc_sim, chromium, source = sys.argv[1:4]
-    out = os.path.join(tempfile.mkdtemp(prefix="wtc_replay_soil_"), "run")
-    command = [wtc_sim, os.path.join(source, "scenes/rover_sand.yaml"), "--duration", "3", "--out", out,
-               "--no-plots", "--quiet"]
-    if subprocess.run(command).returncode not in (0, 1):
-        fail("wtc-sim failed: " + " ".join(command))
-    with open(os.path.join(out, "replay_data.js")) as f:
-        data = json.loads(f.read().split("=", 1)[1].rstrip().rstrip(";"))
+    out, data = headless_page.run_with_replay(wtc_sim, os.path.join(source, "scenes/rover_sand.yaml"), 3,
+                                              "wtc_replay_soil_", fail)
     with open(os.path.join(out, "summary.json")) as f:
         summary = json.load(f)
 
