@@ -43,9 +43,14 @@ set(ENV{LSAN_OPTIONS} "suppressions=${SOURCE_DIR}/tests/sanitizer_suppressions.t
 # every step; the rover driving straight for its climb; GroundMemoryTest's
 # ruts stepped without an engine for the test bed's ruts in both engines;
 # SoilDynamicsTest's carriage and the skid-steered cart on sand for the test
-# bed's twelve runs).
+# bed's twelve runs; SoilVehiclesTest's start on a scene's ruts for the
+# second rover driving in them; HardCasesTest's driven run over the rough
+# ground for Bullet's and ODE's whole runs of it; UrdfVehicleFileTest's
+# towed system read from URDF equal to the YAML one, and the robot's URDF
+# series, for the towed system's URDF series).
 # Each of these ran
-# 9-45 s unsanitized, several times that here. The replay page's tests
+# 5-45 s unsanitized, several times that here (the last three 41-44 s each
+# on two cores, 2026-11-30). The replay page's tests
 # (label page) stay out too: chromium runs the page's JavaScript, which the
 # sanitizers do not see; the replay files they load are written by every
 # wtc-sim run of the suite.
@@ -63,7 +68,10 @@ set(long_runs "VehicleScenesTest.EveryShippedSceneRunsShortenedInEveryEngineWith
               "RoverScenesTest.ClimbsALowStepInBothEnginesAndModes"
               "SoilTestBedTest.TheRearWheelsRunInTheFrontWheelsRutsAsTheModelPredicts"
               "SoilTestBedTest.EachWheelSettlesAtTheSoilsSteadyStateInBothEngines"
-              "SoilVehiclesTest.EachSoilSceneSucceedsAndTheGroundCarriesTheVehicleInBothEnginesAndModes")
+              "SoilVehiclesTest.EachSoilSceneSucceedsAndTheGroundCarriesTheVehicleInBothEnginesAndModes"
+              "SoilVehiclesTest.ASecondRoverDrivesInTheRutsTheFirstOneLeaves"
+              "VehicleScenesTest.BulletAndOdeAgreeOnTheDistanceDrivenOverRoughGround"
+              "UrdfEquivalenceTest.TowedPathSeriesFromUrdfEqualTheYamlSystemsInBothEnginesAndModes")
 list(JOIN long_runs "|" long_runs)
 execute_process(COMMAND ${CMAKE_CTEST_COMMAND} --test-dir ${BUILD_DIR} -j2 --output-on-failure -E "${long_runs}"
                         -LE "cluster|page" RESULT_VARIABLE rc)

@@ -8,6 +8,7 @@
 
 #include "app_files.hpp"
 #include "wtc/base/error.hpp"
+#include "wtc/io/ground_memory_file.hpp"
 #include "wtc/sim/replay.hpp"
 #include "wtc/sim/run.hpp"
 #include "wtc/sim/run_summary_file.hpp"
@@ -99,6 +100,11 @@ RunOutcome runWithOutputs(const sim::Scene& scene, sim::Engine& engine, const Ou
   summary.program = request.program;
   if (request.on_run_end) request.on_run_end();
   sim::writeRunSummary(dir / "summary.json", summary);
+  // The ruts, for a run that starts on them (a scene's ground_memory_from).
+  if (const GroundMemory* memory = sim::groundMemory(engine)) {
+    io::writeGroundMemoryCsv(dir / "ground_memory.csv", *memory);
+    outcome.ruts_file = "ground_memory.csv";
+  }
   const auto warn = [&request](const std::string& w) {
     if (request.warn) request.warn(w);
   };
@@ -142,7 +148,8 @@ std::string runReport(const RunOutcome& outcome) {
     text += "  " + key;
     add(std::snprintf(line, sizeof line, ": %.4g\n", value));
   }
-  text += "  outputs: " + outcome.dir.string() + " (series, summary.json, " + outcome.replay_said + "; figures " +
+  text += "  outputs: " + outcome.dir.string() + " (series, summary.json, " +
+          (outcome.ruts_file.empty() ? "" : outcome.ruts_file + ", ") + outcome.replay_said + "; figures " +
           outcome.figures + ")\n";
   return text;
 }

@@ -46,6 +46,9 @@ struct RunOutcome {
   std::filesystem::path dir;  ///< Where the outputs are.
   std::string replay_said;    ///< "replay.html", or why there is none.
   std::string figures;        ///< "drawn", or why not.
+  /// "ground_memory.csv" where the terrain has soil regions (the run's
+  /// ruts, wtc/io/ground_memory_file.hpp), or empty.
+  std::string ruts_file;
 };
 
 /// The run's directory (created, its marker written first): the design

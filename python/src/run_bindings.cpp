@@ -96,6 +96,7 @@ py::dict run(const LoadedScene& loaded, const std::optional<fs::path>& out, cons
   d["out"] = outcome.dir;
   d["replay"] = outcome.replay_said;
   d["figures"] = outcome.figures;
+  if (!outcome.ruts_file.empty()) d["ground_memory"] = outcome.dir / outcome.ruts_file;
   d["report"] = apps::runReport(outcome);
   return d;
 }

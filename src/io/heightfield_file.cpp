@@ -5,9 +5,11 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <span>
 #include <string_view>
 #include <vector>
 
+#include "csv_rows.hpp"
 #include "file_support.hpp"
 #include "wtc/base/error.hpp"
 
@@ -15,8 +17,6 @@ namespace wtc::io {
 namespace {
 
 using detail::where;
-
-bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
 // Fills rows, cols and heights from `values` (file order, north row first)
 // and checks the result, with the path in every message.
@@ -50,59 +50,12 @@ Heightfield assemble(const std::filesystem::path& path, const HeightfieldLayout&
 }  // namespace
 
 Heightfield readHeightfieldCsv(const std::filesystem::path& path, const HeightfieldLayout& layout) {
-  const std::string text = detail::readDataFile(path);
-  std::string_view rest = text;
-  if (rest.starts_with("\xEF\xBB\xBF")) rest.remove_prefix(3);  // UTF-8 byte-order mark (spreadsheets)
   std::vector<double> values;
   int rows = 0;
   long cols = -1;
   long first_line = 0;
-  for (long line = 1; !rest.empty(); ++line) {
-    const std::size_t eol = rest.find('\n');
-    const std::string_view text_line = rest.substr(0, eol);
-    rest.remove_prefix(eol == std::string_view::npos ? rest.size() : eol + 1);
-    std::size_t start = 0;
-    while (start < text_line.size() && isBlank(text_line[start])) ++start;
-    if (start == text_line.size() || text_line[start] == '#') continue;
-
-    const bool commas = text_line.find(',') != std::string_view::npos;
-    long count = 0;
-    std::size_t pos = 0;
-    while (pos <= text_line.size()) {
-      // One field: [pos, end) up to the next separator, then trimmed.
-      std::size_t end = pos;
-      if (commas) {
-        while (end < text_line.size() && text_line[end] != ',') ++end;
-      } else {
-        while (pos < text_line.size() && isBlank(text_line[pos])) ++pos;
-        if (pos == text_line.size()) break;
-        end = pos;
-        while (end < text_line.size() && !isBlank(text_line[end])) ++end;
-      }
-      std::size_t a = pos, b = end;
-      while (a < b && isBlank(text_line[a])) ++a;
-      while (b > a && isBlank(text_line[b - 1])) --b;
-      const long column = static_cast<long>(a) + 1;
-      ++count;
-      if (a == b) {
-        throw InvalidInputError(where(path, line, column) + "empty value (row " + std::to_string(rows + 1) +
-                                ", value " + std::to_string(count) + ")");
-      }
-      const std::string_view token = text_line.substr(a, b - a);
-      std::string_view digits = token.starts_with('+') ? token.substr(1) : token;
-      double value = 0.0;
-      const auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-      if (ec != std::errc() || ptr != digits.data() + digits.size()) {
-        throw InvalidInputError(where(path, line, column) + "'" + std::string(token) + "' is not a number (row " +
-                                std::to_string(rows + 1) + ", value " + std::to_string(count) + ")");
-      }
-      if (!std::isfinite(value)) {
-        throw InvalidInputError(where(path, line, column) + "'" + std::string(token) + "' is not finite (row " +
-                                std::to_string(rows + 1) + ", value " + std::to_string(count) + ")");
-      }
-      values.push_back(value);
-      pos = end + 1;
-    }
+  detail::forEachCsvRow(path, detail::readDataFile(path), [&](long line, std::span<const double> row) {
+    const auto count = static_cast<long>(row.size());
     if (cols < 0) {
       cols = count;
       first_line = line;
@@ -110,8 +63,9 @@ Heightfield readHeightfieldCsv(const std::filesystem::path& path, const Heightfi
       throw InvalidInputError(where(path, line, 1) + std::to_string(count) + " values, but the first row (line " +
                               std::to_string(first_line) + ") has " + std::to_string(cols));
     }
+    values.insert(values.end(), row.begin(), row.end());
     ++rows;
-  }
+  });
   if (rows == 0) throw InvalidInputError(where(path) + "no rows of heights (empty file or only comments)");
   return assemble(path, layout, rows, static_cast<int>(cols), values);
 }

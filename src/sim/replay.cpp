@@ -6,8 +6,10 @@
 #include <limits>
 
 #include "wtc/base/error.hpp"
+#include "wtc/base/tolerances.hpp"
 #include "wtc/geometry/convex_polyhedron.hpp"
 #include "wtc/sim/replay_terrain.hpp"
+#include "wtc/sim/step_count.hpp"
 #include "wtc/tyre/ground_memory.hpp"
 
 namespace wtc::sim {
@@ -39,6 +41,19 @@ void writeArray(std::ostream& out, const Numbers& numbers) {
   }
   out << ']';
 }
+
+void writeArrays(std::ostream& out, const std::vector<std::vector<long long>>& arrays) {
+  out << '[';
+  for (std::size_t i = 0; i < arrays.size(); ++i) {
+    if (i) out << ',';
+    writeArray(out, arrays[i]);
+  }
+  out << ']';
+}
+
+// Whether a run's clock (a whole number of steps times dt) has reached
+// `mark` (a sum of frame periods), to the roundoff of both.
+bool reached(double time, double mark) { return time >= mark * (1.0 - tolerance::kWholeStepsRelative); }
 
 void writeTerrain(std::ostream& out, const ReplayTerrain& terrain) {
   out << "\"terrain\":{\"positions\":";
@@ -126,7 +141,8 @@ void writeBodies(std::ostream& out, const vehicle::VehicleDescription& v) {
 
 }  // namespace
 
-Replay::Replay(const Scene& scene, double fps) : scene_(scene), period_(1.0 / fps) {
+Replay::Replay(const Scene& scene, double fps)
+    : scene_(scene), period_(1.0 / fps), last_step_(stepCount(scene.duration_seconds, scene.engine.step_seconds)) {
   if (!(fps > 0.0) || !std::isfinite(fps)) {
     throw InvalidInputError("wtc::sim::Replay: frame rate " + formatNumber(fps) + " must be finite and > 0");
   }
@@ -139,9 +155,7 @@ Replay::Replay(const Scene& scene, double fps) : scene_(scene), period_(1.0 / fp
 // just kept; a node seen for the first time gets its place and the
 // terrain's top there.
 void Replay::keepSoil(const Run& run) {
-  const std::vector<int> wheels = scene_.vehicle.wheels();
-  if (wheels.empty()) return;
-  const GroundMemory* memory = run.engine().wheelState(wheels.front()).groundMemory();
+  const GroundMemory* memory = groundMemory(run.engine());
   if (memory == nullptr) return;
   std::vector<long long> update{static_cast<long long>(times_ms_.size()) - 1};
   memory->forEachTouchedNode([&](double x, double y, const SoilMemory& m) {
@@ -168,8 +182,8 @@ void Replay::keepSoil(const Run& run) {
 
 void Replay::observe(const Run& run) {
   // The ruts at the run's end, at its last frame, whenever that falls.
-  const bool end = run.time() + 1e-9 >= scene_.duration_seconds;
-  if (run.time() + 1e-12 < next_) {
+  const bool end = run.steps() >= last_step_;
+  if (!reached(run.time(), next_)) {
     if (end && soil_spacing_ > 0.0 && !times_ms_.empty()) keepSoil(run);
     return;
   }
@@ -190,7 +204,7 @@ void Replay::observe(const Run& run) {
                          std::llround(f.force.z())});
     }
   }
-  if (soil_spacing_ > 0.0 && (end || run.time() + 1e-12 >= next_soil_)) {
+  if (soil_spacing_ > 0.0 && (end || reached(run.time(), next_soil_))) {
     next_soil_ += kReplaySoilPeriodS;
     keepSoil(run);
   }
@@ -222,21 +236,14 @@ void Replay::write(const std::filesystem::path& path, const RunSummary& summary)
   writeArray(out, times_ms_);
   out << ",\"poses\":";
   writeArray(out, poses_);
-  out << ",\"contacts\":[";
-  for (std::size_t i = 0; i < contacts_.size(); ++i) {
-    if (i) out << ',';
-    writeArray(out, contacts_[i]);
-  }
-  out << ']';
+  out << ",\"contacts\":";
+  writeArrays(out, contacts_);
   if (soil_spacing_ > 0.0) {
     out << ",\"soil\":{\"spacing\":" << mm(soil_spacing_) << ",\"nodes\":";
     writeArray(out, soil_nodes_);
-    out << ",\"updates\":[";
-    for (std::size_t i = 0; i < soil_updates_.size(); ++i) {
-      if (i) out << ',';
-      writeArray(out, soil_updates_[i]);
-    }
-    out << ']' << '}';
+    out << ",\"updates\":";
+    writeArrays(out, soil_updates_);
+    out << '}';
   }
   out << "};\n";
   if (!out) throw InvalidInputError("wtc::sim::Replay: writing " + path.string() + " failed");

@@ -11,6 +11,7 @@
 #include "io/yaml_reader.hpp"
 #include "vehicle/controllers/controller_types.hpp"
 #include "wtc/base/error.hpp"
+#include "wtc/io/ground_memory_file.hpp"
 #include "wtc/vehicle/plausibility.hpp"
 #include "wtc/sim/sim_constants.hpp"
 #include "wtc/sim/step_count.hpp"
@@ -297,6 +298,24 @@ auto referencedFile(const YamlReader& in, const YAML::Node& node, const std::str
   }
 }
 
+// `ground_memory_from: <file>`: ruts a run left (wtc/io/ground_memory_file.hpp),
+// read whole here so that a file that does not fit the terrain's soil
+// regions is refused before the run.
+std::shared_ptr<const GroundMemory> readStartRuts(const YamlReader& in, const YAML::Node& node, const Scene& scene) {
+  if (scene.terrain->soilRegions().empty()) {
+    in.fail(node, "ground_memory_from: the terrain has no soil_regions to hold ruts");
+  }
+  if (!scene.engine.tyre_effects.has(Effect::kSoftSoil)) {
+    in.fail(node, "ground_memory_from: ruts act through the soft_soil effect, which the scene's effects leave out");
+  }
+  auto ruts = std::make_shared<GroundMemory>(*scene.terrain);
+  referencedFile(in, node, "ground_memory_from", [&](const std::filesystem::path& file) {
+    io::readGroundMemoryCsv(file, *ruts);
+    return 0;
+  });
+  return ruts;
+}
+
 }  // namespace
 
 Override parseOverride(const std::string& text) {
@@ -345,7 +364,7 @@ sim::Scene readSceneFile(const std::filesystem::path& path, std::span<const Over
   }
   in.checkKeys(root, {"name", "description", "parameters", "engine", "mode", "dt", "duration", "solver_iterations",
                       "solver_residual", "terrain", "vehicle", "effects", "controller", "output", "success", "cases",
-                      "drawbar", "tilt_table"});
+                      "drawbar", "tilt_table", "ground_memory_from"});
 
   sim::Scene scene;
   scene.source = path.string();
@@ -432,6 +451,7 @@ sim::Scene readSceneFile(const std::filesystem::path& path, std::span<const Over
 
   readEffects(in, YamlReader::get(root, "effects").value_or(YAML::Load("[full]")), scene);
   checkSoilWheels(in, YamlReader::get(root, "effects").value_or(root), scene);
+  if (const auto g = YamlReader::get(root, "ground_memory_from")) scene.start_ruts = readStartRuts(in, *g, scene);
   readController(in, in.require(root, "controller"), scene);
 
   if (const auto o = YamlReader::get(root, "output")) {

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
 
 #include "recorder.hpp"
 #include "start_overlap.hpp"
@@ -134,6 +135,21 @@ std::unique_ptr<vehicle::Controller> startAndMakeController(const Scene& scene, 
   return scene.make_controller();
 }
 
+// The engine's ground memory starts as the scene's ruts (the same terrain's
+// regions, so every node has its place).
+void startOnRuts(const Scene& scene, Engine& engine) {
+  if (!scene.start_ruts) return;
+  GroundMemory* memory = groundMemory(engine);
+  if (memory == nullptr) {
+    throw InvalidInputError(scene.source + ": ground_memory_from: the engine's wheels keep no ground memory (" +
+                            std::string(modeName(scene.engine)) + ")");
+  }
+  memory->clear();
+  scene.start_ruts->forEachTouchedNode([memory](double x, double y, const SoilMemory& m) {
+    if (!memory->setNode(x, y, m)) throw std::logic_error("a rut's node is not a node of the engine's terrain");
+  });
+}
+
 }  // namespace
 
 std::string describe(const FailedCriterion& f) {
@@ -184,6 +200,7 @@ struct SceneRun::State {
 
 SceneRun::SceneRun(const Scene& scene, Engine& engine, const RunOptions& options)
     : s_(std::make_unique<State>(scene, engine, options)) {
+  startOnRuts(scene, engine);
   State& x = *s_;
   const Run& run = x.run;
   const vehicle::VehicleDescription& v = scene.vehicle;
@@ -346,11 +363,9 @@ RunSummary SceneRun::summary() const {
     ++wheel_index;
   }
   // What the ground's memory holds at the end (soil regions: docs/soft-soil.md).
-  if (!v.wheels().empty()) {
-    if (const GroundMemory* memory = engine.wheelState(v.wheels().front()).groundMemory()) {
-      summary.fields["soil_memory_touched_nodes"] = static_cast<double>(memory->touchedNodes());
-      summary.fields["soil_memory_bytes"] = static_cast<double>(memory->bytes());
-    }
+  if (const GroundMemory* memory = groundMemory(engine)) {
+    summary.fields["soil_memory_touched_nodes"] = static_cast<double>(memory->touchedNodes());
+    summary.fields["soil_memory_bytes"] = static_cast<double>(memory->bytes());
   }
   // What the engine's solver said instead of printing it (ODE's LCP giving up
   // in a step: docs/ode-plugin.md).

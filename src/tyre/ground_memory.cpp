@@ -4,10 +4,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <vector>
 
 #include "ground_memory_access.hpp"
+#include "wtc/base/tolerances.hpp"
 
 namespace wtc {
 
@@ -58,6 +60,23 @@ std::size_t GroundMemory::bytes() const {
   std::size_t sum = 0;
   for (const detail::SoilGrid& grid : impl_->grids) sum += grid.bytes();
   return sum;
+}
+
+bool GroundMemory::setNode(double x, double y, const SoilMemory& memory) {
+  constexpr double kFloatMax = std::numeric_limits<float>::max();
+  if (!(std::abs(memory.plastic_sinkage) <= kFloatMax) ||
+      !(memory.max_pressure >= 0.0 && memory.max_pressure <= kFloatMax)) {
+    return false;  // not finite, beyond a float, or a negative pressure
+  }
+  detail::SoilGrid* grid = impl_->gridAt(x, y);
+  if (grid == nullptr) return false;
+  const SoilRegion& spec = grid->spec();
+  const double u = (x - spec.origin.x()) / spec.spacing, v = (y - spec.origin.y()) / spec.spacing;
+  const double i = std::round(u), j = std::round(v);
+  if (std::abs(u - i) > tolerance::kSoilNodeRelative || std::abs(v - j) > tolerance::kSoilNodeRelative) return false;
+  grid->set(static_cast<int>(i), static_cast<int>(j),
+            {static_cast<float>(memory.plastic_sinkage), static_cast<float>(memory.max_pressure)});
+  return true;
 }
 
 void GroundMemory::clear() {

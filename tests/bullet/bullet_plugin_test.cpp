@@ -19,7 +19,7 @@
 #include "wtc/tyre/traction_law.hpp"
 
 namespace wtc {
-namespace {
+namespace bullet_plugin_test {
 
 using testing::BulletWorld;
 using testing::flatGround;
@@ -518,5 +518,5 @@ TEST_P(BulletModeTest, WheelLyingOnItsSideRestsOnItsCap) {
   EXPECT_FALSE(w.plugin->state(id).capContacts().empty());
 }
 
-}  // namespace
+}  // namespace bullet_plugin_test
 }  // namespace wtc

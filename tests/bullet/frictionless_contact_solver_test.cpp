@@ -15,7 +15,7 @@
 
 #include "wtc/bullet/frictionless_contact_solver.hpp"
 
-namespace {
+namespace frictionless_contact_solver_test {
 
 constexpr double kStepS = 1e-3;
 
@@ -141,4 +141,4 @@ TEST(FrictionlessContactSolverTest, WarmStartedRowsReachBulletsMotionAndReportTh
   EXPECT_NEAR(ours.normalImpulse(0), 2.0 * 9.81 * kStepS, 1e-3 * 2.0 * 9.81 * kStepS);
 }
 
-}  // namespace
+}  // namespace frictionless_contact_solver_test

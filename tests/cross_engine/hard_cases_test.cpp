@@ -26,7 +26,7 @@
 #include "wtc/tyre/traction_law.hpp"
 
 namespace wtc::testing {
-namespace {
+namespace hard_cases_test {
 
 constexpr double kRadius = 0.19;  // r_f of the robot's wheel (m)
 // The three contact modes (contact_mode.hpp): a hard case holds in each.
@@ -774,5 +774,5 @@ TEST(HardCasesTest, TheModesLagOnTheRoughGroundShrinksAsTheTreadStiffens) {
   EXPECT_LT(lags[1], 0.35 * lags[0]);
 }
 
-}  // namespace
+}  // namespace hard_cases_test
 }  // namespace wtc::testing

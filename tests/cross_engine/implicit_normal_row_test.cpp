@@ -33,7 +33,7 @@
 #include "wheel_sim.hpp"
 
 namespace wtc::testing {
-namespace {
+namespace implicit_normal_row_test {
 
 constexpr double kRadius = 0.19, kWidth = 0.12;  // the robot's wheel: r_f, tread width (m)
 constexpr double kMass = 21.0;                   // kg on the contact: a sixth of the robot
@@ -317,5 +317,5 @@ TEST(ImplicitNormalRowTest, ImplicitModeTakesBulletsLinearSlopBackOut) {
   }
 }
 
-}  // namespace
+}  // namespace implicit_normal_row_test
 }  // namespace wtc::testing

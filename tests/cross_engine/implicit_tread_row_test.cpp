@@ -31,7 +31,7 @@
 #include "wtc/bullet/rigid_contact_solver.hpp"
 
 namespace wtc::testing {
-namespace {
+namespace implicit_tread_row_test {
 
 constexpr double kRadius = MultiBodyWheelSim::kRadius;
 constexpr double kMass = MultiBodyWheelSim::kMass;
@@ -281,5 +281,5 @@ TEST(ImplicitModeTest, ADrivenWheelTendsToForceModeAsTheStepShrinks) {
   });
 }
 
-}  // namespace
+}  // namespace implicit_tread_row_test
 }  // namespace wtc::testing

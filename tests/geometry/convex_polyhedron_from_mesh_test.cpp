@@ -16,7 +16,7 @@
 #include "wtc/base/error.hpp"
 #include "wtc/geometry/point_query.hpp"
 
-namespace {
+namespace convex_polyhedron_from_mesh_test {
 
 using Eigen::Vector3d;
 using testing::AllOf;
@@ -146,4 +146,4 @@ TEST(ConvexPolyhedronFromMeshTest, RejectsInwardFacesNamingTheFirst) {
               ThrowsMessage<InvalidInputError>(HasSubstr("face 0")));
 }
 
-}  // namespace
+}  // namespace convex_polyhedron_from_mesh_test

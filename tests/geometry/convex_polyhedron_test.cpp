@@ -21,7 +21,7 @@
 #include "scenarios.hpp"
 #include "wtc/base/error.hpp"
 
-namespace {
+namespace convex_polyhedron_test {
 
 using Eigen::Vector3d;
 using testing::AllOf;
@@ -313,4 +313,4 @@ TEST(ConvexPolyhedronTest, CopiesAndMovesAreIndependentPieces) {
   for (int k = 0; k < 100; ++k) expectSamePiece(grown[k], k % 2 == 0 ? reference : churn[k % 8]);
 }
 
-}  // namespace
+}  // namespace convex_polyhedron_test

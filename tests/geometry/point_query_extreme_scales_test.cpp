@@ -16,7 +16,7 @@
 #include "wtc/base/error.hpp"
 #include "wtc/geometry/point_query.hpp"
 
-namespace {
+namespace point_query_extreme_scales_test {
 
 using Eigen::Vector3d;
 using wtc::ConvexPolyhedron;
@@ -145,4 +145,4 @@ TEST(PointQueryExtremeTest, QueryPointsAGigametreAwayAreExactToDoubleResolution)
   }
 }
 
-}  // namespace
+}  // namespace point_query_extreme_scales_test

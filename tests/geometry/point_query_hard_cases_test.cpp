@@ -17,7 +17,7 @@
 #include "wtc/base/error.hpp"
 #include "wtc/geometry/point_query.hpp"
 
-namespace {
+namespace point_query_hard_cases_test {
 
 using Eigen::Vector3d;
 using testing::AnyOf;
@@ -219,4 +219,4 @@ TEST(PointQueryHardCaseTest, NearlyCoincidentVerticesAboveTheMergeToleranceStayE
   wtc::test::expectRandomQueriesMatchOracle(poly, 5000, 11, kTolerance * poly.size(), kTolerance * poly.size());
 }
 
-}  // namespace
+}  // namespace point_query_hard_cases_test

@@ -16,7 +16,7 @@
 #include "wtc/base/error.hpp"
 #include "wtc/geometry/point_query.hpp"
 
-namespace {
+namespace point_query_options_test {
 
 using Eigen::Vector3d;
 using testing::AllOf;
@@ -232,4 +232,4 @@ TEST(PointQueryOptionsTest, CacheFromAnotherPieceIsHarmless) {
   }
 }
 
-}  // namespace
+}  // namespace point_query_options_test

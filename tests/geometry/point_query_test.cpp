@@ -19,7 +19,7 @@
 #include "scenarios.hpp"
 #include "wtc/base/error.hpp"
 
-namespace {
+namespace point_query_test {
 
 using Eigen::Vector3d;
 using wtc::PointQuery;
@@ -196,4 +196,4 @@ TEST(PointQueryTest, WarmStartedQueriesAlongRandomPathsMatchBruteForce) {
   EXPECT_EQ(failures, 0) << "failed cases out of 10000";
 }
 
-}  // namespace
+}  // namespace point_query_test

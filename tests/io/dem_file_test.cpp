@@ -48,7 +48,7 @@ Raster smallRaster() {
               30.0, 31.0, 32.0, 33.5};  // south row
   r.geotransform = std::array<double, 6>{1000.0, 0.5, 0.0, 2003.0, 0.0, -0.5};
   r.epsg = 32633;  // WGS 84 / UTM zone 33N, metres
-  r.unit = "m";
+  r.unit = std::string("m");  // not = "m": GCC 12 warns falsely (-Wrestrict) on that assignment, inlined at -O2
   return r;
 }
 

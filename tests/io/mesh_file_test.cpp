@@ -19,7 +19,7 @@
 #include "wtc/terrain/terrain.hpp"
 
 namespace wtc::io {
-namespace {
+namespace mesh_file_test {
 
 using ::testing::AllOf;
 using testing::errorOf;
@@ -314,5 +314,5 @@ TEST_F(MeshFileTest, BadOptionsAreRejected) {
               HasSubstr("pose_WM must be a finite rigid transform"));
 }
 
-}  // namespace
+}  // namespace mesh_file_test
 }  // namespace wtc::io

@@ -17,7 +17,7 @@
 #include "wtc/terrain/terrain_primitives.hpp"
 
 namespace wtc::io {
-namespace {
+namespace terrain_file_test {
 
 using ::testing::AllOf;
 using testing::errorOf;
@@ -372,11 +372,11 @@ TEST_F(TerrainFileTest, DegenerateMeshTrianglesAreWarnedOfAndAMeshOfNothingElseI
                                     ": 1 of 3 triangles are degenerate (zero area), skipped");
 }
 
-}  // namespace
+}  // namespace terrain_file_test
 }  // namespace wtc::io
 
 namespace wtc::io {
-namespace {
+namespace terrain_file_test {
 
 // A material's soil: a shipped one by name, a map of its fields over a
 // shipped base, and a value out of range refused with the file, line and field.
@@ -407,5 +407,5 @@ TEST_F(TerrainFileTest, AMaterialTakesASoilByNameOrByItsFields) {
               HasSubstr("bekker"));
 }
 
-}  // namespace
+}  // namespace terrain_file_test
 }  // namespace wtc::io

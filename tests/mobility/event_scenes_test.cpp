@@ -20,7 +20,7 @@
 #include "wtc/vehicle/vehicle_file.hpp"
 
 namespace wtc::mobility {
-namespace {
+namespace event_scenes_test {
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
@@ -160,5 +160,5 @@ TEST(EventScenesTest, TheRobotTurnsInPlaceAtTheSlipLawsYawRateInEveryEngine) {
   }
 }
 
-}  // namespace
+}  // namespace event_scenes_test
 }  // namespace wtc::mobility

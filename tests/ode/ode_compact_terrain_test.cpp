@@ -19,7 +19,7 @@
 #include "wtc/ode/terrain_geoms.hpp"
 
 namespace wtc {
-namespace {
+namespace ode_compact_terrain_test {
 
 using testing::OdeWorld;
 using testing::PluginFieldScene;
@@ -199,5 +199,5 @@ INSTANTIATE_TEST_SUITE_P(Parts, OdeCompactTerrainTest,
                            return testing::nameOf(info.param);
                          });
 
-}  // namespace
+}  // namespace ode_compact_terrain_test
 }  // namespace wtc

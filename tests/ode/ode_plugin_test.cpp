@@ -15,7 +15,7 @@
 #include "wtc/tyre/contact_mode.hpp"
 
 namespace wtc {
-namespace {
+namespace ode_plugin_test {
 
 using ::testing::HasSubstr;
 using testing::kGravityMps2;
@@ -427,5 +427,5 @@ TEST(OdePluginTest, BadRegistrationIsAnErrorThatNamesIt) {
   EXPECT_THROW(w.plugin->forces(7), std::out_of_range);
 }
 
-}  // namespace
+}  // namespace ode_plugin_test
 }  // namespace wtc

@@ -20,7 +20,7 @@
 #include "wtc/tyre/traction_law.hpp"
 
 namespace wtc {
-namespace {
+namespace ode_scenes_test {
 
 using Eigen::Vector3d;
 using testing::kGravityMps2;
@@ -315,5 +315,5 @@ INSTANTIATE_TEST_SUITE_P(ModesAndSteps, OdeParkedTest, ::testing::ValuesIn(parke
   return caseName(info.param.solver) + "_" + std::to_string(std::lround(info.param.step_seconds * 1e4)) + "e4s";
 });
 
-}  // namespace
+}  // namespace ode_scenes_test
 }  // namespace wtc

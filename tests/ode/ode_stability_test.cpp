@@ -10,7 +10,7 @@
 #include "wtc/tyre/explicit_stability.hpp"
 
 namespace wtc {
-namespace {
+namespace ode_stability_test {
 
 using testing::kGravityMps2;
 using testing::OdeWorld;
@@ -78,5 +78,5 @@ TEST(OdeStabilityTest, LargestStableStepOfEachModeForAStiffTyre) {
   }
 }
 
-}  // namespace
+}  // namespace ode_stability_test
 }  // namespace wtc

@@ -21,7 +21,7 @@
 #include "wtc/vehicle/urdf_file.hpp"
 
 namespace wtc::testing {
-namespace {
+namespace rover_scenes_test {
 
 namespace fs = std::filesystem;
 const fs::path kRoot = fs::path(WTC_SOURCE_DIR);
@@ -162,5 +162,5 @@ TEST(RoverScenesTest, AMimicAboutParallelAxesIsHeldByBulletAndRefusedByOdeByName
   }
 }
 
-}  // namespace
+}  // namespace rover_scenes_test
 }  // namespace wtc::testing

@@ -18,7 +18,7 @@
 #include "wtc/tyre/traction_law.hpp"
 
 namespace wtc::sim {
-namespace {
+namespace scene_file_test {
 
 using ::testing::HasSubstr;
 namespace fs = std::filesystem;
@@ -194,8 +194,8 @@ TEST(SceneFileTest, BadScenesAreRefusedWithFileLineKeyAndProblem) {
 // 1:1; they name the override.
 TEST(SceneFileTest, ErrorsInAnOverridesValueNameTheOverride) {
   EXPECT_THAT(errorOf(kMinimal, {parseOverride("dt=-1")}),
-              testing::AllOf(HasSubstr("wtc_scene_file_test.yaml.tmp: --set dt=-1: dt: must be > 0 s"),
-                             testing::Not(HasSubstr(":1:1:"))));
+              ::testing::AllOf(HasSubstr("wtc_scene_file_test.yaml.tmp: --set dt=-1: dt: must be > 0 s"),
+                             ::testing::Not(HasSubstr(":1:1:"))));
   EXPECT_THAT(
       errorOf(kMinimal, {parseOverride("vehicle={file: ../vehicles/six_wheel_robot.yaml, translation: [0, x, 0]}")}),
       HasSubstr(": --set vehicle={file: ../vehicles/six_wheel_robot.yaml, translation: [0, x, 0]}: vehicle: "
@@ -286,11 +286,11 @@ TEST(SceneFileTest, AStepThatDoesNotDivideTheDurationIsRefused) {
   EXPECT_EQ(errorOf(kMinimal, {{"duration", "0.3"}, {"dt", "0.1"}}), "no error");
 }
 
-}  // namespace
+}  // namespace scene_file_test
 }  // namespace wtc::sim
 
 namespace wtc::sim {
-namespace {
+namespace scene_file_test {
 
 // A controller that holds every drive off, as a layer above would register
 // one (the Python bindings' `type: python`).
@@ -380,5 +380,5 @@ TEST(SceneFileTest, TheRigsKeysAreReadAndTheirMisusesRefusedWhereTheyStand) {
               HasSubstr("controller.schedules[0]: off_after: the schedule's mode is off already"));
 }
 
-}  // namespace
+}  // namespace scene_file_test
 }  // namespace wtc::sim

@@ -16,7 +16,7 @@
 #include "wtc/sim/scene_run.hpp"
 
 namespace wtc::testing {
-namespace {
+namespace steered_car_test {
 
 namespace fs = std::filesystem;
 
@@ -101,5 +101,5 @@ TEST_P(SteeredCarTest, AMimicSteeringLinkageTurnsBothKnuckles) {
 INSTANTIATE_TEST_SUITE_P(EveryEngine, SteeredCarTest, ::testing::ValuesIn(everyEngine()),
                          [](const auto& info) { return label(info.param); });
 
-}  // namespace
+}  // namespace steered_car_test
 }  // namespace wtc::testing

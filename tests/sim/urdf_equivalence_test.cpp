@@ -20,7 +20,7 @@
 #include "wtc/sim/scene_run.hpp"
 
 namespace wtc::testing {
-namespace {
+namespace urdf_equivalence_test {
 
 namespace fs = std::filesystem;
 const fs::path kRoot = fs::path(WTC_SOURCE_DIR);
@@ -108,5 +108,5 @@ TEST(UrdfEquivalenceTest, TowedPathSeriesFromUrdfEqualTheYamlSystemsInBothEngine
   }
 }
 
-}  // namespace
+}  // namespace urdf_equivalence_test
 }  // namespace wtc::testing

@@ -15,7 +15,7 @@
 #include "wtc/terrain/terrain.hpp"
 
 namespace wtc {
-namespace {
+namespace terrain_primitives_test {
 
 using ::testing::AllOf;
 using ::testing::HasSubstr;
@@ -176,11 +176,11 @@ TEST(TerrainPrimitivesTest, ALedgeAsAHeightfieldIsTheSameGroundAwayFromItsFace) 
   turned.pose_WL.linear() = Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   EXPECT_THAT(
       [&] { addLedge(f.builder, turned, f.material); },
-      testing::ThrowsMessage<InvalidInputError>(HasSubstr("heightfield_spacing needs a pose without rotation")));
+      ::testing::ThrowsMessage<InvalidInputError>(HasSubstr("heightfield_spacing needs a pose without rotation")));
   LedgeParams negative = ledge;
   negative.heightfield_spacing = -0.01;
   EXPECT_THAT([&] { addLedge(f.builder, negative, f.material); },
-              testing::ThrowsMessage<InvalidInputError>(HasSubstr("heightfield_spacing")));
+              ::testing::ThrowsMessage<InvalidInputError>(HasSubstr("heightfield_spacing")));
 }
 
 TEST(TerrainPrimitivesTest, StairsClimbOneRisePerRun) {
@@ -286,5 +286,5 @@ TEST(TerrainPrimitivesTest, UnknownMaterialIsRejectedBeforeAnyPieceIsAdded) {
   EXPECT_EQ(f.builder.pieceCount(), 0u);
 }
 
-}  // namespace
+}  // namespace terrain_primitives_test
 }  // namespace wtc

@@ -11,7 +11,7 @@
 #include "wtc/terrain/terrain.hpp"
 
 namespace wtc {
-namespace {
+namespace triangle_mesh_test {
 
 using ::testing::AllOf;
 using ::testing::HasSubstr;
@@ -141,5 +141,5 @@ TEST(TriangleMeshTest, BadInputIsNamedByPartTriangleAndVertex) {
   EXPECT_EQ(builder.pieceCount(), 0u);
 }
 
-}  // namespace
+}  // namespace triangle_mesh_test
 }  // namespace wtc

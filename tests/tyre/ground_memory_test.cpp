@@ -18,7 +18,7 @@
 #include "wtc/tyre/wheel_soil.hpp"
 
 namespace wtc {
-namespace {
+namespace ground_memory_test {
 
 using testing::kGravityMps2;
 using testing::SimWheel;
@@ -260,5 +260,5 @@ TEST(GroundMemoryTest, OutsideItsRegionsTheSoilForgets) {
   EXPECT_TRUE(memory.at(0.0, 0.0).fresh);
 }
 
-}  // namespace
+}  // namespace ground_memory_test
 }  // namespace wtc

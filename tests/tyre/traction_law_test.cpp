@@ -10,7 +10,7 @@
 #include "wtc/base/tolerances.hpp"
 
 namespace wtc {
-namespace {
+namespace traction_law_test {
 
 constexpr double kTolerance = 1e-12;
 
@@ -109,5 +109,5 @@ TEST(TractionLawTest, SaturationSlipBoundsTheDistanceToMuMax) {
   }
 }
 
-}  // namespace
+}  // namespace traction_law_test
 }  // namespace wtc

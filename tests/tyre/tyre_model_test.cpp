@@ -18,7 +18,7 @@
 #include "wtc/tyre/traction_law.hpp"
 
 namespace wtc {
-namespace {
+namespace tyre_model_test {
 
 using Eigen::Vector3d;
 using ::testing::HasSubstr;
@@ -425,5 +425,5 @@ TEST(TyreModelTest, BadInputIsAnErrorThatNamesIt) {
   EXPECT_THAT(message(bad, {}, kStepSeconds), HasSubstr("free_radius = -0.19"));
 }
 
-}  // namespace
+}  // namespace tyre_model_test
 }  // namespace wtc

@@ -17,7 +17,7 @@
 #include "wtc/base/error.hpp"
 
 namespace wtc {
-namespace {
+namespace wheel_soil_test {
 
 using ::testing::HasSubstr;
 
@@ -289,5 +289,5 @@ TEST(WheelSoilTest, AgainstDingEtAl2011sMeasuredWheel) {
   RecordProperty("worst_sinkage_difference_mm", std::to_string(worst_sinkage * 1e3));
 }
 
-}  // namespace
+}  // namespace wheel_soil_test
 }  // namespace wtc

@@ -9,7 +9,7 @@
 #include "wtc/base/error.hpp"
 
 namespace wtc::vehicle {
-namespace {
+namespace hitch_law_test {
 
 constexpr double kTolerance = 1e-9;
 
@@ -82,5 +82,5 @@ TEST(HitchLawTest, ATugPointingStraightUpIsRefused) {
   EXPECT_THROW(hitchForce(hitch(), a, at({-3, 0, 0}), true), InvalidInputError);
 }
 
-}  // namespace
+}  // namespace hitch_law_test
 }  // namespace wtc::vehicle

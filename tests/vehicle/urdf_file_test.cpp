@@ -13,7 +13,7 @@
 #include "wtc/geometry/convex_polyhedron.hpp"
 
 namespace wtc::vehicle {
-namespace {
+namespace urdf_file_test {
 
 using ::testing::HasSubstr;
 constexpr double kTolerance = 1e-12;
@@ -253,5 +253,5 @@ TEST(UrdfFileTest, RefusesAPackageFoundOnNoPackagePathNamingTheFolders) {
   expectRefused("package_mesh.urdf", {"package://wtc_test_pkg", "the package path is empty"});
 }
 
-}  // namespace
+}  // namespace urdf_file_test
 }  // namespace wtc::vehicle

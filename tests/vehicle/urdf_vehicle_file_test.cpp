@@ -13,7 +13,7 @@
 #include "wtc/vehicle/vehicle_file.hpp"
 
 namespace wtc::vehicle {
-namespace {
+namespace urdf_vehicle_file_test {
 
 using ::testing::HasSubstr;
 constexpr double kTolerance = 1e-12;
@@ -173,5 +173,5 @@ TEST(UrdfVehicleFileTest, PathControllerSteersByTheBodysOwnAxesNotItsPrincipalAx
   EXPECT_LT((path.pointC(turned) - Eigen::Vector2d(-expected.y(), expected.x())).norm(), 1e-12);
 }
 
-}  // namespace
+}  // namespace urdf_vehicle_file_test
 }  // namespace wtc::vehicle

@@ -9,7 +9,7 @@
 #include "wtc/base/error.hpp"
 
 namespace wtc::vehicle {
-namespace {
+namespace vehicle_description_test {
 
 using ::testing::HasSubstr;
 constexpr double kTolerance = 1e-12;
@@ -154,5 +154,5 @@ TEST(VehicleDescriptionTest, SizesAreNamedBeforeTheInertiaTheyMake) {
   EXPECT_THAT(errorOf(v), HasSubstr("body 'root': translation: (0, 2e+06, 0) m is beyond 1e+06 m of the origin"));
 }
 
-}  // namespace
+}  // namespace vehicle_description_test
 }  // namespace wtc::vehicle

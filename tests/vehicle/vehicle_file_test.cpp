@@ -13,7 +13,7 @@
 #include "wtc/base/error.hpp"
 
 namespace wtc::vehicle {
-namespace {
+namespace vehicle_file_test {
 
 using ::testing::HasSubstr;
 using vehicle::JointType;
@@ -164,5 +164,5 @@ TEST(VehicleFileTest, ErrorsInInheritedValuesNameTheirLineInWheelDefaultsAndTheW
               HasSubstr(":8:3: bodies[1] (w1): unknown key 'mas'"));
 }
 
-}  // namespace
+}  // namespace vehicle_file_test
 }  // namespace wtc::vehicle

@@ -89,6 +89,12 @@ inline constexpr double kSoilFreshEntryRelative = 1e-12;
 inline constexpr double kSoilEntryRelative = 1e-9;
 inline constexpr double kSoilEntryRad = 1e-9;
 
+/// A point is a soil grid's node when it lies within this fraction of the
+/// grid's spacing of it, along x and y (dimensionless): a saved ground
+/// memory's coordinates, printed to 17 digits, are the nodes' own to
+/// roundoff; a point a micrometre off a 2 cm grid's node is another point.
+inline constexpr double kSoilNodeRelative = 1e-6;
+
 }  // namespace wtc::tolerance
 
 namespace wtc::tolerance {

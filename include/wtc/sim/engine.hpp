@@ -176,6 +176,11 @@ class Engine {
 /// V in the world) times its reference pose, for an engine to build from.
 Eigen::Isometry3d startPose(const vehicle::VehicleDescription& vehicle, int body, const Eigen::Isometry3d& placement);
 
+/// The memory of the soft ground the engine's WTC wheels share
+/// (wtc/tyre/ground_memory.hpp): null where the terrain has no soil regions
+/// or the vehicle no WTC wheels.
+GroundMemory* groundMemory(const Engine& engine);
+
 /// What a tyre model needs of a wheel body: its geometry and tyre, and as
 /// inertia the body's own mass and its moment about the axle.
 WheelDescription wheelDescription(const vehicle::Body& body);

@@ -48,6 +48,7 @@ class Replay final : public RunObserver {
  private:
   const Scene& scene_;
   double period_;
+  std::uint64_t last_step_;  // the run's step count: its end
   double next_ = 0.0;
   std::vector<long long> times_ms_;
   std::vector<long long> poses_;                  // per frame: per body x y z (mm) qw qx qy qz (1e-4)

@@ -13,6 +13,7 @@
 #include "wtc/sim/drawbar.hpp"
 #include "wtc/sim/engine.hpp"
 #include "wtc/sim/tilt_table.hpp"
+#include "wtc/tyre/ground_memory.hpp"
 #include "wtc/vehicle/controller.hpp"
 #include "wtc/vehicle/vehicle_effects.hpp"
 
@@ -52,6 +53,10 @@ struct Scene {
   EngineSettings engine;
   double duration_seconds = 0.0;
   std::shared_ptr<const Terrain> terrain;
+  /// The ruts the run starts on (scene key ground_memory_from: a file
+  /// wtc::io::writeGroundMemoryCsv wrote, as wtc-sim does at a run's end),
+  /// over the terrain's soil regions; null: fresh soil.
+  std::shared_ptr<const GroundMemory> start_ruts;
   vehicle::VehicleDescription vehicle;
   Eigen::Isometry3d placement{Eigen::Isometry3d::Identity()};  ///< The vehicle frame V in the world.
   /// The vehicle's velocity at the start (m/s, in V), its wheels rolling

@@ -48,6 +48,13 @@ class GroundMemory {
   /// it; a node raised by bulldozing has a negative plastic sinkage).
   void forEachTouchedNode(const std::function<void(double x, double y, const SoilMemory& memory)>& visit) const;
   std::size_t bytes() const;
+  /// Writes the node at world (x, y) as `memory` (its max_pressure rounded
+  /// up to the stored precision): a node forEachTouchedNode gave, back
+  /// (ruts saved by one run and read by another, wtc/io/ground_memory_file.hpp).
+  /// False, and nothing written, where (x, y) is no region's node (within
+  /// tolerance::kSoilNodeRelative of its spacing) or memory is not finite in
+  /// single precision (or its pressure is negative).
+  bool setNode(double x, double y, const SoilMemory& memory);
   /// Forgets every rut (a new run on the same terrain).
   void clear();
 

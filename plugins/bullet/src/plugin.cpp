@@ -419,6 +419,7 @@ const WheelState& Plugin::state(WheelId wheel) const {
   return state_->wheels.at(static_cast<std::size_t>(wheel))->mounted.state();
 }
 const GroundMemory& Plugin::groundMemory() const { return state_->ground_memory; }
+GroundMemory& Plugin::groundMemory() { return state_->ground_memory; }
 int Plugin::wheelCount() const { return static_cast<int>(state_->wheels.size()); }
 double Plugin::contactSeconds() const { return state_->clock.seconds(); }
 ContactMode Plugin::mode() const { return state_->mode; }

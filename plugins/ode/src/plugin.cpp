@@ -293,6 +293,7 @@ const WheelForces& Plugin::applied(WheelId wheel) const { return state_->applied
 
 const WheelState& Plugin::state(WheelId wheel) const { return state_->wheel(wheel).mounted.state(); }
 const GroundMemory& Plugin::groundMemory() const { return state_->ground_memory; }
+GroundMemory& Plugin::groundMemory() { return state_->ground_memory; }
 std::span<const SolvedContact> Plugin::solvedContacts(WheelId wheel) const { return state_->wheel(wheel).contacts; }
 const WheelDiagnostics& Plugin::diagnostics(WheelId wheel) const { return state_->wheel(wheel).diagnostics; }
 int Plugin::wheelCount() const { return static_cast<int>(state_->wheels.size()); }

@@ -110,8 +110,10 @@ class Plugin {
   const WheelForces& applied(WheelId wheel) const;
   const WheelState& state(WheelId wheel) const;
   /// What the terrain's soil regions remember (wtc/tyre/ground_memory.hpp):
-  /// every wheel reads and presses it; empty without a region.
+  /// every wheel reads and presses it; empty without a region. Writable
+  /// between steps: ruts a run left, read back (wtc/io/ground_memory_file.hpp).
   const GroundMemory& groundMemory() const;
+  GroundMemory& groundMemory();
   int wheelCount() const;
   /// Wall time (s) the plugin's own per-step work took since construction:
   /// reading the wheels' state, their contacts, the tyre model and handing

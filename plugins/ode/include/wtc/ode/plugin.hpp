@@ -138,8 +138,10 @@ class Plugin {
   const WheelForces& forces(WheelId wheel) const;
   const WheelState& state(WheelId wheel) const;
   /// What the terrain's soil regions remember (wtc/tyre/ground_memory.hpp):
-  /// every wheel reads and presses it; empty without a region.
+  /// every wheel reads and presses it; empty without a region. Writable
+  /// between steps: ruts a run left, read back (wtc/io/ground_memory_file.hpp).
   const GroundMemory& groundMemory() const;
+  GroundMemory& groundMemory();
   /// What acted on the wheel in the last world step (call it after the
   /// step): forces() in force mode; in constraint mode the forces ODE's
   /// solver applied at each contact (the joints' feedback), their wrench
