@@ -47,7 +47,9 @@ set(ENV{LSAN_OPTIONS} "suppressions=${SOURCE_DIR}/tests/sanitizer_suppressions.t
 # second rover driving in them; HardCasesTest's driven run over the rough
 # ground for Bullet's and ODE's whole runs of it; UrdfVehicleFileTest's
 # towed system read from URDF equal to the YAML one, and the robot's URDF
-# series, for the towed system's URDF series).
+# series, for the towed system's URDF series; BallSoilTest's ball caster
+# stepped on ground that remembers, and the soil scenes' starts, for the
+# towed system's stall on loam in both engines).
 # Each of these ran
 # 5-45 s unsanitized, several times that here (the last three 41-44 s each
 # on two cores, 2026-11-30). The replay page's tests
@@ -70,6 +72,7 @@ set(long_runs "VehicleScenesTest.EveryShippedSceneRunsShortenedInEveryEngineWith
               "SoilTestBedTest.EachWheelSettlesAtTheSoilsSteadyStateInBothEngines"
               "SoilVehiclesTest.EachSoilSceneSucceedsAndTheGroundCarriesTheVehicleInBothEnginesAndModes"
               "SoilVehiclesTest.ASecondRoverDrivesInTheRutsTheFirstOneLeaves"
+              "SoilVehiclesTest.TheTowedSystemStallsOnLoamWhereTheSoilsSteadyStatesSay"
               "VehicleScenesTest.BulletAndOdeAgreeOnTheDistanceDrivenOverRoughGround"
               "UrdfEquivalenceTest.TowedPathSeriesFromUrdfEqualTheYamlSystemsInBothEnginesAndModes")
 list(JOIN long_runs "|" long_runs)

@@ -220,9 +220,9 @@ void readEffects(const YamlReader& in, const YAML::Node& node, sim::Scene& scene
   }
 }
 
-// The soft_soil effect integrates the soil's stresses over the rim of
-// WTC's wheel taken as a cylinder (docs/soft-soil.md): not the engine's own
-// wheels (their contact knows no soil), not a full sphere (w >= 2 r_f).
+// The soft_soil effect integrates the soil's stresses over WTC's wheels (a
+// cylinder's rim, a ball's slices: docs/soft-soil.md), not the engine's own
+// wheels, whose contact knows no soil.
 void checkSoilWheels(const YamlReader& in, const YAML::Node& at, const Scene& scene) {
   if (!scene.engine.tyre_effects.has(Effect::kSoftSoil)) return;
   const auto& materials = scene.terrain->materials();
@@ -230,15 +230,6 @@ void checkSoilWheels(const YamlReader& in, const YAML::Node& at, const Scene& sc
   if (scene.engine.native_wheels) {
     in.fail(at, "effects: soft_soil acts on WTC's wheels; mode " + std::string(modeName(scene.engine)) +
                     " gives the wheels to the engine, whose contact knows no soil (docs/soft-soil.md)");
-  }
-  for (const int b : scene.vehicle.wheels()) {
-    const auto& body = scene.vehicle.bodies[static_cast<std::size_t>(b)];
-    const WheelGeometry& g = body.wheel->geometry;
-    if (g.tread_width >= 2.0 * g.free_radius) {
-      in.fail(at, "effects: soft_soil: wheel '" + body.name + "' is a sphere (width " + formatNumber(g.tread_width) +
-                      " m >= twice its radius " + formatNumber(g.free_radius) +
-                      " m); the soil's stresses are integrated over a cylinder's rim (docs/soft-soil.md)");
-    }
   }
 }
 

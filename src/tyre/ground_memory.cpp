@@ -159,7 +159,8 @@ void pressNodes(SoilGrid& grid, const Soil& soil, const RimPress& p) {
       const Eigen::Vector2d at = spec.origin + spec.spacing * Eigen::Vector2d(i, j), d = at - p.bottom;
       const double s = d.dot(p.travel), across = d.dot(side);
       if (std::abs(across) > half || s > ahead || s < behind) continue;
-      const double depth = p.depth - (r - std::sqrt(std::max(0.0, r * r - s * s)));
+      const double offset = p.ball ? s * s + across * across : s * s;
+      const double depth = p.depth - (r - std::sqrt(std::max(0.0, r * r - offset)));
       const SoilNode node = grid.node(i, j);
       const SoilMemory before = memoryOf(node);
       const SoilMemory after = pressedSoil(soil, p.width, before, depth);

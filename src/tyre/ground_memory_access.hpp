@@ -26,10 +26,13 @@ struct GroundMemoryAccess {
 /// point fresh, on part 1's virgin curve, until that point has passed (the
 /// deepest it presses a point; behind it, where the rim rises, pressedSoil
 /// changes nothing); a wheel at rest presses the whole hollow it sits in.
+/// A ball's surface rises across the band too: Z = depth - (r - sqrt(r^2 -
+/// s^2 - y^2)), y the node's offset across, its band the patch's width.
 struct RimPress {
   Eigen::Vector2d bottom, travel;
   double radius, width, depth, entry_angle;
-  double at_rest;  ///< The contact's symmetry, [0, 1] (WheelSoilState::symmetry).
+  double at_rest;     ///< The contact's symmetry, [0, 1] (WheelSoilState::symmetry).
+  bool ball = false;  ///< A sphere's patch (sphereSoilForces), not a cylinder's band.
 };
 void pressNodes(SoilGrid& grid, const Soil& soil, const RimPress& press);
 

@@ -34,32 +34,83 @@
 #include "wtc/tyre/wheel_soil.hpp"
 
 namespace wtc::detail {
+namespace {
+
+// The travel frame of one contact (n the surface's normal): the travel t,
+// the axle laid on the surface n x t (the lateral), the axis the rim spins
+// about, and the speeds along them.
+struct SoilFrame {
+  Eigen::Vector3d travel, lateral, spin_axis;
+  double v = 0.0, rim = 0.0, v_y = 0.0;  ///< V . t, the rim's speed along t, the side slip's speed.
+};
+
+// A wheel: t = +-(a x n) / |a x n|, the sign the way it moves (none on its
+// side, the axle along the normal: no arc to integrate).
+std::optional<SoilFrame> wheelFrame(const KernelInputs& in, const Eigen::Vector3d& n) {
+  Eigen::Vector3d travel = in.axle.cross(n);
+  const double across = travel.norm();
+  if (across < tolerance::kWheelOnItsSideSine) return std::nullopt;
+  travel /= across;
+  SoilFrame f;
+  f.lateral = n.cross(travel);
+  const double v_x = in.motion->velocity.dot(travel);
+  const double rim_x = in.free_radius * in.motion->angular_velocity.dot(in.axle);
+  const double direction = v_x + rim_x >= 0.0 ? 1.0 : -1.0;
+  f.travel = direction * travel;
+  f.spin_axis = direction * in.axle;
+  f.v = direction * v_x;
+  f.rim = direction * rim_x;
+  f.v_y = in.motion->velocity.dot(f.lateral);
+  return f;
+}
+
+// A ball rolls about any axle: t is the way its centre's travel and its
+// rim's roll (r omega x n) carry it together, the axle n x t; the side slip
+// is its lowest point's, V . a + r omega . t. Where both are below a
+// rounding's reach of the slip floor (a ball dropped straight down) the
+// frame is its body's axle's, as a wheel's, or the surface's own.
+SoilFrame ballFrame(const KernelInputs& in, const Eigen::Vector3d& n) {
+  const Eigen::Vector3d& velocity = in.motion->velocity;
+  const Eigen::Vector3d& spin = in.motion->angular_velocity;
+  const double r = in.free_radius;
+  const Eigen::Vector3d travel = velocity - velocity.dot(n) * n + r * spin.cross(n);
+  std::optional<SoilFrame> f;
+  if (travel.norm() >= tolerance::kWheelOnItsSideSine * in.slip_speed_floor) {
+    // v + rim = |travel|^2 / |travel| >= 0: oriented as wheelFrame orients.
+    f.emplace();
+    f->travel = travel.normalized();
+  } else if (!(f = wheelFrame(in, n))) {
+    KernelInputs surface = in;
+    surface.axle = n.unitOrthogonal();
+    f = wheelFrame(surface, n);
+  }
+  f->lateral = n.cross(f->travel);
+  f->spin_axis = f->lateral;
+  f->v = velocity.dot(f->travel);
+  f->rim = r * spin.dot(f->spin_axis);
+  f->v_y = velocity.dot(f->lateral) + r * spin.dot(f->travel);
+  return *f;
+}
+
+}  // namespace
 
 void applySoil(const KernelInputs& in, double width, std::span<const WheelContact> contacts, GroundMemory* memory,
                ContactForce* out) {
   const double r = in.free_radius, eps = in.slip_speed_floor;
-  const Eigen::Vector3d& a = in.axle;
+  const bool ball = width >= 2.0 * r;  // the tread is a whole sphere (wheel_contact.hpp)
   for (std::size_t k = 0; k < contacts.size(); ++k) {
     const WheelContact& c = contacts[k];
     const Material& material = in.materials[static_cast<std::size_t>(c.material)];
     if (!material.soil) continue;
     const Eigen::Vector3d n = -c.e;
-    Eigen::Vector3d travel = a.cross(n);
-    const double across = travel.norm();
     ContactForce& f = out[k];
     f = ContactForce{};
     f.contact = c;
     f.soft_soil = true;
-    // A wheel on its side (axle along the normal) has no arc to integrate.
-    if (across < tolerance::kWheelOnItsSideSine) continue;
-    travel /= across;
-    const Eigen::Vector3d lateral = n.cross(travel);
-    const double v_x = in.motion->velocity.dot(travel);
-    const double rim_x = r * in.motion->angular_velocity.dot(a);
-    const double direction = v_x + rim_x >= 0.0 ? 1.0 : -1.0;
-    travel *= direction;
-    const double v = direction * v_x, rim = direction * rim_x;
-    const double v_y = in.motion->velocity.dot(lateral);
+    const std::optional<SoilFrame> frame = ball ? ballFrame(in, n) : wheelFrame(in, n);
+    if (!frame) continue;
+    const Eigen::Vector3d &travel = frame->travel, &lateral = frame->lateral;
+    const double v = frame->v, rim = frame->rim;
 
     // The ground's memory under P along the travel's horizontal direction
     // (none on a travel near the vertical: a wheel falling into the soil).
@@ -73,54 +124,67 @@ void applySoil(const KernelInputs& in, double width, std::span<const WheelContac
       profile.emplace(*grid, bottom, level);
     }
 
-    WheelSoilState state;
-    state.radius = r;
-    state.width = width;
-    state.sinkage = grid != nullptr ? c.deflection : std::min(c.deflection, r);
-    if (profile) state.memory = &*profile;
-    state.slip = soilSlip(v, rim, eps);
-    state.slip_angle = std::atan2(v_y, std::max(v, eps));
-    WheelSoilForces soil = wheelSoilForces(*material.soil, state);
+    const double sinkage = grid != nullptr ? c.deflection : std::min(c.deflection, r);
+    const SoilMemoryProfile* remembered = profile ? &*profile : nullptr;
+    const auto forcesAt = [&](double symmetry) {
+      if (ball) {
+        return sphereSoilForces(*material.soil, {.radius = r, .sinkage = sinkage, .travel_speed = v,
+                                                 .rim_speed = rim, .side_slip_speed = frame->v_y,
+                                                 .speed_floor = eps, .symmetry = symmetry, .memory = remembered});
+      }
+      return wheelSoilForces(*material.soil, {.radius = r, .width = width, .sinkage = sinkage,
+                                              .slip = soilSlip(v, rim, eps),
+                                              .slip_angle = std::atan2(frame->v_y, std::max(v, eps)),
+                                              .symmetry = symmetry, .memory = remembered});
+    };
+    WheelSoilForces soil = forcesAt(0.0);
     // The rest ramp is wide enough that its pull and torque cannot reverse
     // the wheel within a step: h |DP| / (kappa m) in travel, r h |T| / (kappa I)
     // at the rim (the explicit step's stability, as the rolling resistance's ramp).
     const double ramp = std::max({eps, in.travel_ramp_gain * std::abs(soil.drawbar_pull),
                                   r * in.spin_ramp_gain * std::abs(soil.torque)});
-    state.symmetry = std::max(0.0, 1.0 - std::max(std::abs(v), std::abs(rim)) / ramp);
-    if (state.symmetry > 0.0) soil = wheelSoilForces(*material.soil, state);
+    const double symmetry = std::max(0.0, 1.0 - std::max(std::abs(v), std::abs(rim)) / ramp);
+    if (symmetry > 0.0) soil = forcesAt(symmetry);
     const Eigen::Vector3d point_velocity = in.motion->velocity + in.motion->angular_velocity.cross(r * c.e);
     f.deflection_rate = point_velocity.dot(c.e);
-    // The soil's damping R v_z over the contact patch b L, L = r (sin theta_1 - sin theta_2).
+    // The soil's damping R v_z over the contact patch: b L under a wheel,
+    // L = r (sin theta_1 - sin theta_2); the slices' sum under a ball.
     const double length = r * (std::sin(soil.entry_angle) - std::sin(soil.exit_angle));
-    const double damped = std::max(0.0, soil.normal + material.soil->damping * width * length * f.deflection_rate);
+    const double patch_damping = ball ? material.soil->damping * soil.patch_area : material.soil->damping * width * length;
+    const double damped = std::max(0.0, soil.normal + patch_damping * f.deflection_rate);
     const double scale = soil.normal > 0.0 ? std::min(1.0, damped / soil.normal) : 0.0;
 
     // The soil as a spring about z for the stability report and the
-    // engine-solved modes' normal row: Bekker's W ~ z^(n + 1/2) (the closed
-    // form of docs/soft-soil.md) has dW/dz = (n + 1/2) W / z.
-    const double exponent = material.soil->n + 0.5;
-    const double z = profile ? r * (1.0 - std::cos(soil.entry_angle)) : state.sinkage;
+    // engine-solved modes' normal row: Bekker's W ~ z^(n + 1/2) under a
+    // wheel (the closed form of docs/soft-soil.md), W ~ z^(n + 1) under a
+    // ball (wheel_soil.hpp), so dW/dz = e W / z with that exponent e.
+    const double exponent = material.soil->n + (ball ? 1.0 : 0.5);
+    const double z = profile ? r * (1.0 - std::cos(soil.entry_angle)) : sinkage;
     f.soil_sinkage = z;
     if (z > 0.0) {
       f.soil_stiffness = c.load_share * exponent * soil.normal / z;
       f.soil_depth = z / exponent;
     }
-    f.soil_damping = c.load_share * material.soil->damping * width * length;
+    f.soil_damping = c.load_share * patch_damping;
     const double share = c.load_share * scale;
     const Eigen::Vector3d tangential = share * (soil.drawbar_pull * travel + soil.lateral * lateral);
     f.normal_force = c.load_share * damped;
     f.tangential_force = tangential;
     f.force = f.normal_force * n + tangential;
     f.slip_velocity = point_velocity - f.deflection_rate * c.e;
-    f.slip_ratio = state.slip;
+    f.slip_ratio = soilSlip(v, rim, eps);
     f.mu = f.normal_force > 0.0 ? tangential.norm() / f.normal_force : 0.0;
     f.friction_limit = f.mu;
-    const Eigen::Vector3d spin_axis = direction * a;
-    f.rolling_moment = -share * soil.torque * spin_axis - a.dot((r * c.e).cross(f.force)) * a;
+    const Eigen::Vector3d& spin_axis = frame->spin_axis;
+    const Eigen::Vector3d axle = ball ? spin_axis : in.axle;
+    f.rolling_moment = -share * soil.torque * spin_axis - axle.dot((r * c.e).cross(f.force)) * axle;
     if (profile) {
+      // A ball's band is its patch's width 2 a, a = sqrt(z (2 r - z)) (r from the equator down).
+      const double z_band = std::min(c.deflection, r);
+      const double band = ball ? 2.0 * std::sqrt(z_band * (2.0 * r - z_band)) : width;
       pressNodes(*grid, *material.soil,
-                 {.bottom = bottom, .travel = level, .radius = r, .width = width, .depth = c.deflection,
-                  .entry_angle = soil.entry_angle, .at_rest = state.symmetry});
+                 {.bottom = bottom, .travel = level, .radius = r, .width = band,
+                  .depth = c.deflection, .entry_angle = soil.entry_angle, .at_rest = symmetry, .ball = ball});
     }
   }
 }

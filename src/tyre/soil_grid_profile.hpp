@@ -27,11 +27,15 @@ class GridProfile final : public SoilMemoryProfile {
 
   SoilMemory at(double ahead) const override {
     const Eigen::Vector2d p = bottom_ + ahead * travel_;
-    const SoilNode n = grid_.sample(p.x(), p.y());
-    // A node written carried a load: its pressure is positive (bfloat16
-    // rounds up), so zeros are ground no wheel has touched.
-    const bool fresh = n.max_pressure == 0.0f && n.plastic_sinkage == 0.0f;
-    return {.plastic_sinkage = n.plastic_sinkage, .max_pressure = n.max_pressure, .fresh = fresh};
+    return memoryOf(grid_.sample(p.x(), p.y()));
+  }
+
+  /// Beside the line along the axle laid on the ground, n x t: the travel
+  /// turned a quarter left.
+  SoilMemory beside(double ahead, double aside) const override {
+    const Eigen::Vector2d side(-travel_.y(), travel_.x());
+    const Eigen::Vector2d p = bottom_ + ahead * travel_ + aside * side;
+    return memoryOf(grid_.sample(p.x(), p.y()));
   }
 
  private:

@@ -177,34 +177,17 @@ double rememberedEntrySinkage(const WheelSoilState& state) {
   return r * (1.0 - std::cos(inner));
 }
 
-}  // namespace
-
-double reloadStress(const Soil& soil, double width, const SoilMemory& m, double depth) {
-  const double k = soil.k_c / width + soil.k_phi;
-  const double virgin = k * std::pow(std::max(0.0, depth), soil.n);
-  if (m.fresh) return virgin;
-  if (!(depth > m.plastic_sinkage)) return 0.0;
-  return std::min(soil.unloading_stiffness * (depth - m.plastic_sinkage), std::max(m.max_pressure, virgin));
+// The sinkage below the surface the rim meets: the fresh one, or the
+// remembered one at the entry; 0 when the rim is clear of the soil.
+double entrySinkage(const WheelSoilState& state) {
+  return std::clamp(state.memory != nullptr ? rememberedEntrySinkage(state) : state.sinkage, 0.0, state.radius);
 }
 
-SoilMemory pressedSoil(const Soil& soil, double width, const SoilMemory& before, double depth) {
-  const double sigma = reloadStress(soil, width, before, depth);
-  if (!(sigma > 0.0)) return before;
-  return {.plastic_sinkage = std::max(before.plastic_sinkage, depth - sigma / soil.unloading_stiffness),
-          .max_pressure = std::max(before.max_pressure, sigma),
-          .fresh = false};
-}
-
-WheelSoilForces wheelSoilForces(const Soil& soil, const WheelSoilState& state) {
-  WheelSoilForces out;
+// The arc of a rim entering the soil at sinkage z > 0.
+Arc makeArc(const Soil& soil, const WheelSoilState& state, double z) {
   const double r = state.radius, b = state.width;
-  // The sinkage below the surface the rim meets: the fresh one, or the
-  // remembered one at the entry.
-  const double z = std::clamp(state.memory != nullptr ? rememberedEntrySinkage(state) : state.sinkage, 0.0, r);
-  if (!(z > 0.0)) return out;
   const double i = std::clamp(state.slip, -1.0, 1.0);
   const double sym = std::clamp(state.symmetry, 0.0, 1.0);
-
   Arc a{};
   a.r = r;
   a.moving = 1.0 - sym;  // the shear displacement is the rolling's; a wheel at rest has none
@@ -228,19 +211,113 @@ WheelSoilForces wheelSoilForces(const Soil& soil, const WheelSoilState& state) {
   a.memory = state.memory;
   a.depth = state.sinkage;
   a.b = b;
+  return a;
+}
 
+// W, DP, T and the shear's lateral part over the arc: all but the bulldozing.
+WheelSoilForces integrateArc(const Arc& a) {
   Sums sums;
   integrate(a, a.theta2, a.theta_m, false, sums);
   integrate(a, a.theta_m, a.theta1, true, sums);
+  WheelSoilForces out;
+  const double r = a.r, b = a.b;
   out.normal = r * b * sums.w;
   out.drawbar_pull = r * b * sums.dp;
   out.torque = r * r * b * sums.torque;
-  out.bulldozing = state.slip_angle != 0.0 ? bulldozing(soil, a) : 0.0;
-  out.lateral = -(r * b * sums.lateral + std::copysign(out.bulldozing, state.slip_angle));
+  out.lateral = -(r * b * sums.lateral);
   out.entry_angle = a.theta1;
   out.exit_angle = a.theta2;
   out.max_stress_angle = a.theta_m;
   out.peak_stress = normalStress(a, std::cos(a.theta_m), a.theta_m);
+  out.patch_area = b * r * (std::sin(a.theta1) - std::sin(a.theta2));
+  return out;
+}
+
+// A ball's slice `aside` off its centre line reads the memory there.
+class BesideProfile final : public SoilMemoryProfile {
+ public:
+  BesideProfile(const SoilMemoryProfile* line, double aside) : line_(line), aside_(aside) {}
+  SoilMemory at(double ahead) const override { return line_->beside(ahead, aside_); }
+
+ private:
+  const SoilMemoryProfile* line_;
+  double aside_;
+};
+
+}  // namespace
+
+double reloadStress(const Soil& soil, double width, const SoilMemory& m, double depth) {
+  const double k = soil.k_c / width + soil.k_phi;
+  const double virgin = k * std::pow(std::max(0.0, depth), soil.n);
+  if (m.fresh) return virgin;
+  if (!(depth > m.plastic_sinkage)) return 0.0;
+  return std::min(soil.unloading_stiffness * (depth - m.plastic_sinkage), std::max(m.max_pressure, virgin));
+}
+
+SoilMemory pressedSoil(const Soil& soil, double width, const SoilMemory& before, double depth) {
+  const double sigma = reloadStress(soil, width, before, depth);
+  if (!(sigma > 0.0)) return before;
+  return {.plastic_sinkage = std::max(before.plastic_sinkage, depth - sigma / soil.unloading_stiffness),
+          .max_pressure = std::max(before.max_pressure, sigma),
+          .fresh = false};
+}
+
+WheelSoilForces wheelSoilForces(const Soil& soil, const WheelSoilState& state) {
+  const double z = entrySinkage(state);
+  if (!(z > 0.0)) return {};
+  const Arc a = makeArc(soil, state, z);
+  WheelSoilForces out = integrateArc(a);
+  out.bulldozing = state.slip_angle != 0.0 ? bulldozing(soil, a) : 0.0;
+  out.lateral -= std::copysign(out.bulldozing, state.slip_angle);
+  return out;
+}
+
+WheelSoilForces sphereSoilForces(const Soil& soil, const SphereSoilState& state) {
+  const double r = state.radius, z = state.sinkage;
+  if (!(z > 0.0)) return {};
+  const double half = z < r ? std::sqrt(z * (2.0 * r - z)) : r;  // a, the patch's half width
+  const double b = 2.0 * half;
+  const double slip_angle = std::atan2(state.side_slip_speed, std::max(state.travel_speed, state.speed_floor));
+  const auto slice = [&](double rho, const SoilMemoryProfile* memory) {
+    WheelSoilState s;
+    s.radius = rho;
+    s.width = b;
+    s.sinkage = z - (r - rho);
+    s.slip = soilSlip(state.travel_speed, state.rim_speed * rho / r, state.speed_floor);
+    s.slip_angle = slip_angle;
+    s.symmetry = state.symmetry;
+    s.memory = memory;
+    return s;
+  };
+
+  WheelSoilForces out;
+  const GaussLegendre& rule = gaussLegendre();
+  for (int k = 0; k < kNodes; ++k) {
+    const double y = half * rule.x[k], rho = std::sqrt(r * r - y * y);
+    const BesideProfile beside(state.memory, y);
+    const WheelSoilState s = slice(rho, state.memory != nullptr ? &beside : nullptr);
+    const double zk = entrySinkage(s);
+    if (!(zk > 0.0)) continue;
+    const WheelSoilForces f = integrateArc(makeArc(soil, s, zk));
+    const double per_width = half * rule.w[k] / b;  // the slice's dy over the b integrateArc multiplied
+    out.normal += per_width * f.normal;
+    out.drawbar_pull += per_width * f.drawbar_pull;
+    out.torque += per_width * f.torque;
+    out.lateral += per_width * f.lateral;
+    out.patch_area += per_width * f.patch_area;
+  }
+  // The centre line's angles; the bulldozing of the leading side.
+  const WheelSoilState centre = slice(r, state.memory);
+  const double zc = entrySinkage(centre);
+  if (zc > 0.0) {
+    const Arc a = makeArc(soil, centre, zc);
+    out.entry_angle = a.theta1;
+    out.exit_angle = a.theta2;
+    out.max_stress_angle = a.theta_m;
+    out.peak_stress = normalStress(a, std::cos(a.theta_m), a.theta_m);
+    out.bulldozing = slip_angle != 0.0 ? bulldozing(soil, a) : 0.0;
+    out.lateral -= std::copysign(out.bulldozing, slip_angle);
+  }
   return out;
 }
 

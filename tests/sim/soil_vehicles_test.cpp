@@ -8,7 +8,9 @@
 // slope this includes holding W sin 15 deg down it). Nothing but the wheels
 // touches the ground in these scenes, so the balance is exact up to how a
 // mode reports its forces. And a second rover drives in the ruts the first
-// one leaves (rover_sand_follow).
+// one leaves (rover_sand_follow). The towed system, its ball casters in the
+// soil, stalls on a strip of sandy loam where the soil's steady states say
+// it must (towed_loam).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -27,6 +29,7 @@
 #include "wtc/sim/scene_file.hpp"
 #include "wtc/sim/scene_run.hpp"
 #include "wtc/tyre/ground_memory.hpp"
+#include "wtc/tyre/wheel_soil.hpp"
 
 namespace wtc::testing {
 namespace {
@@ -189,6 +192,101 @@ TEST(SoilVehiclesTest, ASecondRoverDrivesInTheRutsTheFirstOneLeaves) {
       follow_run.fields.at("lowest_wheel_height_m"));
   RecordProperty("track_depth_after_first_mm", std::to_string(1e3 * mean_depth));
   RecordProperty("track_deepened_by_second_mm", std::to_string(1e3 * mean_deepened));
+}
+
+// Over [from, to): a wheel's mean ground force and the mean slip of its
+// soil contacts, and the hitch's mean pull on the towed body.
+class WindowMeans final : public sim::RunObserver {
+ public:
+  WindowMeans(int wheel, double from, double to) : wheel_(wheel), from_(from), to_(to) {}
+  void observe(const sim::Run& run) override {
+    if (run.time() < from_ || run.time() >= to_) return;
+    const WheelForces& f = run.wheelForces(wheel_);
+    force_ += f.force;
+    for (const ContactForce& c : f.contacts) {
+      if (!c.soft_soil) continue;
+      slip_ += c.slip_ratio;
+      ++soil_contacts_;
+    }
+    if (run.hitch()) hitch_ += run.hitch()->force_on_b;
+    ++n_;
+  }
+  Eigen::Vector3d force() const { return force_ / n_; }
+  Eigen::Vector3d hitch() const { return hitch_ / n_; }
+  double slip() const { return soil_contacts_ > 0 ? slip_ / soil_contacts_ : 0.0; }
+
+ private:
+  int wheel_;
+  double from_, to_;
+  Eigen::Vector3d force_ = Eigen::Vector3d::Zero(), hitch_ = Eigen::Vector3d::Zero();
+  double slip_ = 0.0;
+  int n_ = 0, soil_contacts_ = 0;
+};
+
+struct EveryObserver final : sim::RunObserver {
+  std::vector<sim::RunObserver*> all;
+  void observe(const sim::Run& run) override {
+    for (sim::RunObserver* o : all) o->observe(run);
+  }
+};
+
+// The towed system drives from asphalt onto a 3 m strip of sandy loam that
+// remembers (towed_loam) and stalls there, in both engines, where its
+// success criteria say: its drive wheels spin in the loam and its front
+// ball caster ploughs. Newton's balance holds over the stall. And the
+// stall is the soil model's: over the last 4 s each drive wheel, spinning
+// at slip ~1, pulls what steadyWheelOnSoil gives a wheel at its mean load
+// and slip (within 5 %; the wheels creep over fresh soil, the steady
+// state's), and the most a drive wheel pulls at that load at any slip is
+// less than half of what it must pull: the towed body on asphalt (the
+// hitch before the strip) and the front caster ploughing into the loam.
+TEST(SoilVehiclesTest, TheTowedSystemStallsOnLoamWhereTheSoilsSteadyStatesSay) {
+  const Soil loam = *namedSoil("sandy_loam");
+  double first_distance = -1.0;
+  for (const char* engine : {"bullet", "ode"}) {
+    const sim::Scene s =
+        sim::loadScene(kScenes / "towed_loam.yaml", std::vector<sim::Override>{{"engine", engine}});
+    const auto world = sim::makeEngine(s.engine, *s.terrain, s.vehicle, s.placement);
+    const int drive = s.vehicle.find("tug_left_wheel");
+    const WheelGeometry& g = s.vehicle.bodies[static_cast<std::size_t>(drive)].wheel->geometry;
+    GroundBalance balance(s.vehicle, 0.5 * s.duration_seconds);
+    // The stall: the last 4 s. The way in: on asphalt at the tug's rate
+    // (from 2.2 s) until the front caster meets the loam (2.9 s); the
+    // caster's first second in it.
+    WindowMeans stalled(drive, s.duration_seconds - 4.0, s.duration_seconds), asphalt(drive, 2.2, 2.9),
+        ploughing(s.vehicle.find("tug_front_caster"), 4.0, 5.0);
+    EveryObserver all;
+    all.all = {&balance, &stalled, &asphalt, &ploughing};
+    sim::RunOptions options;
+    options.observer = &all;
+    const sim::RunSummary r = sim::runScene(s, *world, options);
+    const std::string label = std::string("towed_loam in ") + engine;
+    EXPECT_TRUE(r.success) << label;
+    EXPECT_GT(r.fields.at("soil_memory_touched_nodes"), 0.0) << label;
+    const Eigen::Vector3d off = balance.imbalance();
+    EXPECT_LT(off.norm(), kBalanceOfWeight) << label << ": " << off.transpose();
+    const double distance = r.fields.at("distance_m");
+    if (first_distance < 0.0) first_distance = distance;
+    EXPECT_NEAR(distance, first_distance, kAgreementRelative * first_distance) << label;
+
+    const Eigen::Vector3d f = stalled.force();
+    const double slip = stalled.slip();
+    EXPECT_GT(slip, 0.9) << label << ": the drive wheels spin";
+    const SoilSteadyState steady = steadyWheelOnSoil(loam, g.free_radius, g.tread_width, f.z(), slip);
+    EXPECT_NEAR(f.x(), steady.forces.drawbar_pull, 0.05 * steady.forces.drawbar_pull) << label;
+    double most = 0.0;
+    for (double i = 0.0; i <= 1.0; i += 0.05) {
+      most = std::max(most, steadyWheelOnSoil(loam, g.free_radius, g.tread_width, f.z(), i).forces.drawbar_pull);
+    }
+    const double towed = asphalt.hitch().x(), plough = -ploughing.force().x();
+    EXPECT_LT(2.0 * most, towed + plough) << label;
+    std::printf("%s: stalled at %.3f m; drive wheel %.0f N load, slip %.3f, pull %.1f N (steady %.1f N, at most %.1f N);"
+                " the towed body's pull on asphalt %.0f N, the front caster's drag entering the loam %.0f N (load %.0f N);"
+                " off %.2g of W\n",
+                label.c_str(), distance, f.z(), slip, f.x(), steady.forces.drawbar_pull, most, towed, plough,
+                ploughing.force().z(), off.norm());
+  }
+  RecordProperty("stall_distance_m", std::to_string(first_distance));
 }
 
 }  // namespace

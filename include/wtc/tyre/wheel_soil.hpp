@@ -33,6 +33,18 @@
 // k = k_c / b + k_phi, k_u the soil's unloading stiffness; a fresh point
 // answers k Z^n. The rim then enters the soil where it meets the remembered
 // surface, Z(theta_1) = z_p, and the angles above follow from that entry.
+//
+// A ball (a ball caster: a wheel whose tread is a whole sphere) is a stack
+// of discs across its rolling axle (strip theory): the slice y off the
+// centre line has radius rho = sqrt(r^2 - y^2) and sinkage z - (r - rho),
+// and carries the rim's stresses above per unit width, with Bekker's b the
+// patch's width 2 a, a = sqrt(z (2 r - z)) (its smaller dimension: a round
+// patch). The slices' stresses act in their planes (the sphere's normal
+// leans y / r along the axle; on a symmetric patch that part cancels) and
+// the ball's spin about the surface normal meets no resistance.
+//   W = int_{-a}^{a} W_rim(rho(y), z - r + rho(y)) / b dy, and so DP, T, F_y.
+// Small sinkage, at rest: W -> 2 pi r k z^(n + 1) / (n + 1), the pressure
+// k Z^n over the paraboloid Z = z - (x^2 + y^2) / 2 r (docs/soft-soil.md).
 #include "wtc/terrain/soil.hpp"
 
 namespace wtc {
@@ -50,6 +62,13 @@ class SoilMemoryProfile {
  public:
   virtual ~SoilMemoryProfile() = default;
   virtual SoilMemory at(double ahead) const = 0;
+  /// The memory `aside` (m) off that line along the axle laid on the
+  /// surface (a ball's slices read beside its centre line). By default the
+  /// line's own: a profile that knows one line.
+  virtual SoilMemory beside(double ahead, double aside) const {
+    static_cast<void>(aside);
+    return at(ahead);
+  }
 };
 
 /// Wong's repetitive loading at depth Z below the fresh surface (m), for a
@@ -94,12 +113,36 @@ struct WheelSoilForces {
   double exit_angle = 0.0;        ///< theta_2 (rad, <= 0).
   double max_stress_angle = 0.0;  ///< theta_m (rad).
   double peak_stress = 0.0;       ///< sigma at theta_m (Pa): what the soil there has carried.
+  /// The patch the soil touches (m^2): b r (sin theta_1 - sin theta_2) under
+  /// a wheel, the slices' sum under a ball.
+  double patch_area = 0.0;
 };
 
 /// The stresses integrated over the arc (Gauss-Legendre on [theta_2, theta_m]
 /// and [theta_m, theta_1], where sigma is smooth). Preconditions: a
 /// validated soil, the state in its stated ranges (TyreModel checks both).
 WheelSoilForces wheelSoilForces(const Soil& soil, const WheelSoilState& state);
+
+/// A ball's state against a flat soil surface, in its travel frame: t the
+/// way its centre and its lowest point move over the surface together, the
+/// axle a = n x t it rolls about (n the surface's normal).
+struct SphereSoilState {
+  double radius = 0.0;           ///< r (m, > 0).
+  double sinkage = 0.0;          ///< z, its lowest point below the surface (m; below the fresh one with a memory).
+  double travel_speed = 0.0;     ///< v = V . t (m/s).
+  double rim_speed = 0.0;        ///< r omega . a (m/s): a slice of radius rho slips at soilSlip(v, rim rho / r).
+  double side_slip_speed = 0.0;  ///< The lowest point's speed along a (m/s): beta = atan2(it, max(v, floor)).
+  double speed_floor = 0.0;      ///< soilSlip's floor (m/s, > 0).
+  double symmetry = 0.0;         ///< As WheelSoilState::symmetry.
+  const SoilMemoryProfile* memory = nullptr;  ///< As WheelSoilState::memory, read beside the line per slice.
+};
+
+/// The slices' stresses summed (Gauss-Legendre across the patch, each slice
+/// as wheelSoilForces without bulldozing); the angles and peak stress are
+/// the centre line's, and the bulldozing that of its side, whose section is
+/// the same circle of radius r a wheel's side has. Preconditions as
+/// wheelSoilForces'.
+WheelSoilForces sphereSoilForces(const Soil& soil, const SphereSoilState& state);
 
 /// The steady state of a wheel carrying `load` (N) at slip `slip` and slip
 /// angle `slip_angle`: the sinkage where W = load (bisection; W grows with
