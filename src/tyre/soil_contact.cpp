@@ -145,6 +145,17 @@ void applySoil(const KernelInputs& in, double width, std::span<const WheelContac
                                   r * in.spin_ramp_gain * std::abs(soil.torque)});
     const double symmetry = std::max(0.0, 1.0 - std::max(std::abs(v), std::abs(rim)) / ramp);
     if (symmetry > 0.0) soil = forcesAt(symmetry);
+    // The side's bulldozing F_u is Ishigami's whole passive earth pressure
+    // at any side slip, a step in F_y as v_y crosses 0 (Coulomb's, on a
+    // wheel rolling straight: it flipped with the side speed's rounding).
+    // It is ramped over the side speed it could reverse within a step,
+    // h F_u / (kappa m) (as the rest ramp above): F_u min(1, |v_y| / that).
+    if (soil.bulldozing > 0.0) {
+      const double side_ramp = std::max(eps, in.travel_ramp_gain * soil.bulldozing);
+      const double unramped = soil.bulldozing * (1.0 - std::min(1.0, std::abs(frame->v_y) / side_ramp));
+      soil.lateral += std::copysign(unramped, frame->v_y);
+      soil.bulldozing -= unramped;
+    }
     const Eigen::Vector3d point_velocity = in.motion->velocity + in.motion->angular_velocity.cross(r * c.e);
     f.deflection_rate = point_velocity.dot(c.e);
     // The soil's damping R v_z over the contact patch: b L under a wheel,

@@ -38,6 +38,10 @@ namespace fs = std::filesystem;
 const fs::path kScenes = fs::path(WTC_SOURCE_DIR) / "scenes";
 constexpr double kBalanceOfWeight = 0.01;    // Newton's balance to 1 % of the weight
 constexpr double kAgreementRelative = 0.01;  // engines and modes: distance and turn to 1 %
+// ... and a straight run's drift, a few hundredths of a degree, to 0.02 deg
+// (1 % of 2 deg): the soil holds a wheel's side creep by the shear and a
+// ramped bulldozing, and the engines' solvers leave it that far apart.
+constexpr double kTurnFloorDeg = 2.0;
 
 // From `from` on: the mean of the wheels' ground forces (world) and the
 // vehicle's momentum at the first and last step observed.
@@ -100,7 +104,7 @@ TEST(SoilVehiclesTest, EachSoilSceneSucceedsAndTheGroundCarriesTheVehicleInBothE
           first_turn = turn;
         }
         EXPECT_NEAR(distance, first_distance, kAgreementRelative * first_distance) << label;
-        EXPECT_NEAR(turn, first_turn, kAgreementRelative * std::max(std::abs(first_turn), 1.0)) << label;
+        EXPECT_NEAR(turn, first_turn, kAgreementRelative * std::max(std::abs(first_turn), kTurnFloorDeg)) << label;
         worst_balance = std::max(worst_balance, off.norm());
         worst_agreement = std::max(worst_agreement, std::abs(distance / first_distance - 1.0));
         const Eigen::Vector3d f = balance.meanForce();
@@ -135,7 +139,7 @@ TEST(SoilVehiclesTest, EveryEngineStartsOnTheScenesRuts) {
     const auto world = sim::makeEngine(s.engine, *s.terrain, s.vehicle, s.placement);
     const double spacing = s.terrain->soilRegions().front().spacing;
     ASSERT_NE(s.start_ruts, nullptr);
-    ASSERT_EQ(s.start_ruts->touchedNodes(), 1541u) << "terrains/rover_sand_ruts.csv's nodes";
+    ASSERT_EQ(s.start_ruts->touchedNodes(), 1618u) << "terrains/rover_sand_ruts.csv's nodes";
     sim::SceneRun run(s, *world);
     EXPECT_EQ(rutsOf(*sim::groundMemory(*world), spacing), rutsOf(*s.start_ruts, spacing)) << engine;
     EXPECT_EQ(run.advance(1), 1u);

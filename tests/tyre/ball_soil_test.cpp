@@ -47,6 +47,7 @@ SphereSoilState ball(double sinkage, double travel, double rim, double side = 0.
 }
 
 TEST(BallSoilTest, AtRestABallCarriesThePressureOverItsCap) {
+  double worst = 0.0;
   for (const std::string& name : soilNames()) {
     const Soil soil = *namedSoil(name);
     for (const double z : {0.0015, 0.015, 0.05, 0.1, 0.15}) {
@@ -54,6 +55,7 @@ TEST(BallSoilTest, AtRestABallCarriesThePressureOverItsCap) {
       state.symmetry = 1.0;
       const WheelSoilForces f = sphereSoilForces(soil, state);
       EXPECT_NEAR(f.normal, capLoad(soil, kRadiusM, z), 2e-4 * f.normal) << name << " z " << z;
+      worst = std::max(worst, std::abs(f.normal / capLoad(soil, kRadiusM, z) - 1.0));
       EXPECT_NEAR(f.drawbar_pull, 0.0, 1e-12 * f.normal) << name;
       EXPECT_EQ(f.lateral, 0.0) << name;
       EXPECT_NEAR(f.torque, 0.0, 1e-9 * f.normal * kRadiusM) << name;
@@ -61,6 +63,7 @@ TEST(BallSoilTest, AtRestABallCarriesThePressureOverItsCap) {
       EXPECT_NEAR(f.patch_area, std::numbers::pi * z * (2 * kRadiusM - z), 2e-3 * f.patch_area) << name;
     }
   }
+  RecordProperty("worst_load_relative", std::to_string(worst));
 }
 
 // Driving pulls and costs torque; a free-rolling ball is resisted (the

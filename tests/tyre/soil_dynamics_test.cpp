@@ -146,5 +146,38 @@ TEST(SoilDynamicsTest, AWheelTheSoilCannotCarryIsCountedAtItsAxle) {
   }
 }
 
+// A wheel rolling on sand with a side slip meets its side's bulldozing
+// (Ishigami's F_u) against it; as the side speed goes to zero the force
+// goes to zero with it, ramped over the side speed it could reverse within
+// a step, not Coulomb's step at v_y = 0 (with it, a wheel rolling straight
+// was pushed back and forth by the rounding of its side speed). Mirrored
+// side slips meet mirrored forces.
+TEST(SoilDynamicsTest, TheSideBulldozingFadesWithTheSideSlipInsteadOfSteppingAtZero) {
+  const TyreModel model(EffectSet{Effect::kSoftSoil});
+  const Terrain ground = flatGround(1, soilMaterial("toyoura_sand"));
+  WheelDescription wheel;
+  wheel.geometry.free_radius = kRadiusM;
+  wheel.geometry.tread_width = kWidthM;
+  const auto lateral = [&](double side_speed) {
+    WheelState state;
+    WheelMotion motion;
+    motion.velocity = {0.05, side_speed, 0.0};
+    motion.angular_velocity = {0.0, 0.05 / 0.7 / kRadiusM, 0.0};  // slip 0.3
+    const WheelForces& f = model.step(ground, wheel, {{0, 0, kRadiusM - 0.01}, {0, 1, 0}}, motion, 1e-3, state);
+    return std::pair{f.force.y(), f.force.z()};
+  };
+  const auto [steady, load] = lateral(0.02);
+  EXPECT_LT(steady, -0.05 * load) << "the side slip is resisted";
+  // Below the ramp (>= the slip floor, 1 mm/s) F_y is proportional to v_y.
+  const double slope = lateral(1e-5).first / 1e-5;
+  EXPECT_LT(slope, 0.0);
+  for (const double v_y : {1e-12, 1e-9, 1e-6}) {
+    const double f = lateral(v_y).first;
+    EXPECT_NEAR(f / v_y, slope, 0.01 * std::abs(slope)) << v_y;
+    EXPECT_EQ(lateral(-v_y).first, -f) << v_y;
+  }
+  EXPECT_LT(std::abs(lateral(1e-12).first), 1e-6 * load);
+}
+
 }  // namespace
 }  // namespace wtc
