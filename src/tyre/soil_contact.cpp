@@ -168,13 +168,19 @@ void applySoil(const KernelInputs& in, double width, std::span<const WheelContac
     // The soil as a spring about z for the stability report and the
     // engine-solved modes' normal row: Bekker's W ~ z^(n + 1/2) under a
     // wheel (the closed form of docs/soft-soil.md), W ~ z^(n + 1) under a
-    // ball (wheel_soil.hpp), so dW/dz = e W / z with that exponent e.
+    // ball (wheel_soil.hpp), so dW/dz = e W / z with that exponent e, and
+    // the depth at which that spring carries W is z / e. No stiffer than
+    // the soil's reloading line over the patch, k_u A: in a rut the centre
+    // line may barely enter the remembered surface (z ~ 1e-7 m) while the
+    // rest of the patch carries W, and e W / z was a thousand times that.
     const double exponent = material.soil->n + (ball ? 1.0 : 0.5);
     const double z = profile ? r * (1.0 - std::cos(soil.entry_angle)) : sinkage;
     f.soil_sinkage = z;
     if (z > 0.0) {
-      f.soil_stiffness = c.load_share * exponent * soil.normal / z;
-      f.soil_depth = z / exponent;
+      const double tangent = exponent * soil.normal / z;
+      const double reload = material.soil->unloading_stiffness * (ball ? soil.patch_area : width * length);
+      f.soil_stiffness = c.load_share * std::min(tangent, reload);
+      f.soil_depth = tangent <= reload ? z / exponent : soil.normal / reload;
     }
     f.soil_damping = c.load_share * patch_damping;
     const double share = c.load_share * scale;

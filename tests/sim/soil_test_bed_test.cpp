@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "soil_profiles.hpp"
 #include "wtc/sim/engine_table.hpp"
 #include "wtc/sim/run.hpp"
 #include "wtc/sim/run_observer.hpp"
@@ -168,11 +169,7 @@ TEST(SoilTestBedTest, TheRearWheelsRunInTheFrontWheelsRutsAsTheModelPredicts) {
           if (means.wheel(f, radius).ahead > 0.0) front_load += 0.5 * means.wheel(f, radius).load;
         }
         const double front_sinkage = steadyWheelOnSoil(soil, radius, width, front_load, i).sinkage;
-        struct Uniform final : SoilMemoryProfile {
-          SoilMemory rut;
-          SoilMemory at(double) const override { return rut; }
-        } rut;
-        rut.rut = pressedSoil(soil, width, SoilMemory{}, front_sinkage);
+        const UniformProfile rut(pressedSoil(soil, width, SoilMemory{}, front_sinkage));
         const SoilSteadyState want = steadyWheelOnSoil(soil, radius, width, m.load, i, 0.0, &rut);
         EXPECT_NEAR(m.sinkage, want.sinkage, 0.03 * want.sinkage) << label;
         const double on_fresh = steadyWheelOnSoil(soil, radius, width, m.load, i).sinkage;

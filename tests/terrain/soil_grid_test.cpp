@@ -10,6 +10,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "soil_profiles.hpp"
 #include "wtc/base/error.hpp"
 #include "wtc/tyre/wheel_soil.hpp"
 
@@ -136,14 +137,7 @@ TEST(SoilGridTest, AProfileReadsUntouchedGroundAsFreshAndARutAsItsNodes) {
     for (int j = 0; j < grid.rows(); ++j) grid.set(i, j, {0.02f, 1.5e4f});
   }
   const SoilMemory rut{.plastic_sinkage = 0.02f, .max_pressure = grid.node(0, 0).max_pressure, .fresh = false};
-  class Uniform final : public SoilMemoryProfile {
-   public:
-    explicit Uniform(SoilMemory m) : m_(m) {}
-    SoilMemory at(double) const override { return m_; }
-
-   private:
-    SoilMemory m_;
-  } uniform(rut);
+  const testing::UniformProfile uniform(rut);
   wheel.sinkage = 0.026;
   const WheelSoilForces from_grid = wheelSoilForces(soil, wheel);
   wheel.memory = &uniform;

@@ -7,13 +7,13 @@
 // round hollow, not a wheel's flat-bottomed band.
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <memory>
 #include <numbers>
 #include <string>
 
 #include <gtest/gtest.h>
 
+#include "soil_profiles.hpp"
 #include "wheel_sim.hpp"
 #include "wtc/terrain/terrain_primitives.hpp"
 #include "wtc/tyre/ground_memory.hpp"
@@ -89,22 +89,15 @@ TEST(BallSoilTest, ARollingBallPullsWhenDrivenAndIsResistedWhenFree) {
   RecordProperty("driven_pull_over_load", std::to_string(driven.drawbar_pull / driven.normal));
 }
 
-class Profile final : public SoilMemoryProfile {
- public:
-  explicit Profile(std::function<SoilMemory(double, double)> at) : at_(std::move(at)) {}
-  SoilMemory at(double ahead) const override { return at_(ahead, 0.0); }
-  SoilMemory beside(double ahead, double aside) const override { return at_(ahead, aside); }
-
- private:
-  std::function<SoilMemory(double, double)> at_;
-};
+using testing::FunctionProfile;
+using testing::UniformProfile;
 
 // Fresh memory is no memory; a rut beside the centre line is read by the
 // slices over it (the ball carries less), the same on either side.
 TEST(BallSoilTest, ItsSlicesReadTheMemoryBesideTheCentreLine) {
   const Soil soil = *namedSoil("sandy_loam");
   const double z = 0.03, v = 0.3;
-  const Profile fresh([](double, double) { return SoilMemory{}; });
+  const UniformProfile fresh;
   SphereSoilState state = ball(z, v, v / 0.8);
   const WheelSoilForces none = sphereSoilForces(soil, state);
   state.memory = &fresh;
@@ -114,8 +107,8 @@ TEST(BallSoilTest, ItsSlicesReadTheMemoryBesideTheCentreLine) {
   EXPECT_NEAR(remembered.torque, none.torque, 1e-9 * none.normal * kRadiusM);
 
   const SoilMemory rut{.plastic_sinkage = 0.02, .max_pressure = 1e5, .fresh = false};
-  const Profile left([&](double, double aside) { return aside > 0.02 ? rut : SoilMemory{}; });
-  const Profile right([&](double, double aside) { return aside < -0.02 ? rut : SoilMemory{}; });
+  const FunctionProfile left([&](double, double aside) { return aside > 0.02 ? rut : SoilMemory{}; });
+  const FunctionProfile right([&](double, double aside) { return aside < -0.02 ? rut : SoilMemory{}; });
   state.memory = &left;
   const WheelSoilForces on_left = sphereSoilForces(soil, state);
   state.memory = &right;
@@ -147,14 +140,16 @@ struct SetDown {
   double sinkage = 0.0, speed = 0.0;
 };
 
-SetDown setDown(const Soil& soil, double spacing) {
+// A 4 x 4 m slab of `soil` (top z = 0), remembering over its middle 2 x 2 m
+// at `spacing` (0: nowhere).
+Terrain soilSlab(const Soil& soil, double spacing) {
   TerrainBuilder builder;
-  Material loam;
-  loam.name = "loam";
-  loam.soil = soil;
+  Material material;
+  material.name = soil.name;
+  material.soil = soil;
   SlabParams slab;
   slab.size_x = slab.size_y = 4.0;
-  addSlab(builder, slab, builder.addMaterial(loam));
+  addSlab(builder, slab, builder.addMaterial(material));
   if (spacing > 0.0) {
     SoilRegion region;
     region.origin = {-1.0, -1.0};
@@ -162,7 +157,11 @@ SetDown setDown(const Soil& soil, double spacing) {
     region.spacing = spacing;
     builder.addSoilRegion(region);
   }
-  SetDown out{.ground = std::move(builder).build(), .memory = nullptr};
+  return std::move(builder).build();
+}
+
+SetDown setDown(const Soil& soil, double spacing) {
+  SetDown out{.ground = soilSlab(soil, spacing), .memory = nullptr};
   out.memory = std::make_unique<GroundMemory>(out.ground);
 
   constexpr double kStepS = 1e-3;
@@ -225,6 +224,47 @@ TEST(BallSoilTest, ABallCasterRestsWhereItsCapCarriesItAndLeavesARoundHollow) {
   RecordProperty("fresh_sinkage_mm", std::to_string(fresh.sinkage * 1e3));
   RecordProperty("remembering_sinkage_2cm_mm", std::to_string(coarse.sinkage * 1e3));
   RecordProperty("remembering_sinkage_1cm_mm", std::to_string(fine.sinkage * 1e3));
+}
+
+// A ball rolling along a rut a narrower ball left (0.1 m), whose floor
+// lies 0.1 um above the ball's lowest point: its centre line meets the
+// remembered surface right at the bottom (the entry's sinkage z a fraction
+// of a micrometre) while the rut's walls, steeper than the ball, carry W on
+// the reloading line beside it. The soil's spring reported (the stability
+// report's, the engine-solved modes' row) is at most that line, k_u over
+// the patch; the tangent (n + 1) W / z was 1e4 times stiffer, and wtc-sim
+// warned on towed_loam's front caster in such a rut.
+TEST(BallSoilTest, InANarrowerRutABallsSoilSpringIsAtMostTheReloadingLine) {
+  const Soil soil = *namedSoil("sandy_loam");
+  const Terrain ground = soilSlab(soil, 0.01);
+  GroundMemory memory(ground);
+  constexpr double kSinkageM = 0.05, kRutRadiusM = 0.1, kFloorAboveM = 1e-7;
+  for (int i = -20; i <= 20; ++i) {
+    for (int j = -9; j <= 9; ++j) {
+      const double x = 0.01 * i, y = 0.01 * j;
+      const double floor = kSinkageM - kFloorAboveM - (kRutRadiusM - std::sqrt(kRutRadiusM * kRutRadiusM - y * y));
+      if (floor <= 0.0) continue;
+      ASSERT_TRUE(memory.setNode(x, y, {.plastic_sinkage = floor, .max_pressure = 1e5, .fresh = false}));
+    }
+  }
+  WheelDescription ball;
+  ball.geometry.free_radius = kRadiusM;
+  ball.geometry.tread_width = 2 * kRadiusM;
+  ball.inertia = {.effective_mass = 10.0, .axial_inertia = 0.09};
+  WheelState state;
+  state.setGroundMemory(&memory);
+  const TyreModel model(EffectSet{Effect::kSoftSoil});
+  const WheelMotion rolling{.velocity = {0.02, 0, 0}, .angular_velocity = {0, 0.02 / kRadiusM, 0}};
+  const WheelForces& f =
+      model.step(ground, ball, {{0, 0, kRadiusM - kSinkageM}, {0, 1, 0}}, rolling, 4e-4, state);
+  ASSERT_EQ(f.contacts.size(), 1u);
+  const ContactForce& c = f.contacts[0];
+  EXPECT_GT(c.normal_force, 0.0);
+  const double patch = std::numbers::pi * kSinkageM * (2 * kRadiusM - kSinkageM);
+  EXPECT_LT(c.soil_sinkage, 1e-5) << "the centre line meets the rut's floor at the bottom";
+  EXPECT_LE(c.soil_stiffness, soil.unloading_stiffness * patch);
+  EXPECT_NEAR(c.soil_stiffness * c.soil_depth, c.normal_force, 0.05 * c.normal_force) << "the row carries W";
+  EXPECT_EQ(state.unstableSteps(), 0u);
 }
 
 }  // namespace ball_soil_test

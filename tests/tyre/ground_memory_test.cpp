@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include "soil_profiles.hpp"
 #include "wheel_sim.hpp"
 #include "wtc/terrain/terrain_primitives.hpp"
 #include "wtc/tyre/ground_memory.hpp"
@@ -135,12 +136,7 @@ TEST(GroundMemoryTest, RollingPassesLeaveTheRutTheModelPredicts) {
   SoilMemory chain;  // the prediction from fresh sand alone
   std::vector<double> sinkages;
   for (int pass = 1; pass <= 5; ++pass) {
-    struct Uniform final : SoilMemoryProfile {
-      SoilMemory memory;
-      SoilMemory at(double) const override { return memory; }
-    } before, chained;
-    before.memory = memory.at(x_mid, 0.0);
-    chained.memory = chain;
+    const testing::UniformProfile before(memory.at(x_mid, 0.0)), chained(chain);
     const SoilSteadyState want =
         steadyWheelOnSoil(soil, kRadiusM, kWidthM, kLoadN, slip, 0.0, pass == 1 ? nullptr : &before);
     const double chain_sinkage =

@@ -3,12 +3,12 @@
 // the same load into the hollow it left sinks by the elastic part only,
 // and rolling passes in one rut deepen it by less each time.
 #include <cmath>
-#include <functional>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "soil_profiles.hpp"
 #include "wtc/tyre/wheel_soil.hpp"
 
 namespace wtc {
@@ -16,17 +16,11 @@ namespace {
 
 constexpr double kRadiusM = 0.09, kWidthM = 0.11, kLoadN = 64.68;
 
-class Profile final : public SoilMemoryProfile {
- public:
-  explicit Profile(std::function<SoilMemory(double)> at) : at_(std::move(at)) {}
-  SoilMemory at(double ahead) const override { return at_(ahead); }
-
- private:
-  std::function<SoilMemory(double)> at_;
-};
+using testing::FunctionProfile;
+using testing::UniformProfile;
 
 TEST(SoilMemoryTest, AFreshMemoryIsPartOnesSurface) {
-  const Profile fresh([](double) { return SoilMemory{}; });
+  const UniformProfile fresh;
   for (const std::string& name : soilNames()) {
     const Soil soil = *namedSoil(name);
     for (const double z : {0.002, 0.02, 0.05}) {
@@ -67,7 +61,7 @@ TEST(SoilMemoryTest, PressedAgainAtTheSameLoadAWheelSinksByTheElasticPartOnly) {
   for (const char* name : {"toyoura_sand", "lete_sand"}) {
     const Soil soil = *namedSoil(name);
     const double first = restingSinkage(soil, nullptr, kLoadN);
-    const Profile hollow([&](double x) {
+    const FunctionProfile hollow([&](double x, double) {
       const double depth = first - (kRadiusM - std::sqrt(std::max(0.0, kRadiusM * kRadiusM - x * x)));
       return pressedSoil(soil, kWidthM, SoilMemory{}, depth);
     });
@@ -121,7 +115,7 @@ TEST(SoilMemoryTest, RollingPassesDeepenARutByLessEachTime) {
   SoilMemory rut;
   std::vector<double> depths;
   for (int pass = 0; pass < 5; ++pass) {
-    const Profile uniform([&](double) { return rut; });
+    const UniformProfile uniform(rut);
     const SoilSteadyState s =
         steadyWheelOnSoil(soil, kRadiusM, kWidthM, kLoadN, 0.2, 0.0, pass == 0 ? nullptr : &uniform);
     rut = pressedSoil(soil, kWidthM, rut, s.sinkage);

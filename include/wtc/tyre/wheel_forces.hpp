@@ -58,9 +58,11 @@ struct ContactForce {
   /// spring below) and its shear stays a force (wtc/adapter/solver_contact.hpp).
   bool soft_soil = false;
   /// On soft soil, the soil as a spring about this step's sinkage z
-  /// (soil_contact.cpp): W's tangent stiffness (n + 1/2) W / z, Bekker's
-  /// W ~ z^(n + 1/2), its damping R b L, and the depth at which that spring
-  /// carries the undamped W, z / (n + 1/2); each times the load share.
+  /// (soil_contact.cpp): W's tangent stiffness e W / z (Bekker's W ~ z^e,
+  /// e = n + 1/2 under a wheel, n + 1 under a ball), at most the soil's
+  /// reloading line over the patch, k_u A; its damping R A; and the depth
+  /// at which that spring carries the undamped W (z / e uncapped); each
+  /// times the load share.
   double soil_stiffness = 0.0;  ///< N/m.
   double soil_damping = 0.0;    ///< N s/m.
   double soil_depth = 0.0;      ///< m.
