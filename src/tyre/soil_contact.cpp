@@ -161,7 +161,8 @@ void applySoil(const KernelInputs& in, double width, std::span<const WheelContac
     // The soil's damping R v_z over the contact patch: b L under a wheel,
     // L = r (sin theta_1 - sin theta_2); the slices' sum under a ball.
     const double length = r * (std::sin(soil.entry_angle) - std::sin(soil.exit_angle));
-    const double patch_damping = ball ? material.soil->damping * soil.patch_area : material.soil->damping * width * length;
+    const double patch_damping =
+        ball ? material.soil->damping * soil.patch_area : material.soil->damping * width * length;
     const double damped = std::max(0.0, soil.normal + patch_damping * f.deflection_rate);
     const double scale = soil.normal > 0.0 ? std::min(1.0, damped / soil.normal) : 0.0;
 
@@ -196,12 +197,16 @@ void applySoil(const KernelInputs& in, double width, std::span<const WheelContac
     const Eigen::Vector3d axle = ball ? spin_axis : in.axle;
     f.rolling_moment = -share * soil.torque * spin_axis - axle.dot((r * c.e).cross(f.force)) * axle;
     if (profile) {
-      // A ball's band is its patch's width 2 a, a = sqrt(z (2 r - z)) (r from the equator down).
+      // A ball presses its whole round patch, radius a = sqrt(z (2 r - z))
+      // (r from the equator down), across and along: its centre line's
+      // entry may lie near the bottom while its sides press a rut's walls
+      // (where the ball is above the remembered surface nothing changes).
       const double z_band = std::min(c.deflection, r);
-      const double band = ball ? 2.0 * std::sqrt(z_band * (2.0 * r - z_band)) : width;
+      const double half = std::sqrt(z_band * (2.0 * r - z_band));
       pressNodes(*grid, *material.soil,
-                 {.bottom = bottom, .travel = level, .radius = r, .width = band,
-                  .depth = c.deflection, .entry_angle = soil.entry_angle, .at_rest = symmetry, .ball = ball});
+                 {.bottom = bottom, .travel = level, .radius = r, .width = ball ? 2.0 * half : width,
+                  .depth = c.deflection, .entry_angle = ball ? std::asin(half / r) : soil.entry_angle,
+                  .at_rest = symmetry, .ball = ball});
     }
   }
 }

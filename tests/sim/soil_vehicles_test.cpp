@@ -279,14 +279,15 @@ TEST(SoilVehiclesTest, TheTowedSystemStallsOnLoamWhereTheSoilsSteadyStatesSay) {
     const SoilSteadyState steady = steadyWheelOnSoil(loam, g.free_radius, g.tread_width, f.z(), slip);
     EXPECT_NEAR(f.x(), steady.forces.drawbar_pull, 0.05 * steady.forces.drawbar_pull) << label;
     double most = 0.0;
-    for (double i = 0.0; i <= 1.0; i += 0.05) {
+    for (int k = 0; k <= 20; ++k) {  // slips 0, 0.05, ..., 1
+      const double i = 0.05 * k;
       most = std::max(most, steadyWheelOnSoil(loam, g.free_radius, g.tread_width, f.z(), i).forces.drawbar_pull);
     }
     const double towed = asphalt.hitch().x(), plough = -ploughing.force().x();
     EXPECT_LT(2.0 * most, towed + plough) << label;
-    std::printf("%s: stalled at %.3f m; drive wheel %.0f N load, slip %.3f, pull %.1f N (steady %.1f N, at most %.1f N);"
-                " the towed body's pull on asphalt %.0f N, the front caster's drag entering the loam %.0f N (load %.0f N);"
-                " off %.2g of W\n",
+    std::printf("%s: stalled at %.3f m; drive wheel %.0f N load, slip %.3f, pull %.1f N (steady %.1f N, at most "
+                "%.1f N); the towed body's pull on asphalt %.0f N, the front caster's drag entering the loam %.0f N "
+                "(load %.0f N); off %.2g of W\n",
                 label.c_str(), distance, f.z(), slip, f.x(), steady.forces.drawbar_pull, most, towed, plough,
                 ploughing.force().z(), off.norm());
   }

@@ -161,7 +161,7 @@ TEST(GroundMemoryTest, RollingPassesLeaveTheRutTheModelPredicts) {
     sinkage /= n;
     sinkages.push_back(sinkage);
     EXPECT_NEAR(sinkage, want.sinkage, 0.02 * want.sinkage) << "pass " << pass;
-    const SoilMemory rut = pressedSoil(soil, kWidthM, before.memory, sinkage);
+    const SoilMemory rut = pressedSoil(soil, kWidthM, before.at(0.0), sinkage);
     EXPECT_NEAR(memory.at(x_mid, 0.0).plastic_sinkage, rut.plastic_sinkage, 0.02 * rut.plastic_sinkage)
         << "pass " << pass;
     const std::string p = "pass_" + std::to_string(pass);
