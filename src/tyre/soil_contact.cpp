@@ -44,20 +44,20 @@ struct SoilFrame {
   double v = 0.0, rim = 0.0, v_y = 0.0;  ///< V . t, the rim's speed along t, the side slip's speed.
 };
 
-// A wheel: t = +-(a x n) / |a x n|, the sign the way it moves (none on its
-// side, the axle along the normal: no arc to integrate).
-std::optional<SoilFrame> wheelFrame(const KernelInputs& in, const Eigen::Vector3d& n) {
-  Eigen::Vector3d travel = in.axle.cross(n);
+// A wheel on `axle` a: t = +-(a x n) / |a x n|, the sign the way it moves
+// (none on its side, the axle along the normal: no arc to integrate).
+std::optional<SoilFrame> wheelFrame(const KernelInputs& in, const Eigen::Vector3d& axle, const Eigen::Vector3d& n) {
+  Eigen::Vector3d travel = axle.cross(n);
   const double across = travel.norm();
   if (across < tolerance::kWheelOnItsSideSine) return std::nullopt;
   travel /= across;
   SoilFrame f;
   f.lateral = n.cross(travel);
   const double v_x = in.motion->velocity.dot(travel);
-  const double rim_x = in.free_radius * in.motion->angular_velocity.dot(in.axle);
+  const double rim_x = in.free_radius * in.motion->angular_velocity.dot(axle);
   const double direction = v_x + rim_x >= 0.0 ? 1.0 : -1.0;
   f.travel = direction * travel;
-  f.spin_axis = direction * in.axle;
+  f.spin_axis = direction * axle;
   f.v = direction * v_x;
   f.rim = direction * rim_x;
   f.v_y = in.motion->velocity.dot(f.lateral);
@@ -79,10 +79,8 @@ SoilFrame ballFrame(const KernelInputs& in, const Eigen::Vector3d& n) {
     // v + rim = |travel|^2 / |travel| >= 0: oriented as wheelFrame orients.
     f.emplace();
     f->travel = travel.normalized();
-  } else if (!(f = wheelFrame(in, n))) {
-    KernelInputs surface = in;
-    surface.axle = n.unitOrthogonal();
-    f = wheelFrame(surface, n);
+  } else if (!(f = wheelFrame(in, in.axle, n))) {
+    f = wheelFrame(in, n.unitOrthogonal(), n);  // an axle on the surface: never on its side
   }
   f->lateral = n.cross(f->travel);
   f->spin_axis = f->lateral;
@@ -107,7 +105,7 @@ void applySoil(const KernelInputs& in, double width, std::span<const WheelContac
     f = ContactForce{};
     f.contact = c;
     f.soft_soil = true;
-    const std::optional<SoilFrame> frame = ball ? ballFrame(in, n) : wheelFrame(in, n);
+    const std::optional<SoilFrame> frame = ball ? ballFrame(in, n) : wheelFrame(in, in.axle, n);
     if (!frame) continue;
     const Eigen::Vector3d &travel = frame->travel, &lateral = frame->lateral;
     const double v = frame->v, rim = frame->rim;
@@ -126,6 +124,7 @@ void applySoil(const KernelInputs& in, double width, std::span<const WheelContac
 
     const double sinkage = grid != nullptr ? c.deflection : std::min(c.deflection, r);
     const SoilMemoryProfile* remembered = profile ? &*profile : nullptr;
+    const double slip = soilSlip(v, rim, eps);
     const auto forcesAt = [&](double symmetry) {
       if (ball) {
         return sphereSoilForces(*material.soil, {.radius = r, .sinkage = sinkage, .travel_speed = v,
@@ -133,7 +132,7 @@ void applySoil(const KernelInputs& in, double width, std::span<const WheelContac
                                                  .speed_floor = eps, .symmetry = symmetry, .memory = remembered});
       }
       return wheelSoilForces(*material.soil, {.radius = r, .width = width, .sinkage = sinkage,
-                                              .slip = soilSlip(v, rim, eps),
+                                              .slip = slip,
                                               .slip_angle = std::atan2(frame->v_y, std::max(v, eps)),
                                               .symmetry = symmetry, .memory = remembered});
     };
@@ -190,12 +189,12 @@ void applySoil(const KernelInputs& in, double width, std::span<const WheelContac
     f.tangential_force = tangential;
     f.force = f.normal_force * n + tangential;
     f.slip_velocity = point_velocity - f.deflection_rate * c.e;
-    f.slip_ratio = soilSlip(v, rim, eps);
+    f.slip_ratio = slip;
     f.mu = f.normal_force > 0.0 ? tangential.norm() / f.normal_force : 0.0;
     f.friction_limit = f.mu;
+    // Less OP x R's moment about the axle (its sign cancels: +-a alike).
     const Eigen::Vector3d& spin_axis = frame->spin_axis;
-    const Eigen::Vector3d axle = ball ? spin_axis : in.axle;
-    f.rolling_moment = -share * soil.torque * spin_axis - axle.dot((r * c.e).cross(f.force)) * axle;
+    f.rolling_moment = -share * soil.torque * spin_axis - spin_axis.dot((r * c.e).cross(f.force)) * spin_axis;
     if (profile) {
       // A ball presses its whole round patch, radius a = sqrt(z (2 r - z))
       // (r from the equator down), across and along: its centre line's
