@@ -64,11 +64,6 @@ Eigen::Isometry3d startPose(const vehicle::VehicleDescription& vehicle, int body
   return placement * vehicle.bodies[body].pose;
 }
 
-GroundMemory* groundMemory(const Engine& engine) {
-  const std::vector<int> wheels = engine.vehicle().wheels();
-  return wheels.empty() ? nullptr : engine.wheelState(wheels.front()).groundMemory();
-}
-
 WheelDescription wheelDescription(const vehicle::Body& body) {
   WheelDescription w;
   w.geometry = body.wheel->geometry;

@@ -32,7 +32,8 @@ void nearCallback(void* data, dGeomID a, dGeomID b) {
   const dBodyID body_a = dGeomGetBody(a), body_b = dGeomGetBody(b);
   if (body_a == nullptr && body_b == nullptr) return;
   dContact contact[kMaxContacts] = {};
-  const int n = dCollide(a, b, kMaxContacts, &contact[0].geom, sizeof(dContact));
+  int n = dCollide(a, b, kMaxContacts, &contact[0].geom, sizeof(dContact));
+  n = w.plugin->keepRigidContacts(a, b, &contact[0].geom, n, sizeof(dContact));  // bodies on soft soil
   for (int i = 0; i < n; ++i) {
     contact[i].surface.mode = dContactApprox1;
     contact[i].surface.mu = kOtherPairsMu;

@@ -5,11 +5,13 @@
 // input give nothing or a clear error.
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "soil_plate.hpp"
 #include "wtc/base/error.hpp"
 #include "wtc/terrain/terrain_primitives.hpp"
 #include "wtc/tyre/body_soil.hpp"
@@ -25,22 +27,24 @@ constexpr double kStepS = 1e-3;
 constexpr double kLengthM = 0.5, kWidthM = 0.3, kThicknessM = 0.1;
 constexpr double kMassKg = 60.0;
 
+// A 4 m x 4 m slab of the named soil, remembering over [-1, 1]^2 when
+// asked at the bodies' 2 cm; `soft` false: the same slab as hard ground.
 Terrain soilSlab(const char* soil_name, bool remember, bool soft = true) {
-  TerrainBuilder builder;
-  Material m;
-  m.name = "ground";
-  if (soft) m.soil = *namedSoil(soil_name);
-  SlabParams slab;
-  slab.size_x = slab.size_y = 4.0;
-  addSlab(builder, slab, builder.addMaterial(m));
-  if (remember) {
-    SoilRegion r;
-    r.origin = {-1.0, -1.0};
-    r.size = {2.0, 2.0};
-    r.spacing = kBodySoilSpacingM;
-    builder.addSoilRegion(r);
+  if (!soft) {
+    TerrainBuilder builder;
+    SlabParams slab;
+    slab.size_x = slab.size_y = 4.0;
+    addSlab(builder, slab, builder.addMaterial(Material{}));
+    return std::move(builder).build();
   }
-  return std::move(builder).build();
+  std::optional<SoilRegion> region;
+  if (remember) {
+    region.emplace();
+    region->origin = {-1.0, -1.0};
+    region->size = {2.0, 2.0};
+    region->spacing = kBodySoilSpacingM;
+  }
+  return testing::soilSlab(soil_name, 4.0, 4.0, region);
 }
 
 BodyOnSoil plate() {
@@ -75,7 +79,7 @@ TEST(BodySoilTest, APlateAtRestSinksBekkersDepth) {
     const double load = kMassKg * kGravityMps2;
     const double z = restingDepth(body, terrain, load);
     const double area = kLengthM * kWidthM;
-    const double bekker = std::pow(load / (area * (soil.k_c / kWidthM + soil.k_phi)), 1.0 / soil.n);
+    const double bekker = testing::bekkerPlateSinkage(soil, load, kLengthM, kWidthM);
     const BodySoilForces f = body.step(terrain, nullptr, at(-z), kStepS);
     EXPECT_EQ(f.nodes, 25 * 15) << name;
     EXPECT_NEAR(f.area, area, 1e-12) << name;

@@ -156,6 +156,11 @@ class Engine {
   /// Wall time (s) WTC's plugin took in the steps so far (its
   /// contactSeconds): WTC's part of the steps' cost.
   virtual double contactSeconds() const = 0;
+  /// The memory of the soft ground the engine's plugin keeps for this
+  /// world (wtc/tyre/ground_memory.hpp), which its WTC wheels and its
+  /// bodies on soil read and press: null where the terrain has no soil
+  /// regions.
+  virtual GroundMemory* groundMemory() const = 0;
   /// What the engine's solver said in the steps so far, by message (none
   /// for an engine whose solver says nothing).
   virtual std::vector<SolverMessage> solverMessages() const { return {}; }
@@ -176,10 +181,8 @@ class Engine {
 /// V in the world) times its reference pose, for an engine to build from.
 Eigen::Isometry3d startPose(const vehicle::VehicleDescription& vehicle, int body, const Eigen::Isometry3d& placement);
 
-/// The memory of the soft ground the engine's WTC wheels share
-/// (wtc/tyre/ground_memory.hpp): null where the terrain has no soil regions
-/// or the vehicle no WTC wheels.
-GroundMemory* groundMemory(const Engine& engine);
+/// engine.groundMemory() (Engine::groundMemory).
+inline GroundMemory* groundMemory(const Engine& engine) { return engine.groundMemory(); }
 
 /// What a tyre model needs of a wheel body: its geometry and tyre, and as
 /// inertia the body's own mass and its moment about the axle.

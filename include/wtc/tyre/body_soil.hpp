@@ -32,7 +32,7 @@
 // it), the shear's memory (Janosi's displacement: the shear is a ramped
 // Coulomb law), and bulldozing by a body (its nodes are compacted).
 #include <cstddef>
-#include <cstdint>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -81,6 +81,9 @@ class BodyOnSoil {
   /// InvalidInputError naming `where` for no hull, a hull without volume or
   /// with a coordinate not finite, or a mass out of range.
   BodyOnSoil(std::vector<ConvexPolyhedron> hulls, double mass, const std::string& where = "BodyOnSoil");
+  ~BodyOnSoil();
+  BodyOnSoil(BodyOnSoil&&) noexcept;
+  BodyOnSoil& operator=(BodyOnSoil&&) noexcept;
 
   /// The soil's force on the body for a step of `step_seconds` from
   /// `motion`, over every soil piece of `terrain` under it; with a memory,
@@ -93,25 +96,10 @@ class BodyOnSoil {
   double mass() const { return mass_; }
 
  private:
-  struct Node {
-    int i, j;
-    double top;              // z_f (m)
-    Eigen::Vector3d normal;  // the fresh surface's
-    const Soil* soil;
-    Eigen::Vector3d point;  // on the underside
-    double depth;           // Z (m)
-    double sigma;           // Pa
-  };
+  struct Scratch;  // the step's work arrays, kept between steps (body_soil.cpp)
   std::vector<ConvexPolyhedron> hulls_;
   double mass_;
-  // Scratch, kept between steps.
-  std::vector<PieceId> pieces_;
-  std::vector<double> top_;
-  std::vector<std::int32_t> top_face_;
-  std::vector<PieceId> top_piece_;
-  std::vector<Node> nodes_;
-  std::vector<Eigen::Vector4d> planes_;  // the hulls' faces in the world: n, d
-  std::vector<int> hull_faces_;          // faces per hull
+  std::unique_ptr<Scratch> scratch_;
 };
 
 }  // namespace wtc

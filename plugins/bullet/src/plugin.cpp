@@ -231,6 +231,10 @@ void detail::PluginState::preTick(double h) {
   if (tread_rows != nullptr) tread_rows->clear();
   if (pre_tick) pre_tick(h);
   stepWheels(h);
+  {
+    const StepClock::Section timed(clock);
+    soil_bodies.step(h);
+  }
   if (post_wheels) post_wheels(h);
 }
 
@@ -282,6 +286,7 @@ void detail::PluginState::postTick(double h) {
     w->multibody->addJointTorque(w->link, -w->joint_torque);
   }
 #endif
+  soil_bodies.stepped();
   for (const auto& w : wheels) {
     w->link_force.setZero();
     w->link_torque.setZero();
@@ -418,6 +423,9 @@ const WheelForces& Plugin::applied(WheelId wheel) const {
 const WheelState& Plugin::state(WheelId wheel) const {
   return state_->wheels.at(static_cast<std::size_t>(wheel))->mounted.state();
 }
+SoilBodyId Plugin::addSoilBody(const SoilBody& body) { return state_->soil_bodies.add(body); }
+const BodySoilForces& Plugin::soilForces(SoilBodyId body) const { return state_->soil_bodies.forces(body); }
+int Plugin::soilBodyCount() const { return state_->soil_bodies.count(); }
 const GroundMemory& Plugin::groundMemory() const { return state_->ground_memory; }
 GroundMemory& Plugin::groundMemory() { return state_->ground_memory; }
 int Plugin::wheelCount() const { return static_cast<int>(state_->wheels.size()); }

@@ -11,6 +11,7 @@
 #include "adapter/step_clock.hpp"
 #include "conversions.hpp"
 #include "rigid_tread_rows.hpp"
+#include "soil_bodies.hpp"
 #include "wheel_friction_constraint.hpp"
 #include "wheel_shape.hpp"
 #include "wtc/tyre/ground_memory.hpp"
@@ -98,6 +99,7 @@ struct PluginState {
   // (rigid_tread_rows.hpp), during an internal step; null otherwise.
   RigidTreadRows* tread_rows = nullptr;
   StepClock clock;  // preTick and postTick, the caller's callback not included
+  SoilBodies soil_bodies{*this};  // bodies on soft soil (addSoilBody)
 };
 
 }  // namespace detail

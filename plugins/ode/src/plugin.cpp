@@ -179,6 +179,7 @@ void detail::PluginState::beginStep(double h) {
     if (!w.contacts.empty()) ++w.diagnostics.unhandled_steps;
     w.mounted.tell(listener, static_cast<WheelId>(id), h);
   }
+  soil_bodies.step(ground, ground_memory.regionCount() > 0 ? &ground_memory : nullptr, h);
 }
 
 bool detail::PluginState::handlePair(dGeomID a, dGeomID b, dJointGroupID group) {
@@ -292,6 +293,16 @@ const WheelForces& Plugin::forces(WheelId wheel) const { return state_->wheel(wh
 const WheelForces& Plugin::applied(WheelId wheel) const { return state_->applied(wheel); }
 
 const WheelState& Plugin::state(WheelId wheel) const { return state_->wheel(wheel).mounted.state(); }
+SoilBodyId Plugin::addSoilBody(const SoilBody& body) {
+  const bool is_wheel = std::any_of(state_->wheels.begin(), state_->wheels.end(),
+                                    [&](const auto& w) { return w->body == body.body; });
+  return state_->soil_bodies.add(body, is_wheel);
+}
+const BodySoilForces& Plugin::soilForces(SoilBodyId body) const { return state_->soil_bodies.forces(body); }
+int Plugin::soilBodyCount() const { return state_->soil_bodies.count(); }
+int Plugin::keepRigidContacts(dGeomID a, dGeomID b, dContactGeom* contacts, int count, int stride) const {
+  return state_->soil_bodies.keepRigidContacts(state_->terrain, a, b, contacts, count, stride);
+}
 const GroundMemory& Plugin::groundMemory() const { return state_->ground_memory; }
 GroundMemory& Plugin::groundMemory() { return state_->ground_memory; }
 std::span<const SolvedContact> Plugin::solvedContacts(WheelId wheel) const { return state_->wheel(wheel).contacts; }

@@ -6,6 +6,7 @@
 
 #include "adapter/mounted_wheel.hpp"
 #include "adapter/step_clock.hpp"
+#include "soil_bodies.hpp"
 #include "wtc/tyre/ground_memory.hpp"
 #include "wtc/ode/plugin.hpp"
 
@@ -58,6 +59,7 @@ struct PluginState {
   std::unordered_map<dGeomID, WheelId> wheel_of;
   WheelListener* listener = nullptr;
   StepClock clock;  // beginStep and the wheel-terrain pairs of handlePair
+  SoilBodies soil_bodies;  // bodies on soft soil (addSoilBody)
 };
 
 }  // namespace detail

@@ -19,6 +19,7 @@
 #include "body_hull.hpp"
 #include "joint_row.hpp"
 #include "native_wheels.hpp"
+#include "sim/body_soil_shapes.hpp"
 #include "sim/engine_base.hpp"
 #include "src/conversions.hpp"
 #include "src/plugin_state.hpp"
@@ -147,6 +148,10 @@ class SimEngine final : public sim::EngineBase {
       if (refs_[wheels[k]].wheel_drive) driven_wheels_.push_back({.body = wheels[k], .wheel = static_cast<WheelId>(k)});
     }
     if (!driven_wheels_.empty()) plugin_->setPostWheelsCallback([this](double h) { driveWheels(h); });
+    for (sim::SoilBodyShape& soil : sim::soilBodyShapes(settings, terrain, v)) {
+      const Ref& r = refs_[soil.body];
+      plugin_->addSoilBody({.multibody = r.multibody, .link = r.link, .hulls = std::move(soil.hulls)});
+    }
   }
 
   ~SimEngine() override {
@@ -178,6 +183,10 @@ class SimEngine final : public sim::EngineBase {
       r.multibody->addLinkForce(r.link, toBt(force));
       r.multibody->addLinkTorque(r.link, toBt(torque));
     }
+  }
+
+  GroundMemory* groundMemory() const override {
+    return plugin_->groundMemory().regionCount() > 0 ? &plugin_->groundMemory() : nullptr;
   }
 
   void setGravity(const Eigen::Vector3d& g_W) override { world_.setGravity(toBt(g_W)); }

@@ -13,6 +13,7 @@
 #include "body_geoms.hpp"
 #include "direct_step.hpp"
 #include "native_wheels.hpp"
+#include "sim/body_soil_shapes.hpp"
 #include "sim/engine_base.hpp"
 #include "src/conversions.hpp"
 #include "wtc/base/constants.hpp"
@@ -135,6 +136,9 @@ class SimEngine final : public sim::EngineBase {
       wheels_ = std::make_unique<WtcWheels>(*plugin_, v, wheels, settings.tyre_effects, contacts_);
     }
     useWheels(*wheels_);
+    for (sim::SoilBodyShape& soil : sim::soilBodyShapes(settings, terrain, v)) {
+      plugin_->addSoilBody({.body = refs_[soil.body].body, .hulls = std::move(soil.hulls)});
+    }
     if (stepper_ == Stepper::kDirect) makeDirectStepper();
     // Room for every body touching a few pieces at once: a step's body
     // contacts are then noted without allocating (step_allocation_test).
@@ -180,6 +184,10 @@ class SimEngine final : public sim::EngineBase {
       dBodySetLinearVel(refs_[i].body, v.linear.x(), v.linear.y(), v.linear.z());
       dBodySetAngularVel(refs_[i].body, v.angular.x(), v.angular.y(), v.angular.z());
     }
+  }
+
+  GroundMemory* groundMemory() const override {
+    return plugin_->groundMemory().regionCount() > 0 ? &plugin_->groundMemory() : nullptr;
   }
 
   void setGravity(const Eigen::Vector3d& g_W) override { dWorldSetGravity(world_, g_W.x(), g_W.y(), g_W.z()); }
@@ -426,7 +434,8 @@ class SimEngine final : public sim::EngineBase {
     // Terrain against terrain, or two bodies of the vehicle: nothing.
     if ((body_a == nullptr) == (body_b == nullptr)) return;
     std::array<dContact, kMaxContactsPerPair> contact{};
-    const int n = dCollide(a, b, kMaxContactsPerPair, &contact[0].geom, sizeof(dContact));
+    int n = dCollide(a, b, kMaxContactsPerPair, &contact[0].geom, sizeof(dContact));
+    n = e.plugin_->keepRigidContacts(a, b, &contact[0].geom, n, sizeof(dContact));  // a belly on soil: the soil's
     for (int k = 0; k < n; ++k) {
       contact[k].surface.mode = dContactApprox1;
       contact[k].surface.mu = sim::kBodyGroundFriction;

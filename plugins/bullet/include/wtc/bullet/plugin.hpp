@@ -44,15 +44,26 @@
 // (wtc::vehicle::wheelDriveTorque), with tau_axle from axleTorque() and T
 // applied with addAxleTorque(), both in the post-wheels callback. The sim
 // engine drives its wheels so (docs/bullet-plugin.md, Wheel drives).
+//
+// Bodies on soft soil (addSoilBody; docs/soft-soil.md, "A body on the
+// soil"): a registered body's underside meets the terrain's soil pieces as
+// the soil's pressure and shear (wtc::BodyOnSoil), applied in the pre-tick
+// after the wheels, as the wheels' wrench is; its rigid contacts with those
+// pieces are dropped. The plugin then wraps the dispatcher's near callback
+// (the one it finds at the first addSoilBody, chained): after the pair is
+// processed, a soil body's manifold points on a piece with a soil go.
 #include <functional>
 #include <memory>
+#include <vector>
 
 #include <btBulletDynamicsCommon.h>
 
 #include "wtc/adapter/wheel_listener.hpp"
 #include "wtc/adapter/wheel_spec.hpp"
 #include "wtc/bullet/terrain_object.hpp"
+#include "wtc/geometry/convex_polyhedron.hpp"
 #include "wtc/terrain/terrain.hpp"
+#include "wtc/tyre/body_soil.hpp"
 #include "wtc/tyre/contact_mode.hpp"
 #include "wtc/tyre/ground_memory.hpp"
 #include "wtc/tyre/tyre_model.hpp"
@@ -85,6 +96,18 @@ struct MultiBodyWheel : WheelMounting {
   int link = -1;
 };
 
+/// A body whose underside meets soft soil (wtc/tyre/body_soil.hpp): a
+/// btRigidBody, or a btMultiBody's link (link -1: its base).
+struct SoilBody {
+  btRigidBody* body = nullptr;
+  btMultiBody* multibody = nullptr;
+  int link = -1;
+  /// Its shape in its frame (the rigid body's or the link's: the centre of
+  /// mass frame; m), one or more convex hulls.
+  std::vector<ConvexPolyhedron> hulls;
+};
+using SoilBodyId = int;
+
 class Plugin {
  public:
   /// Adds `terrain` (which must outlive the plugin) to `world` and takes
@@ -99,6 +122,16 @@ class Plugin {
   /// in implicit mode, a world whose solver is not WTC's).
   WheelId addWheel(const RigidWheel& wheel);
   WheelId addWheel(const MultiBodyWheel& wheel);
+
+  /// Registers a body whose underside meets the terrain's soil pieces as
+  /// soft soil (InvalidInputError: no body, both or neither kind given, a
+  /// link out of range or without a collider, a static body, a registered
+  /// wheel or soil body, hulls BodyOnSoil refuses). In a soil region it
+  /// reads and presses the ground's memory.
+  SoilBodyId addSoilBody(const SoilBody& body);
+  /// What the soil did to it in the last internal step.
+  const BodySoilForces& soilForces(SoilBodyId body) const;
+  int soilBodyCount() const;
 
   /// The last internal step's result and state of a wheel.
   const WheelForces& forces(WheelId wheel) const;

@@ -38,6 +38,15 @@
 // direction (mu2 = 0: a cone's cap, not ODE's pyramid). Rolling resistance
 // is an explicit torque in both modes.
 //
+// Bodies on soft soil (addSoilBody; docs/soft-soil.md, "A body on the
+// soil"): beginStep puts on each registered body the soil's pressure and
+// shear under it (wtc::BodyOnSoil), after the wheels; the near callback
+// drops its rigid contacts with soil pieces by calling keepRigidContacts
+// after dCollide (a body-terrain pair is the user's, not WTC's):
+//
+//      int n = dCollide(a, b, max, &contact[0].geom, sizeof(dContact));
+//      n = plugin.keepRigidContacts(a, b, &contact[0].geom, n, sizeof(dContact));
+//
 // Lifetime: the terrain and the registered bodies and geoms must outlive
 // the plugin, and the plugin must be destroyed before the user's space
 // (which would otherwise destroy the terrain space first) and the world.
@@ -46,6 +55,7 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <vector>
 
 #include <ode/ode.h>
 #include <Eigen/Core>
@@ -53,6 +63,8 @@
 #include "wtc/adapter/solver_contact.hpp"
 #include "wtc/adapter/wheel_listener.hpp"
 #include "wtc/adapter/wheel_spec.hpp"
+#include "wtc/geometry/convex_polyhedron.hpp"
+#include "wtc/tyre/body_soil.hpp"
 #include "wtc/ode/terrain_geoms.hpp"
 #include "wtc/terrain/terrain.hpp"
 #include "wtc/tyre/ground_memory.hpp"
@@ -104,6 +116,15 @@ struct WheelDiagnostics {
   std::uint64_t capped_contacts = 0;
 };
 
+/// A body whose underside meets soft soil (wtc/tyre/body_soil.hpp).
+struct SoilBody {
+  dBodyID body = nullptr;  ///< Not owned.
+  /// Its shape in the body's frame (ODE's: at its centre of mass; m), one
+  /// or more convex hulls.
+  std::vector<ConvexPolyhedron> hulls;
+};
+using SoilBodyId = int;
+
 class Plugin {
  public:
   /// Mirrors `terrain` (which must outlive the plugin) as geoms of `shape`
@@ -132,6 +153,23 @@ class Plugin {
   /// contact joints go into `contacts` the first time its pair comes up in
   /// the step. False for any other pair.
   bool handlePair(dGeomID a, dGeomID b, dJointGroupID contacts);
+
+  /// Registers a body whose underside meets the terrain's soil pieces as
+  /// soft soil (InvalidInputError: a null body, a registered soil body, a
+  /// body that is a registered wheel's, hulls BodyOnSoil refuses). In a
+  /// soil region it reads and presses the ground's memory.
+  SoilBodyId addSoilBody(const SoilBody& body);
+  /// What the soil did to it in the last beginStep.
+  const BodySoilForces& soilForces(SoilBodyId body) const;
+  int soilBodyCount() const;
+  /// From the near callback, after dCollide(a, b) of a pair handlePair did
+  /// not take: of the `count` contacts (each `stride` bytes after the last:
+  /// sizeof(dContact) when they are an array of dContact's geoms), keeps
+  /// at the front those that are not a soil body's on a piece with a soil,
+  /// and returns how many. A pair that is not a soil body's against the
+  /// terrain keeps them all.
+  int keepRigidContacts(dGeomID a, dGeomID b, dContactGeom* contacts, int count,
+                        int stride = sizeof(dContactGeom)) const;
 
   /// The last beginStep's result and state of a wheel (these accessors
   /// throw std::out_of_range for an id that is not registered).
