@@ -12,6 +12,7 @@
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 
 #include "bullet_fixture.hpp"
+#include "expect_refused.hpp"
 #include "soil_plate.hpp"
 #include "wtc/base/error.hpp"
 
@@ -62,13 +63,7 @@ TEST(BulletSoilBodyTest, RegistrationRefusesWhatItCannotServeAndTheNearCallbackI
   BulletWorld w(sand, ContactMode::kForce);
   Box box(w.world);
   const auto refused = [&](const bullet::SoilBody& spec, const std::string& words) {
-    try {
-      w.plugin->addSoilBody(spec);
-      ADD_FAILURE() << "accepted: " << words;
-    } catch (const InvalidInputError& e) {
-      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
-      EXPECT_NE(std::string(e.what()).find("addSoilBody"), std::string::npos) << e.what();
-    }
+    expectRefused([&] { w.plugin->addSoilBody(spec); }, {words, "addSoilBody"});
   };
   refused({.hulls = boxHull()}, "no body");
   refused({.body = box.body.get(), .hulls = {}}, "at least one convex hull");
