@@ -1,7 +1,7 @@
 # wtc_add_engine(<name>
 #                DEPENDENCIES <file>
 #                PLUGIN_SOURCES <file>... [PLUGIN_LINKS <target>...]
-#                SIM_SOURCES <file>...)
+#                [SIM_SOURCES <file>...])
 #
 # Declares one physics engine, once, from its own folder (plugins/<name>; the
 # one line outside it is add_subdirectory(<name>) in plugins/CMakeLists.txt,
@@ -18,16 +18,21 @@
 #  - its entries in the engine table (wtc::sim_engines, plugins/engine_table):
 #    the sim engine defines wtc::<name>::engineEntries() (src/sim/
 #    engine_entry.hpp), and the table's generated source names it.
+# Without SIM_SOURCES the engine is its adapter alone (an engine landing
+# adapter first): no sim engine, no entry in the table (WTC_ADAPTERS, not
+# WTC_ENGINES). Either way a tests/<name> folder, if there is one, is the
+# engine's tests (tests/CMakeLists.txt adds it).
 # cmake/layers.txt gives every engine folder of plugins/ the engines' layer.
 function(wtc_add_engine name)
   cmake_parse_arguments(PARSE_ARGV 1 arg "" "DEPENDENCIES" "PLUGIN_SOURCES;PLUGIN_LINKS;SIM_SOURCES")
-  foreach(required IN ITEMS DEPENDENCIES PLUGIN_SOURCES SIM_SOURCES)
+  foreach(required IN ITEMS DEPENDENCIES PLUGIN_SOURCES)
     if(NOT arg_${required})
       message(FATAL_ERROR "wtc_add_engine(${name}): ${required} is required")
     endif()
   endforeach()
   get_property(declared GLOBAL PROPERTY WTC_ENGINES)
-  if(name IN_LIST declared)
+  get_property(adapters GLOBAL PROPERTY WTC_ADAPTERS)
+  if(name IN_LIST declared OR name IN_LIST adapters)
     message(FATAL_ERROR "wtc_add_engine(${name}): the engine is declared twice")
   endif()
 
@@ -39,11 +44,14 @@ function(wtc_add_engine name)
   wtc_add_library(wtc_${name} EXPORT ${name} INCLUDE ${CMAKE_CURRENT_SOURCE_DIR}/include ENGINE_HEADERS
     SOURCES ${arg_PLUGIN_SOURCES})
   target_link_libraries(wtc_${name} PUBLIC wtc::core ${arg_PLUGIN_LINKS})
+  target_include_directories(wtc_${name} PRIVATE $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}>)
+  if(NOT arg_SIM_SOURCES)
+    set_property(GLOBAL APPEND PROPERTY WTC_ADAPTERS ${name})
+    return()
+  endif()
   wtc_add_library(wtc_${name}_sim EXPORT ${name}_sim ENGINE_HEADERS SOURCES ${arg_SIM_SOURCES})
   target_link_libraries(wtc_${name}_sim PUBLIC wtc::sim wtc::${name})
-  foreach(target IN ITEMS wtc_${name} wtc_${name}_sim)
-    target_include_directories(${target} PRIVATE $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}>)
-  endforeach()
+  target_include_directories(wtc_${name}_sim PRIVATE $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}>)
 
   set_property(GLOBAL APPEND PROPERTY WTC_ENGINES ${name})
 endfunction()

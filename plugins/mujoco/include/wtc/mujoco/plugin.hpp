@@ -1,0 +1,116 @@
+#pragma once
+// wtc::mujoco: WTC wheels in a user's own MuJoCo model (mjModel / mjData,
+// MuJoCo 2.2.2 as Debian ships it). The adapter does nothing physical
+// itself: it reads each wheel body's pose and velocity from mjData, asks the
+// core (wtc::TyreModel, one step per wheel per MuJoCo step), and hands the
+// wrench back to MuJoCo. docs/mujoco-plugin.md has the details.
+//
+// How a program steps (force mode), instead of mj_step(m, d):
+//
+//      plugin.step(m, d);
+//
+// which is MuJoCo's own two halves with the wheels between them:
+//
+//      mj_step1(m, d);            // positions, velocities: xpos, xmat, xipos, cvel of this step
+//      plugin.applyForces(m, d);  // every wheel's tyre model; its wrench added to xfrc_applied
+//      mj_step2(m, d);            // actuation, acceleration (xfrc_applied at the COM), constraints, integration
+//      plugin.clearForces(d);     // the wrench taken back out of xfrc_applied
+//
+// so a user's own xfrc_applied on a wheel body is kept, and the wrench acts
+// on exactly this step. mj_step1 + mj_step2 is mj_step, stage for stage,
+// for the Euler and implicit integrators: with no wheels, plugin.step(m, d)
+// equals mj_step(m, d) bit for bit (tests/mujoco). RK4 is refused: its
+// mj_step2 integrates by Euler, and its four stages would each need the
+// tyre model.
+//
+// MuJoCo's own collisions: the wheels' contact is WTC's. A wheel body's
+// geoms must not also meet the ground in MuJoCo (addWheel refuses a geom
+// whose contype / conaffinity bits, or a <pair>, would collide it with a
+// geom of the world body): give them contype="0" conaffinity="0", or bits
+// the ground lacks. The terrain for the wheels is the WTC terrain given
+// here, which the model's own ground (for the other bodies) should match.
+//
+// No global callback (mjcb_passive, mjcb_control) is taken.
+//
+// The engine-solved modes (WTC's contacts in mjData's contact list between
+// mj_collision and mj_makeConstraint) are the next part of issue 56; the
+// constructor refuses them today.
+#include <memory>
+#include <string>
+
+#include <mujoco/mujoco.h>
+#include <Eigen/Core>
+
+#include "wtc/adapter/wheel_listener.hpp"
+#include "wtc/adapter/wheel_spec.hpp"
+#include "wtc/terrain/terrain.hpp"
+#include "wtc/tyre/contact_mode.hpp"
+#include "wtc/tyre/ground_memory.hpp"
+#include "wtc/tyre/tyre_model.hpp"
+
+namespace wtc::mujoco {
+
+using WheelId = wtc::WheelId;
+using WheelListener = wtc::WheelListener;
+
+/// A wheel: a body of the model (wtc/adapter/wheel_spec.hpp: what the wheel
+/// is and where its inertia comes from). Its centre and axle are given in
+/// the body's frame (mjData::xpos, xmat), not its inertial frame.
+struct Wheel : WheelSpec {
+  int body = -1;  ///< The body's id (mj_name2id(m, mjOBJ_BODY, name)); not the world (0).
+  Eigen::Vector3d axle_local{Eigen::Vector3d::UnitY()};   ///< Axle direction in the body frame.
+  Eigen::Vector3d centre_local{Eigen::Vector3d::Zero()};  ///< Wheel centre O in the body frame (m).
+};
+
+namespace detail {
+struct PluginState;
+}  // namespace detail
+
+class Plugin {
+ public:
+  /// WTC's wheels for `model` (which, like `terrain`, must outlive the
+  /// plugin) on `terrain`. InvalidInputError: an engine-solved mode (not
+  /// yet served), an integrator WTC cannot serve (RK4), a timestep that is
+  /// not positive.
+  Plugin(const mjModel& model, const Terrain& terrain, ContactMode mode = ContactMode::kForce);
+  ~Plugin();
+  Plugin(const Plugin&) = delete;
+  Plugin& operator=(const Plugin&) = delete;
+
+  /// Registers a wheel. InvalidInputError naming the problem: a body id
+  /// the model lacks or the world's, a body registered twice, a zero axle,
+  /// invalid parameters, a geom of the body that MuJoCo would also collide
+  /// with the world's geoms (named).
+  WheelId addWheel(const Wheel& wheel);
+
+  /// One MuJoCo step with the wheels (the call order above). `model` must
+  /// be the plugin's.
+  void step(const mjModel& model, mjData& data);
+  /// After mj_step1: every wheel's tyre model for a step of
+  /// model.opt.timestep from the state mj_step1 computed, its wrench added
+  /// to data.xfrc_applied at the body's centre of mass.
+  void applyForces(const mjModel& model, mjData& data);
+  /// After mj_step2: takes the wrench applyForces added back out.
+  void clearForces(mjData& data);
+
+  /// The last step's result and state of a wheel (std::out_of_range for an
+  /// id that is not registered).
+  const WheelForces& forces(WheelId wheel) const;
+  const WheelState& state(WheelId wheel) const;
+  /// What the terrain's soil regions remember (wtc/tyre/ground_memory.hpp).
+  const GroundMemory& groundMemory() const;
+  GroundMemory& groundMemory();
+  int wheelCount() const;
+  /// Wall time (s) the plugin's own per-step work took since construction
+  /// (MuJoCo's stages not included): against the simulation's wall time,
+  /// WTC's share of a step.
+  double contactSeconds() const;
+  ContactMode mode() const;
+  /// Called by applyForces for each wheel after its tyre model ran; null: none.
+  void setListener(WheelListener* listener);
+
+ private:
+  std::unique_ptr<detail::PluginState> state_;
+};
+
+}  // namespace wtc::mujoco
