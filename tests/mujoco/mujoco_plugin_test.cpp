@@ -29,7 +29,8 @@ constexpr double kRadiusM = 0.19, kWidthM = 0.12, kCarrierKg = 10.0, kWheelKg = 
 std::string model(const std::string& options = "timestep=\"0.0004\" integrator=\"Euler\"",
                   const std::string& tyre_bits = "contype=\"0\" conaffinity=\"0\"") {
   return R"(<mujoco model="wheel_on_slider">
-  <option )" + options + R"(/>
+  <option )" +
+         options + R"(/>
   <worldbody>
     <geom name="floor" type="plane" size="5 5 0.1"/>
     <body name="carrier" pos="0 0 0.2">

@@ -13,6 +13,8 @@ inline Eigen::Matrix3d mat3(const mjtNum* m) {
   return r;
 }
 /// A unit quaternion w, x, y, z (mjModel::body_iquat) as a rotation.
-inline Eigen::Matrix3d quatMat(const mjtNum* q) { return Eigen::Quaterniond(q[0], q[1], q[2], q[3]).toRotationMatrix(); }
+inline Eigen::Matrix3d quatMat(const mjtNum* q) {
+  return Eigen::Quaterniond(q[0], q[1], q[2], q[3]).toRotationMatrix();
+}
 
 }  // namespace wtc::mujoco

@@ -8,7 +8,11 @@ namespace {
 
 std::string geomName(const mjModel& m, int geom) {
   const char* name = mj_id2name(&m, mjOBJ_GEOM, geom);
-  return name != nullptr ? "'" + std::string(name) + "'" : "#" + std::to_string(geom);
+  // Appended, not "'" + std::string(name): GCC 12 warns falsely of an
+  // overlapping memcpy in that operator+ (its -Wrestrict, GCC bug 105329).
+  std::string quoted = name != nullptr ? "'" : "#";
+  quoted += name != nullptr ? std::string(name) + "'" : std::to_string(geom);
+  return quoted;
 }
 
 bool onGround(const mjModel& m, int geom) { return m.body_weldid[m.geom_bodyid[geom]] == 0; }
@@ -31,8 +35,8 @@ std::string worldCollision(const mjModel& m, int body) {
     const int g1 = m.pair_geom1[k], g2 = m.pair_geom2[k];
     const bool one = m.geom_bodyid[g1] == body && onGround(m, g2), two = m.geom_bodyid[g2] == body && onGround(m, g1);
     if (one || two) {
-      return "<pair> " + std::to_string(k) + " collides geom " + geomName(m, one ? g1 : g2) + " with the ground's geom " +
-             geomName(m, one ? g2 : g1);
+      return "<pair> " + std::to_string(k) + " collides geom " + geomName(m, one ? g1 : g2) +
+             " with the ground's geom " + geomName(m, one ? g2 : g1);
     }
   }
   for (int g = 0; g < m.ngeom; ++g) {

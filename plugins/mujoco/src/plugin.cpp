@@ -63,7 +63,11 @@ namespace {
 
 std::string bodyName(const mjModel& m, int body) {
   const char* name = mj_id2name(&m, mjOBJ_BODY, body);
-  return name != nullptr ? "'" + std::string(name) + "'" : "#" + std::to_string(body);
+  // Appended, not "'" + std::string(name): GCC 12 warns falsely of an
+  // overlapping memcpy in that operator+ (its -Wrestrict, GCC bug 105329).
+  std::string quoted = name != nullptr ? "'" : "#";
+  quoted += name != nullptr ? std::string(name) + "'" : std::to_string(body);
+  return quoted;
 }
 
 }  // namespace
@@ -93,7 +97,8 @@ WheelId Plugin::addWheel(const Wheel& spec) {
   static constexpr const char* kWhere = "wtc::mujoco::Plugin::addWheel";
   const mjModel& m = state_->model;
   if (spec.body <= 0 || spec.body >= m.nbody) {
-    fail(kWhere, "body " + std::to_string(spec.body) + (spec.body == 0 ? " is the world" : " is not a body of the model") +
+    fail(kWhere, "body " + std::to_string(spec.body) +
+                     (spec.body == 0 ? " is the world" : " is not a body of the model") +
                      " (the model has bodies 1 to " + std::to_string(m.nbody - 1) + ")");
   }
   for (const auto& w : state_->wheels) {
@@ -109,8 +114,8 @@ WheelId Plugin::addWheel(const Wheel& spec) {
   // principal moments turned from the inertial frame (body_iquat).
   const Eigen::Matrix3d turn = quatMat(m.body_iquat + 4 * spec.body);
   const Eigen::Matrix3d inertia = turn * vec3(m.body_inertia + 3 * spec.body).asDiagonal() * turn.transpose();
-  const WheelDescription description = mountedDescription(spec.description, spec.inertia_source,
-                                                          m.body_mass[spec.body], inertia, spec.axle_local, kWhere);
+  const WheelDescription description = mountedDescription(spec.description, spec.inertia_source, m.body_mass[spec.body],
+                                                          inertia, spec.axle_local, kWhere);
   auto w = std::make_unique<WheelEntry>(description, spec.effects, state_->mode);
   w->body = spec.body;
   w->axle_local = spec.axle_local;
