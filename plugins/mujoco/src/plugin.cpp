@@ -10,7 +10,9 @@
 
 #include "adapter/mounted_wheel.hpp"
 #include "adapter/step_clock.hpp"
+#include "euler_stages.hpp"
 #include "model_checks.hpp"
+#include "soft_contact.hpp"
 #include "src/conversions.hpp"
 #include "wtc/base/error.hpp"
 
@@ -20,8 +22,14 @@ struct WheelEntry {
   WheelEntry(const WheelDescription& description, EffectSet effects, ContactMode mode)
       : mounted(description, effects, mode) {}
   int body = -1;
+  int geom = -1;  // the body's first geom: geom2 of its MuJoCo contacts (engine-solved modes)
   Eigen::Vector3d axle_local, centre_local;
   MountedWheel mounted;  // tyre model, state, this step's result
+  // Engine-solved modes: the mjData::contact index of each of this step's
+  // contacts (mounted.last().contacts, in order; -1: not handed over), and
+  // the forces MuJoCo's solver applied at them.
+  std::vector<int> contact_ids;
+  std::vector<Eigen::Vector3d> solved;
   // The body's xfrc_applied before applyForces added the wheel's wrench,
   // which clearForces puts back exactly (the user's own, to the bit).
   std::array<mjtNum, 6> users{};
@@ -44,13 +52,16 @@ struct PluginState {
     if (&m != &model) throw InvalidInputError(std::string(where) + ": a model other than the plugin's");
   }
 
+  void runWheels(const mjModel& m, mjData& d, bool contacts);
+
   const mjModel& model;
   const Terrain& terrain;
   GroundMemory ground_memory;
   ContactMode mode;
   std::vector<std::unique_ptr<WheelEntry>> wheels;
   WheelListener* listener = nullptr;
-  StepClock clock;  // applyForces and clearForces
+  StepClock clock;       // the wheels' part of a step
+  int ground_geom = -1;  // geom1 of WTC's MuJoCo contacts: a geom of the world body
 };
 
 }  // namespace detail
@@ -74,11 +85,11 @@ std::string bodyName(const mjModel& m, int body) {
 
 Plugin::Plugin(const mjModel& model, const Terrain& terrain, ContactMode mode) {
   static constexpr const char* kWhere = "wtc::mujoco::Plugin";
-  if (mode != ContactMode::kForce) {
+  if (mode == ContactMode::kImplicit) {
     fail(kWhere,
-         "contact mode " + std::string(contactModeName(mode)) +
-             ": wtc::mujoco serves force mode; WTC's contacts in MuJoCo's contact list (the engine-solved modes) are "
-             "not built yet (issue 56)");
+         "contact mode implicit: MuJoCo 2.2.2's friction rows take no target velocity and their compliance is the "
+         "normal's divided by impratio, so the tread's compliant rows cannot be handed to it; use constraint mode (the "
+         "tyre's spring solved by MuJoCo, docs/mujoco-plugin.md) or force mode");
   }
   if (model.opt.integrator == mjINT_RK4) {
     fail(kWhere,
@@ -89,6 +100,26 @@ Plugin::Plugin(const mjModel& model, const Terrain& terrain, ContactMode mode) {
     fail(kWhere, "the model's timestep " + std::to_string(model.opt.timestep) + " s is not positive");
   }
   state_ = std::make_unique<detail::PluginState>(model, terrain, mode);
+  if (!engineSolvesContacts(mode)) return;
+  if (model.opt.integrator != mjINT_EULER) {
+    fail(kWhere,
+         "constraint mode with the model's implicit integrator: WTC's contacts go in between mj_collision and "
+         "mj_makeConstraint of a step run stage by stage, and MuJoCo 2.2.2 does not export mj_implicit; use "
+         "integrator=\"Euler\", or force mode");
+  }
+  if ((model.opt.disableflags & mjDSBL_CONTACT) != 0) {
+    fail(kWhere,
+         "constraint mode on a model whose contacts are disabled (<flag contact=\"disable\"/>): MuJoCo would "
+         "drop WTC's contacts too");
+  }
+  for (int g = 0; g < model.ngeom && state_->ground_geom < 0; ++g) {
+    if (model.geom_bodyid[g] == 0) state_->ground_geom = g;
+  }
+  if (state_->ground_geom < 0) {
+    fail(kWhere,
+         "constraint mode needs a geom of the world body, which WTC's contacts name as their geom1 (any: "
+         "<geom type=\"plane\" size=\"1 1 1\" contype=\"0\" conaffinity=\"0\"/> in <worldbody>)");
+  }
 }
 
 Plugin::~Plugin() = default;
@@ -118,6 +149,14 @@ WheelId Plugin::addWheel(const Wheel& spec) {
                                                           inertia, spec.axle_local, kWhere);
   auto w = std::make_unique<WheelEntry>(description, spec.effects, state_->mode);
   w->body = spec.body;
+  for (int g = 0; g < m.ngeom && w->geom < 0; ++g) {
+    if (m.geom_bodyid[g] == spec.body) w->geom = g;
+  }
+  if (engineSolvesContacts(state_->mode) && w->geom < 0) {
+    fail(kWhere, "wheel body " + bodyName(m, spec.body) +
+                     " has no geom, which WTC's MuJoCo contacts name as their geom2 in constraint mode (give it one, "
+                     "with contype=\"0\" conaffinity=\"0\")");
+  }
   w->axle_local = spec.axle_local;
   w->centre_local = spec.centre_local;
   if (state_->ground_memory.regionCount() > 0) w->mounted.state().setGroundMemory(&state_->ground_memory);
@@ -127,35 +166,96 @@ WheelId Plugin::addWheel(const Wheel& spec) {
 
 void Plugin::step(const mjModel& model, mjData& data) {
   state_->requireModel(model, "wtc::mujoco::Plugin::step");
-  mj_step1(&model, &data);
-  applyForces(model, data);
-  mj_step2(&model, &data);
+  if (engineSolvesContacts(state_->mode)) {
+    eulerStep(
+        model, data, [&] { addContacts(model, data); }, [&] { collectSolvedForces(model, data); });
+  } else {
+    mj_step1(&model, &data);
+    applyForces(model, data);
+    mj_step2(&model, &data);
+  }
   clearForces(data);
 }
 
 void Plugin::applyForces(const mjModel& model, mjData& data) {
   state_->requireModel(model, "wtc::mujoco::Plugin::applyForces");
+  if (engineSolvesContacts(state_->mode)) {
+    fail("wtc::mujoco::Plugin::applyForces",
+         "in constraint mode the wheels go in with addContacts, after mj_collision");
+  }
+  state_->runWheels(model, data, false);
+}
+
+void Plugin::addContacts(const mjModel& model, mjData& data) {
+  state_->requireModel(model, "wtc::mujoco::Plugin::addContacts");
+  if (!engineSolvesContacts(state_->mode)) {
+    fail("wtc::mujoco::Plugin::addContacts", "in force mode the wheels go in with applyForces, after mj_step1");
+  }
+  if (state_->wheels.empty()) return;  // mj_step's stages untouched
+  // The wheels' velocities of this step: mj_fwdVelocity, which computes
+  // cvel, comes after mj_makeConstraint; mj_comVel is a pure function of
+  // the kinematics and qvel, so computing it early changes nothing.
+  mj_comVel(&model, &data);
+  state_->runWheels(model, data, true);
+}
+
+void Plugin::collectSolvedForces(const mjModel& model, const mjData& data) {
+  state_->requireModel(model, "wtc::mujoco::Plugin::collectSolvedForces");
   const StepClock::Section timed(state_->clock);
-  const double h = model.opt.timestep;
-  const Eigen::Vector3d gravity = vec3(model.opt.gravity);
-  for (std::size_t id = 0; id < state_->wheels.size(); ++id) {
-    WheelEntry& w = *state_->wheels[id];
+  for (const auto& w : state_->wheels) {
+    if (w->mounted.last().skipped) continue;
+    w->solved.assign(w->contact_ids.size(), Eigen::Vector3d::Zero());
+    for (std::size_t k = 0; k < w->contact_ids.size(); ++k) {
+      const int id = w->contact_ids[k];
+      if (id < 0 || id >= data.ncon) continue;
+      const mjContact& c = data.contact[id];
+      if (c.efc_address < 0 && c.exclude == 0) {
+        fail("wtc::mujoco::Plugin::step",
+             "the model's njmax (" + std::to_string(model.njmax) +
+                 " constraint rows) is full: WTC's contacts did not all become rows; raise <size njmax=\"...\"/>");
+      }
+      // mj_contactForce: in the contact frame, on geom2 (the wheel).
+      mjtNum local[6];
+      mj_contactForce(&model, &data, id, local);
+      w->solved[k] = mat3(c.frame).transpose() * vec3(local);
+    }
+    w->mounted.setSolvedForces(w->solved);
+  }
+}
+
+namespace detail {
+
+void PluginState::runWheels(const mjModel& m, mjData& d, bool contacts) {
+  const StepClock::Section timed(clock);
+  const double h = m.opt.timestep;
+  const Eigen::Vector3d gravity = vec3(m.opt.gravity);
+  ContactSetting setting;
+  setting.step_seconds = h;
+  setting.pyramidal = m.opt.cone == mjCONE_PYRAMIDAL;
+  setting.impratio = m.opt.impratio;
+  setting.ground_geom = ground_geom;
+  SoftContact soft;
+  for (std::size_t id = 0; id < wheels.size(); ++id) {
+    WheelEntry& w = *wheels[id];
     const int b = w.body;
     w.mounted.setRestLoad(gravity);
-    const Eigen::Matrix3d rotation = mat3(data.xmat + 9 * b);
-    const Eigen::Vector3d com = vec3(data.xipos + 3 * b);
-    const Eigen::Vector3d centre = vec3(data.xpos + 3 * b) + rotation * w.centre_local;
-    // [omega; v] at the centre of mass, in world axes (mj_step1 computed cvel).
+    const Eigen::Matrix3d rotation = mat3(d.xmat + 9 * b);
+    const Eigen::Vector3d com = vec3(d.xipos + 3 * b);
+    const Eigen::Vector3d centre = vec3(d.xpos + 3 * b) + rotation * w.centre_local;
+    // [omega; v] at the centre of mass, in world axes (from cvel).
     mjtNum spin_velocity[6];
-    mj_objectVelocity(&model, &data, mjOBJ_BODY, b, spin_velocity, 0);
+    mj_objectVelocity(&m, &d, mjOBJ_BODY, b, spin_velocity, 0);
     WheelMotion motion;
     motion.angular_velocity = vec3(spin_velocity);
     motion.velocity = vec3(spin_velocity + 3) + motion.angular_velocity.cross(centre - com);
-    const MountedWheelStep& r = w.mounted.step(state_->terrain, {centre, rotation * w.axle_local}, motion, h);
+    const MountedWheelStep& r = w.mounted.step(terrain, {centre, rotation * w.axle_local}, motion, h);
+    w.contact_ids.clear();
     if (!r.skipped) {
-      // xfrc_applied acts at the centre of mass: the torque about O moved there.
+      // xfrc_applied acts at the centre of mass: the torque about O moved
+      // there. Force mode: the tyre's wrench; constraint mode: what stays
+      // explicit (rolling resistance, the soil's shear).
       const Eigen::Vector3d torque = r.torque + (centre - com).cross(r.force);
-      mjtNum* applied = data.xfrc_applied + 6 * b;
+      mjtNum* applied = d.xfrc_applied + 6 * b;
       std::copy(applied, applied + 6, w.users.begin());
       w.added = true;
       for (int i = 0; i < 3; ++i) {
@@ -163,9 +263,27 @@ void Plugin::applyForces(const mjModel& model, mjData& data) {
         applied[3 + i] += torque[i];
       }
     }
-    w.mounted.tell(state_->listener, static_cast<WheelId>(id), h);
+    if (contacts && !r.skipped) {
+      setting.inverse_weight = m.body_invweight0[2 * m.geom_bodyid[ground_geom]] + m.body_invweight0[2 * b];
+      setting.wheel_geom = w.geom;
+      for (const SolverContact& c : r.contacts) {
+        int index = -1;
+        if (toSoftContact(c, setting, soft)) {
+          if (mj_addContact(&m, &d, &soft.contact) != 0) {
+            fail("wtc::mujoco::Plugin::step", "the model's nconmax (" + std::to_string(m.nconmax) +
+                                                  " contacts) is full: WTC's contacts did not fit; raise <size "
+                                                  "nconmax=\"...\"/>");
+          }
+          index = d.ncon - 1;
+        }
+        w.contact_ids.push_back(index);
+      }
+    }
+    w.mounted.tell(listener, static_cast<WheelId>(id), h);
   }
 }
+
+}  // namespace detail
 
 void Plugin::clearForces(mjData& data) {
   const StepClock::Section timed(state_->clock);
@@ -177,6 +295,7 @@ void Plugin::clearForces(mjData& data) {
 }
 
 const WheelForces& Plugin::forces(WheelId wheel) const { return state_->wheel(wheel).mounted.forces(); }
+const WheelForces& Plugin::applied(WheelId wheel) const { return state_->wheel(wheel).mounted.applied(); }
 const WheelState& Plugin::state(WheelId wheel) const { return state_->wheel(wheel).mounted.state(); }
 const GroundMemory& Plugin::groundMemory() const { return state_->ground_memory; }
 GroundMemory& Plugin::groundMemory() { return state_->ground_memory; }

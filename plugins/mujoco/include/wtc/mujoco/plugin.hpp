@@ -32,9 +32,27 @@
 //
 // No global callback (mjcb_passive, mjcb_control) is taken.
 //
-// The engine-solved modes (WTC's contacts in mjData's contact list between
-// mj_collision and mj_makeConstraint) are the next part of issue 56; the
-// constructor refuses them today.
+// Constraint mode (ContactMode::kConstraint): WTC's contacts go into
+// mjData's contact list between mj_collision and mj_makeConstraint, and
+// MuJoCo's solver solves them. plugin.step(m, d) then runs mj_step's
+// stages for the Euler integrator one by one (mj_step's order; with no
+// wheels it is mj_step to the bit):
+//
+//      mj_checkPos ... mj_collision(m, d);
+//      plugin.addContacts(m, d);           // every wheel's tyre model; its contacts as mjContacts
+//      mj_makeConstraint ... mj_fwdConstraint(m, d), mj_sensorAcc(m, d);
+//      plugin.collectSolvedForces(m, d);   // the forces MuJoCo applied at them (applied())
+//      mj_checkAcc, mj_Euler(m, d);
+//      plugin.clearForces(d);
+//
+// Each contact's solref and solimp make MuJoCo's soft constraint the
+// implicit Euler step of the tyre's spring-damper (c, b), ODE's ERP and
+// CFM: a wheel settles at W / c at any step. Its friction is MuJoCo's cone
+// (pyramidal or elliptic, the model's) at the slip law's coefficient;
+// MuJoCo ties the friction's compliance to the normal's, so friction
+// creeps at h R / impratio metres a second per newton. docs/mujoco-plugin.md
+// has the mapping, what maps and what does not. Implicit mode is refused:
+// MuJoCo 2.2.2's friction rows take no target velocity.
 #include <memory>
 #include <string>
 
@@ -80,7 +98,8 @@ class Plugin {
   /// Registers a wheel. InvalidInputError naming the problem: a body id
   /// the model lacks or the world's, a body registered twice, a zero axle,
   /// invalid parameters, a geom of the body that MuJoCo would also collide
-  /// with the world's geoms (named).
+  /// with the world's geoms (named); in constraint mode a body without a
+  /// geom.
   WheelId addWheel(const Wheel& wheel);
 
   /// One MuJoCo step with the wheels (the call order above). `model` must
@@ -90,13 +109,27 @@ class Plugin {
   /// model.opt.timestep from the state mj_step1 computed, its wrench added
   /// to data.xfrc_applied at the body's centre of mass.
   void applyForces(const mjModel& model, mjData& data);
-  /// After mj_step2: takes the wrench applyForces added back out.
+  /// Constraint mode, after mj_collision: every wheel's tyre model from
+  /// this step's positions and velocities, its contacts added to
+  /// data.contact (InvalidInputError when the model's nconmax is full), and
+  /// what stays explicit (the rolling-resistance moment, soft soil's shear)
+  /// added to data.xfrc_applied.
+  void addContacts(const mjModel& model, mjData& data);
+  /// Constraint mode, after mj_fwdConstraint: reads the forces MuJoCo's
+  /// solver applied at the wheels' contacts (applied()).
+  void collectSolvedForces(const mjModel& model, const mjData& data);
+  /// After the step: takes the wrench applyForces or addContacts added back out.
   void clearForces(mjData& data);
 
   /// The last step's result and state of a wheel (std::out_of_range for an
   /// id that is not registered).
   const WheelForces& forces(WheelId wheel) const;
   const WheelState& state(WheelId wheel) const;
+  /// What acted on the wheel in the last step: forces() in force mode; in
+  /// constraint mode the forces MuJoCo's solver applied at its contacts,
+  /// their wrench and the explicit moment (wtc::MountedWheel::applied).
+  /// Report these, not forces(), as a constraint-mode run's contact forces.
+  const WheelForces& applied(WheelId wheel) const;
   /// What the terrain's soil regions remember (wtc/tyre/ground_memory.hpp).
   const GroundMemory& groundMemory() const;
   GroundMemory& groundMemory();
