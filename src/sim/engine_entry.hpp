@@ -30,6 +30,11 @@ struct EngineEntry {
 
   std::string_view name;  ///< As scenes name it (EngineSettings::engine): "bullet".
   Make make = nullptr;
+  /// The WTC contact modes the engine serves; empty: all three. (The
+  /// engine's own wheels, EngineSettings::native_wheels, every engine serves.)
+  std::span<const ContactMode> modes{};
+  /// Why it serves no other mode: the reason makeEngine refuses one with.
+  std::string_view other_modes{};
 };
 
 }  // namespace wtc::sim

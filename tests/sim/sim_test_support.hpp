@@ -21,8 +21,8 @@ namespace wtc::testing {
 vehicle::VehicleDescription shippedVehicle(const std::string& file);  // under vehicles/
 /// A 20 m x 20 m slab, top face z = 0, one material (mu_max 0.8).
 Terrain flatGround();
-/// Every engine of the engine table, in every WTC contact mode: what a
-/// vehicle must run in.
+/// Every engine of the engine table, in every WTC contact mode it serves
+/// (sim::servesWheels): what a vehicle must run in.
 std::vector<sim::EngineSettings> everyEngine();
 /// Every engine of the table with its own wheel contact
 /// (EngineSettings::native_wheels), cylinder and sphere.

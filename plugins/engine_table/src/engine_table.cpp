@@ -3,7 +3,9 @@
 // wtc_add_engine), looked up by name.
 #include "wtc/sim/engine_table.hpp"
 
+#include <algorithm>
 #include <string>
+#include <vector>
 
 #include "engine_list.hpp"
 #include "wtc/base/error.hpp"
@@ -19,6 +21,22 @@ const EngineEntry* find(std::string_view name) {
   return nullptr;
 }
 
+// "a", "a or b", "a, b or c".
+template <class Names>
+std::string listed(const Names& names) {
+  std::string out;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (i > 0) out += i + 1 == names.size() ? " or " : ", ";
+    out += names[i];
+  }
+  return out;
+}
+
+bool serves(const EngineEntry& entry, const EngineSettings& settings) {
+  return settings.native_wheels || entry.modes.empty() ||
+         std::find(entry.modes.begin(), entry.modes.end(), settings.mode) != entry.modes.end();
+}
+
 }  // namespace
 
 std::vector<std::string_view> engineNames() {
@@ -27,17 +45,23 @@ std::vector<std::string_view> engineNames() {
   return names;
 }
 
+bool servesWheels(const EngineSettings& settings) {
+  const EngineEntry* entry = find(settings.engine);
+  return entry != nullptr && serves(*entry, settings);
+}
+
 void requireEngine(const EngineSettings& settings) {
-  if (find(settings.engine) != nullptr) return;
-  // "bullet", "bullet or ode", "bullet, ode or ode_quick".
-  const std::vector<std::string_view> names = engineNames();
-  std::string known;
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    if (i > 0) known += i + 1 == names.size() ? " or " : ", ";
-    known += names[i];
+  const EngineEntry* entry = find(settings.engine);
+  if (entry == nullptr) {
+    throw InvalidInputError(settings.engine_where + ": unknown engine '" + settings.engine + "' (expected " +
+                            listed(engineNames()) + ")");
   }
-  throw InvalidInputError(settings.engine_where + ": unknown engine '" + settings.engine + "' (expected " + known +
-                          ")");
+  if (serves(*entry, settings)) return;
+  std::vector<std::string_view> modes;
+  for (const ContactMode mode : entry->modes) modes.push_back(contactModeName(mode));
+  throw InvalidInputError(settings.engine_where + ": engine '" + settings.engine + "' does not serve contact mode " +
+                          std::string(contactModeName(settings.mode)) + " (" + std::string(entry->other_modes) +
+                          "); it serves " + listed(modes));
 }
 
 std::unique_ptr<Engine> makeEngine(const EngineSettings& settings, const Terrain& terrain,

@@ -3,8 +3,7 @@
 
 namespace wtc::mujoco {
 
-void eulerStep(const mjModel& m, mjData& d, const std::function<void()>& afterCollision,
-               const std::function<void()>& afterSolve) {
+void eulerStep(const mjModel& m, mjData& d, const StageHooks& hooks) {
   const bool energy = (m.opt.enableflags & mjENBL_ENERGY) != 0;
   mj_checkPos(&m, &d);
   mj_checkVel(&m, &d);
@@ -16,7 +15,7 @@ void eulerStep(const mjModel& m, mjData& d, const std::function<void()>& afterCo
   mj_crb(&m, &d);
   mj_factorM(&m, &d);
   mj_collision(&m, &d);
-  afterCollision();
+  if (hooks.after_collision) hooks.after_collision();
   mj_makeConstraint(&m, &d);
   mj_transmission(&m, &d);
   mj_projectConstraint(&m, &d);
@@ -25,12 +24,13 @@ void eulerStep(const mjModel& m, mjData& d, const std::function<void()>& afterCo
   mj_fwdVelocity(&m, &d);
   mj_sensorVel(&m, &d);
   if (energy) mj_energyVel(&m, &d);
+  if (hooks.after_velocity) hooks.after_velocity();
   if (mjcb_control != nullptr) mjcb_control(&m, &d);
   mj_fwdActuation(&m, &d);
   mj_fwdAcceleration(&m, &d);
   mj_fwdConstraint(&m, &d);
   mj_sensorAcc(&m, &d);
-  afterSolve();
+  if (hooks.after_solve) hooks.after_solve();
   mj_checkAcc(&m, &d);
   if ((m.opt.enableflags & mjENBL_FWDINV) != 0) mj_compareFwdInv(&m, &d);
   mj_Euler(&m, &d);

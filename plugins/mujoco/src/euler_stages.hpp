@@ -11,11 +11,20 @@
 
 namespace wtc::mujoco {
 
-/// One Euler step of `m`: `afterCollision` runs after mj_collision (the
-/// positions, the mass matrix and MuJoCo's own contacts of this step are
-/// known; velocities are not yet), `afterSolve` after mj_fwdConstraint
-/// (efc_force of this step) and before the integration.
-void eulerStep(const mjModel& m, mjData& d, const std::function<void()>& afterCollision,
-               const std::function<void()>& afterSolve);
+/// The points of a step where a caller adds its part.
+struct StageHooks {
+  /// After mj_collision: the positions, the mass matrix and MuJoCo's own
+  /// contacts of this step are known; velocities are not yet.
+  std::function<void()> after_collision;
+  /// After mj_fwdVelocity (and the velocity sensors): what mj_step1 leaves,
+  /// the constraint rows' reference accelerations (efc_aref) included;
+  /// before actuation, xfrc_applied and qfrc_applied are read.
+  std::function<void()> after_velocity;
+  /// After mj_fwdConstraint: efc_force of this step, before the integration.
+  std::function<void()> after_solve;
+};
+
+/// One Euler step of `m` with `hooks` (each may be empty).
+void eulerStep(const mjModel& m, mjData& d, const StageHooks& hooks);
 
 }  // namespace wtc::mujoco

@@ -167,8 +167,9 @@ WheelId Plugin::addWheel(const Wheel& spec) {
 void Plugin::step(const mjModel& model, mjData& data) {
   state_->requireModel(model, "wtc::mujoco::Plugin::step");
   if (engineSolvesContacts(state_->mode)) {
-    eulerStep(
-        model, data, [&] { addContacts(model, data); }, [&] { collectSolvedForces(model, data); });
+    eulerStep(model, data,
+              {.after_collision = [&] { addContacts(model, data); },
+               .after_solve = [&] { collectSolvedForces(model, data); }});
   } else {
     mj_step1(&model, &data);
     applyForces(model, data);

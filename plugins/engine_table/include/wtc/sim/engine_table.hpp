@@ -18,9 +18,17 @@ namespace wtc::sim {
 /// declares them: "bullet", "ode", "ode_quick".
 std::vector<std::string_view> engineNames();
 
+/// Whether the table has settings.engine and that engine serves the
+/// settings' wheel contact: its WTC contact mode (an engine may serve only
+/// some: MuJoCo's friction rows cannot take implicit mode's tread), or its
+/// own wheels (every engine serves them).
+bool servesWheels(const EngineSettings& settings);
+
 /// Throws InvalidInputError "<settings.engine_where>: unknown engine
 /// 'physx' (expected bullet, ode or ode_quick)" unless the table has
-/// settings.engine.
+/// settings.engine, and "<settings.engine_where>: engine 'mujoco' does not
+/// serve contact mode implicit (<why>); it serves force or constraint"
+/// unless it serves the settings' wheels (servesWheels).
 void requireEngine(const EngineSettings& settings);
 
 /// Builds `vehicle` on `terrain` (which must outlive the engine) in the

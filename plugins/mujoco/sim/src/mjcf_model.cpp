@@ -1,0 +1,271 @@
+// A vehicle and its terrain as MJCF (mjcf_model.hpp).
+#include "mjcf_model.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <iomanip>
+#include <optional>
+#include <sstream>
+#include <string>
+
+#include "mujoco_constants.hpp"
+#include "wtc/base/constants.hpp"
+#include "wtc/base/error.hpp"
+#include "wtc/sim/sim_constants.hpp"
+#include "wtc/terrain/heightfield.hpp"
+
+namespace wtc::mujoco {
+namespace {
+
+using vehicle::Body;
+using vehicle::JointType;
+using vehicle::Shape;
+
+constexpr const char* kWhere = "wtc::mujoco sim engine";
+
+// Contact bits (mjcf_model.hpp): ground against bodies only.
+constexpr const char* kGroundBits = R"( contype="1" conaffinity="0")";
+constexpr const char* kBodyBits = R"( contype="0" conaffinity="1")";
+constexpr const char* kNoContact = R"( contype="0" conaffinity="0")";
+
+struct Writer {
+  std::ostringstream assets, ground, bodies, equalities;
+  int meshes = 0;
+
+  Writer() {
+    for (std::ostringstream* s : {&assets, &ground, &bodies, &equalities}) s->precision(17);
+  }
+};
+
+std::string vec(const Eigen::Vector3d& v) {
+  std::ostringstream s;
+  s.precision(17);
+  s << v.x() << ' ' << v.y() << ' ' << v.z();
+  return s.str();
+}
+
+std::string quat(const Eigen::Matrix3d& r) {
+  const Eigen::Quaterniond q(r);
+  std::ostringstream s;
+  s.precision(17);
+  s << q.w() << ' ' << q.x() << ' ' << q.y() << ' ' << q.z();
+  return s.str();
+}
+
+std::string frame(const Eigen::Isometry3d& pose) {
+  return " pos=\"" + vec(pose.translation()) + "\" quat=\"" + quat(pose.linear()) + "\"";
+}
+
+// A convex mesh asset of `vertices` (in the frame of the geom that uses it).
+std::string meshAsset(Writer& w, const std::vector<Eigen::Vector3d>& vertices) {
+  const std::string name = "mesh" + std::to_string(w.meshes++);
+  w.assets << "    <mesh name=\"" << name << "\" vertex=\"";
+  for (const Eigen::Vector3d& v : vertices) w.assets << vec(v) << ' ';
+  w.assets << "\"/>\n";
+  return name;
+}
+
+// One collision shape of a body as a geom, at `pose` in the body frame.
+void shapeGeom(Writer& w, const Shape& shape, const Eigen::Isometry3d& pose, const std::string& attributes) {
+  std::ostream& o = w.bodies;
+  switch (shape.kind) {
+    case Shape::Kind::kNone:
+      return;
+    case Shape::Kind::kBox:
+      o << "      <geom type=\"box\" size=\"" << vec(shape.box_size / 2.0) << "\"" << frame(pose);
+      break;
+    case Shape::Kind::kCylinder: {
+      // MuJoCo's cylinder runs along z: turned onto the shape's axis.
+      Eigen::Isometry3d turned = pose;
+      turned.linear() = pose.linear() * Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(),
+                                                                           Eigen::Vector3d::Unit(shape.cylinder_axis))
+                                            .toRotationMatrix();
+      o << "      <geom type=\"cylinder\" size=\"" << shape.radius << ' ' << shape.length / 2.0 << "\""
+        << frame(turned);
+      break;
+    }
+    case Shape::Kind::kSphere:
+      o << "      <geom type=\"sphere\" size=\"" << shape.radius << "\"" << frame(pose);
+      break;
+    case Shape::Kind::kHull:
+      o << "      <geom type=\"mesh\" mesh=\"" << meshAsset(w, shape.hull_vertices) << "\"" << frame(pose);
+      break;
+  }
+  o << attributes << "/>\n";
+}
+
+// A wheel's tread: a cylinder along its axle, or a sphere (sim::treadIsSphere).
+void treadGeom(Writer& w, int i, const Body& body, const sim::EngineSettings& settings) {
+  const WheelGeometry& g = body.wheel->geometry;
+  std::ostream& o = w.bodies;
+  o << "      <geom name=\"tread" << i << "\"";
+  if (sim::treadIsSphere(settings, g)) {
+    o << " type=\"sphere\" size=\"" << g.free_radius << "\"";
+  } else {
+    o << " type=\"cylinder\" size=\"" << g.free_radius << ' ' << g.tread_width / 2.0 << "\" quat=\""
+      << quat(Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), body.wheel->axle).toRotationMatrix())
+      << "\"";
+  }
+  // WTC's wheels: WTC's contact alone. The engine's own: the ground's friction.
+  o << (settings.native_wheels ? std::string(kBodyBits) + " friction=\"0 0 0\"" : std::string(kNoContact)) << "/>\n";
+}
+
+void writeBody(Writer& w, const sim::EngineSettings& settings, const vehicle::VehicleDescription& v,
+               const Eigen::Isometry3d& placement, int i) {
+  const Body& b = v.bodies[i];
+  const Eigen::Isometry3d pose = sim::startPose(v, i, placement);
+  const Eigen::Isometry3d relative = b.parent < 0 ? pose : sim::startPose(v, b.parent, placement).inverse() * pose;
+  std::ostream& o = w.bodies;
+  o << "    <body name=\"b" << i << "\"" << frame(relative) << ">\n";
+  o << "      <inertial pos=\"0 0 0\" mass=\"" << b.mass << "\" diaginertia=\"" << vec(b.inertia) << "\"/>\n";
+  if (b.parent < 0) {
+    o << "      <freejoint name=\"j" << i << "\"/>\n";
+  } else if (b.joint.type != JointType::kFixed) {
+    const Eigen::Vector3d anchor = pose.inverse() * (placement * b.joint.anchor);
+    const Eigen::Vector3d axis = pose.linear().transpose() * (placement.linear() * b.joint.axis);
+    const char* type = b.joint.type == JointType::kRevolute    ? "hinge"
+                       : b.joint.type == JointType::kPrismatic ? "slide"
+                                                               : "ball";
+    o << "      <joint name=\"j" << i << "\" type=\"" << type << "\" pos=\"" << vec(anchor) << "\"";
+    if (b.joint.type != JointType::kBall) o << " axis=\"" << vec(axis) << "\"";
+    if (b.joint.limits)
+      o << " limited=\"true\" range=\"" << b.joint.limits->lower << ' ' << b.joint.limits->upper << "\"";
+    o << "/>\n";
+  }
+  const std::string body_attributes =
+      std::string(kBodyBits) + " priority=\"1\" friction=\"" + formatNumber(sim::kBodyGroundFriction) + " 0 0\"";
+  if (b.wheel) {
+    treadGeom(w, i, b, settings);
+  } else if (!b.compound.empty()) {
+    for (const vehicle::ShapePart& part : b.compound) shapeGeom(w, part.shape, part.pose_BS, body_attributes);
+  } else {
+    shapeGeom(w, b.shape, Eigen::Isometry3d::Identity(), body_attributes);
+  }
+  // Children nest inside (the description lists parents first).
+  for (std::size_t c = 0; c < v.bodies.size(); ++c) {
+    if (v.bodies[c].parent == i) writeBody(w, settings, v, placement, static_cast<int>(c));
+  }
+  o << "    </body>\n";
+}
+
+std::string friction(double mu) { return " friction=\"" + formatNumber(mu) + " 0 0\""; }
+
+// A compact heightfield as one MuJoCo height field, centred on the field's
+// box; its samples are written into the compiled model (fillHeightfields).
+void heightfieldGeom(Writer& w, const Heightfield& f, std::size_t k, double mu) {
+  if (!f.cell_holes.empty() && std::any_of(f.cell_holes.begin(), f.cell_holes.end(), [](auto h) { return h != 0; })) {
+    throw InvalidInputError(std::string(kWhere) + ": heightfield " + std::to_string(k) +
+                            " has holes, which MuJoCo's height fields cannot have");
+  }
+  const auto [lo, hi] = std::minmax_element(f.heights.begin(), f.heights.end());
+  const double half_x = 0.5 * (f.cols - 1) * f.spacing_x, half_y = 0.5 * (f.rows - 1) * f.spacing_y;
+  const double range = std::max(*hi - *lo, kFlatFieldRangeM);
+  w.assets << "    <hfield name=\"field" << k << "\" nrow=\"" << f.rows << "\" ncol=\"" << f.cols << "\" size=\""
+           << half_x << ' ' << half_y << ' ' << range << ' ' << f.base_depth << "\"/>\n";
+  const Eigen::Vector3d centre = f.origin + Eigen::Vector3d(half_x, half_y, *lo);
+  w.ground << "    <geom type=\"hfield\" hfield=\"field" << k << "\" pos=\"" << vec(centre) << "\"" << kGroundBits
+           << friction(mu) << "/>\n";
+}
+
+void fillHeightfields(mjModel& m, const Terrain& terrain) {
+  int h = 0;
+  for (std::size_t k = 0; k < terrain.compactFieldCount(); ++k) {
+    const Terrain::CompactField part = terrain.compactField(k);
+    if (part.field == nullptr) continue;
+    const Heightfield& f = *part.field;
+    const auto [lo, hi] = std::minmax_element(f.heights.begin(), f.heights.end());
+    const double range = std::max(*hi - *lo, kFlatFieldRangeM);
+    float* data = m.hfield_data + m.hfield_adr[h++];
+    // Rows along y, columns along x, from the field's low corner (MuJoCo's
+    // and WTC's order alike), normalised to [0, 1] of the field's range.
+    for (std::size_t s = 0; s < f.heights.size(); ++s) data[s] = static_cast<float>((f.heights[s] - *lo) / range);
+  }
+}
+
+void writeGround(Writer& w, const Terrain& terrain) {
+  const std::vector<double> mu = sim::nativeWheelFrictions(terrain);
+  std::optional<ConvexPolyhedron> scratch;
+  const auto pieceGeom = [&](const ConvexPolyhedron& p, MaterialId material) {
+    std::vector<Eigen::Vector3d> vertices;
+    for (int i = 0; i < p.vertexCount(); ++i) vertices.push_back(p.vertex(i));
+    w.ground << "    <geom type=\"mesh\" mesh=\"" << meshAsset(w, vertices) << "\"" << kGroundBits
+             << friction(mu[material]) << "/>\n";
+  };
+  for (std::size_t s = 0; s < terrain.pieces().size(); ++s) {
+    pieceGeom(terrain.pieces()[s], terrain.materialId(terrain.storedId(s)));
+  }
+  for (std::size_t k = 0; k < terrain.compactFieldCount(); ++k) {
+    const Terrain::CompactField part = terrain.compactField(k);
+    if (part.field != nullptr) {
+      heightfieldGeom(w, *part.field, k, mu[part.material]);
+      continue;
+    }
+    for (PieceId id = part.first; id < part.first + part.count; ++id)
+      pieceGeom(terrain.piece(id, scratch), terrain.materialId(id));
+  }
+}
+
+void writeMimics(Writer& w, const vehicle::VehicleDescription& v) {
+  for (std::size_t i = 0; i < v.bodies.size(); ++i) {
+    const Body& b = v.bodies[i];
+    if (b.parent < 0 || !b.joint.mimic) continue;
+    // q_i = offset + multiplier q_master: polycoef's a0 + a1 q2.
+    w.equalities << "    <joint joint1=\"j" << i << "\" joint2=\"j" << b.joint.mimic->master << "\" polycoef=\""
+                 << b.joint.mimic->offset << ' ' << b.joint.mimic->multiplier << " 0 0 0\"/>\n";
+  }
+}
+
+std::unique_ptr<mjModel, ModelDeleter> compile(const std::string& xml) {
+  auto vfs = std::make_unique<mjVFS>();
+  mj_defaultVFS(vfs.get());
+  mj_makeEmptyFileVFS(vfs.get(), "vehicle.xml", static_cast<int>(xml.size()));
+  std::memcpy(vfs->filedata[mj_findFileVFS(vfs.get(), "vehicle.xml")], xml.data(), xml.size());
+  char error[1000] = "";
+  mjModel* m = mj_loadXML("vehicle.xml", vfs.get(), error, sizeof error);
+  mj_deleteVFS(vfs.get());
+  if (m == nullptr) throw InvalidInputError(std::string(kWhere) + ": MuJoCo refused the model: " + error);
+  return std::unique_ptr<mjModel, ModelDeleter>(m);
+}
+
+}  // namespace
+
+VehicleModel buildVehicleModel(const sim::EngineSettings& settings, const Terrain& terrain,
+                               const vehicle::VehicleDescription& v, const Eigen::Isometry3d& placement) {
+  Writer w;
+  writeGround(w, terrain);
+  for (std::size_t i = 0; i < v.bodies.size(); ++i) {
+    if (v.bodies[i].parent < 0) writeBody(w, settings, v, placement, static_cast<int>(i));
+  }
+  writeMimics(w, v);
+  std::ostringstream xml;
+  xml.precision(17);
+  // Euler: constraint mode's stages are Euler's (euler_stages.hpp). The
+  // elliptic cone with impratio: docs/mujoco-plugin.md, "Friction".
+  xml << "<mujoco model=\"" << v.name << "\">\n"
+      << "  <compiler angle=\"radian\"/>\n"
+      << "  <option timestep=\"" << settings.step_seconds << "\" integrator=\"Euler\" cone=\"elliptic\" impratio=\""
+      << kImpratio << "\" gravity=\"0 0 " << -kGravityMps2 << "\"/>\n"
+      << "  <size nconmax=\"" << kContacts << "\" njmax=\"" << kConstraintRows << "\"/>\n"
+      << "  <asset>\n"
+      << w.assets.str() << "  </asset>\n"
+      << "  <worldbody>\n"
+      << w.ground.str() << w.bodies.str() << "  </worldbody>\n"
+      << "  <equality>\n"
+      << w.equalities.str() << "  </equality>\n"
+      << "</mujoco>\n";
+  VehicleModel out;
+  out.model = compile(xml.str());
+  mjModel& m = *out.model;
+  fillHeightfields(m, terrain);
+  for (std::size_t i = 0; i < v.bodies.size(); ++i) {
+    const std::string n = std::to_string(i);
+    out.body.push_back(mj_name2id(&m, mjOBJ_BODY, ("b" + n).c_str()));
+    const int joint = mj_name2id(&m, mjOBJ_JOINT, ("j" + n).c_str());
+    out.dof.push_back(joint < 0 ? -1 : m.jnt_dofadr[joint]);
+    out.qpos.push_back(joint < 0 ? -1 : m.jnt_qposadr[joint]);
+    out.wheel_geom.push_back(mj_name2id(&m, mjOBJ_GEOM, ("tread" + n).c_str()));
+  }
+  return out;
+}
+
+}  // namespace wtc::mujoco

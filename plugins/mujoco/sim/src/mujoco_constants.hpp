@@ -1,0 +1,30 @@
+#pragma once
+// The MuJoCo sim engine's own constants (internal to wtc::mujoco_sim), with
+// units; the constants every engine shares are wtc/sim/sim_constants.hpp's.
+
+namespace wtc::mujoco {
+
+/// opt.impratio of the models the engine builds (dimensionless): MuJoCo's
+/// friction rows are this much stiffer than their contact's normal row. A
+/// WTC contact's friction creeps at F / (impratio (h c + b)) m/s per newton
+/// F (docs/mujoco-plugin.md, "Friction"): at 10, 5 mm/s under 50 N for the
+/// default tyre at 0.4 ms, where 1 (MuJoCo's default) lets it creep 53 mm/s.
+inline constexpr double kImpratio = 10.0;
+
+/// The contact list's length and the constraint rows' (opt nconmax, njmax):
+/// room for a vehicle's bodies on many pieces, and its wheels' contacts.
+inline constexpr int kContacts = 2000;
+inline constexpr int kConstraintRows = 8000;
+
+/// A MuJoCo height field needs a positive elevation range: a flat field's
+/// (m), which its samples' normalised heights (all 0) do not use.
+inline constexpr double kFlatFieldRangeM = 1e-3;
+
+/// A drive is its joint's friction row with a velocity target
+/// (sim_engine.cpp): its impedance (MuJoCo's largest, mjMAXIMP: the row is
+/// as rigid as MuJoCo makes one), and the effort cap of a drive whose
+/// limits are off (N m or N; a friction row needs a finite bound).
+inline constexpr double kDriveImpedance = 0.9999;
+inline constexpr double kUncappedDriveEffort = 1e9;
+
+}  // namespace wtc::mujoco
