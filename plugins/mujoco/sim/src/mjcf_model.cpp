@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <cstring>
+#include <cmath>
 #include <iomanip>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -22,6 +24,10 @@ using vehicle::JointType;
 using vehicle::Shape;
 
 constexpr const char* kWhere = "wtc::mujoco sim engine";
+// Two face normals of a piece count as parallel (or perpendicular) within
+// this of their cos (dimensionless): a box built by WTC's terrain builders
+// is exact to rounding.
+constexpr double kBoxPieceCos = 1e-9;
 
 // Contact bits (mjcf_model.hpp): ground against bodies only.
 constexpr const char* kGroundBits = R"( contype="1" conaffinity="0")";
@@ -65,6 +71,40 @@ std::string meshAsset(Writer& w, const std::vector<Eigen::Vector3d>& vertices) {
   return name;
 }
 
+// A convex polyhedron that is a box (six faces in three opposite,
+// perpendicular pairs) as its pose and full edge lengths. MuJoCo 2.2.2
+// collides boxes with its own colliders, several points a pair; a mesh
+// against a box through one point of libccd's MPR, whose depth was 13 mm
+// for a plate resting 0.2 mm deep on a 20 m slab (docs/mujoco-plugin.md).
+std::optional<std::pair<Eigen::Isometry3d, Eigen::Vector3d>> asBox(const ConvexPolyhedron& p) {
+  if (p.faceCount() != 6 || p.vertexCount() != 8) return std::nullopt;
+  std::vector<Eigen::Vector3d> axes;
+  for (int f = 0; f < 6; ++f) {
+    const Eigen::Vector3d n = p.faceNormal(f);
+    bool opposite = false, seen = false;
+    for (int g = 0; g < 6; ++g) opposite = opposite || n.dot(p.faceNormal(g)) < -1.0 + kBoxPieceCos;
+    for (const Eigen::Vector3d& a : axes) seen = seen || std::abs(n.dot(a)) > 1.0 - kBoxPieceCos;
+    if (!opposite) return std::nullopt;
+    if (!seen) axes.push_back(n);
+  }
+  if (axes.size() != 3 || std::abs(axes[0].dot(axes[1])) > kBoxPieceCos || std::abs(axes[0].dot(axes[2])) > kBoxPieceCos ||
+      std::abs(axes[1].dot(axes[2])) > kBoxPieceCos) {
+    return std::nullopt;
+  }
+  Eigen::Matrix3d r;
+  r << axes[0], axes[1], axes[0].cross(axes[1]);
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (int i = 0; i < 8; ++i) {
+    const Eigen::Vector3d local = r.transpose() * p.vertex(i);
+    lo = lo.cwiseMin(local);
+    hi = hi.cwiseMax(local);
+  }
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() = r;
+  pose.translation() = r * (0.5 * (lo + hi));
+  return std::make_pair(pose, Eigen::Vector3d(hi - lo));
+}
+
 // One collision shape of a body as a geom, at `pose` in the body frame.
 void shapeGeom(Writer& w, const Shape& shape, const Eigen::Isometry3d& pose, const std::string& attributes) {
   std::ostream& o = w.bodies;
@@ -88,7 +128,11 @@ void shapeGeom(Writer& w, const Shape& shape, const Eigen::Isometry3d& pose, con
       o << "      <geom type=\"sphere\" size=\"" << shape.radius << "\"" << frame(pose);
       break;
     case Shape::Kind::kHull:
-      o << "      <geom type=\"mesh\" mesh=\"" << meshAsset(w, shape.hull_vertices) << "\"" << frame(pose);
+      if (const auto box = asBox(ConvexPolyhedron::fromPoints(shape.hull_vertices))) {
+        o << "      <geom type=\"box\" size=\"" << vec(box->second / 2.0) << "\"" << frame(pose * box->first);
+      } else {
+        o << "      <geom type=\"mesh\" mesh=\"" << meshAsset(w, shape.hull_vertices) << "\"" << frame(pose);
+      }
       break;
   }
   o << attributes << "/>\n";
@@ -186,10 +230,14 @@ void writeGround(Writer& w, const Terrain& terrain) {
   const std::vector<double> mu = sim::nativeWheelFrictions(terrain);
   std::optional<ConvexPolyhedron> scratch;
   const auto pieceGeom = [&](const ConvexPolyhedron& p, MaterialId material) {
-    std::vector<Eigen::Vector3d> vertices;
-    for (int i = 0; i < p.vertexCount(); ++i) vertices.push_back(p.vertex(i));
-    w.ground << "    <geom type=\"mesh\" mesh=\"" << meshAsset(w, vertices) << "\"" << kGroundBits
-             << friction(mu[material]) << "/>\n";
+    if (const auto box = asBox(p)) {
+      w.ground << "    <geom type=\"box\" size=\"" << vec(box->second / 2.0) << "\"" << frame(box->first);
+    } else {
+      std::vector<Eigen::Vector3d> vertices;
+      for (int i = 0; i < p.vertexCount(); ++i) vertices.push_back(p.vertex(i));
+      w.ground << "    <geom type=\"mesh\" mesh=\"" << meshAsset(w, vertices) << "\"";
+    }
+    w.ground << kGroundBits << friction(mu[material]) << "/>\n";
   };
   for (std::size_t s = 0; s < terrain.pieces().size(); ++s) {
     pieceGeom(terrain.pieces()[s], terrain.materialId(terrain.storedId(s)));
@@ -244,7 +292,7 @@ VehicleModel buildVehicleModel(const sim::EngineSettings& settings, const Terrai
   xml << "<mujoco model=\"" << v.name << "\">\n"
       << "  <compiler angle=\"radian\"/>\n"
       << "  <option timestep=\"" << settings.step_seconds << "\" integrator=\"Euler\" cone=\"elliptic\" impratio=\""
-      << kImpratio << "\" gravity=\"0 0 " << -kGravityMps2 << "\"/>\n"
+      << kImpratio << "\" mpr_iterations=\"" << kMprIterations << "\" gravity=\"0 0 " << -kGravityMps2 << "\"/>\n"
       << "  <size nconmax=\"" << kContacts << "\" njmax=\"" << kConstraintRows << "\"/>\n"
       << "  <asset>\n"
       << w.assets.str() << "  </asset>\n"

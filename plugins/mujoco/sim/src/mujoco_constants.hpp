@@ -27,4 +27,8 @@ inline constexpr double kFlatFieldRangeM = 1e-3;
 inline constexpr double kDriveImpedance = 0.9999;
 inline constexpr double kUncappedDriveEffort = 1e9;
 
+/// opt.mpr_iterations: libccd's MPR, MuJoCo's collider for a hull against
+/// another convex shape (count).
+inline constexpr int kMprIterations = 1000;
+
 }  // namespace wtc::mujoco
