@@ -41,13 +41,14 @@ wtc::vehicle::ControllerFactory refusePythonController(const wtc::io::detail::Ya
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"wtc-sim: run a scene (scenes/*.yaml) in Bullet or ODE with WTC wheels"};
+  CLI::App app{"wtc-sim: run a scene (scenes/*.yaml) in any engine of the table (" + wtc::sim::engineNameList() +
+               ") with WTC wheels"};
   std::string scene_file, engine, mode, out;
   double dt = 0.0, duration = 0.0;
   std::vector<std::string> sets, package_path;
   bool quiet = false, no_plots = false, no_replay = false, skip_done = false;
   app.add_option("scene", scene_file, "scene file (YAML)")->required();
-  app.add_option("--engine", engine, "bullet, ode or ode_quick (overrides the scene's)");
+  app.add_option("--engine", engine, wtc::sim::engineNameList() + " (overrides the scene's)");
   app.add_option("--mode", mode,
                  "force, constraint or implicit (WTC), engine_cylinder or engine_sphere (the engine's own wheel contact)");
   app.add_option("--dt", dt, "step (s)");

@@ -29,6 +29,7 @@ def run_wtc_sim(wtc_sim, scene, out, *options):
 @pytest.mark.parametrize("scene_name, engine, mode, duration, sets", [
     ("robot_ledge", "ode", "constraint", 1.0, {"ledge_height": 0.5}),
     ("towed_path", "bullet", None, 1.0, {}),
+    ("robot_ledge", "mujoco", "constraint", 1.0, {"ledge_height": 0.5}),
 ])
 def test_a_python_run_writes_the_series_of_wtc_sim_byte_for_byte(source_dir, wtc_sim, tmp_path, scene_name, engine,
                                                                 mode, duration, sets):

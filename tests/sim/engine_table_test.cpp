@@ -19,6 +19,7 @@
 namespace wtc::testing {
 namespace {
 
+using ::testing::AllOf;
 using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
 namespace fs = std::filesystem;
@@ -78,7 +79,27 @@ TEST(EngineTableTest, EachNameMakesItsEngine) {
   EXPECT_NE(after[1], after[2]) << "ode and ode_quick stepped alike: one stepper for both names";
 }
 
-// "(expected bullet, ode or ode_quick)" for this build: every name of the table.
+// Case: an engine that serves only some WTC contact modes (MuJoCo: no
+// implicit mode) is refused another with its reason, before anything is
+// built, and the table says which it serves; every engine serves its own
+// wheels.
+TEST(EngineTableTest, AModeAnEngineDoesNotServeIsRefusedWithItsReason) {
+  const Terrain ground = flatGround();
+  const vehicle::VehicleDescription robot = shippedVehicle("six_wheel_robot.yaml");
+  const sim::EngineSettings implicit{.engine = "mujoco", .mode = ContactMode::kImplicit};
+  EXPECT_FALSE(sim::servesWheels(implicit));
+  EXPECT_TRUE(sim::servesWheels({.engine = "mujoco", .mode = ContactMode::kConstraint}));
+  EXPECT_TRUE(sim::servesWheels({.engine = "mujoco", .native_wheels = sim::NativeWheelShape::kSphere}));
+  EXPECT_TRUE(sim::servesWheels({.engine = "ode", .mode = ContactMode::kImplicit}));
+  EXPECT_FALSE(sim::servesWheels({.engine = "physx"}));
+  EXPECT_THAT([&] { sim::makeEngine(implicit, ground, robot, Eigen::Isometry3d::Identity()); },
+              ThrowsMessage<InvalidInputError>(AllOf(
+                  HasSubstr("engine: engine 'mujoco' does not serve contact mode implicit (MuJoCo 2.2.2's friction "
+                            "rows take no target velocity"),
+                  HasSubstr("it serves force or constraint"))));
+}
+
+// "(expected bullet, ode, ode_quick or mujoco)" for this build: every name of the table.
 std::string knownNames() {
   const std::vector<std::string_view> names = sim::engineNames();
   std::string known = "(expected ";

@@ -45,6 +45,8 @@ std::vector<std::string_view> engineNames() {
   return names;
 }
 
+std::string engineNameList() { return listed(engineNames()); }
+
 bool servesWheels(const EngineSettings& settings) {
   const EngineEntry* entry = find(settings.engine);
   return entry != nullptr && serves(*entry, settings);
@@ -54,7 +56,7 @@ void requireEngine(const EngineSettings& settings) {
   const EngineEntry* entry = find(settings.engine);
   if (entry == nullptr) {
     throw InvalidInputError(settings.engine_where + ": unknown engine '" + settings.engine + "' (expected " +
-                            listed(engineNames()) + ")");
+                            engineNameList() + ")");
   }
   if (serves(*entry, settings)) return;
   std::vector<std::string_view> modes;

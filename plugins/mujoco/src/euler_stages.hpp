@@ -15,13 +15,13 @@ namespace wtc::mujoco {
 struct StageHooks {
   /// After mj_collision: the positions, the mass matrix and MuJoCo's own
   /// contacts of this step are known; velocities are not yet.
-  std::function<void()> after_collision;
+  std::function<void()> after_collision{};
   /// After mj_fwdVelocity (and the velocity sensors): what mj_step1 leaves,
   /// the constraint rows' reference accelerations (efc_aref) included;
   /// before actuation, xfrc_applied and qfrc_applied are read.
-  std::function<void()> after_velocity;
+  std::function<void()> after_velocity{};
   /// After mj_fwdConstraint: efc_force of this step, before the integration.
-  std::function<void()> after_solve;
+  std::function<void()> after_solve{};
 };
 
 /// One Euler step of `m` with `hooks` (each may be empty).

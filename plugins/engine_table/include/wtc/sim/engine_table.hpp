@@ -3,8 +3,9 @@
 // the name scenes give it, each registered from its own folder
 // (plugins/<engine>, declared once with wtc_add_engine), so that the
 // runner, the study, the tests and the benchmarks need not know them.
-// docs/architecture-engines.md: what an engine adds.
+// docs/architecture.md ("Engines"): what an engine adds.
 #include <memory>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -17,6 +18,8 @@ namespace wtc::sim {
 /// The names of the engines built in, in the order plugins/CMakeLists.txt
 /// declares them: "bullet", "ode", "ode_quick".
 std::vector<std::string_view> engineNames();
+/// The same as words: "bullet, ode, ode_quick or mujoco" (messages, help).
+std::string engineNameList();
 
 /// Whether the table has settings.engine and that engine serves the
 /// settings' wheel contact: its WTC contact mode (an engine may serve only
