@@ -56,7 +56,8 @@ int main(int argc, char** argv) {
   std::vector<wtc::WheelId> wheels;
   {
     wtc::mujoco::Plugin plugin(*m, ground, wtc::ContactMode::kConstraint);  // WTC
-    // WTC: the defaults describe these wheels (axle the body's y, r_f = 0.19 m, c = 1e5 N/m; mass, inertia: the body's).
+    // WTC: the defaults describe these wheels (axle the body's y, r_f = 0.19 m, c = 1e5 N/m; mass, inertia: the
+    // body's).
     for (const char* name : {"front_left", "front_right", "rear_left", "rear_right"}) {
       wtc::mujoco::Wheel wheel;
       wheel.body = mj_name2id(m, mjOBJ_BODY, name);

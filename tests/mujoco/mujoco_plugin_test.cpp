@@ -86,6 +86,18 @@ TEST(MujocoPluginTest, WhatTheAdapterCannotServeIsRefusedWithItsReason) {
   plugin.addWheel(mujocoWheel(x.body("wheel"), kRadiusM, kWidthM));
   expectRefused([&] { plugin.addWheel(mujocoWheel(x.body("wheel"), kRadiusM, kWidthM)); }, {"'wheel'", "already"});
   expectRefused([&] { plugin.step(*rk4.m, *rk4.d); }, {"a model other than the plugin's"});
+  // Soil bodies: the world, a wheel, a body twice, an integrator but Euler.
+  const auto crate = [&](int body) {
+    return mujoco::SoilBody{.body = body, .hulls = {ConvexPolyhedron::box({-0.1, -0.1, -0.1}, {0.1, 0.1, 0.1})}};
+  };
+  expectRefused([&] { plugin.addSoilBody(crate(0)); }, {"the world"});
+  expectRefused([&] { plugin.addSoilBody(crate(x.body("wheel"))); }, {"a registered wheel's"});
+  plugin.addSoilBody(crate(x.body("box")));
+  expectRefused([&] { plugin.addSoilBody(crate(x.body("box"))); }, {"already a soil body"});
+  expectRefused([&] { plugin.addWheel(mujocoWheel(x.body("box"), kRadiusM, kWidthM)); }, {"is a soil body"});
+  MjcfModel implicit(wheelOnSlider("timestep=\"0.0004\" integrator=\"implicit\""));
+  mujoco::Plugin on_implicit(*implicit.m, ground);
+  expectRefused([&] { on_implicit.addSoilBody(crate(implicit.body("box"))); }, {"Euler"});
 }
 
 }  // namespace mujoco_plugin_test

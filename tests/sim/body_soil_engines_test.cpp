@@ -144,7 +144,7 @@ TEST_P(BodySoilEnginesTest, WhereTheGroundRemembersABellyRestsInTheHollowItsDrop
   EXPECT_NEAR(rest - hollow, elastic, 0.1 * elastic);
 }
 
-INSTANTIATE_TEST_SUITE_P(Engines, BodySoilEnginesTest, ::testing::Values("bullet", "ode", "ode_quick"),
+INSTANTIATE_TEST_SUITE_P(Engines, BodySoilEnginesTest, ::testing::Values("bullet", "ode", "ode_quick", "mujoco"),
                          [](const auto& info) { return info.param; });
 
 }  // namespace body_soil_engines_test

@@ -13,6 +13,7 @@
 #include "euler_stages.hpp"
 #include "model_checks.hpp"
 #include "soft_contact.hpp"
+#include "soil_bodies.hpp"
 #include "src/conversions.hpp"
 #include "wtc/base/error.hpp"
 
@@ -59,9 +60,10 @@ struct PluginState {
   GroundMemory ground_memory;
   ContactMode mode;
   std::vector<std::unique_ptr<WheelEntry>> wheels;
+  SoilBodies soil_bodies;
   WheelListener* listener = nullptr;
   StepClock clock;       // the wheels' part of a step
-  int ground_geom = -1;  // geom1 of WTC's MuJoCo contacts: a geom of the world body
+  int ground_geom = -1;  // geom1 of WTC's MuJoCo contacts: a geom of the world body or welded to it
 };
 
 }  // namespace detail
@@ -113,11 +115,12 @@ Plugin::Plugin(const mjModel& model, const Terrain& terrain, ContactMode mode) {
          "drop WTC's contacts too");
   }
   for (int g = 0; g < model.ngeom && state_->ground_geom < 0; ++g) {
-    if (model.geom_bodyid[g] == 0) state_->ground_geom = g;
+    if (model.body_weldid[model.geom_bodyid[g]] == 0) state_->ground_geom = g;  // the world's, or welded to it
   }
   if (state_->ground_geom < 0) {
     fail(kWhere,
-         "constraint mode needs a geom of the world body, which WTC's contacts name as their geom1 (any: "
+         "constraint mode needs a geom of the world body (or of a body welded to it), which WTC's contacts name as "
+         "their geom1 (any: "
          "<geom type=\"plane\" size=\"1 1 1\" contype=\"0\" conaffinity=\"0\"/> in <worldbody>)");
   }
 }
@@ -135,6 +138,7 @@ WheelId Plugin::addWheel(const Wheel& spec) {
   for (const auto& w : state_->wheels) {
     if (w->body == spec.body) fail(kWhere, "body " + bodyName(m, spec.body) + " is already a registered wheel");
   }
+  if (state_->soil_bodies.has(spec.body)) fail(kWhere, "body " + bodyName(m, spec.body) + " is a soil body");
   validateMounting(spec.axle_local, spec.centre_local, kWhere);
   if (const std::string collision = worldCollision(m, spec.body); !collision.empty()) {
     fail(kWhere, "wheel body " + bodyName(m, spec.body) + ": " + collision +
@@ -168,8 +172,17 @@ void Plugin::step(const mjModel& model, mjData& data) {
   state_->requireModel(model, "wtc::mujoco::Plugin::step");
   if (engineSolvesContacts(state_->mode)) {
     eulerStep(model, data,
-              {.after_collision = [&] { addContacts(model, data); },
+              {.after_collision =
+                   [&] {
+                     dropRigidSoilContacts(model, data);
+                     addContacts(model, data);
+                   },
                .after_solve = [&] { collectSolvedForces(model, data); }});
+  } else if (state_->soil_bodies.count() > 0) {
+    // The soil bodies' rigid contacts go before mj_makeConstraint.
+    eulerStep(model, data,
+              {.after_collision = [&] { dropRigidSoilContacts(model, data); },
+               .after_velocity = [&] { applyForces(model, data); }});
   } else {
     mj_step1(&model, &data);
     applyForces(model, data);
@@ -192,7 +205,7 @@ void Plugin::addContacts(const mjModel& model, mjData& data) {
   if (!engineSolvesContacts(state_->mode)) {
     fail("wtc::mujoco::Plugin::addContacts", "in force mode the wheels go in with applyForces, after mj_step1");
   }
-  if (state_->wheels.empty()) return;  // mj_step's stages untouched
+  if (state_->wheels.empty() && state_->soil_bodies.count() == 0) return;  // mj_step's stages untouched
   // The wheels' velocities of this step: mj_fwdVelocity, which computes
   // cvel, comes after mj_makeConstraint; mj_comVel is a pure function of
   // the kinematics and qvel, so computing it early changes nothing.
@@ -282,17 +295,38 @@ void PluginState::runWheels(const mjModel& m, mjData& d, bool contacts) {
     }
     w.mounted.tell(listener, static_cast<WheelId>(id), h);
   }
+  soil_bodies.step(m, d, terrain, ground_memory.regionCount() > 0 ? &ground_memory : nullptr, h);
 }
 
 }  // namespace detail
 
 void Plugin::clearForces(mjData& data) {
   const StepClock::Section timed(state_->clock);
+  state_->soil_bodies.restore(data);
   for (const auto& w : state_->wheels) {
     if (!w->added) continue;
     std::copy(w->users.begin(), w->users.end(), data.xfrc_applied + 6 * w->body);
     w->added = false;
   }
+}
+
+SoilBodyId Plugin::addSoilBody(const SoilBody& body) {
+  const mjModel& m = state_->model;
+  if (m.opt.integrator != mjINT_EULER) {
+    fail("wtc::mujoco::Plugin::addSoilBody",
+         "a soil body's rigid contacts are dropped between mj_collision and mj_makeConstraint of a step run stage by "
+         "stage, which MuJoCo 2.2.2 serves for the Euler integrator only; use integrator=\"Euler\"");
+  }
+  const bool is_wheel =
+      std::any_of(state_->wheels.begin(), state_->wheels.end(), [&](const auto& w) { return w->body == body.body; });
+  return state_->soil_bodies.add(m, body, is_wheel);
+}
+const BodySoilForces& Plugin::soilForces(SoilBodyId body) const { return state_->soil_bodies.forces(body); }
+int Plugin::soilBodyCount() const { return state_->soil_bodies.count(); }
+void Plugin::dropRigidSoilContacts(const mjModel& model, mjData& data) const {
+  state_->requireModel(model, "wtc::mujoco::Plugin::dropRigidSoilContacts");
+  const StepClock::Section timed(state_->clock);
+  state_->soil_bodies.dropRigidContacts(model, data, state_->terrain);
 }
 
 const WheelForces& Plugin::forces(WheelId wheel) const { return state_->wheel(wheel).mounted.forces(); }

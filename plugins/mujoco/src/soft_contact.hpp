@@ -32,7 +32,7 @@ struct ContactSetting {
   double inverse_weight = 0.0;  ///< body_invweight0 (translation) of both bodies: MuJoCo's D (1/kg).
   bool pyramidal = true;        ///< mjModel::opt.cone == mjCONE_PYRAMIDAL.
   double impratio = 1.0;        ///< mjModel::opt.impratio.
-  int ground_geom = -1;         ///< geom1: a geom of the world body.
+  int ground_geom = -1;         ///< geom1: a geom of the world body, or of one welded to it.
   int wheel_geom = -1;          ///< geom2: a geom of the wheel's body.
 };
 

@@ -2,8 +2,8 @@
 #include "mjcf_model.hpp"
 
 #include <algorithm>
-#include <cstring>
 #include <cmath>
+#include <cstring>
 #include <iomanip>
 #include <limits>
 #include <optional>
@@ -87,8 +87,8 @@ std::optional<std::pair<Eigen::Isometry3d, Eigen::Vector3d>> asBox(const ConvexP
     if (!opposite) return std::nullopt;
     if (!seen) axes.push_back(n);
   }
-  if (axes.size() != 3 || std::abs(axes[0].dot(axes[1])) > kBoxPieceCos || std::abs(axes[0].dot(axes[2])) > kBoxPieceCos ||
-      std::abs(axes[1].dot(axes[2])) > kBoxPieceCos) {
+  if (axes.size() != 3 || std::abs(axes[0].dot(axes[1])) > kBoxPieceCos ||
+      std::abs(axes[0].dot(axes[2])) > kBoxPieceCos || std::abs(axes[1].dot(axes[2])) > kBoxPieceCos) {
     return std::nullopt;
   }
   Eigen::Matrix3d r;
@@ -226,18 +226,24 @@ void fillHeightfields(mjModel& m, const Terrain& terrain) {
   }
 }
 
+// The pieces are geoms of the world body. (MuJoCo 2.2.2 tests the world
+// body's geoms against every body each step, so a terrain of many pieces
+// costs by their count: docs/mujoco-plugin.md. Static bodies per tile of
+// ground did worse: its broadphase pairs static bodies whose boxes touch,
+// and loops over their geoms before its filter drops the pair.)
 void writeGround(Writer& w, const Terrain& terrain) {
   const std::vector<double> mu = sim::nativeWheelFrictions(terrain);
   std::optional<ConvexPolyhedron> scratch;
   const auto pieceGeom = [&](const ConvexPolyhedron& p, MaterialId material) {
+    std::ostream& g = w.ground;
     if (const auto box = asBox(p)) {
-      w.ground << "    <geom type=\"box\" size=\"" << vec(box->second / 2.0) << "\"" << frame(box->first);
+      g << "    <geom type=\"box\" size=\"" << vec(box->second / 2.0) << "\"" << frame(box->first);
     } else {
       std::vector<Eigen::Vector3d> vertices;
       for (int i = 0; i < p.vertexCount(); ++i) vertices.push_back(p.vertex(i));
-      w.ground << "    <geom type=\"mesh\" mesh=\"" << meshAsset(w, vertices) << "\"";
+      g << "    <geom type=\"mesh\" mesh=\"" << meshAsset(w, vertices) << "\"";
     }
-    w.ground << kGroundBits << friction(mu[material]) << "/>\n";
+    g << kGroundBits << friction(mu[material]) << "/>\n";
   };
   for (std::size_t s = 0; s < terrain.pieces().size(); ++s) {
     pieceGeom(terrain.pieces()[s], terrain.materialId(terrain.storedId(s)));
@@ -248,8 +254,9 @@ void writeGround(Writer& w, const Terrain& terrain) {
       heightfieldGeom(w, *part.field, k, mu[part.material]);
       continue;
     }
-    for (PieceId id = part.first; id < part.first + part.count; ++id)
+    for (PieceId id = part.first; id < part.first + part.count; ++id) {
       pieceGeom(terrain.piece(id, scratch), terrain.materialId(id));
+    }
   }
 }
 

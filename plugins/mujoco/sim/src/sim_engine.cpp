@@ -37,12 +37,6 @@ class SimEngine final : public sim::EngineBase {
         m_(*built_.model),
         d_(mj_makeData(&m_)),
         drives_(v.bodies.size()) {
-    if (!sim::soilBodyShapes(settings, terrain, v).empty()) {
-      throw InvalidInputError(
-          "wtc::mujoco sim engine: the vehicle's bodies would meet soft soil (the soft_soil effect on a terrain "
-          "with a soil), which the MuJoCo engine does not carry yet (Bullet and ODE do: wtc::BodyOnSoil); turn "
-          "soft_soil off, or use bullet or ode");
-    }
     for (std::size_t i = 0; i < v.bodies.size(); ++i) buildDrive(static_cast<int>(i));
     plugin_ = std::make_unique<Plugin>(m_, terrain, settings.mode);
     std::vector<int> wheel_bodies, treads;
@@ -56,6 +50,9 @@ class SimEngine final : public sim::EngineBase {
       wheels_ = std::make_unique<WtcWheels>(*plugin_, v, wheel_bodies, settings.tyre_effects);
     }
     useWheels(*wheels_);
+    for (sim::SoilBodyShape& soil : sim::soilBodyShapes(settings, terrain, v)) {
+      plugin_->addSoilBody({.body = built_.body[soil.body], .hulls = std::move(soil.hulls)});
+    }
     external_.assign(6 * static_cast<std::size_t>(m_.nbody), 0.0);
     mj_forward(&m_, d_.get());  // the start's kinematics, for body() before the first step
   }
@@ -132,20 +129,25 @@ class SimEngine final : public sim::EngineBase {
     mjData& d = *d_;
     std::copy(external_.begin(), external_.end(), d.xfrc_applied);
     std::fill(d.qfrc_applied, d.qfrc_applied + m_.nv, 0.0);
-    const bool wtc = !settings().native_wheels, solved = engineSolvesContacts(settings().mode);
+    // The plugin's part (its wheels, none with the engine's own, and its
+    // soil bodies) at the hooks of its mode.
+    const bool solved = engineSolvesContacts(settings().mode);
     StageHooks hooks;
-    if (wtc && solved) hooks.after_collision = [&] { plugin_->addContacts(m_, d); };
+    hooks.after_collision = [&] {
+      plugin_->dropRigidSoilContacts(m_, d);  // the soil carries the bodies on it
+      if (solved) plugin_->addContacts(m_, d);
+    };
     hooks.after_velocity = [&] {
-      if (wtc && !solved) plugin_->applyForces(m_, d);
+      if (!solved) plugin_->applyForces(m_, d);
       driveWheels();
       setDriveTargets();
     };
     hooks.after_solve = [&] {
-      if (wtc && solved) plugin_->collectSolvedForces(m_, d);
+      if (solved) plugin_->collectSolvedForces(m_, d);
       readDriveEfforts();
     };
     eulerStep(m_, d, hooks);
-    if (wtc) plugin_->clearForces(d);
+    plugin_->clearForces(d);
     std::fill(external_.begin(), external_.end(), 0.0);
     std::fill(d.xfrc_applied, d.xfrc_applied + 6 * m_.nbody, 0.0);
     wheels_->read(m_, d);

@@ -17,8 +17,9 @@
 //  - after mj_fwdConstraint, the forces MuJoCo applied at WTC's contacts
 //    and the drives' efforts (their rows' efc_force).
 // Implicit mode is not served (engine table: MuJoCo 2.2.2's friction rows
-// take no target velocity). The engine's own bodies on soft soil are not
-// served yet: a vehicle whose bodies would meet a soil is refused.
+// take no target velocity). With the soft_soil effect, every body with a
+// shape is the plugin's soil body (sim::soilBodyShapes), as in Bullet and
+// ODE: its contacts on soil pieces are dropped after mj_collision.
 #include <memory>
 
 #include <Eigen/Geometry>

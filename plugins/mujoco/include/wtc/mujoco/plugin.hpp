@@ -55,13 +55,16 @@
 // MuJoCo 2.2.2's friction rows take no target velocity.
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <mujoco/mujoco.h>
 #include <Eigen/Core>
 
 #include "wtc/adapter/wheel_listener.hpp"
 #include "wtc/adapter/wheel_spec.hpp"
+#include "wtc/geometry/convex_polyhedron.hpp"
 #include "wtc/terrain/terrain.hpp"
+#include "wtc/tyre/body_soil.hpp"
 #include "wtc/tyre/contact_mode.hpp"
 #include "wtc/tyre/ground_memory.hpp"
 #include "wtc/tyre/tyre_model.hpp"
@@ -79,6 +82,15 @@ struct Wheel : WheelSpec {
   Eigen::Vector3d axle_local{Eigen::Vector3d::UnitY()};   ///< Axle direction in the body frame.
   Eigen::Vector3d centre_local{Eigen::Vector3d::Zero()};  ///< Wheel centre O in the body frame (m).
 };
+
+/// A body of the model on soft soil (addSoilBody).
+struct SoilBody {
+  int body = -1;  ///< The body's id; not the world, not welded to it.
+  /// Its shape in the body's frame (mjData::xpos, xmat; m), one or more
+  /// convex hulls.
+  std::vector<ConvexPolyhedron> hulls;
+};
+using SoilBodyId = int;
 
 namespace detail {
 struct PluginState;
@@ -101,6 +113,22 @@ class Plugin {
   /// with the world's geoms (named); in constraint mode a body without a
   /// geom.
   WheelId addWheel(const Wheel& wheel);
+
+  /// A body of the model on the terrain's soft soil (docs/soft-soil.md, "A
+  /// body on the soil"): each step its wtc::BodyOnSoil force goes into its
+  /// xfrc_applied, and its MuJoCo contacts on pieces with a soil are
+  /// dropped after mj_collision (dropRigidSoilContacts), so the soil, not
+  /// MuJoCo's rigid contact, carries it there. With a soil body the step
+  /// runs MuJoCo's stages one by one in force mode too: the model must use
+  /// the Euler integrator. InvalidInputError: the world, a body the model
+  /// lacks, one welded to the world, a registered wheel, a body registered
+  /// twice, bad hulls, another integrator.
+  SoilBodyId addSoilBody(const SoilBody& body);
+  /// What the soil did to it in the last step.
+  const BodySoilForces& soilForces(SoilBodyId body) const;
+  int soilBodyCount() const;
+  /// After mj_collision: the soil bodies' contacts on soil pieces excluded.
+  void dropRigidSoilContacts(const mjModel& model, mjData& data) const;
 
   /// One MuJoCo step with the wheels (the call order above). `model` must
   /// be the plugin's.
