@@ -4,6 +4,8 @@
 // mj_addBufferVFS: an empty file is made and filled); a wheel of the
 // default tyre on a body; the wheel on a slider. Flat WTC ground is
 // wheel_sim.hpp's flatGround.
+#include <gtest/gtest.h>
+
 #include <cstring>
 #include <memory>
 #include <stdexcept>
@@ -11,6 +13,7 @@
 
 #include <mujoco/mujoco.h>
 
+#include "wheel_sim.hpp"
 #include "wtc/mujoco/plugin.hpp"
 
 namespace wtc::testing {
@@ -76,6 +79,23 @@ inline std::string wheelOnSlider(const std::string& options = "timestep=\"0.0004
     </body>
   </worldbody>
 </mujoco>)";
+}
+
+// The wheel on its slider with `options`, without wheels registered: after
+// 2000 steps of mj_step and of the plugin's step in `mode`, the same qpos
+// and qvel to the bit, with the box resting on MuJoCo's own contact.
+inline void expectTheStepIsMujocosToTheBit(const std::string& options, ContactMode mode) {
+  const Terrain ground = flatGround();
+  MjcfModel a(wheelOnSlider(options));
+  MjcfModel b(wheelOnSlider(options));
+  mujoco::Plugin plugin(*b.m, ground, mode);
+  for (int k = 0; k < 2000; ++k) {
+    mj_step(a.m, a.d);
+    plugin.step(*b.m, *b.d);
+  }
+  EXPECT_GT(a.d->ncon, 0) << "the box rests on MuJoCo's own contact";
+  EXPECT_EQ(std::memcmp(a.d->qpos, b.d->qpos, sizeof(mjtNum) * a.m->nq), 0) << options;
+  EXPECT_EQ(std::memcmp(a.d->qvel, b.d->qvel, sizeof(mjtNum) * a.m->nv), 0) << options;
 }
 
 }  // namespace slider_fixture
