@@ -154,7 +154,7 @@ TEST(EventScenesTest, TheRobotTurnsInPlaceAtTheSlipLawsYawRateInEveryEngine) {
       sim::parseMode(mode, scene.engine, "test");
       if (!sim::servesWheels(scene.engine)) continue;  // MuJoCo: no implicit mode
       // MuJoCo's soft cone lifts a sliding contact: in this skid turn its
-      // constraint mode rides on undeflected tyres and turns 7.8 % short
+      // constraint mode rides on undeflected tyres and turns short
       // (docs/mujoco-plugin.md, "Sliding contacts lift"), an open deviation.
       if (engine == "mujoco" && scene.engine.mode == ContactMode::kConstraint) continue;
       const auto e = sim::makeEngine(scene.engine, *scene.terrain, scene.vehicle, scene.placement);

@@ -41,10 +41,9 @@ bool toSoftContact(const SolverContact& c, const ContactSetting& s, SoftContact&
   }
   m.includemargin = 0.0;
   // One friction direction, along the traction (t1), as in ODE's constraint
-  // mode: a second at mu would hold sideways what the slip law lets slide
-  // (the skid-steered robot turned in place 9 % short of the law's yaw
-  // rate); grip across comes from the tread state turning toward a new
-  // slip, from step to step. MuJoCo's least coefficient stands for none.
+  // mode (plugins/ode/src/contact_joint.cpp says why): grip across comes
+  // from the tread state turning toward a new slip, from step to step.
+  // MuJoCo's least coefficient stands for none across.
   m.friction[0] = dim > 1 ? mu : 0.0;
   m.friction[1] = dim > 1 ? mjMINMU : 0.0;
   m.solref[0] = -d * c.stiffness * normal;  // k = d c R: K I = k / d = c R

@@ -74,8 +74,8 @@ std::string meshAsset(Writer& w, const std::vector<Eigen::Vector3d>& vertices) {
 // A convex polyhedron that is a box (six faces in three opposite,
 // perpendicular pairs) as its pose and full edge lengths. MuJoCo 2.2.2
 // collides boxes with its own colliders, several points a pair; a mesh
-// against a box through one point of libccd's MPR, whose depth was 13 mm
-// for a plate resting 0.2 mm deep on a 20 m slab (docs/mujoco-plugin.md).
+// against a box through one point of libccd's MPR, whose depth is far off
+// for a small body on a large box (docs/mujoco-plugin.md, "Not served yet").
 std::optional<std::pair<Eigen::Isometry3d, Eigen::Vector3d>> asBox(const ConvexPolyhedron& p) {
   if (p.faceCount() != 6 || p.vertexCount() != 8) return std::nullopt;
   std::vector<Eigen::Vector3d> axes;
