@@ -17,4 +17,17 @@ inline Eigen::Matrix3d quatMat(const mjtNum* q) {
   return Eigen::Quaterniond(q[0], q[1], q[2], q[3]).toRotationMatrix();
 }
 
+/// A body's spin and the velocity of its material point at `point` (world
+/// axes) from cvel (mj_objectVelocity gives them at the centre of mass).
+struct PointVelocity {
+  Eigen::Vector3d angular;  ///< rad/s.
+  Eigen::Vector3d linear;   ///< m/s, of the point.
+};
+inline PointVelocity velocityAt(const mjModel& m, const mjData& d, int body, const Eigen::Vector3d& point) {
+  mjtNum spin_velocity[6];
+  mj_objectVelocity(&m, &d, mjOBJ_BODY, body, spin_velocity, 0);
+  const Eigen::Vector3d angular = vec3(spin_velocity);
+  return {angular, vec3(spin_velocity + 3) + angular.cross(point - vec3(d.xipos + 3 * body))};
+}
+
 }  // namespace wtc::mujoco

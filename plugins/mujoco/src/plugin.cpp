@@ -10,6 +10,7 @@
 
 #include "adapter/mounted_wheel.hpp"
 #include "adapter/step_clock.hpp"
+#include "added_wrench.hpp"
 #include "euler_stages.hpp"
 #include "model_checks.hpp"
 #include "soft_contact.hpp"
@@ -31,10 +32,8 @@ struct WheelEntry {
   // the forces MuJoCo's solver applied at them.
   std::vector<int> contact_ids;
   std::vector<Eigen::Vector3d> solved;
-  // The body's xfrc_applied before applyForces added the wheel's wrench,
-  // which clearForces puts back exactly (the user's own, to the bit).
-  std::array<mjtNum, 6> users{};
-  bool added = false;
+  // The wheel's wrench in xfrc_applied this step, taken back by clearForces.
+  AddedWrench wrench;
 };
 
 namespace detail {
@@ -254,29 +253,14 @@ void PluginState::runWheels(const mjModel& m, mjData& d, bool contacts) {
     const int b = w.body;
     w.mounted.setRestLoad(gravity);
     const Eigen::Matrix3d rotation = mat3(d.xmat + 9 * b);
-    const Eigen::Vector3d com = vec3(d.xipos + 3 * b);
     const Eigen::Vector3d centre = vec3(d.xpos + 3 * b) + rotation * w.centre_local;
-    // [omega; v] at the centre of mass, in world axes (from cvel).
-    mjtNum spin_velocity[6];
-    mj_objectVelocity(&m, &d, mjOBJ_BODY, b, spin_velocity, 0);
-    WheelMotion motion;
-    motion.angular_velocity = vec3(spin_velocity);
-    motion.velocity = vec3(spin_velocity + 3) + motion.angular_velocity.cross(centre - com);
+    const PointVelocity v = velocityAt(m, d, b, centre);
+    const WheelMotion motion{.velocity = v.linear, .angular_velocity = v.angular};
     const MountedWheelStep& r = w.mounted.step(terrain, {centre, rotation * w.axle_local}, motion, h);
     w.contact_ids.clear();
-    if (!r.skipped) {
-      // xfrc_applied acts at the centre of mass: the torque about O moved
-      // there. Force mode: the tyre's wrench; constraint mode: what stays
-      // explicit (rolling resistance, the soil's shear).
-      const Eigen::Vector3d torque = r.torque + (centre - com).cross(r.force);
-      mjtNum* applied = d.xfrc_applied + 6 * b;
-      std::copy(applied, applied + 6, w.users.begin());
-      w.added = true;
-      for (int i = 0; i < 3; ++i) {
-        applied[i] += r.force[i];
-        applied[3 + i] += torque[i];
-      }
-    }
+    // Force mode: the tyre's wrench; constraint mode: what stays explicit
+    // (rolling resistance, the soil's shear).
+    if (!r.skipped) w.wrench.add(d, b, r.force, r.torque, centre);
     if (contacts && !r.skipped) {
       setting.inverse_weight = m.body_invweight0[2 * m.geom_bodyid[ground_geom]] + m.body_invweight0[2 * b];
       setting.wheel_geom = w.geom;
@@ -303,11 +287,7 @@ void PluginState::runWheels(const mjModel& m, mjData& d, bool contacts) {
 void Plugin::clearForces(mjData& data) {
   const StepClock::Section timed(state_->clock);
   state_->soil_bodies.restore(data);
-  for (const auto& w : state_->wheels) {
-    if (!w->added) continue;
-    std::copy(w->users.begin(), w->users.end(), data.xfrc_applied + 6 * w->body);
-    w->added = false;
-  }
+  for (const auto& w : state_->wheels) w->wrench.restore(data);
 }
 
 SoilBodyId Plugin::addSoilBody(const SoilBody& body) {

@@ -26,8 +26,8 @@ SoilBodyId SoilBodies::add(const mjModel& m, const SoilBody& spec, bool is_wheel
     throw InvalidInputError(std::string(kWhere) + ": body " + std::to_string(spec.body) +
                             " is welded to the world: the soil cannot move it");
   }
-  bodies_.push_back(std::make_unique<Body>(
-      Body{.body = spec.body, .soil = BodyOnSoil(spec.hulls, m.body_mass[spec.body], kWhere), .last = {}}));
+  bodies_.push_back(std::make_unique<Body>(Body{
+      .body = spec.body, .soil = BodyOnSoil(spec.hulls, m.body_mass[spec.body], kWhere), .last = {}, .wrench = {}}));
   return static_cast<SoilBodyId>(bodies_.size() - 1);
 }
 
@@ -38,36 +38,22 @@ bool SoilBodies::has(int body) const {
 void SoilBodies::step(const mjModel& m, mjData& d, const Terrain& terrain, GroundMemory* memory, double h) {
   for (const auto& b : bodies_) {
     const int i = b->body;
-    // The hulls' frame is the body's (xpos, xmat); mj_objectVelocity gives
-    // the motion at its centre of mass (xipos).
-    const Eigen::Vector3d origin = vec3(d.xpos + 3 * i), com = vec3(d.xipos + 3 * i);
-    mjtNum spin_velocity[6];
-    mj_objectVelocity(&m, &d, mjOBJ_BODY, i, spin_velocity, 0);
+    // The hulls' frame is the body's (xpos, xmat).
+    const Eigen::Vector3d origin = vec3(d.xpos + 3 * i);
+    const PointVelocity v = velocityAt(m, d, i, origin);
     BodySoilMotion motion;
     motion.pose.linear() = mat3(d.xmat + 9 * i);
     motion.pose.translation() = origin;
-    motion.angular_velocity = vec3(spin_velocity);
-    motion.velocity = vec3(spin_velocity + 3) + motion.angular_velocity.cross(origin - com);
+    motion.angular_velocity = v.angular;
+    motion.velocity = v.linear;
     b->last = b->soil.step(terrain, memory, motion, h);
-    if (b->last.nodes == 0) continue;
-    // About the frame's origin; xfrc_applied's torque is about the centre of mass.
-    const Eigen::Vector3d torque = b->last.torque + (origin - com).cross(b->last.force);
-    mjtNum* applied = d.xfrc_applied + 6 * i;
-    std::copy(applied, applied + 6, b->users.begin());
-    b->added = true;
-    for (int k = 0; k < 3; ++k) {
-      applied[k] += b->last.force[k];
-      applied[3 + k] += torque[k];
-    }
+    // About the frame's origin.
+    if (b->last.nodes > 0) b->wrench.add(d, i, b->last.force, b->last.torque, origin);
   }
 }
 
 void SoilBodies::restore(mjData& d) {
-  for (const auto& b : bodies_) {
-    if (!b->added) continue;
-    std::copy(b->users.begin(), b->users.end(), d.xfrc_applied + 6 * b->body);
-    b->added = false;
-  }
+  for (const auto& b : bodies_) b->wrench.restore(d);
 }
 
 void SoilBodies::dropRigidContacts(const mjModel& m, mjData& d, const Terrain& terrain) const {

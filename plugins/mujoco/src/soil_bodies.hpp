@@ -4,12 +4,12 @@
 // soil force (wtc::BodyOnSoil) into its xfrc_applied, and
 // dropRigidContacts takes its MuJoCo contacts on soil pieces out of the
 // step after mj_collision.
-#include <array>
 #include <memory>
 #include <vector>
 
 #include <mujoco/mujoco.h>
 
+#include "added_wrench.hpp"
 #include "wtc/mujoco/plugin.hpp"
 #include "wtc/tyre/body_soil.hpp"
 
@@ -41,8 +41,7 @@ class SoilBodies {
     int body;
     BodyOnSoil soil;
     BodySoilForces last;
-    std::array<mjtNum, 6> users{};
-    bool added = false;
+    AddedWrench wrench;  // the soil force in xfrc_applied this step
   };
   std::vector<std::unique_ptr<Body>> bodies_;
 };

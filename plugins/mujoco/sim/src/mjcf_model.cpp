@@ -62,6 +62,9 @@ std::string frame(const Eigen::Isometry3d& pose) {
   return " pos=\"" + vec(pose.translation()) + "\" quat=\"" + quat(pose.linear()) + "\"";
 }
 
+// A geom's sliding friction (MuJoCo's torsional and rolling ones off).
+std::string friction(double mu) { return " friction=\"" + formatNumber(mu) + " 0 0\""; }
+
 // A convex mesh asset of `vertices` (in the frame of the geom that uses it).
 std::string meshAsset(Writer& w, const std::vector<Eigen::Vector3d>& vertices) {
   const std::string name = "mesh" + std::to_string(w.meshes++);
@@ -151,7 +154,7 @@ void treadGeom(Writer& w, int i, const Body& body, const sim::EngineSettings& se
       << "\"";
   }
   // WTC's wheels: WTC's contact alone. The engine's own: the ground's friction.
-  o << (settings.native_wheels ? std::string(kBodyBits) + " friction=\"0 0 0\"" : std::string(kNoContact)) << "/>\n";
+  o << (settings.native_wheels ? std::string(kBodyBits) + friction(0.0) : std::string(kNoContact)) << "/>\n";
 }
 
 void writeBody(Writer& w, const sim::EngineSettings& settings, const vehicle::VehicleDescription& v,
@@ -176,8 +179,7 @@ void writeBody(Writer& w, const sim::EngineSettings& settings, const vehicle::Ve
       o << " limited=\"true\" range=\"" << b.joint.limits->lower << ' ' << b.joint.limits->upper << "\"";
     o << "/>\n";
   }
-  const std::string body_attributes =
-      std::string(kBodyBits) + " priority=\"1\" friction=\"" + formatNumber(sim::kBodyGroundFriction) + " 0 0\"";
+  const std::string body_attributes = std::string(kBodyBits) + " priority=\"1\"" + friction(sim::kBodyGroundFriction);
   if (b.wheel) {
     treadGeom(w, i, b, settings);
   } else if (!b.compound.empty()) {
@@ -192,7 +194,16 @@ void writeBody(Writer& w, const sim::EngineSettings& settings, const vehicle::Ve
   o << "    </body>\n";
 }
 
-std::string friction(double mu) { return " friction=\"" + formatNumber(mu) + " 0 0\""; }
+// A field's lowest height and its heights' range (m): MuJoCo's height field
+// holds heights normalised to [0, 1] of a positive range above the lowest.
+struct FieldRange {
+  double lowest = 0.0;
+  double range = 0.0;
+};
+FieldRange fieldRange(const Heightfield& f) {
+  const auto [lo, hi] = std::minmax_element(f.heights.begin(), f.heights.end());
+  return {*lo, std::max(*hi - *lo, kFlatFieldRangeM)};
+}
 
 // A compact heightfield as one MuJoCo height field, centred on the field's
 // box; its samples are written into the compiled model (fillHeightfields).
@@ -201,12 +212,11 @@ void heightfieldGeom(Writer& w, const Heightfield& f, std::size_t k, double mu) 
     throw InvalidInputError(std::string(kWhere) + ": heightfield " + std::to_string(k) +
                             " has holes, which MuJoCo's height fields cannot have");
   }
-  const auto [lo, hi] = std::minmax_element(f.heights.begin(), f.heights.end());
+  const FieldRange z = fieldRange(f);
   const double half_x = 0.5 * (f.cols - 1) * f.spacing_x, half_y = 0.5 * (f.rows - 1) * f.spacing_y;
-  const double range = std::max(*hi - *lo, kFlatFieldRangeM);
   w.assets << "    <hfield name=\"field" << k << "\" nrow=\"" << f.rows << "\" ncol=\"" << f.cols << "\" size=\""
-           << half_x << ' ' << half_y << ' ' << range << ' ' << f.base_depth << "\"/>\n";
-  const Eigen::Vector3d centre = f.origin + Eigen::Vector3d(half_x, half_y, *lo);
+           << half_x << ' ' << half_y << ' ' << z.range << ' ' << f.base_depth << "\"/>\n";
+  const Eigen::Vector3d centre = f.origin + Eigen::Vector3d(half_x, half_y, z.lowest);
   w.ground << "    <geom type=\"hfield\" hfield=\"field" << k << "\" pos=\"" << vec(centre) << "\"" << kGroundBits
            << friction(mu) << "/>\n";
 }
@@ -217,12 +227,12 @@ void fillHeightfields(mjModel& m, const Terrain& terrain) {
     const Terrain::CompactField part = terrain.compactField(k);
     if (part.field == nullptr) continue;
     const Heightfield& f = *part.field;
-    const auto [lo, hi] = std::minmax_element(f.heights.begin(), f.heights.end());
-    const double range = std::max(*hi - *lo, kFlatFieldRangeM);
+    const FieldRange z = fieldRange(f);
     float* data = m.hfield_data + m.hfield_adr[h++];
     // Rows along y, columns along x, from the field's low corner (MuJoCo's
     // and WTC's order alike), normalised to [0, 1] of the field's range.
-    for (std::size_t s = 0; s < f.heights.size(); ++s) data[s] = static_cast<float>((f.heights[s] - *lo) / range);
+    for (std::size_t s = 0; s < f.heights.size(); ++s)
+      data[s] = static_cast<float>((f.heights[s] - z.lowest) / z.range);
   }
 }
 

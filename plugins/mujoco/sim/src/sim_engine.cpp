@@ -165,10 +165,9 @@ class SimEngine final : public sim::EngineBase {
     vehicle::BodyKinematics k;
     k.pose.translation() = vec3(d_->xpos + 3 * b);
     k.pose.linear() = mat3(d_->xmat + 9 * b);
-    mjtNum spin_velocity[6];
-    mj_objectVelocity(&m_, d_.get(), mjOBJ_BODY, b, spin_velocity, 0);
-    k.angular_velocity = vec3(spin_velocity);
-    k.linear_velocity = vec3(spin_velocity + 3);
+    const PointVelocity v = velocityAt(m_, *d_, b, k.pose.translation());  // the frame is at the centre of mass
+    k.angular_velocity = v.angular;
+    k.linear_velocity = v.linear;
     return k;
   }
 
