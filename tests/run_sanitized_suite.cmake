@@ -39,7 +39,7 @@ set(ENV{LSAN_OPTIONS} "suppressions=${SOURCE_DIR}/tests/sanitizer_suppressions.t
 # table's single runs, the parked wheel at every step in HardCasesTest's
 # other parking tests; the towed system's steady pull and incline for its
 # S-curve and lowest-friction runs; the ledge climb's step out of reach for
-# its two climbs; the event scenes' turn in place for the skid steer's at
+# its climbs of two and of four heights; the event scenes' turn in place for the skid steer's at
 # every step; the rover driving straight for its climb; GroundMemoryTest's
 # ruts stepped without an engine for the test bed's ruts in both engines;
 # SoilDynamicsTest's carriage and the skid-steered cart on sand for the test
@@ -66,6 +66,7 @@ set(long_runs "VehicleScenesTest.EveryShippedSceneRunsShortenedInEveryEngineWith
               "TowedSystemTest.TracksAStraightLineAndAGentleSCurveOnFlatGround"
               "TowedSystemTest.LowestFrictionCaseFailsAndSaysSo"
               "LedgeClimbTest.ClimbsTwoHeightsInBothEnginesAndMeasuresEachStep"
+              "LedgeClimbTest.EveryEngineClimbsEveryHeightFrom20To60Centimetres"
               "VehicleScenesTest.ASkidSteerTurnsInPlaceAlikeAtEveryStepInEveryEngine"
               "RoverScenesTest.ClimbsALowStepInBothEnginesAndModes"
               "SoilTestBedTest.TheRearWheelsRunInTheFrontWheelsRutsAsTheModelPredicts"

@@ -45,7 +45,27 @@ MEASURED_COLUMN = HEADER.index("measured")
 GTEST_FIELDS = {"name", "file", "line", "status", "result", "timestamp", "time", "classname", "failures",
                 "value_param", "type_param"}
 ENGINE_NAMES = {"core": "core", "core_loop": "core Euler loop", "bullet": "Bullet", "ode": "ODE",
-                "ode_quick": "ODE quickstep"}
+                "ode_quick": "ODE quickstep", "mujoco": "MuJoCo"}
+# The cross-engine table's names of the engines (tests/cross_engine/engine_sim.cpp, engineName).
+TABLE_ENGINES = {"Bullet": "bullet", "ODE dWorldStep": "ode", "ODE dWorldQuickStep": "ode_quick", "MuJoCo": "mujoco"}
+
+
+def engine_modes(check):
+    """{engine: the modes the check holds it to, or None for the check's modes}: an entry of `engines` is an
+    engine's name, or `name:mode` for an engine held to one mode of the check's (MuJoCo's constraint mode,
+    whose friction is its soft cone's, where the check's band is the rigid cone's)."""
+    out = {}
+    for entry in check["engines"]:
+        name, _, mode = entry.partition(":")
+        out.setdefault(name, None if not mode else [])
+        if mode:
+            out[name].append(mode)
+    return out
+
+
+def engines_label(check):
+    return ", ".join(ENGINE_NAMES.get(name, name) + (f" ({', '.join(modes)})" if modes else "")
+                     for name, modes in engine_modes(check).items())
 
 
 def fail(message):
@@ -193,10 +213,17 @@ def measure(check, tests, stdout_by_binary):
         for out in stdout_by_binary.values():
             rows += cross_engine_rows(out, m["table"])
         by_mode = {}
+        held = engine_modes(check)
         for scene, mode, other, bullet, ode, _ in rows:
-            values += [number(bullet), number(ode)]
-            by_mode.setdefault(mode, {"Bullet": bullet})[other.replace("ODE dWorldStep", "ODE").replace(
-                "ODE dWorldQuickStep", "ODE quickstep")] = ode
+            engine = TABLE_ENGINES.get(other, other)
+            if engine not in held or (held[engine] is not None and mode not in held[engine]):
+                continue
+            per_engine = by_mode.setdefault(mode, {})
+            if "bullet" in held and "Bullet" not in per_engine:
+                per_engine["Bullet"] = bullet
+                values.append(number(bullet))
+            values.append(number(ode))
+            per_engine[ENGINE_NAMES[engine]] = ode
         unit = m.get("unit", "")
         for mode, per_engine in by_mode.items():
             text.append(f"{mode}: " + ", ".join(f"{k} {compact_number(v)}" for k, v in per_engine.items()) +
@@ -240,7 +267,7 @@ def cell(text):
 
 
 def static_cells(c):
-    engines = ", ".join(ENGINE_NAMES.get(e, e) for e in c["engines"])
+    engines = engines_label(c)
     modes = ", ".join(c["modes"]) if c["modes"] != ["none"] else "one model step" if c["engines"] == ["core"] else ""
     where = engines + (f"; {modes}" if modes else "")
     if "command" in c:

@@ -1,6 +1,6 @@
 #pragma once
 // One WTC wheel in one engine, behind one interface, so that a scene is
-// written once and run in Bullet and ODE (the cross-engine tests). The
+// written once and run in Bullet, ODE and MuJoCo (the cross-engine tests). The
 // wheel is the robot's (r_f = 0.19 m, w = 0.12 m, a disc's inertia), its
 // axle along world y, its spin about y.
 #include <memory>
@@ -15,9 +15,17 @@
 
 namespace wtc::testing {
 
-/// kOde steps with dWorldStep, kOdeQuick with dWorldQuickStep (20 iterations).
-enum class Engine { kBullet, kOde, kOdeQuick };
+/// kOde steps with dWorldStep, kOdeQuick with dWorldQuickStep (20 iterations);
+/// kMujoco with wtc::mujoco::Plugin::step (MuJoCo's Euler step).
+enum class Engine { kBullet, kOde, kOdeQuick, kMujoco };
 std::string engineName(Engine engine);
+/// Whether the engine's adapter serves `mode` (MuJoCo: not implicit mode,
+/// docs/mujoco-plugin.md).
+bool serves(Engine engine, ContactMode mode);
+/// MuJoCo's impratio in the cross-engine wheel's model: the sim engine's
+/// (plugins/mujoco/sim/src/mujoco_constants.hpp). Its soft cone's friction
+/// compliance is R / impratio (docs/mujoco-plugin.md, "Friction").
+inline constexpr double kMujocoImpratio = 10.0;
 
 /// What holds the wheel's rotation: nothing, upright (spin about y only, as
 /// its hinge would), or locked (a parked wheel's brake).

@@ -25,14 +25,21 @@ Terrain flatGround() {
   return std::move(builder).build();
 }
 
-std::vector<sim::EngineSettings> everyEngine() {
+std::vector<sim::EngineSettings> everyEngine(Variants variants) {
   std::vector<sim::EngineSettings> all;
   for (const std::string_view engine : sim::engineNames()) {
+    if (variants == Variants::kLeftOut && engine.find('_') != std::string_view::npos) continue;
     for (const ContactMode mode : {ContactMode::kForce, ContactMode::kConstraint, ContactMode::kImplicit}) {
       const sim::EngineSettings settings{.engine = std::string(engine), .mode = mode};
       if (sim::servesWheels(settings)) all.push_back(settings);
     }
   }
+  return all;
+}
+
+std::vector<std::pair<std::string, std::string>> everyEngineByName(Variants variants) {
+  std::vector<std::pair<std::string, std::string>> all;
+  for (const sim::EngineSettings& s : everyEngine(variants)) all.emplace_back(s.engine, sim::modeName(s));
   return all;
 }
 

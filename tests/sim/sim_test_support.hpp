@@ -3,6 +3,7 @@
 // engine settings every test runs in.
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "wtc/sim/engine.hpp"
@@ -21,9 +22,15 @@ namespace wtc::testing {
 vehicle::VehicleDescription shippedVehicle(const std::string& file);  // under vehicles/
 /// A 20 m x 20 m slab, top face z = 0, one material (mu_max 0.8).
 Terrain flatGround();
+/// Whether a list of engines takes the engines' variants (<engine>_<variant>,
+/// src/sim/engine_entry.hpp: ODE's ode_quick) too.
+enum class Variants { kIncluded, kLeftOut };
 /// Every engine of the engine table, in every WTC contact mode it serves
 /// (sim::servesWheels): what a vehicle must run in.
-std::vector<sim::EngineSettings> everyEngine();
+std::vector<sim::EngineSettings> everyEngine(Variants variants = Variants::kIncluded);
+/// everyEngine's engines and modes by name, as a scene's overrides take them
+/// ({"bullet", "force"}, ...).
+std::vector<std::pair<std::string, std::string>> everyEngineByName(Variants variants = Variants::kIncluded);
 /// Every engine of the table with its own wheel contact
 /// (EngineSettings::native_wheels), cylinder and sphere.
 std::vector<sim::EngineSettings> everyNativeWheelBaseline();

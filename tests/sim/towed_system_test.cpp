@@ -31,9 +31,8 @@ sim::RunSummary run(const sim::Scene& s) {
   return sim::runScene(s, *engine);
 }
 
-const std::vector<std::pair<const char*, const char*>> kEngines = {{"bullet", "force"},    {"bullet", "constraint"},
-                                                                   {"bullet", "implicit"}, {"ode", "force"},
-                                                                   {"ode", "constraint"},  {"ode", "implicit"}};
+// Every engine (not ODE's quickstep variant) in every mode it serves.
+const std::vector<std::pair<std::string, std::string>> kEngines = everyEngineByName(Variants::kLeftOut);
 
 // A free-rolling wheel at steady speed carries no torque about its axle, so
 // its ground force F along the path balances its rolling-resistance moment
@@ -149,13 +148,18 @@ TEST(TowedSystemTest, TracksAStraightLineAndAGentleSCurveOnFlatGround) {
 
 // The source's three friction cases on the 2 deg incline: the first two
 // hold the path; the lowest (0.21 / 0.35) cannot, and the run says so.
+// Case 2 needs the rising branch of mu(s) (scenes/towed_incline.yaml); in
+// MuJoCo's constraint mode the soft cone's friction lets the tug's tread
+// slip past it (0.75 at 1 s, where force mode's is 0.14) onto the falling
+// branch, and case 2 is lost as well (docs/mujoco-plugin.md, "Friction").
 TEST(TowedSystemTest, LowestFrictionCaseFailsAndSaysSo) {
   for (const auto& [engine, mode] : kEngines) {
     for (const char* friction_case : {"1", "2", "3"}) {
       const sim::RunSummary r =
           run(scene("towed_incline", {{"engine", engine}, {"mode", mode}, {"friction_case", friction_case}}));
       const std::string label = std::string("case ") + friction_case + " in " + engine + "/" + mode;
-      if (std::string(friction_case) == "3") {
+      const bool soft_cone = engine == "mujoco" && mode == "constraint";
+      if (std::string(friction_case) == "3" || (soft_cone && std::string(friction_case) == "2")) {
         EXPECT_FALSE(r.success) << label;
         EXPECT_THAT(r.warnings, ::testing::Contains(::testing::HasSubstr("path lost"))) << label;
       } else {

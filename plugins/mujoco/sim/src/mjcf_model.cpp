@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <iomanip>
 #include <limits>
@@ -194,25 +195,53 @@ void writeBody(Writer& w, const sim::EngineSettings& settings, const vehicle::Ve
   o << "    </body>\n";
 }
 
-// A field's lowest height and its heights' range (m): MuJoCo's height field
+// The heights MuJoCo's height field gets (m), rows along y, columns along
+// x. It has no holes: a sample all of whose cells are holes drops
+// kHolePitDepthM below the field's lowest sample of ground, so a body that
+// meets a hole falls into a pit, and the cells around a hole slope into it.
+// (WTC's wheels see the holes themselves: their ground is WTC's terrain.)
+std::vector<double> fieldSamples(const Heightfield& f) {
+  std::vector<double> z = f.heights;
+  if (!f.hasHoles()) return z;
+  const auto allHoles = [&](int r, int c) {
+    for (const int cr : {r - 1, r}) {
+      for (const int cc : {c - 1, c}) {
+        if (cr >= 0 && cc >= 0 && cr < f.rows - 1 && cc < f.cols - 1 && !f.isHole(cr, cc)) return false;
+      }
+    }
+    return true;
+  };
+  double lowest = std::numeric_limits<double>::infinity();
+  std::vector<std::uint8_t> pit(z.size(), 0);
+  for (int r = 0; r < f.rows; ++r) {
+    for (int c = 0; c < f.cols; ++c) {
+      const std::size_t s = static_cast<std::size_t>(r) * f.cols + c;
+      pit[s] = allHoles(r, c) ? 1 : 0;
+      if (!pit[s]) lowest = std::min(lowest, z[s]);
+    }
+  }
+  if (!std::isfinite(lowest)) lowest = 0.0;  // all holes: nothing to stand on anywhere
+  for (std::size_t s = 0; s < z.size(); ++s) {
+    if (pit[s]) z[s] = lowest - kHolePitDepthM;
+  }
+  return z;
+}
+
+// The samples' lowest height and their range (m): MuJoCo's height field
 // holds heights normalised to [0, 1] of a positive range above the lowest.
 struct FieldRange {
   double lowest = 0.0;
   double range = 0.0;
 };
-FieldRange fieldRange(const Heightfield& f) {
-  const auto [lo, hi] = std::minmax_element(f.heights.begin(), f.heights.end());
+FieldRange fieldRange(const std::vector<double>& z) {
+  const auto [lo, hi] = std::minmax_element(z.begin(), z.end());
   return {*lo, std::max(*hi - *lo, kFlatFieldRangeM)};
 }
 
 // A compact heightfield as one MuJoCo height field, centred on the field's
 // box; its samples are written into the compiled model (fillHeightfields).
 void heightfieldGeom(Writer& w, const Heightfield& f, std::size_t k, double mu) {
-  if (!f.cell_holes.empty() && std::any_of(f.cell_holes.begin(), f.cell_holes.end(), [](auto h) { return h != 0; })) {
-    throw InvalidInputError(std::string(kWhere) + ": heightfield " + std::to_string(k) +
-                            " has holes, which MuJoCo's height fields cannot have");
-  }
-  const FieldRange z = fieldRange(f);
+  const FieldRange z = fieldRange(fieldSamples(f));
   const double half_x = 0.5 * (f.cols - 1) * f.spacing_x, half_y = 0.5 * (f.rows - 1) * f.spacing_y;
   w.assets << "    <hfield name=\"field" << k << "\" nrow=\"" << f.rows << "\" ncol=\"" << f.cols << "\" size=\""
            << half_x << ' ' << half_y << ' ' << z.range << ' ' << f.base_depth << "\"/>\n";
@@ -226,13 +255,12 @@ void fillHeightfields(mjModel& m, const Terrain& terrain) {
   for (std::size_t k = 0; k < terrain.compactFieldCount(); ++k) {
     const Terrain::CompactField part = terrain.compactField(k);
     if (part.field == nullptr) continue;
-    const Heightfield& f = *part.field;
-    const FieldRange z = fieldRange(f);
+    const std::vector<double> samples = fieldSamples(*part.field);
+    const FieldRange z = fieldRange(samples);
     float* data = m.hfield_data + m.hfield_adr[h++];
     // Rows along y, columns along x, from the field's low corner (MuJoCo's
     // and WTC's order alike), normalised to [0, 1] of the field's range.
-    for (std::size_t s = 0; s < f.heights.size(); ++s)
-      data[s] = static_cast<float>((f.heights[s] - z.lowest) / z.range);
+    for (std::size_t s = 0; s < samples.size(); ++s) data[s] = static_cast<float>((samples[s] - z.lowest) / z.range);
   }
 }
 
@@ -270,13 +298,17 @@ void writeGround(Writer& w, const Terrain& terrain) {
   }
 }
 
-void writeMimics(Writer& w, const vehicle::VehicleDescription& v) {
+void writeMimics(Writer& w, const vehicle::VehicleDescription& v, double step_seconds) {
   for (std::size_t i = 0; i < v.bodies.size(); ++i) {
     const Body& b = v.bodies[i];
     if (b.parent < 0 || !b.joint.mimic) continue;
-    // q_i = offset + multiplier q_master: polycoef's a0 + a1 q2.
+    // q_i = offset + multiplier q_master: polycoef's a0 + a1 q2. MuJoCo's
+    // default solref (a 20 ms time constant) lets the joints part by mrad
+    // on rough ground; the stiffest it allows is 2 h, critically damped.
     w.equalities << "    <joint joint1=\"j" << i << "\" joint2=\"j" << b.joint.mimic->master << "\" polycoef=\""
-                 << b.joint.mimic->offset << ' ' << b.joint.mimic->multiplier << " 0 0 0\"/>\n";
+                 << b.joint.mimic->offset << ' ' << b.joint.mimic->multiplier << " 0 0 0\" solref=\""
+                 << kMimicTimeConstantSteps * step_seconds << " 1\" solimp=\"" << kDriveImpedance << ' '
+                 << kDriveImpedance << " 0.001\"/>\n";
   }
 }
 
@@ -301,7 +333,7 @@ VehicleModel buildVehicleModel(const sim::EngineSettings& settings, const Terrai
   for (std::size_t i = 0; i < v.bodies.size(); ++i) {
     if (v.bodies[i].parent < 0) writeBody(w, settings, v, placement, static_cast<int>(i));
   }
-  writeMimics(w, v);
+  writeMimics(w, v, settings.step_seconds);
   std::ostringstream xml;
   xml.precision(17);
   // Euler: constraint mode's stages are Euler's (euler_stages.hpp). The

@@ -20,12 +20,21 @@ inline constexpr int kConstraintRows = 8000;
 /// (m), which its samples' normalised heights (all 0) do not use.
 inline constexpr double kFlatFieldRangeM = 1e-3;
 
+/// How far below a height field's lowest sample of ground its holes' samples
+/// go (m): MuJoCo's height fields have none (mjcf_model.cpp, fieldSamples).
+inline constexpr double kHolePitDepthM = 1.0;
+
 /// A drive is its joint's friction row with a velocity target
 /// (sim_engine.cpp): its impedance (MuJoCo's largest, mjMAXIMP: the row is
 /// as rigid as MuJoCo makes one), and the effort cap of a drive whose
 /// limits are off (N m or N; a friction row needs a finite bound).
 inline constexpr double kDriveImpedance = 0.9999;
 inline constexpr double kUncappedDriveEffort = 1e9;
+
+/// A mimic's joint equality: its time constant in steps (MuJoCo refuses one
+/// under 2 h: mjMINVAL's safety, "refsafe"), damping ratio 1, and the
+/// drives' impedance.
+inline constexpr double kMimicTimeConstantSteps = 2.0;
 
 /// opt.mpr_iterations: libccd's MPR, MuJoCo's collider for a hull against
 /// another convex shape (count).
