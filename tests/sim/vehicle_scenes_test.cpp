@@ -36,43 +36,45 @@ sim::RunSummary run(const sim::Scene& s) {
   return sim::runScene(s, *engine);
 }
 
-// Every shipped scene, 1 s of it, in Bullet and ODE (every WTC mode) and
-// ODE's quickstep, and with the engines' own wheel contact: no NaN, WTC's part
-// of the time measured; with WTC's wheels, joints together, and on flat
-// ground no wheel loses the ground.
+// Every shipped scene, 1 s of it, in every engine of the table, in every
+// WTC mode it serves (ODE's quickstep not in constraint mode) and with its
+// own wheel contact: no NaN, WTC's part of the time measured; with WTC's
+// wheels, joints together, and on flat ground no wheel loses the ground.
 TEST(VehicleScenesTest, EveryShippedSceneRunsShortenedInEveryEngineWithoutNaN) {
+  std::vector<std::pair<std::string, std::string>> runs = everyEngineByName();
+  for (const sim::EngineSettings& native : everyNativeWheelBaseline()) {
+    runs.emplace_back(native.engine, sim::modeName(native));
+  }
   for (const auto& entry : fs::directory_iterator(kScenes)) {
     if (entry.path().extension() != ".yaml") continue;
     const bool soft = sim::loadScene(entry.path()).engine.tyre_effects.has(Effect::kSoftSoil);
-    for (const char* engine : {"bullet", "ode", "ode_quick"}) {
-      for (const char* mode : {"force", "constraint", "implicit", "engine_cylinder", "engine_sphere"}) {
-        if (std::string(engine) == "ode_quick" && std::string(mode) == "constraint") continue;
-        const std::vector<sim::Override> overrides{{"engine", engine}, {"mode", mode}, {"duration", "1"}};
-        // Soft soil acts on WTC's wheels: the engine's own are refused (docs/bad-input.md, soil-engine-wheels).
-        if (soft && std::string(mode).starts_with("engine_")) {
-          EXPECT_THROW(sim::loadScene(entry.path(), overrides), InvalidInputError) << entry.path() << " " << mode;
-          continue;
-        }
-        const sim::Scene s = sim::loadScene(entry.path(), overrides);
-        const std::string label = s.name + " in " + engine + "/" + mode;
-        const sim::RunSummary r = run(s);
-        EXPECT_FALSE(r.nan) << label;
-        EXPECT_FALSE(r.interrupted) << label;
-        // WTC's part of the wall time is measured, and is a part of it (on
-        // rough ground under a light vehicle it can be most of it). How
-        // small it is with the engines' own wheels is a benchmark's to say
-        // (wtc_bench_sim), not a timed test's on a shared machine: a 5 %
-        // bound here failed at 5.03 % under load.
-        EXPECT_GT(r.wtc_time, 0.0) << label;
-        EXPECT_LE(r.wtc_time, r.wall_time) << label;
-        // The baseline is what it is: ODE quickstep's rigid wheel contacts
-        // on rough ground open its joints by up to 0.18 deg in this second.
-        if (std::string(mode).starts_with("engine")) continue;
-        EXPECT_LT(r.max_joint_gap, kJointGapM) << label;
-        EXPECT_LT(r.max_joint_angle, kJointAngleRad) << label;
-        if (s.name == "robot_standing" || s.name == "robot_straight") {
-          EXPECT_EQ(r.fields.at("contact_breaks_per_s"), 0.0) << label;
-        }
+    for (const auto& [engine, mode] : runs) {
+      if (engine == "ode_quick" && mode == "constraint") continue;
+      const std::vector<sim::Override> overrides{{"engine", engine}, {"mode", mode}, {"duration", "1"}};
+      // Soft soil acts on WTC's wheels: the engine's own are refused (docs/bad-input.md, soil-engine-wheels).
+      if (soft && std::string(mode).starts_with("engine_")) {
+        EXPECT_THROW(sim::loadScene(entry.path(), overrides), InvalidInputError) << entry.path() << " " << mode;
+        continue;
+      }
+      const sim::Scene s = sim::loadScene(entry.path(), overrides);
+      const std::string label = s.name + " in " + engine + "/" + mode;
+      const sim::RunSummary r = run(s);
+      EXPECT_FALSE(r.nan) << label;
+      EXPECT_FALSE(r.interrupted) << label;
+      // WTC's part of the wall time is measured, and is a part of it (on
+      // rough ground under a light vehicle it can be most of it). How
+      // small it is with the engines' own wheels is a benchmark's to say
+      // (wtc_bench_sim), not a timed test's on a shared machine: a 5 %
+      // bound here failed at 5.03 % under load.
+      EXPECT_GT(r.wtc_time, 0.0) << label;
+      EXPECT_LE(r.wtc_time, r.wall_time) << label;
+      // The baseline is what it is: ODE quickstep's rigid wheel contacts
+      // on rough ground open its joints by up to 0.18 deg in this second.
+      if (std::string(mode).starts_with("engine")) continue;
+      EXPECT_LT(r.max_joint_gap, kJointGapM) << label;
+      EXPECT_LT(r.max_joint_angle, kJointAngleRad) << label;
+      if (s.name == "robot_standing" || s.name == "robot_straight") {
+        EXPECT_EQ(r.fields.at("contact_breaks_per_s"), 0.0) << label;
       }
     }
   }
@@ -138,7 +140,8 @@ TEST(VehicleScenesTest, DrivingUpAnInclineReachesTheSpeedTheSlipLawPredicts) {
 // stops at its limit with every such step counted as saturated.
 TEST(VehicleScenesTest, DrivesReachCommandedPositionsAndCountSaturationPastTheirTravel) {
   constexpr double kPositionToleranceRad = 0.01, kPositionToleranceM = 1e-3;
-  for (const char* engine : {"bullet", "ode"}) {
+  for (const auto& [engine, mode] : everyEngineByName(Variants::kLeftOut)) {
+    if (mode != "force") continue;
     const sim::Scene s = scene("robot_reconfigure", {{"engine", engine}});
     const auto e = sim::makeEngine(s.engine, *s.terrain, s.vehicle, s.placement);
     const std::unique_ptr<vehicle::Controller> controller = s.make_controller();

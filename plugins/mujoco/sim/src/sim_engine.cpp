@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <array>
+#include <string>
+#include <tuple>
 #include <vector>
 
 #include "mjcf_model.hpp"
@@ -147,6 +149,7 @@ class SimEngine final : public sim::EngineBase {
       readDriveEfforts();
     };
     eulerStep(m_, d, hooks);
+    requireRoom(d);
     plugin_->clearForces(d);
     std::fill(external_.begin(), external_.end(), 0.0);
     std::fill(d.xfrc_applied, d.xfrc_applied + 6 * m_.nbody, 0.0);
@@ -158,6 +161,22 @@ class SimEngine final : public sim::EngineBase {
     mj_comPos(&m_, &d);
     mj_comVel(&m_, &d);
     wheels_->stepped();
+  }
+
+  // MuJoCo drops the contacts and rows past nconmax and njmax with only a
+  // warning: a body would fall through the ground unseen. The plugin
+  // refuses its own contacts that do not fit; MuJoCo's own are checked here.
+  void requireRoom(const mjData& d) const {
+    for (const auto& [warning, what, size] : {std::tuple{mjWARN_CONTACTFULL, "contacts (nconmax", m_.nconmax},
+                                              std::tuple{mjWARN_CNSTRFULL, "constraint rows (njmax", m_.njmax}}) {
+      if (d.warning[warning].number > 0) {
+        throw InvalidInputError("wtc::mujoco sim engine: at t = " + std::to_string(d.time) +
+                                " s the model's bodies on the terrain needed more " + what + " " +
+                                std::to_string(size) +
+                                ") than the engine's MuJoCo model has room for "
+                                "(plugins/mujoco/sim/src/mujoco_constants.hpp): MuJoCo would drop them");
+      }
+    }
   }
 
   vehicle::BodyKinematics body(int body) const override {
