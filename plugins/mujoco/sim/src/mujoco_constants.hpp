@@ -16,6 +16,7 @@ inline constexpr double kImpratio = 10.0;
 /// MuJoCo 2.2.2's mjData holds a dense njmax x njmax matrix (efc_AR), so
 /// the rows cost memory as their square (8 MB at 1000). The engine refuses
 /// a step that ran out of either (sim_engine.cpp, requireRoom).
+inline constexpr int kContacts = 2000;
 inline constexpr int kConstraintRows = 1000;
 
 /// A MuJoCo height field needs a positive elevation range: a flat field's
