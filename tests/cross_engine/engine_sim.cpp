@@ -1,6 +1,5 @@
 #include "engine_sim.hpp"
 
-#include <cmath>
 #include <sstream>
 
 #include "bullet_fixture.hpp"
