@@ -25,12 +25,21 @@ Terrain flatGround() {
   return std::move(builder).build();
 }
 
+std::vector<std::string> everyEngineName(Variants variants) {
+  std::vector<std::string> names;
+  for (const std::string_view engine : sim::engineNames()) {
+    // A variant is named <engine>_<variant> (src/sim/engine_entry.hpp; EngineTableTest).
+    if (variants == Variants::kLeftOut && engine.find('_') != std::string_view::npos) continue;
+    names.emplace_back(engine);
+  }
+  return names;
+}
+
 std::vector<sim::EngineSettings> everyEngine(Variants variants) {
   std::vector<sim::EngineSettings> all;
-  for (const std::string_view engine : sim::engineNames()) {
-    if (variants == Variants::kLeftOut && engine.find('_') != std::string_view::npos) continue;
+  for (const std::string& engine : everyEngineName(variants)) {
     for (const ContactMode mode : {ContactMode::kForce, ContactMode::kConstraint, ContactMode::kImplicit}) {
-      const sim::EngineSettings settings{.engine = std::string(engine), .mode = mode};
+      const sim::EngineSettings settings{.engine = engine, .mode = mode};
       if (sim::servesWheels(settings)) all.push_back(settings);
     }
   }

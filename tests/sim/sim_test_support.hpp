@@ -25,6 +25,8 @@ Terrain flatGround();
 /// Whether a list of engines takes the engines' variants (<engine>_<variant>,
 /// src/sim/engine_entry.hpp: ODE's ode_quick) too.
 enum class Variants { kIncluded, kLeftOut };
+/// The engine table's names (sim::engineNames), with or without variants.
+std::vector<std::string> everyEngineName(Variants variants = Variants::kIncluded);
 /// Every engine of the engine table, in every WTC contact mode it serves
 /// (sim::servesWheels): what a vehicle must run in.
 std::vector<sim::EngineSettings> everyEngine(Variants variants = Variants::kIncluded);

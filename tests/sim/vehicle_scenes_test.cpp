@@ -140,8 +140,7 @@ TEST(VehicleScenesTest, DrivingUpAnInclineReachesTheSpeedTheSlipLawPredicts) {
 // stops at its limit with every such step counted as saturated.
 TEST(VehicleScenesTest, DrivesReachCommandedPositionsAndCountSaturationPastTheirTravel) {
   constexpr double kPositionToleranceRad = 0.01, kPositionToleranceM = 1e-3;
-  for (const auto& [engine, mode] : everyEngineByName(Variants::kLeftOut)) {
-    if (mode != "force") continue;
+  for (const std::string& engine : everyEngineName(Variants::kLeftOut)) {
     const sim::Scene s = scene("robot_reconfigure", {{"engine", engine}});
     const auto e = sim::makeEngine(s.engine, *s.terrain, s.vehicle, s.placement);
     const std::unique_ptr<vehicle::Controller> controller = s.make_controller();
