@@ -34,6 +34,26 @@ inline constexpr double kDivergedDistanceM = kMaxLengthM;
 inline constexpr double kDuplicateContactM = 1e-9;
 inline constexpr double kDuplicateContactCos = 1e-12;
 
+/// How far beyond its depth a body's contact point may lie from a terrain
+/// face, or from a face of the body, and still be on it, when ODE's sim
+/// engine finds the normals a heightfield's surface can give there
+/// (TerrainNormalCone): 0.1 mm (m), plus 1e-6 of the point's largest
+/// coordinate (dimensionless). ODE's colliders put a contact a few float
+/// ulps off the surface (docs/ode-plugin.md, "Terrain shapes": 2e-6 m at
+/// 10 m); the reach is far above that and far below any terrain feature (a
+/// heightfield's cell is 1 cm or more).
+inline constexpr double kTerrainFaceReachM = 1e-4;
+inline constexpr double kTerrainFaceReachPerM = 1e-6;
+/// The same cone's numerical slack (dimensionless): two faces are the two
+/// sides of one wall when their normals' cosine is within it of -1, and a
+/// projection onto the cone shorter than it vanishes.
+inline constexpr double kTerrainNormalSlack = 1e-9;
+/// A contact's normal this close to the cone (the sine of the angle, rad)
+/// is in it: a body's roll about a terrain edge from roundoff tilts its
+/// face's normal off the edge's cone by up to 5e-7 rad, a meaningless
+/// difference, where the normals the cone corrects are tens of degrees off.
+inline constexpr double kTerrainNormalToleranceRad = 1e-3;
+
 /// A vehicle's joints that came apart by more than this over a run (the
 /// largest gap at a joint's anchor, the largest angle off its axis,
 /// vehicle::jointError) did not hold the mechanism the description gives:

@@ -91,6 +91,12 @@ PieceId TerrainGeoms::piece(dGeomID geom, const Eigen::Vector3d& point) const {
   return terrain_.nearestPiece(point, part.first, part.count, kMeshContactReachM);
 }
 
+bool TerrainGeoms::isField(dGeomID geom) const {
+  if (dGeomIsSpace(geom) || dGeomGetSpace(geom) != space_) return false;
+  const auto data = static_cast<PieceId>(reinterpret_cast<std::intptr_t>(dGeomGetData(geom)));
+  return data <= -2 && terrain_.compactField(static_cast<std::size_t>(-2 - data)).field != nullptr;
+}
+
 namespace {
 
 // The height of a compact field's sample for ODE: ODE's x is the field's

@@ -148,4 +148,36 @@ dGeomID addBodyGeoms(const vehicle::Body& body, dSpaceID space, dBodyID b, std::
   return first;
 }
 
+sim::PlacedShape placedShape(dGeomID geom) {
+  sim::PlacedShape shape;
+  const dReal* r = dGeomGetRotation(geom);  // 3 x 4, rows
+  const dReal* c = dGeomGetPosition(geom);
+  shape.pose.linear() << r[0], r[1], r[2], r[4], r[5], r[6], r[8], r[9], r[10];
+  shape.pose.translation() << c[0], c[1], c[2];
+  switch (dGeomGetClass(geom)) {
+    case dBoxClass: {
+      dVector3 lengths;
+      dGeomBoxGetLengths(geom, lengths);
+      shape.kind = sim::PlacedShape::Kind::kBox;
+      shape.half_extents = 0.5 * Eigen::Vector3d(lengths[0], lengths[1], lengths[2]);
+      break;
+    }
+    case dSphereClass:
+      shape.kind = sim::PlacedShape::Kind::kSphere;
+      shape.radius = dGeomSphereGetRadius(geom);
+      break;
+    case dCylinderClass: {
+      dReal radius = 0.0, length = 0.0;
+      dGeomCylinderGetParams(geom, &radius, &length);
+      shape.kind = sim::PlacedShape::Kind::kCylinder;
+      shape.radius = radius;
+      shape.half_length = 0.5 * length;
+      break;
+    }
+    default:
+      break;
+  }
+  return shape;
+}
+
 }  // namespace wtc::ode

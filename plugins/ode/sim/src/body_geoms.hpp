@@ -9,6 +9,7 @@
 
 #include <ode/ode.h>
 
+#include "sim/placed_shape.hpp"
 #include "wtc/vehicle/vehicle_description.hpp"
 
 namespace wtc::ode {
@@ -23,5 +24,9 @@ struct ConvexGeomData {
 /// Creates body's shape geoms in `space` on `b` (none for Kind::kNone and
 /// no compound) and returns the first, or null.
 dGeomID addBodyGeoms(const vehicle::Body& body, dSpaceID space, dBodyID b, std::deque<ConvexGeomData>& convex);
+
+/// A geom of a body as the engine-free contact rules see it: a box, sphere
+/// or cylinder (ODE's along its z) where it is now; kOther for a hull.
+sim::PlacedShape placedShape(dGeomID geom);
 
 }  // namespace wtc::ode

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <mutex>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "native_wheels.hpp"
 #include "sim/body_soil_shapes.hpp"
 #include "sim/engine_base.hpp"
+#include "sim/terrain_normal_cone.hpp"
 #include "src/conversions.hpp"
 #include "wtc/base/constants.hpp"
 #include "wtc/base/error.hpp"
@@ -436,13 +438,30 @@ class SimEngine final : public sim::EngineBase {
     std::array<dContact, kMaxContactsPerPair> contact{};
     int n = dCollide(a, b, kMaxContactsPerPair, &contact[0].geom, sizeof(dContact));
     n = e.plugin_->keepRigidContacts(a, b, &contact[0].geom, n, sizeof(dContact));  // a belly on soil: the soil's
+    const bool on_field = e.plugin_->terrainGeoms().isField(body_a != nullptr ? b : a);
     for (int k = 0; k < n; ++k) {
+      if (on_field && !e.onFieldSurface(contact[k].geom, body_a != nullptr ? a : b, body_a != nullptr)) continue;
       contact[k].surface.mode = dContactApprox1;
       contact[k].surface.mu = sim::kBodyGroundFriction;
       const dJointID joint = dJointCreateContact(e.world_, e.contacts_, &contact[k]);
       dJointAttach(joint, body_a, body_b);
       e.noteBodyContact(joint, body_a, body_b, contact[k].geom);
     }
+  }
+
+  // Gives a body's contact with a heightfield a normal the field's surface
+  // can push along (terrain_normal_cone.hpp), or false when there is none: a
+  // wall between two of its prisms is no part of the surface. ODE's normal
+  // points into the first geom of the pair.
+  bool onFieldSurface(dContactGeom& g, dGeomID body, bool body_first) {
+    const double sign = body_first ? 1.0 : -1.0;
+    const Eigen::Vector3d p_W = toEigen(g.pos), n_W = sign * toEigen(g.normal);
+    const std::optional<Eigen::Vector3d> surface = normal_cone_.normal(p_W, n_W, g.depth, placedShape(body));
+    if (!surface) return false;
+    if (*surface != n_W) {
+      for (int i = 0; i < 3; ++i) g.normal[i] = sign * (*surface)[i];
+    }
+    return true;
   }
 
   // Keeps this step's body contacts, and marks `joint` as a duplicate when
@@ -525,6 +544,7 @@ class SimEngine final : public sim::EngineBase {
   }
 
   const Terrain& terrain_;
+  sim::TerrainNormalCone normal_cone_{terrain_};  // the body contacts' normals against a heightfield's surface
   Stepper stepper_;
   std::vector<PieceId> near_pieces_;  // scratch
   dWorldID world_ = nullptr;

@@ -91,6 +91,9 @@ class TerrainGeoms {
   /// compact mesh's the piece nearest it (-1 if none within
   /// kMeshContactReachM).
   PieceId piece(dGeomID geom, const Eigen::Vector3d& point) const;
+  /// True for a compact heightfield's geom (ODE's dHeightfield, or the
+  /// field's surface as a mesh when it has holes).
+  bool isField(dGeomID geom) const;
 
  private:
   // Each adds the piece's geom and returns where to place it (world, m).
