@@ -67,6 +67,7 @@ set(long_runs "VehicleScenesTest.EveryShippedSceneRunsShortenedInEveryEngineWith
               "TowedSystemTest.LowestFrictionCaseFailsAndSaysSo"
               "LedgeClimbTest.ClimbsTwoHeightsInBothEnginesAndMeasuresEachStep"
               "LedgeClimbTest.EveryEngineClimbsEveryHeightFrom20To60Centimetres"
+              "LedgeClimbTest.EveryEngineClimbsTheLedgeSampledIntoACompactField"
               "VehicleScenesTest.ASkidSteerTurnsInPlaceAlikeAtEveryStepInEveryEngine"
               "RoverScenesTest.ClimbsALowStepInBothEnginesAndModes"
               "SoilTestBedTest.TheRearWheelsRunInTheFrontWheelsRutsAsTheModelPredicts"

@@ -144,16 +144,21 @@ bool surfaceLocalMinima(const Terrain& terrain, std::span<const Run> runs, const
     for (std::size_t k = first_point; k < scratch.points.size(); ++k) {
       SurfacePoint& a = scratch.points[k];
       const Cell self{a.row, a.col, a.triangle};
-      // Nearer, or as near (the same point) and first in id order (row,
-      // column, half); an exposed prism, queried as a prism, takes a point
-      // it shares.
+      // First in the one strict order the seam rule ranks by too: nearer,
+      // or as near and first in id order (row, column, half). An exposed
+      // prism, queried as a prism (GJK's roundoff), takes a point it shares
+      // to within `tie`. No tie between two triangles of the surface: with
+      // one, two minima a roundoff apart at one point could each be cut by
+      // something the other order put first, and a wheel on a grid point
+      // lost its contact (issue 53); in a strict order the first point is
+      // always a minimum and nothing comes before it.
       const auto beats = [&](const Cell& n) {
         const SurfaceSlot* s = tested(n);
         if (s == nullptr) return false;
         const double d = s->distance[n.t];
-        if (d < a.distance - tie) return true;
-        if (d > a.distance + tie) return false;
-        return s->exposed || std::tie(n.row, n.col, n.t) < std::tie(self.row, self.col, self.t);
+        if (s->exposed && std::abs(d - a.distance) <= tie) return true;
+        return d < a.distance ||
+               (d == a.distance && std::tie(n.row, n.col, n.t) < std::tie(self.row, self.col, self.t));
       };
       bool dominated = false;
       switch (static_cast<TriangleFeature>(a.feature)) {

@@ -13,8 +13,10 @@
 // (triangle_closest_point.hpp). Triangle T's closest point q is a local
 // minimum unless a triangle that also holds q (its neighbour across the edge
 // q lies on, or one of the six around the vertex q is) is nearer to O:
-// the distance on that triangle then falls away from q. Of triangles tied on
-// one q (the same edge point or vertex), the lowest id is kept.
+// the distance on that triangle then falls away from q. "Nearer" is one
+// strict order, (distance, id), the seam rule's too: of triangles holding
+// one q (the same edge point or vertex) at distances a roundoff apart, the
+// first in it is kept, and the first of all is always a contact.
 //
 // These local minima are exactly the per-prism contacts that the seam rule
 // keeps: a prism whose closest point is not one lies on a nearer prism and
@@ -43,8 +45,8 @@ namespace wtc::detail {
 
 /// The local minima within `reach` (m) of `centre` on the compact
 /// heightfields' surfaces, from Terrain::withinSurfaces's `runs` for the
-/// same centre and reach: appended to `touches` in id order; ties within
-/// `tie` (m) keep the lower id. The pieces of exposed cells whose boxes
+/// same centre and reach: appended to `touches` in id order; an exposed
+/// prism takes a point it shares to within `tie` (m). The pieces of exposed cells whose boxes
 /// come within the reach go to `prisms`, to be queried as prisms. False
 /// when the centre is inside or below a part's ground, or the runs span
 /// more than kMaxSurfaceWindowCells cells: the per-prism path answers then

@@ -378,12 +378,13 @@ double WheelContactFinder::realEdgeClearance(std::size_t b, double gap) {
 }
 
 bool WheelContactFinder::shadowNearer(const detail::SurfacePoint& s, const WheelContact& b) const {
-  // The seam rule's order, (distance, id); but two triangles' closed forms
-  // of one point (an edge's, a vertex's) differ by roundoff, and there, as
-  // the local minima were found, the lower id is first.
+  // The seam rule's order, (distance, id), strict, as the local minima were
+  // found (field_surface.hpp); but an exposed prism's contact (GJK's) keeps
+  // a point it shares with a shadow to within roundoff.
   const double tie = tolerance::kSeamGapRelative * radius_;
-  if (std::abs(s.distance - b.signed_distance) <= tie && (s.point - b.ground_point).norm() <= tie) {
-    return onSurface(b.piece) && s.id < b.piece;  // an exposed prism's point is its own
+  if (!onSurface(b.piece) && std::abs(s.distance - b.signed_distance) <= tie &&
+      (s.point - b.ground_point).norm() <= tie) {
+    return false;
   }
   return s.distance < b.signed_distance || (s.distance == b.signed_distance && s.id < b.piece);
 }

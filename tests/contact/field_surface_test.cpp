@@ -9,8 +9,8 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <span>
 #include <random>
+#include <span>
 #include <vector>
 
 #include "wtc/contact/wheel_contact.hpp"
@@ -20,9 +20,9 @@
 namespace wtc {
 namespace {
 
-constexpr double kSpacing = 0.01;            // m
+constexpr double kSpacing = 0.01;              // m
 constexpr double kKerbX = 1.6, kKerbM = 0.05;  // a 5 cm kerb from x = 1.6 m on
-constexpr double kCrackX = 0.9;              // a 2 cm crack across the middle third
+constexpr double kCrackX = 0.9;                // a 2 cm crack across the middle third
 
 double relief(double x, double y) {
   return 0.03 * std::sin(2.1 * x) * std::sin(3.3 * y) + 0.004 * std::sin(90.0 * x) * std::sin(81.0 * y) +
@@ -37,7 +37,8 @@ Heightfield fineField() {
   f.base_depth = 0.3;
   f.heights.resize(static_cast<std::size_t>(f.rows) * f.cols);
   for (int r = 0; r < f.rows; ++r)
-    for (int c = 0; c < f.cols; ++c) f.heights[static_cast<std::size_t>(r) * f.cols + c] = relief(c * kSpacing, -0.4 + r * kSpacing);
+    for (int c = 0; c < f.cols; ++c)
+      f.heights[static_cast<std::size_t>(r) * f.cols + c] = relief(c * kSpacing, -0.4 + r * kSpacing);
   f.cell_holes.assign(static_cast<std::size_t>(f.rows - 1) * (f.cols - 1), 0);
   for (int r = 27; r < 53; ++r)
     for (int c = 90; c < 92; ++c) f.cell_holes[static_cast<std::size_t>(r) * (f.cols - 1) + c] = 1;
@@ -119,7 +120,8 @@ TEST(FieldSurfaceTest, MeetsAFineFieldAtThePrismsContactsWithinAMillimetre) {
       const auto all = pieces.find(terrain, wheel, pose, every_piece);
       const std::vector<WheelContact> touching(all.begin(), all.end());
       bool explained = false;
-      for (const WheelContact& c : expected) explained = explained || onARoundedSeam(terrain, touching, c.piece, c.ground_point);
+      for (const WheelContact& c : expected)
+        explained = explained || onARoundedSeam(terrain, touching, c.piece, c.ground_point);
       EXPECT_TRUE(explained) << "x " << x << ": the shares differ by " << difference << " m of deflection";
       ++rounded;
     }
@@ -130,6 +132,46 @@ TEST(FieldSurfaceTest, MeetsAFineFieldAtThePrismsContactsWithinAMillimetre) {
   EXPECT_GT(two_faces, 20);            // the kerb's edge and the crack's lips kept their own
   EXPECT_GT(on_surface, 0.8 * steps);  // answered as a surface most of the way
   EXPECT_LT(worst_load, 1e-3) << rounded << " steps' prisms rounded a seam";  // a millimetre at worst
+}
+
+// A wheel over a grid point of a flat field, its centre up to a micrometre
+// off it: the closed forms of the six triangles there give points within
+// the seam rule's gap of each other, their distances 1e-13 m apart. With a
+// tie in the order (within the gap, the lower id first) two minima a
+// roundoff apart could each be cut by one the other order put first: the
+// wheel had no contact at all (the robot's first steps on a sampled ledge,
+// and a loaded front wheel on its top, issue 53). One contact now, the
+// prisms' deflection, at every offset and load.
+TEST(FieldSurfaceTest, AWheelOverAGridPointKeepsItsContact) {
+  Heightfield f;
+  f.cols = 201, f.rows = 201;  // 4 m x 4 m of 2 cm cells, its grid points at -2 + 0.02 k
+  f.spacing_x = f.spacing_y = 0.02;
+  f.origin = {-2.0, -2.0, 0.0};
+  f.base_depth = 0.5;
+  f.heights.assign(static_cast<std::size_t>(f.rows) * f.cols, 0.0);
+  TerrainBuilder builder;
+  const MaterialId material = builder.addMaterial({});
+  addCompactHeightfield(builder, std::move(f), material);
+  const Terrain terrain = std::move(builder).build();
+  const WheelGeometry wheel{.free_radius = 0.19, .tread_width = 0.12};
+  ContactOptions per_prism;
+  per_prism.field_surface = false;
+  WheelContactFinder surface, prisms;
+  for (const double depth : {1e-5, 3.7e-3}) {
+    for (const double dx : {0.0, 1e-9, -1e-9, 2e-8, -2e-8, 1e-7, -1e-7, 2.6e-7, -2.6e-7, 1e-6, -1e-6}) {
+      for (const double dy : {0.0, 2e-8, -2e-8, 4.2e-8, -4.2e-8}) {
+        const WheelPose pose{.center = {-1.5 + dx, -2.0 + 114 * 0.02 + dy, 0.19 - depth}, .axle = {0.0, 1.0, 0.0}};
+        const auto a = prisms.find(terrain, wheel, pose, per_prism);
+        ASSERT_EQ(a.size(), 1u);
+        const WheelContact expected = a[0];
+        const auto b = surface.find(terrain, wheel, pose);
+        ASSERT_EQ(b.size(), 1u) << "depth " << depth << ", dx " << dx << ", dy " << dy;
+        EXPECT_NEAR(b[0].deflection, expected.deflection, 1e-12);
+        EXPECT_LT((b[0].ground_point - expected.ground_point).norm(), 1e-6);  // one point, to the gap
+        EXPECT_EQ(b[0].load_share, 1.0);
+      }
+    }
+  }
 }
 
 // A centre inside the ground (a wheel pushed through it) is the per-prism

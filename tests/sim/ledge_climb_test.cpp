@@ -87,6 +87,37 @@ TEST(LedgeClimbTest, EveryEngineClimbsEveryHeightFrom20To60Centimetres) {
   }
 }
 
+// The 0.60 m ledge sampled into compact heightfields of 5, 2 and 1 cm
+// (issue 53, item 3): every engine climbs it, its bodies meeting the
+// engine's own heightfield shape. ODE's jammed at every spacing: its
+// dHeightfield gave the rear carrier's box, across the field's top edge,
+// the steep face's normal (sim::TerrainNormalCone holds it to the surface);
+// and WTC's wheels lost their contact over grid points (the seam rule's
+// order, FieldSurfaceTest.AWheelOverAGridPointKeepsItsContact).
+TEST(LedgeClimbTest, EveryEngineClimbsTheLedgeSampledIntoACompactField) {
+  for (const std::string& engine : everyEngineName(Variants::kLeftOut)) {
+    for (const char* cell : {"0.05", "0.02", "0.01"}) {
+      const sim::Scene s = sim::loadScene(
+          kRoot / "scenes" / "robot_ledge.yaml",
+          std::vector<sim::Override>{
+              {"engine", engine},
+              {"ledge_height", "0.6"},
+              {"duration", "18"},
+              {"terrain.pieces.0", std::string("{type: ledge, material: asphalt_concrete, height: 0.60, "
+                                               "approach_length: 4.0, top_length: 4.0, width: 4.0, thickness: 0.5, "
+                                               "heightfield_spacing: ") +
+                                       cell + ", storage: compact}"}});
+      const auto e = sim::makeEngine(s.engine, *s.terrain, s.vehicle, s.placement);
+      const sim::RunSummary r = sim::runScene(s, *e);
+      const std::string label = engine + ", " + cell + " m cells";
+      EXPECT_TRUE(r.success) << label;
+      EXPECT_EQ(r.fields.at("climbed"), 1.0) << label;
+      EXPECT_GT(r.fields.at("lowest_wheel_height_m"), 0.6) << label;
+      EXPECT_LT(r.fields.at("max_tilt_deg"), 30.0) << label;
+    }
+  }
+}
+
 // A step taller than the front section reaches (0.80 m): the controller
 // stops and says so; the robot stays upright with its wheels on the ground.
 TEST(LedgeClimbTest, AStepOutOfReachFailsCleanly) {

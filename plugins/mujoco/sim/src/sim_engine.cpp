@@ -8,6 +8,7 @@
 #include <tuple>
 #include <vector>
 
+#include "field_contacts.hpp"
 #include "mjcf_model.hpp"
 #include "mujoco_constants.hpp"
 #include "mujoco_wheels.hpp"
@@ -46,6 +47,7 @@ class SimEngine final : public sim::EngineBase {
       wheel_bodies.push_back(built_.body[body]);
       treads.push_back(built_.wheel_geom[body]);
     }
+    field_contacts_ = std::make_unique<FieldContacts>(m_, terrain, treads);  // the wheels' geoms are not held
     if (settings.native_wheels) {
       wheels_ = std::make_unique<NativeWheels>(*this, *plugin_, std::move(treads), *settings.native_wheels);
     } else {
@@ -137,6 +139,7 @@ class SimEngine final : public sim::EngineBase {
     StageHooks hooks;
     hooks.after_collision = [&] {
       plugin_->dropRigidSoilContacts(m_, d);  // the soil carries the bodies on it
+      field_contacts_->hold(m_, d);
       if (solved) plugin_->addContacts(m_, d);
     };
     hooks.after_velocity = [&] {
@@ -273,6 +276,7 @@ class SimEngine final : public sim::EngineBase {
   std::vector<Drive> drives_;  // per vehicle body
   std::unique_ptr<Plugin> plugin_;
   std::unique_ptr<MujocoWheels> wheels_;
+  std::unique_ptr<FieldContacts> field_contacts_;
   std::vector<mjtNum> external_;  // addForce's wrenches for the next step, per MuJoCo body (xfrc_applied's layout)
 };
 
