@@ -84,7 +84,7 @@ std::optional<Eigen::Vector3d> TerrainNormalCone::normal(const Eigen::Vector3d& 
     if (best) return best;
   }
   const Eigen::Vector3d q = projectOntoCone(n_W, generators_);
-  if ((n_W - q).norm() <= kTerrainNormalToleranceRad) return n_W;  // in the cone: as ODE gave it
+  if ((n_W - q).norm() <= kTerrainNormalToleranceRad) return n_W;  // in the cone: as the engine gave it
   const double length = q.norm();
   if (length <= kTerrainNormalSlack) return std::nullopt;
   return q / length;

@@ -5,7 +5,7 @@
 // A heightfield is two triangular prisms a cell; an engine's heightfield
 // shape meets a body with each triangle, or its plane, alone (ODE's
 // dHeightfield, MuJoCo's height field: one prism a triangle). Two faults
-// follow (docs/accuracy-study.md, "ODE's climb on a sampled ledge"):
+// follow (docs/terrain.md, "The bodies on a field"):
 // - where a grid line runs along a box's side face, a wall between two
 //   prisms (inside the ground) gives a contact pushing sideways, answered by
 //   the opposite push from the wall's other side; their friction holds the
@@ -21,13 +21,13 @@
 // normal, on an edge the normals between the two faces'. The contact's
 // normal is chosen by the features that touch:
 // - on an edge or a corner of the field (N more than one normal), where p
-//   lies on the body's surface, a normal both surfaces can give: ODE's n when
+//   lies on the body's surface, a normal both surfaces can give: the engine's n when
 //   it is in N and in the body's cone B (the inward normals of the body's
 //   faces through p), else the generator of one cone that lies in the other
 //   nearest n. A box's face across the field's edge gets the face's normal,
 //   the one along which neither can enter the other, whatever the body's
 //   motion;
-// - otherwise ODE's normal n when it is in N (to within a milliradian:
+// - otherwise the engine's normal n when it is in N (to within a milliradian:
 //   roundoff), or its projection onto N, the nearest normal the surface can
 //   give (Moreau: q = argmin |n - q| over N); one whose projection vanishes
 //   (n orthogonal to N, or pointing into the ground) is no contact the

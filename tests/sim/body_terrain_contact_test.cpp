@@ -4,9 +4,10 @@
 // across the field's top edge got the steep face's normal, a wall on the
 // edge, and a body whose sides lie on grid lines got sideways pushes from
 // the walls between cells; their friction held the robot's rear carrier on
-// the ledge's edge (docs/accuracy-study.md, "ODE's climb on a sampled
-// ledge"). A body must feel only the field's surface
-// (plugins/ode/sim/src/terrain_normal_cone.hpp).
+// the ledge's edge (docs/terrain.md, "The bodies on a field"). A body must
+// feel only the field's surface (src/sim/terrain_normal_cone.hpp): ODE and
+// MuJoCo hold their contacts to it; Bullet's GJK on its heightfield's
+// triangles gives no walls.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -35,9 +35,9 @@ inline constexpr double kDuplicateContactM = 1e-9;
 inline constexpr double kDuplicateContactCos = 1e-12;
 
 /// How far beyond its depth a body's contact point may lie from a terrain
-/// face, or from a face of the body, and still be on it, when ODE's sim
-/// engine finds the normals a heightfield's surface can give there
-/// (TerrainNormalCone): 0.1 mm (m), plus 1e-6 of the point's largest
+/// face, or from a face of the body, and still be on it, when a sim engine
+/// finds the normals a heightfield's surface can give there
+/// (sim::TerrainNormalCone): 0.1 mm (m), plus 1e-6 of the point's largest
 /// coordinate (dimensionless). ODE's colliders put a contact a few float
 /// ulps off the surface (docs/ode-plugin.md, "Terrain shapes": 2e-6 m at
 /// 10 m); the reach is far above that and far below any terrain feature (a
