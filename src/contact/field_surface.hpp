@@ -46,8 +46,9 @@ namespace wtc::detail {
 /// The local minima within `reach` (m) of `centre` on the compact
 /// heightfields' surfaces, from Terrain::withinSurfaces's `runs` for the
 /// same centre and reach: appended to `touches` in id order; an exposed
-/// prism takes a point it shares to within `tie` (m). The pieces of exposed cells whose boxes
-/// come within the reach go to `prisms`, to be queried as prisms. False
+/// prism takes a point it shares to within `tie` (m). The pieces of exposed
+/// cells whose boxes come within the reach go to `prisms`, to be queried as
+/// prisms. False
 /// when the centre is inside or below a part's ground, or the runs span
 /// more than kMaxSurfaceWindowCells cells: the per-prism path answers then
 /// (what was appended is to be dropped).

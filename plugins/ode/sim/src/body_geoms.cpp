@@ -150,10 +150,8 @@ dGeomID addBodyGeoms(const vehicle::Body& body, dSpaceID space, dBodyID b, std::
 
 sim::PlacedShape placedShape(dGeomID geom) {
   sim::PlacedShape shape;
-  const dReal* r = dGeomGetRotation(geom);  // 3 x 4, rows
-  const dReal* c = dGeomGetPosition(geom);
-  shape.pose.linear() << r[0], r[1], r[2], r[4], r[5], r[6], r[8], r[9], r[10];
-  shape.pose.translation() << c[0], c[1], c[2];
+  shape.pose.linear() = rotationFromOde(dGeomGetRotation(geom));
+  shape.pose.translation() = toEigen(dGeomGetPosition(geom));
   switch (dGeomGetClass(geom)) {
     case dBoxClass: {
       dVector3 lengths;
