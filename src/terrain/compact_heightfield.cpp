@@ -164,14 +164,24 @@ void CompactHeightfield::overlapping(const Aabb& box, PieceId first, std::vector
   const double lowest = box.min.z();
   for (int r = r0; r <= r1; ++r) {
     const std::size_t row = static_cast<std::size_t>(r) * cells_per_row;
-    std::size_t k = piecesBefore(row + c0);  // the next ground cell's first piece
-    for (int c = c0; c <= c1; ++c) {
-      if (f.isHole(r, c)) continue;
-      const auto id = first + static_cast<PieceId>(k);
-      const std::array<double, 2> top = pieceTops(r, c);
-      if (lowest <= top[0]) out.push_back(id);
-      if (lowest <= top[1]) out.push_back(id + 1);
-      k += 2;
+    for (int c = c0; c <= c1;) {
+      // A tile whose highest sample lies below the box has no piece in it
+      // (tileTop rounds up): a body above a fine field is passed by its
+      // tiles, not its cells.
+      const int tile_end = std::min(c1, (c / kTileCells + 1) * kTileCells - 1);
+      if (lowest > tileTop(r / kTileCells, c / kTileCells)) {
+        c = tile_end + 1;
+        continue;
+      }
+      std::size_t k = piecesBefore(row + c);  // the next ground cell's first piece
+      for (; c <= tile_end; ++c) {
+        if (f.isHole(r, c)) continue;
+        const auto id = first + static_cast<PieceId>(k);
+        const std::array<double, 2> top = pieceTops(r, c);
+        if (lowest <= top[0]) out.push_back(id);
+        if (lowest <= top[1]) out.push_back(id + 1);
+        k += 2;
+      }
     }
   }
 }

@@ -4,6 +4,7 @@
 // the prism it met, and WTC's wheels run exactly as on the stored prisms.
 // Each case runs on the scene's field and on the same surface as a mesh
 // (surfaceMesh). docs/terrain.md.
+#include <BulletCollision/CollisionDispatch/btConvexConcaveCollisionAlgorithm.h>
 #include <btBulletDynamicsCommon.h>
 
 #include <algorithm>
@@ -250,8 +251,8 @@ TEST(BulletCompactMeshTest, AMeshOfMoreTrianglesThanOneBulletPartCollidesAndName
 // tile's first row and column added to Bullet's numbers.
 TEST(BulletCompactFieldTest, AContactOnAnyTileNamesItsPrism) {
   testing::RandomGrid grid{.spacing_x = 0.05, .spacing_y = 0.04, .origin = {1.0, -2.0, 0.3}, .base_depth = 0.2};
-  const Heightfield field = testing::randomHeightfield(2 * bullet::kFieldTileCells + 20,
-                                                       3 * bullet::kFieldTileCells + 7, 0.02, 17, grid);
+  const Heightfield field =
+      testing::randomHeightfield(2 * bullet::kFieldTileCells + 20, 3 * bullet::kFieldTileCells + 7, 0.02, 17, grid);
   TerrainBuilder builder;
   const PieceRange range = addCompactHeightfield(builder, field, builder.addMaterial({}));
   const Terrain terrain = std::move(builder).build();
@@ -268,6 +269,110 @@ TEST(BulletCompactFieldTest, AContactOnAnyTileNamesItsPrism) {
   }
   EXPECT_GE(check.contacts, 200);
   EXPECT_GT(check.far, check.contacts / 2);  // most on tiles past the first
+}
+
+// Every contact of every manifold in `w`, in Bullet's order.
+std::vector<btManifoldPoint> manifoldPoints(BulletWorld& w) {
+  std::vector<btManifoldPoint> points;
+  for (int m = 0; m < w.dispatcher.getNumManifolds(); ++m) {
+    const btPersistentManifold* manifold = w.dispatcher.getManifoldByIndexInternal(m);
+    for (int k = 0; k < manifold->getNumContacts(); ++k) points.push_back(manifold->getContactPoint(k));
+  }
+  return points;
+}
+
+// Case: a body meets a compact field's tiles through the plugin's own
+// algorithm (field_body_algorithm.hpp: the body's box tested before
+// Bullet's GJK on each triangle), and gets exactly the contacts Bullet's own
+// convex-concave algorithm gives: the same points, normals, depths and
+// triangles, bit for bit. Bodies of every convex kind the vehicles use,
+// among them the robot's arm and a crossbar thinner than Bullet's 4 cm box
+// margin, at random poses across a 1 cm field with a 0.3 m step.
+TEST(BulletCompactFieldTest, ABodyMeetsTheFieldAsBulletsOwnAlgorithmWould) {
+  testing::RandomGrid grid{.spacing_x = 0.01, .spacing_y = 0.01, .origin = {0.0, 0.0, 0.0}, .base_depth = 0.2};
+  Heightfield field = testing::randomHeightfield(90, 2 * bullet::kFieldTileCells + 10, 0.005, 23, grid);
+  for (int r = 0; r < field.rows; ++r) {
+    for (int c = bullet::kFieldTileCells + 3; c < field.cols; ++c) field.heights[r * field.cols + c] += 0.3;
+  }
+  TerrainBuilder builder;
+  addCompactHeightfield(builder, field, builder.addMaterial({}));
+  const Terrain terrain = std::move(builder).build();
+  BulletWorld plugin_world(terrain, ContactMode::kForce), bullet_world(terrain, ContactMode::kForce);
+  // Bullet's own algorithm back in the second world, for every convex kind.
+  for (int type = 0; type < CONCAVE_SHAPES_START_HERE; ++type) {
+    if (type == CUSTOM_CONVEX_SHAPE_TYPE || !btBroadphaseProxy::isConvex(type)) continue;
+    bullet_world.dispatcher.registerCollisionCreateFunc(
+        type, TERRAIN_SHAPE_PROXYTYPE,
+        bullet_world.config.getCollisionAlgorithmCreateFunc(type, TERRAIN_SHAPE_PROXYTYPE));
+    bullet_world.dispatcher.registerCollisionCreateFunc(
+        TERRAIN_SHAPE_PROXYTYPE, type,
+        bullet_world.config.getCollisionAlgorithmCreateFunc(TERRAIN_SHAPE_PROXYTYPE, type));
+  }
+  btBoxShape arm(btVector3(0.215, 0.04, 0.04)), crossbar(btVector3(0.06, 0.22, 0.03)),
+      chassis(btVector3(0.14, 0.2, 0.11));
+  btCylinderShapeX cylinder(btVector3(0.05, 0.1, 0.1));
+  btSphereShape ball(0.07);
+  btConvexHullShape hull;
+  for (const btVector3& p : {btVector3(-0.1, -0.05, -0.03), btVector3(0.12, -0.04, -0.03), btVector3(0.0, 0.08, -0.02),
+                             btVector3(0.02, 0.0, 0.06), btVector3(-0.05, 0.03, 0.05)}) {
+    hull.addPoint(p);
+  }
+  // The plugin's world creates its own algorithm for a body against a tile,
+  // the other Bullet's.
+  std::vector<const btCollisionShape*> shapes;
+  leaves(*plugin_world.plugin->terrainObject().getCollisionShape(), shapes);
+  const btCollisionShape* tile = shapes.front();
+  ASSERT_EQ(tile->getShapeType(), TERRAIN_SHAPE_PROXYTYPE);
+  btCollisionObject probe;
+  probe.setCollisionShape(&arm);
+  const btCollisionObjectWrapper probe_wrap(nullptr, &arm, &probe, btTransform::getIdentity(), -1, -1);
+  const btCollisionObjectWrapper tile_wrap(nullptr, tile, &plugin_world.plugin->terrainObject(),
+                                           btTransform::getIdentity(), -1, -1);
+  for (BulletWorld* w : {&plugin_world, &bullet_world}) {
+    btCollisionAlgorithm* algorithm =
+        w->dispatcher.findAlgorithm(&probe_wrap, &tile_wrap, nullptr, BT_CONTACT_POINT_ALGORITHMS);
+    EXPECT_EQ(dynamic_cast<btConvexConcaveCollisionAlgorithm*>(algorithm) == nullptr, w == &plugin_world);
+    algorithm->~btCollisionAlgorithm();
+    w->dispatcher.freeCollisionAlgorithm(algorithm);
+  }
+
+  std::mt19937 gen(29);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int contacts = 0;
+  for (btConvexShape* shape :
+       std::initializer_list<btConvexShape*>{&arm, &crossbar, &chassis, &cylinder, &ball, &hull}) {
+    btCollisionObject body[2];
+    BulletWorld* worlds[2] = {&plugin_world, &bullet_world};
+    for (int k = 0; k < 2; ++k) {
+      body[k].setCollisionShape(shape);
+      worlds[k]->world.addCollisionObject(&body[k], btBroadphaseProxy::DefaultFilter, btBroadphaseProxy::AllFilter);
+    }
+    for (int pose = 0; pose < 60; ++pose) {
+      // Anywhere over the field, across the step too, from 5 cm above the
+      // ground to 5 cm into it, turned at random.
+      const double x = 0.15 + unit(gen) * (field.cols - 31) * grid.spacing_x;
+      const double y = 0.15 + unit(gen) * (field.rows - 31) * grid.spacing_y;
+      const double z = *surfaceHeight(field, x, y) + 0.1 * (unit(gen) - 0.5);
+      const btQuaternion turn(btVector3(unit(gen) - 0.5, unit(gen) - 0.5, unit(gen) - 0.5), 2.0 * M_PI * unit(gen));
+      for (int k = 0; k < 2; ++k) {
+        body[k].setWorldTransform(btTransform(turn, btVector3(x, y, z)));
+        worlds[k]->world.performDiscreteCollisionDetection();
+      }
+      const std::vector<btManifoldPoint> ours = manifoldPoints(plugin_world), bullets = manifoldPoints(bullet_world);
+      ASSERT_EQ(ours.size(), bullets.size()) << "shape " << shape->getName() << ", pose " << pose;
+      for (std::size_t p = 0; p < ours.size(); ++p) {
+        EXPECT_EQ(ours[p].getPositionWorldOnA(), bullets[p].getPositionWorldOnA());
+        EXPECT_EQ(ours[p].getPositionWorldOnB(), bullets[p].getPositionWorldOnB());
+        EXPECT_EQ(ours[p].m_normalWorldOnB, bullets[p].m_normalWorldOnB);
+        EXPECT_EQ(ours[p].getDistance(), bullets[p].getDistance());
+        EXPECT_EQ(ours[p].m_partId1, bullets[p].m_partId1);
+        EXPECT_EQ(ours[p].m_index1, bullets[p].m_index1);
+      }
+      contacts += static_cast<int>(ours.size());
+    }
+    for (int k = 0; k < 2; ++k) worlds[k]->world.removeCollisionObject(&body[k]);
+  }
+  EXPECT_GT(contacts, 500);  // the bodies did meet the field
 }
 
 INSTANTIATE_TEST_SUITE_P(Parts, BulletCompactTerrainTest,

@@ -102,7 +102,11 @@ void applyWrench(Wheel& w, const Kinematics& k, const btVector3& force, const bt
 }  // namespace
 
 detail::PluginState::PluginState(btDiscreteDynamicsWorld& w, const Terrain& t, ContactMode m)
-    : world(w), dispatcher(dynamic_cast<btCollisionDispatcher*>(w.getDispatcher())), terrain(t), ground_memory(t), mode(m) {
+    : world(w),
+      dispatcher(dynamic_cast<btCollisionDispatcher*>(w.getDispatcher())),
+      terrain(t),
+      ground_memory(t),
+      mode(m) {
   if (dispatcher == nullptr) fail("wtc::bullet::Plugin", "the world's dispatcher is not a btCollisionDispatcher");
   world.addCollisionObject(&terrain.object(), btBroadphaseProxy::StaticFilter,
                            btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
@@ -110,6 +114,19 @@ detail::PluginState::PluginState(btDiscreteDynamicsWorld& w, const Terrain& t, C
   for (int type = 0; type < MAX_BROADPHASE_COLLISION_TYPES; ++type) {
     dispatcher->registerCollisionCreateFunc(CUSTOM_CONVEX_SHAPE_TYPE, type, create.get());
     dispatcher->registerCollisionCreateFunc(type, CUSTOM_CONVEX_SHAPE_TYPE, create.get());
+  }
+  // A body against a compact field: Bullet's own algorithm with the body's
+  // box tested first (field_body_algorithm.hpp); Bullet's for any other
+  // heightfield in the world.
+  btCollisionConfiguration* config = dispatcher->getCollisionConfiguration();
+  for (int type = 0; type < CONCAVE_SHAPES_START_HERE; ++type) {
+    if (type == CUSTOM_CONVEX_SHAPE_TYPE || !btBroadphaseProxy::isConvex(type)) continue;
+    field_body_creates.push_back(std::make_unique<detail::FieldBodyAlgorithm::CreateFunc>(
+        config->getCollisionAlgorithmCreateFunc(type, TERRAIN_SHAPE_PROXYTYPE), false));
+    dispatcher->registerCollisionCreateFunc(type, TERRAIN_SHAPE_PROXYTYPE, field_body_creates.back().get());
+    field_body_creates.push_back(std::make_unique<detail::FieldBodyAlgorithm::CreateFunc>(
+        config->getCollisionAlgorithmCreateFunc(TERRAIN_SHAPE_PROXYTYPE, type), true));
+    dispatcher->registerCollisionCreateFunc(TERRAIN_SHAPE_PROXYTYPE, type, field_body_creates.back().get());
   }
   // Constraint mode gives each WTC contact one friction direction, along
   // the traction, capped at mu R_z: a Coulomb cone along the slip law's
@@ -160,6 +177,13 @@ detail::PluginState::~PluginState() {
                                             config->getCollisionAlgorithmCreateFunc(CUSTOM_CONVEX_SHAPE_TYPE, type));
     dispatcher->registerCollisionCreateFunc(type, CUSTOM_CONVEX_SHAPE_TYPE,
                                             config->getCollisionAlgorithmCreateFunc(type, CUSTOM_CONVEX_SHAPE_TYPE));
+  }
+  for (int type = 0; type < CONCAVE_SHAPES_START_HERE; ++type) {
+    if (type == CUSTOM_CONVEX_SHAPE_TYPE || !btBroadphaseProxy::isConvex(type)) continue;
+    dispatcher->registerCollisionCreateFunc(type, TERRAIN_SHAPE_PROXYTYPE,
+                                            config->getCollisionAlgorithmCreateFunc(type, TERRAIN_SHAPE_PROXYTYPE));
+    dispatcher->registerCollisionCreateFunc(TERRAIN_SHAPE_PROXYTYPE, type,
+                                            config->getCollisionAlgorithmCreateFunc(TERRAIN_SHAPE_PROXYTYPE, type));
   }
   for (const auto& w : wheels) {
     w->collider->setCollisionShape(w->shape->original());

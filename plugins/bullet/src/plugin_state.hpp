@@ -10,6 +10,7 @@
 #include "adapter/mounted_wheel.hpp"
 #include "adapter/step_clock.hpp"
 #include "conversions.hpp"
+#include "field_body_algorithm.hpp"
 #include "rigid_tread_rows.hpp"
 #include "soil_bodies.hpp"
 #include "wheel_friction_constraint.hpp"
@@ -91,6 +92,9 @@ struct PluginState {
   std::vector<std::unique_ptr<Wheel>> wheels;
   std::unordered_map<const btCollisionObject*, int> wheel_of;
   std::unique_ptr<btCollisionAlgorithmCreateFunc> create;
+  // A convex body against a compact field's tile, each convex type both
+  // ways (field_body_algorithm.hpp).
+  std::vector<std::unique_ptr<btCollisionAlgorithmCreateFunc>> field_body_creates;
   WheelListener* listener = nullptr;
   std::function<void(double)> pre_tick;
   std::function<void(double)> post_wheels;

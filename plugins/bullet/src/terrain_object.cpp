@@ -5,6 +5,7 @@
 #include <numeric>
 #include <span>
 
+#include "field_tile.hpp"
 #include "wtc/terrain/heightfield.hpp"
 #include "wtc/terrain/triangle_mesh.hpp"
 
@@ -47,39 +48,14 @@ std::vector<std::size_t> spatialOrder(std::span<const ConvexPolyhedron> pieces) 
   return order;
 }
 
-// A tile of a compact field (kFieldTileCells cells a side, fewer at the far
-// edges) as Bullet's heightfield shape over the field's own samples:
-// Bullet asks for sample (x, y) of the tile, this reads sample (row0 + y,
-// col0 + x) of the field. Columns along x (Bullet's width), rows along y, z
-// up; flipQuadEdges splits each cell along p00-p11, the prisms' diagonal
-// (wtc/terrain/heightfield.hpp). Its box reaches only its own samples'
-// heights.
-class FieldTile final : public btHeightfieldTerrainShape {
- public:
-  FieldTile(const Heightfield& f, int row0, int col0, int rows, int cols, double lo, double hi)
-      : btHeightfieldTerrainShape(cols, rows, f.heights.data(), lo, hi, /*upAxis=*/2, /*flipQuadEdges=*/true),
-        field_(f),
-        row0_(row0),
-        col0_(col0) {}
-  btScalar getRawHeightFieldValue(int x, int y) const override {
-    return field_.heights[static_cast<std::size_t>(row0_ + y) * field_.cols + (col0_ + x)];
-  }
-  int row0() const { return row0_; }
-  int col0() const { return col0_; }
-
- private:
-  const Heightfield& field_;
-  int row0_, col0_;
-};
-
 // The tile of `f` whose first sample is (row0, col0), and where it goes.
-std::unique_ptr<FieldTile> makeFieldTile(const Heightfield& f, int row0, int col0, btTransform& placement) {
+std::unique_ptr<detail::FieldTile> makeFieldTile(const Heightfield& f, int row0, int col0, btTransform& placement) {
   const int rows = std::min(kFieldTileCells + 1, f.rows - row0), cols = std::min(kFieldTileCells + 1, f.cols - col0);
   double lo = f.height(row0, col0), hi = lo;
   for (int r = row0; r < row0 + rows; ++r) {
     for (int c = col0; c < col0 + cols; ++c) lo = std::min(lo, f.height(r, c)), hi = std::max(hi, f.height(r, c));
   }
-  auto tile = std::make_unique<FieldTile>(f, row0, col0, rows, cols, lo, hi);
+  auto tile = std::make_unique<detail::FieldTile>(f, row0, col0, rows, cols, lo, hi);
   tile->setLocalScaling(btVector3(f.spacing_x, f.spacing_y, 1.0));
   tile->setMargin(kTerrainMarginM);
   // Bullet centres the grid on its local origin, and the heights on the
@@ -212,7 +188,7 @@ PieceId TerrainObject::pieceOf(const btCollisionObjectWrapper& ground) const {
   // p11), WTC's triangle 1, and part 2c + 1 is (p00, p11, p01), WTC's
   // triangle 0.
   const Terrain::CompactField field = terrain_.compactField(k);
-  const auto* tile = dynamic_cast<const FieldTile*>(parent->getCollisionShape());
+  const auto* tile = dynamic_cast<const detail::FieldTile*>(parent->getCollisionShape());
   if (tile == nullptr) return -1;
   const int column = tile->col0() + ground.m_partId / 2, row = tile->row0() + ground.m_index;
   return field.first + 2 * (row * (field.field->cols - 1) + column) + (ground.m_partId % 2 == 0 ? 1 : 0);

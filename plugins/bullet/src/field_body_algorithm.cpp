@@ -1,0 +1,155 @@
+#include "field_body_algorithm.hpp"
+
+#include <new>
+
+#include <BulletCollision/CollisionShapes/btTriangleShape.h>
+
+#include "field_tile.hpp"
+
+namespace wtc::bullet::detail {
+namespace {
+
+// Margin of the body's box test (m): far above the rounding of the
+// transforms and of GJK's answer near the threshold, far below a cell.
+constexpr btScalar kBoxTestSlackM = 1e-6;
+
+// Each triangle of a tile that Bullet's box test lets by: the body's own box,
+// then Bullet's convex-triangle collision as btConvexTriangleCallback runs it
+// (its plane test, then the dispatcher's algorithm for the pair).
+class TriangleCallback final : public btTriangleCallback {
+ public:
+  TriangleCallback(const btCollisionObjectWrapper* convex, const btCollisionObjectWrapper* tile,
+                   btDispatcher* dispatcher, btPersistentManifold* manifold, const btDispatcherInfo& dispatch_info,
+                   btManifoldResult* result)
+      : convex_(convex),
+        tile_(tile),
+        dispatcher_(dispatcher),
+        manifold_(manifold),
+        dispatch_info_(dispatch_info),
+        result_(result),
+        threshold_(manifold->getContactBreakingThreshold() + result->m_closestPointDistanceThreshold),
+        margin_(tile->getCollisionShape()->getMargin()) {
+    const auto* shape = static_cast<const btConvexShape*>(convex->getCollisionShape());
+    // The body's box in the tile's frame, grown by the triangles' margin and
+    // the closest-point distance (btConvexTriangleCallback::setTimeStepAndCounters).
+    const btTransform body_in_tile = tile->getWorldTransform().inverse() * convex->getWorldTransform();
+    shape->getAabb(body_in_tile, aabb_min_, aabb_max_);
+    const btScalar extra = margin_ + result->m_closestPointDistanceThreshold;
+    aabb_min_ -= btVector3(extra, extra, extra);
+    aabb_max_ += btVector3(extra, extra, extra);
+    // The body's own box in its frame, grown by the farthest a contact may
+    // lie off it.
+    shape->getAabb(btTransform::getIdentity(), box_min_, box_max_);
+    const btScalar reach = threshold_ + margin_ + kBoxTestSlackM;
+    box_min_ -= btVector3(reach, reach, reach);
+    box_max_ += btVector3(reach, reach, reach);
+    tile_in_body_ = body_in_tile.inverse();
+  }
+
+  const btVector3& aabbMin() const { return aabb_min_; }
+  const btVector3& aabbMax() const { return aabb_max_; }
+
+  void processTriangle(btVector3* triangle, int part, int index) override {
+    if (!TestTriangleAgainstAabb2(triangle, aabb_min_, aabb_max_)) return;
+    // The body's own box, in its frame.
+    const btVector3 a = tile_in_body_ * triangle[0], b = tile_in_body_ * triangle[1], c = tile_in_body_ * triangle[2];
+    for (int k = 0; k < 3; ++k) {
+      if (btMin(a[k], btMin(b[k], c[k])) > box_max_[k] || btMax(a[k], btMax(b[k], c[k])) < box_min_[k]) return;
+    }
+    const auto* shape = static_cast<const btConvexShape*>(convex_->getCollisionShape());
+    const btTransform& body = convex_->getWorldTransform();
+    const btVector3 v0 = tile_->getWorldTransform() * triangle[0], v1 = tile_->getWorldTransform() * triangle[1],
+                    v2 = tile_->getWorldTransform() * triangle[2];
+    // Bullet's plane test, both sides (btConvexTriangleCallback's early out).
+    btVector3 normal = (v1 - v0).cross(v2 - v0);
+    normal.normalize();
+    for (int side = 0; side < 2; ++side, normal = -normal) {
+      const btVector3 deepest = body * shape->localGetSupportingVertex(body.getBasis().inverse() * normal);
+      if (normal.dot(v0) - normal.dot(deepest) > threshold_) return;
+    }
+    btTriangleShape piece(triangle[0], triangle[1], triangle[2]);
+    piece.setMargin(margin_);
+    const btCollisionObjectWrapper piece_wrap(tile_, &piece, tile_->getCollisionObject(), tile_->getWorldTransform(),
+                                              part, index);
+    btCollisionAlgorithm* algorithm =
+        result_->m_closestPointDistanceThreshold > 0
+            ? dispatcher_->findAlgorithm(convex_, &piece_wrap, nullptr, BT_CLOSEST_POINT_ALGORITHMS)
+            : dispatcher_->findAlgorithm(convex_, &piece_wrap, manifold_, BT_CONTACT_POINT_ALGORITHMS);
+    const bool tile_first = result_->getBody0Internal() == tile_->getCollisionObject();
+    const btCollisionObjectWrapper* kept = tile_first ? result_->getBody0Wrap() : result_->getBody1Wrap();
+    if (tile_first) {
+      result_->setBody0Wrap(&piece_wrap);
+      result_->setShapeIdentifiersA(part, index);
+    } else {
+      result_->setBody1Wrap(&piece_wrap);
+      result_->setShapeIdentifiersB(part, index);
+    }
+    algorithm->processCollision(convex_, &piece_wrap, dispatch_info_, result_);
+    if (tile_first) {
+      result_->setBody0Wrap(kept);
+    } else {
+      result_->setBody1Wrap(kept);
+    }
+    algorithm->~btCollisionAlgorithm();
+    dispatcher_->freeCollisionAlgorithm(algorithm);
+  }
+
+ private:
+  const btCollisionObjectWrapper* convex_;
+  const btCollisionObjectWrapper* tile_;
+  btDispatcher* dispatcher_;
+  btPersistentManifold* manifold_;
+  const btDispatcherInfo& dispatch_info_;
+  btManifoldResult* result_;
+  btScalar threshold_;  // the deepest a kept contact lies off the body (m): btManifoldResult::addContactPoint's
+  btScalar margin_;     // the triangles' (m)
+  btVector3 aabb_min_, aabb_max_, box_min_, box_max_;
+  btTransform tile_in_body_;
+};
+
+}  // namespace
+
+btCollisionAlgorithm* FieldBodyAlgorithm::CreateFunc::CreateCollisionAlgorithm(
+    btCollisionAlgorithmConstructionInfo& info, const btCollisionObjectWrapper* body0,
+    const btCollisionObjectWrapper* body1) {
+  const btCollisionObjectWrapper* tile = m_swapped ? body0 : body1;
+  const btCollisionObjectWrapper* convex = m_swapped ? body1 : body0;
+  if (dynamic_cast<const FieldTile*>(tile->getCollisionShape()) == nullptr ||
+      !convex->getCollisionShape()->isConvex()) {
+    return fallback_->CreateCollisionAlgorithm(info, body0, body1);
+  }
+  void* memory = info.m_dispatcher1->allocateCollisionAlgorithm(sizeof(FieldBodyAlgorithm));
+  return new (memory) FieldBodyAlgorithm(info, body0, body1, m_swapped);
+}
+
+FieldBodyAlgorithm::FieldBodyAlgorithm(const btCollisionAlgorithmConstructionInfo& info,
+                                       const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
+                                       bool swapped)
+    : btActivatingCollisionAlgorithm(info, body0, body1), swapped_(swapped) {
+  // As btConvexTriangleCallback: a manifold of (convex, tile), cleared.
+  const btCollisionObjectWrapper* convex = swapped ? body1 : body0;
+  const btCollisionObjectWrapper* tile = swapped ? body0 : body1;
+  manifold_ = m_dispatcher->getNewManifold(convex->getCollisionObject(), tile->getCollisionObject());
+  m_dispatcher->clearManifold(manifold_);
+}
+
+FieldBodyAlgorithm::~FieldBodyAlgorithm() {
+  m_dispatcher->clearManifold(manifold_);
+  m_dispatcher->releaseManifold(manifold_);
+}
+
+void FieldBodyAlgorithm::processCollision(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
+                                          const btDispatcherInfo& dispatch_info, btManifoldResult* result) {
+  const btCollisionObjectWrapper* convex = swapped_ ? body1 : body0;
+  const btCollisionObjectWrapper* tile = swapped_ ? body0 : body1;
+  result->setPersistentManifold(manifold_);
+  TriangleCallback each(convex, tile, m_dispatcher, manifold_, dispatch_info, result);
+  manifold_->setBodies(convex->getCollisionObject(), tile->getCollisionObject());
+  static_cast<const btConcaveShape*>(tile->getCollisionShape())
+      ->processAllTriangles(&each, each.aabbMin(), each.aabbMax());
+  result->refreshContactPoints();
+}
+
+void FieldBodyAlgorithm::getAllContactManifolds(btManifoldArray& manifolds) { manifolds.push_back(manifold_); }
+
+}  // namespace wtc::bullet::detail
