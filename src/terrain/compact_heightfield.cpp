@@ -87,9 +87,12 @@ bool CompactHeightfield::tileBeyond(int tile_row, int tile_col, const Eigen::Vec
   const Heightfield& f = field_;
   const int c0 = tile_col * kTileCells, c1 = std::min(c0 + kTileCells, f.cols - 1);
   const int r0 = tile_row * kTileCells, r1 = std::min(r0 + kTileCells, f.rows - 1);
-  const double dx = std::max({0.0, f.origin.x() + c0 * f.spacing_x - point.x(), point.x() - (f.origin.x() + c1 * f.spacing_x)});
-  const double dy = std::max({0.0, f.origin.y() + r0 * f.spacing_y - point.y(), point.y() - (f.origin.y() + r1 * f.spacing_y)});
-  const double dz = std::max(0.0, point.z() - tileTop(tile_row, tile_col));  // the pieces reach down to the base, below the point's ball
+  const double dx =
+      std::max({0.0, f.origin.x() + c0 * f.spacing_x - point.x(), point.x() - (f.origin.x() + c1 * f.spacing_x)});
+  const double dy =
+      std::max({0.0, f.origin.y() + r0 * f.spacing_y - point.y(), point.y() - (f.origin.y() + r1 * f.spacing_y)});
+  const double dz = std::max(
+      0.0, point.z() - tileTop(tile_row, tile_col));  // the pieces reach down to the base, below the point's ball
   // Beyond with a margin far above the rounding of these sums: the cells'
   // own test decides whatever this one lets through.
   return dx * dx + dy * dy + dz * dz > reach2 * (1.0 + kTileSlack) + kTileSlack;
@@ -229,13 +232,17 @@ void CompactHeightfield::walkRuns(const Eigen::Vector3d& point, double reach, Ru
   // The cells along x that a chord of half-width `half` about the point may
   // meet, within [lo, hi]: a guess one cell wide of the division's, as each
   // cell's own test decides.
+  // (A product with the spacing's inverse, not a division: the guess's
+  // cell of margin holds its rounding.)
+  const double per_x = 1.0 / f.spacing_x, u = (point.x() - f.origin.x()) * per_x;
   const auto span = [&](double half, int lo, int hi, int& from, int& to) {
-    const double u0 = std::floor((point.x() - half - f.origin.x()) / f.spacing_x) - 1.0;
-    const double u1 = std::floor((point.x() + half - f.origin.x()) / f.spacing_x) + 1.0;
+    const double u0 = std::floor(u - half * per_x) - 1.0;
+    const double u1 = std::floor(u + half * per_x) + 1.0;
     from = static_cast<int>(std::clamp(u0, static_cast<double>(lo), static_cast<double>(hi) + 1.0));
     to = static_cast<int>(std::clamp(u1, static_cast<double>(lo) - 1.0, static_cast<double>(hi)));
   };
   const double slack2 = reach2 * (1.0 + kTileSlack) + kTileSlack;  // reach^2 with the tiles' margin
+  double row_dz = 0.0;  // the point's height above the current tile row's highest tile (m), or 0
   for (int r = r0; r <= r1; ++r) {
     const double dy = std::max({0.0, y(r) - point.y(), point.y() - y(r + 1)});
     if (dy * dy > reach2) continue;
@@ -256,10 +263,19 @@ void CompactHeightfield::walkRuns(const Eigen::Vector3d& point, double reach, Ru
         r = last;  // the loop's ++r moves on to the next tile row
         continue;
       }
+      // Every cell of the tile row lies at least this far below the point:
+      // a wheel above the ground meets it in a small patch, and the rows and
+      // columns beyond that patch are passed here, not tile by tile below.
+      double top = -std::numeric_limits<double>::infinity();
+      for (int tile = c0 / kTileCells; tile <= c1 / kTileCells; ++tile) top = std::max(top, tileTop(tile_row, tile));
+      row_dz = std::max(0.0, point.z() - top);
     }
-    // The row's chord of the disc, a little wider than computed.
+    // The row's chord of the ball's cut at the tile row's highest tile, a
+    // little wider than computed: it holds every tile's chord below.
+    const double rest_row = slack2 - dy * dy - row_dz * row_dz;
+    if (rest_row < 0.0) continue;
     int from, to;
-    span(std::sqrt(reach2 - dy * dy) * (1.0 + kChordSlack) + kChordSlack, c0, c1, from, to);
+    span(std::sqrt(rest_row) * (1.0 + kChordSlack) + kChordSlack, c0, c1, from, to);
     const std::size_t row = static_cast<std::size_t>(r) * cells_per_row;
     for (int c = from; c <= to;) {
       const int tile = c / kTileCells, tile_end = std::min(to, (tile + 1) * kTileCells - 1);
