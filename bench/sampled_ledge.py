@@ -11,8 +11,11 @@ terrains/ledge_sampled_<height>_<cell>cm.obj, the same surface as one mesh
 with no cells. The difference is the middle body's RMS position difference
 over the run, as the accuracy study measures a run against its reference
 (src/study/study_results.cpp). Writes <out>/sampled_ledge.md and .json.
+With --storage stored the sampled ledge is stored prisms instead (a piece a
+prism, every engine's bodies meeting the prisms one by one).
 
-    bench/sampled_ledge.py --build build --out /tmp/sampled_ledge [--workers 2]
+    bench/sampled_ledge.py --build build --out /tmp/sampled_ledge [--workers 2] [--storage stored]
+        [--engines ode] [--cells 0.02,0.01]
 """
 import argparse
 import concurrent.futures
@@ -33,9 +36,10 @@ BOUND_MM = 10.0
 
 
 def ground(height, cell, kind):
-    if kind == "field":
+    if kind in ("field", "prisms"):
+        storage = ", storage: compact" if kind == "field" else ""
         return (f"{{type: ledge, material: asphalt_concrete, height: {height}, approach_length: 4.0, "
-                f"top_length: 4.0, width: 4.0, thickness: 0.5, heightfield_spacing: {cell}, storage: compact}}")
+                f"top_length: 4.0, width: 4.0, thickness: 0.5, heightfield_spacing: {cell}{storage}}}")
     obj = ROOT / "terrains" / f"ledge_sampled_{height}_{CELLS[cell]}cm.obj"
     return f"{{type: mesh, file: {obj}, material: asphalt_concrete, thickness: 0.5}}"
 
@@ -65,16 +69,26 @@ def main():
     p.add_argument("--build", default="build", type=pathlib.Path)
     p.add_argument("--out", required=True, type=pathlib.Path)
     p.add_argument("--workers", default=2, type=int)
+    p.add_argument("--storage", default="compact", choices=("compact", "stored"),
+                   help="the sampled ledge as a compact field (default) or as stored prisms")
+    p.add_argument("--engines", default=",".join(MODES), help="comma-separated (default: every engine)")
+    p.add_argument("--cells", default=",".join(CELLS), help="comma-separated cells (m), of " + ",".join(CELLS))
     args = p.parse_args()
     args.out.mkdir(parents=True, exist_ok=True)
-    cases = [(h, c, e, m) for h in HEIGHTS for c in CELLS for e in MODES for m in MODES[e]]
+    field = "field" if args.storage == "compact" else "prisms"
+    engines, cells = args.engines.split(","), args.cells.split(",")
+    for name, chosen, known in (("engine", engines, MODES), ("cell", cells, CELLS)):
+        unknown = [x for x in chosen if x not in known]
+        if unknown:
+            p.error(f"unknown {name} {unknown[0]!r} (known: {', '.join(known)})")
+    cases = [(h, c, e, m) for h in HEIGHTS for c in cells for e in engines for m in MODES[e]]
     with concurrent.futures.ThreadPoolExecutor(args.workers) as pool:
         futures = {(case, kind): pool.submit(run, args.build, args.out, *case, kind)
-                   for case in cases for kind in ("field", "mesh")}
+                   for case in cases for kind in (field, "mesh")}
         results = {key: f.result() for key, f in futures.items()}
     rows, failed = [], 0
     for case in cases:
-        (fs, fb), (ms, mb) = results[(case, "field")], results[(case, "mesh")]
+        (fs, fb), (ms, mb) = results[(case, field)], results[(case, "mesh")]
         row = dict(zip(("height_m", "cell_m", "engine", "mode"), case), field_climbed=bool(fs["success"]),
                    mesh_climbed=bool(ms["success"]), rms_mm=rms_mm(fb, mb), field_rtf=fs["real_time_factor"],
                    mesh_rtf=ms["real_time_factor"], field_wtc_share=fs["wtc_share"])
@@ -82,8 +96,8 @@ def main():
         failed += not row["ok"]
         rows.append(row)
     (args.out / "sampled_ledge.json").write_text(json.dumps(rows, indent=1))
-    lines = ["| ledge | cell | engine | mode | field climbs | mesh climbs | RMS field - mesh (mm) | "
-             "x real time, field / mesh |", "|---|---|---|---|---|---|---|---|"]
+    lines = [f"| ledge | cell | engine | mode | {field} climbs | mesh climbs | RMS {field} - mesh (mm) | "
+             f"x real time, {field} / mesh |", "|---|---|---|---|---|---|---|---|"]
     for r in rows:
         lines.append(f"| {r['height_m']} m | {CELLS[r['cell_m']]} cm | {r['engine']} | {r['mode']} | "
                      f"{'yes' if r['field_climbed'] else 'no'} | {'yes' if r['mesh_climbed'] else 'no'} | "

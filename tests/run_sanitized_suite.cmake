@@ -68,6 +68,7 @@ set(long_runs "VehicleScenesTest.EveryShippedSceneRunsShortenedInEveryEngineWith
               "LedgeClimbTest.ClimbsTwoHeightsInBothEnginesAndMeasuresEachStep"
               "LedgeClimbTest.EveryEngineClimbsEveryHeightFrom20To60Centimetres"
               "LedgeClimbTest.EveryEngineClimbsTheLedgeSampledIntoACompactField"
+              "LedgeClimbTest.OdeClimbsTheLedgeSampledIntoStoredPrisms"
               "VehicleScenesTest.ASkidSteerTurnsInPlaceAlikeAtEveryStepInEveryEngine"
               "RoverScenesTest.ClimbsALowStepInBothEnginesAndModes"
               "SoilTestBedTest.TheRearWheelsRunInTheFrontWheelsRutsAsTheModelPredicts"

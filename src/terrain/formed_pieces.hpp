@@ -91,6 +91,9 @@ struct TerrainBuilderAccess {
   static PieceRange addPendingPrisms(TerrainBuilder& builder, std::size_t count, PendingPrisms::Corners corners,
                                      const std::function<MaterialId(std::size_t)>& materialOf,
                                      const std::string& where);
+  /// Marks `range`, the builder's latest pieces, as a heightfield's stored
+  /// prisms (Terrain::isFieldPrism).
+  static void noteFieldPrisms(TerrainBuilder& builder, const PieceRange& range);
 };
 
 }  // namespace wtc::detail

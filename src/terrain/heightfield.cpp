@@ -131,12 +131,14 @@ PieceRange addHeightfield(TerrainBuilder& builder, const Heightfield& f, Materia
   // gives: makeTriangularPrism's, bit for bit (CompactHeightfieldTest).
   // Each piece's material is the compact field's answer too.
   auto grid = std::make_shared<const detail::CompactHeightfield>(f);
-  return detail::TerrainBuilderAccess::addPendingPrisms(
+  const PieceRange range = detail::TerrainBuilderAccess::addPendingPrisms(
       builder, grid->pieceCount(),
       [grid](std::size_t k, std::array<Eigen::Vector3d, 3>& top, std::array<Eigen::Vector3d, 3>& bottom) {
         grid->prismCorners(k, top, bottom);
       },
       [&](std::size_t k) { return grid->materialId(k, material); }, where);
+  detail::TerrainBuilderAccess::noteFieldPrisms(builder, range);
+  return range;
 }
 
 PieceRange addCompactHeightfield(TerrainBuilder& builder, Heightfield field, MaterialId material) {

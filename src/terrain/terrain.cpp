@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <iterator>
 #include <limits>
 #include <numeric>
 #include <string>
@@ -210,6 +211,7 @@ Terrain TerrainBuilder::build() && {
   terrain.materials_ = std::move(materials_);
   terrain.soil_regions_ = std::move(soil_regions_);
   terrain.fields_ = std::move(fields_);
+  terrain.field_prisms_ = std::move(field_prisms_);
   terrain.piece_count_ = next_id_;
   std::vector<const detail::PendingPrisms*> pending;
   for (const auto& p : pending_) pending.push_back(p.get());
@@ -223,6 +225,7 @@ Terrain::Terrain(const Terrain& other)
       materials_(other.materials_),
       soil_regions_(other.soil_regions_),
       fields_(other.fields_),
+      field_prisms_(other.field_prisms_),
       piece_count_(other.piece_count_),
       tree_(other.tree_),
       leaves_(other.leaves_),
@@ -246,6 +249,17 @@ void Terrain::gatherPieces(std::span<const detail::PendingPrisms* const> pending
   std::vector<std::uint32_t> first_line;
   arena_ = std::make_shared<const detail::PieceArena>(pieces_, pending, stored, first_line);
   for (std::size_t k = 0; k < leaves_.size(); ++k) leaves_[k].line = first_line[k];
+}
+
+bool Terrain::isFieldPrism(PieceId id) const {
+  // The last range starting at or before id.
+  const auto after = std::upper_bound(field_prisms_.begin(), field_prisms_.end(), id,
+                                      [](PieceId i, const PieceRange& r) { return i < r.first; });
+  return after != field_prisms_.begin() && id < std::prev(after)->end();
+}
+
+void detail::TerrainBuilderAccess::noteFieldPrisms(TerrainBuilder& builder, const PieceRange& range) {
+  if (range.count > 0) builder.field_prisms_.push_back(range);
 }
 
 Terrain::Place Terrain::place(PieceId id) const {

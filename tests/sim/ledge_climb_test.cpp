@@ -118,6 +118,26 @@ TEST(LedgeClimbTest, EveryEngineClimbsTheLedgeSampledIntoACompactField) {
   }
 }
 
+// The same ledge sampled at 2 cm into stored prisms (a piece a prism, no
+// `storage: compact`): ODE meets each prism as a geom of its own, and the
+// walls between them gave the bodies sideways normals; it jammed at 2 and
+// 1 cm. Its bodies' contacts with a heightfield's stored prisms are now held
+// to the surface as on a compact field (Terrain::isFieldPrism,
+// sim::TerrainNormalCone).
+TEST(LedgeClimbTest, OdeClimbsTheLedgeSampledIntoStoredPrisms) {
+  const sim::Scene s = sim::loadScene(kRoot / "scenes" / "robot_ledge.yaml",
+                                      std::vector<sim::Override>{{"engine", "ode"},
+                                                                 {"ledge_height", "0.6"},
+                                                                 {"duration", "18"},
+                                                                 {"terrain.pieces.0.heightfield_spacing", "0.02"}});
+  const auto e = sim::makeEngine(s.engine, *s.terrain, s.vehicle, s.placement);
+  const sim::RunSummary r = sim::runScene(s, *e);
+  EXPECT_TRUE(r.success);
+  EXPECT_EQ(r.fields.at("climbed"), 1.0);
+  EXPECT_GT(r.fields.at("lowest_wheel_height_m"), 0.6);
+  EXPECT_LT(r.fields.at("max_tilt_deg"), 30.0);
+}
+
 // A step taller than the front section reaches (0.80 m): the controller
 // stops and says so; the robot stays upright with its wheels on the ground.
 TEST(LedgeClimbTest, AStepOutOfReachFailsCleanly) {

@@ -15,6 +15,7 @@
 #include "wtc/base/error.hpp"
 #include "wtc/geometry/point_query.hpp"
 #include "wtc/terrain/terrain.hpp"
+#include "wtc/terrain/triangle_mesh.hpp"
 
 namespace wtc {
 namespace {
@@ -257,6 +258,34 @@ TEST(HeightfieldTest, AHoleCellHasNoGround) {
   TerrainBuilder builder;
   EXPECT_THROW(addCompactHeightfield(builder, wrong, builder.addMaterial(Material{})), InvalidInputError);
   EXPECT_EQ(builder.pieceCount(), 0u);
+}
+
+// Case: the terrain knows which stored pieces are a heightfield's prisms
+// (an engine holds a body's contact with them to the surface, as on a
+// compact field): addHeightfield's, between a box, a mesh's prisms and a
+// compact field's pieces, none of which are; a copy knows it too.
+TEST(HeightfieldTest, TheTerrainKnowsAHeightfieldsStoredPrisms) {
+  TerrainBuilder builder;
+  const MaterialId m = builder.addMaterial(Material{});
+  const PieceId box = builder.addPiece(ConvexPolyhedron::box({0, 0, -1}, {1, 1, 0}), m);
+  const PieceRange stored = addHeightfield(builder, randomField(4, 5, 0.1, 3), m);
+  TriangleMesh mesh;
+  mesh.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  mesh.triangles = {{0, 1, 2}};
+  const PieceRange extruded = addTriangleMesh(builder, mesh, m).pieces;
+  const PieceRange compact = addCompactHeightfield(builder, randomField(3, 3, 0.1, 4), m);
+  const PieceRange second = addHeightfield(builder, randomField(3, 4, 0.1, 5), m);
+  const Terrain terrain = std::move(builder).build();
+  const Terrain copy(terrain);
+  for (const Terrain* t : {&terrain, &copy}) {
+    EXPECT_FALSE(t->isFieldPrism(box));
+    for (PieceId id = stored.first; id < stored.end(); ++id) EXPECT_TRUE(t->isFieldPrism(id)) << id;
+    for (PieceId id = second.first; id < second.end(); ++id) EXPECT_TRUE(t->isFieldPrism(id)) << id;
+    for (PieceId id = extruded.first; id < extruded.end(); ++id) EXPECT_FALSE(t->isFieldPrism(id)) << id;
+    for (PieceId id = compact.first; id < compact.end(); ++id) EXPECT_FALSE(t->isFieldPrism(id)) << id;
+    EXPECT_FALSE(t->isFieldPrism(-1));
+    EXPECT_FALSE(t->isFieldPrism(static_cast<PieceId>(t->pieceCount())));
+  }
 }
 
 TEST(HeightfieldTest, TriangularPrismRejectsABaseAboveTheTriangle) {

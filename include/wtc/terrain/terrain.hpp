@@ -106,6 +106,7 @@ class TerrainBuilder {
   std::vector<SoilRegion> soil_regions_;
   std::vector<Field> fields_;
   std::vector<std::shared_ptr<const detail::PendingPrisms>> pending_;  // by first stored position
+  std::vector<PieceRange> field_prisms_;                               // addHeightfield's ranges, in id order
   std::size_t next_id_ = 0;
 };
 
@@ -174,6 +175,12 @@ class Terrain {
   };
   std::size_t compactFieldCount() const { return fields_.size(); }
   CompactField compactField(std::size_t k) const;
+  /// Whether piece `id` is a stored prism of a heightfield (addHeightfield):
+  /// one of a surface whose prisms' walls are their neighbours' too, inside
+  /// the ground. An engine plugin gives a body's contact with such a piece a
+  /// normal the surface can push along, as on a compact field
+  /// (wtc/sim/terrain_normal_cone.hpp).
+  bool isFieldPrism(PieceId id) const;
   /// The piece among ids first ... first + count - 1 nearest `point`: the
   /// smallest signed distance (queryPoint) among those whose boxes come
   /// within `reach` (m) of it; -1 if none does. How an engine plugin names
@@ -244,6 +251,7 @@ class Terrain {
   std::vector<Material> materials_;
   std::vector<SoilRegion> soil_regions_;
   std::vector<Field> fields_;
+  std::vector<PieceRange> field_prisms_;  // addHeightfield's stored prisms, in id order
   std::size_t piece_count_ = 0;
   std::shared_ptr<const detail::BoxTree> tree_;  // over the stored pieces; null when there are none
   std::vector<detail::PieceLeaf> leaves_;        // the stored pieces in tree order
