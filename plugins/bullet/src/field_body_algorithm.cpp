@@ -44,6 +44,7 @@ class TriangleCallback final : public btTriangleCallback {
     box_min_ -= btVector3(reach, reach, reach);
     box_max_ += btVector3(reach, reach, reach);
     tile_in_body_ = body_in_tile.inverse();
+    world_to_body_ = convex->getWorldTransform().getBasis().inverse();
   }
 
   const btVector3& aabbMin() const { return aabb_min_; }
@@ -64,7 +65,7 @@ class TriangleCallback final : public btTriangleCallback {
     btVector3 normal = (v1 - v0).cross(v2 - v0);
     normal.normalize();
     for (int side = 0; side < 2; ++side, normal = -normal) {
-      const btVector3 deepest = body * shape->localGetSupportingVertex(body.getBasis().inverse() * normal);
+      const btVector3 deepest = body * shape->localGetSupportingVertex(world_to_body_ * normal);
       if (normal.dot(v0) - normal.dot(deepest) > threshold_) return;
     }
     btTriangleShape piece(triangle[0], triangle[1], triangle[2]);
@@ -105,9 +106,14 @@ class TriangleCallback final : public btTriangleCallback {
   btScalar margin_;     // the triangles' (m)
   btVector3 aabb_min_, aabb_max_, box_min_, box_max_;
   btTransform tile_in_body_;
+  btMatrix3x3 world_to_body_;  // the body's basis inverted, as Bullet's plane test turns a normal
 };
 
 }  // namespace
+
+bool FieldBodyAlgorithm::serves(int shape_type) {
+  return shape_type != CUSTOM_CONVEX_SHAPE_TYPE && btBroadphaseProxy::isConvex(shape_type);
+}
 
 btCollisionAlgorithm* FieldBodyAlgorithm::CreateFunc::CreateCollisionAlgorithm(
     btCollisionAlgorithmConstructionInfo& info, const btCollisionObjectWrapper* body0,

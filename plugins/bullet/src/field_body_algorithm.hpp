@@ -34,6 +34,10 @@ class FieldBodyAlgorithm : public btActivatingCollisionAlgorithm {
     btCollisionAlgorithmCreateFunc* fallback_;
   };
 
+  // Whether the plugin registers this algorithm for a body of `shape_type`
+  // against a heightfield: every convex type but a WTC wheel's.
+  static bool serves(int shape_type);
+
   FieldBodyAlgorithm(const btCollisionAlgorithmConstructionInfo& info, const btCollisionObjectWrapper* body0,
                      const btCollisionObjectWrapper* body1, bool swapped);
   ~FieldBodyAlgorithm() override;

@@ -120,7 +120,7 @@ detail::PluginState::PluginState(btDiscreteDynamicsWorld& w, const Terrain& t, C
   // heightfield in the world.
   btCollisionConfiguration* config = dispatcher->getCollisionConfiguration();
   for (int type = 0; type < CONCAVE_SHAPES_START_HERE; ++type) {
-    if (type == CUSTOM_CONVEX_SHAPE_TYPE || !btBroadphaseProxy::isConvex(type)) continue;
+    if (!detail::FieldBodyAlgorithm::serves(type)) continue;
     field_body_creates.push_back(std::make_unique<detail::FieldBodyAlgorithm::CreateFunc>(
         config->getCollisionAlgorithmCreateFunc(type, TERRAIN_SHAPE_PROXYTYPE), false));
     dispatcher->registerCollisionCreateFunc(type, TERRAIN_SHAPE_PROXYTYPE, field_body_creates.back().get());
@@ -179,7 +179,7 @@ detail::PluginState::~PluginState() {
                                             config->getCollisionAlgorithmCreateFunc(type, CUSTOM_CONVEX_SHAPE_TYPE));
   }
   for (int type = 0; type < CONCAVE_SHAPES_START_HERE; ++type) {
-    if (type == CUSTOM_CONVEX_SHAPE_TYPE || !btBroadphaseProxy::isConvex(type)) continue;
+    if (!detail::FieldBodyAlgorithm::serves(type)) continue;
     dispatcher->registerCollisionCreateFunc(type, TERRAIN_SHAPE_PROXYTYPE,
                                             config->getCollisionAlgorithmCreateFunc(type, TERRAIN_SHAPE_PROXYTYPE));
     dispatcher->registerCollisionCreateFunc(TERRAIN_SHAPE_PROXYTYPE, type,

@@ -94,6 +94,7 @@ PieceId TerrainGeoms::piece(dGeomID geom, const Eigen::Vector3d& point) const {
 bool TerrainGeoms::isField(dGeomID geom) const {
   if (dGeomIsSpace(geom) || dGeomGetSpace(geom) != space_) return false;
   const auto data = static_cast<PieceId>(reinterpret_cast<std::intptr_t>(dGeomGetData(geom)));
+  if (data >= 0) return terrain_.isFieldPrism(data);
   return data <= -2 && terrain_.compactField(static_cast<std::size_t>(-2 - data)).field != nullptr;
 }
 

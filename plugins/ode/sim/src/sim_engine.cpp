@@ -438,11 +438,7 @@ class SimEngine final : public sim::EngineBase {
     std::array<dContact, kMaxContactsPerPair> contact{};
     int n = dCollide(a, b, kMaxContactsPerPair, &contact[0].geom, sizeof(dContact));
     n = e.plugin_->keepRigidContacts(a, b, &contact[0].geom, n, sizeof(dContact));  // a belly on soil: the soil's
-    // A heightfield, compact (ODE's dHeightfield) or stored as prisms (a
-    // geom a prism): its surface's normals.
-    const dGeomID ground = body_a != nullptr ? b : a;
-    const bool on_field =
-        e.plugin_->terrainGeoms().isField(ground) || e.terrain_.isFieldPrism(e.plugin_->terrainGeoms().piece(ground));
+    const bool on_field = e.plugin_->terrainGeoms().isField(body_a != nullptr ? b : a);
     for (int k = 0; k < n; ++k) {
       if (on_field && !e.onFieldSurface(contact[k].geom, body_a != nullptr ? a : b, body_a != nullptr)) continue;
       contact[k].surface.mode = dContactApprox1;

@@ -91,8 +91,9 @@ class TerrainGeoms {
   /// compact mesh's the piece nearest it (-1 if none within
   /// kMeshContactReachM).
   PieceId piece(dGeomID geom, const Eigen::Vector3d& point) const;
-  /// True for a compact heightfield's geom (ODE's dHeightfield, or the
-  /// field's surface as a mesh when it has holes).
+  /// True for a geom of a heightfield's surface: a compact field's (ODE's
+  /// dHeightfield, or the field's surface as a mesh when it has holes), or
+  /// one of a heightfield's stored prisms (Terrain::isFieldPrism).
   bool isField(dGeomID geom) const;
 
  private:
