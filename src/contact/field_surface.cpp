@@ -90,19 +90,22 @@ bool surfaceLocalMinima(const Terrain& terrain, std::span<const Run> runs, const
     // the centre came in by.
     if (!above(compact, o, tie)) return false;
 
-    // The window: the runs' rows by their columns' span.
+    // The window: the runs' rows by their columns' span, and a border of
+    // one cell all round that no search stamps, where a neighbour's look
+    // finds no slot without a bounds test (neighbours are at most a cell off).
     const int r_min = own.front().row, r_max = own.back().row;
-    const auto width = static_cast<std::size_t>(c_max - c_min + 1);
-    const std::size_t cells = static_cast<std::size_t>(r_max - r_min + 1) * width;
+    const std::size_t cells = static_cast<std::size_t>(r_max - r_min + 1) * static_cast<std::size_t>(c_max - c_min + 1);
     if (cells > kMaxSurfaceWindowCells) return false;
-    if (scratch.window.size() < cells) scratch.window.resize(cells);
+    const auto width = static_cast<std::size_t>(c_max - c_min + 3);
+    const std::size_t slots = static_cast<std::size_t>(r_max - r_min + 3) * width;
+    if (scratch.window.size() < slots) scratch.window.resize(slots);
     if (++scratch.stamp == 0) {  // wrapped: no slot may look current
       for (SurfaceSlot& slot : scratch.window) slot.stamp = 0;
       scratch.stamp = 1;
     }
     const std::uint32_t stamp = scratch.stamp;
     const auto slot = [&](int r, int c) -> SurfaceSlot& {
-      return scratch.window[static_cast<std::size_t>(r - r_min) * width + static_cast<std::size_t>(c - c_min)];
+      return scratch.window[static_cast<std::size_t>(r - r_min + 1) * width + static_cast<std::size_t>(c - c_min + 1)];
     };
 
     // Each run's cells: the cell's box, then its two triangles.
@@ -137,7 +140,6 @@ bool surfaceLocalMinima(const Terrain& terrain, std::span<const Run> runs, const
 
     // A triangle's slot, none beyond the reach (a cell not tested).
     const auto tested = [&](const Cell& n) -> const SurfaceSlot* {
-      if (n.row < r_min || n.row > r_max || n.col < c_min || n.col > c_max) return nullptr;
       const SurfaceSlot& s = slot(n.row, n.col);
       return s.stamp == stamp ? &s : nullptr;
     };

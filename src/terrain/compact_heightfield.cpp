@@ -213,6 +213,27 @@ void CompactHeightfield::walkRuns(const Eigen::Vector3d& point, double reach, Ru
   if (!cellsUnder(cube, c0, c1, r0, r1)) return;
   const auto y = [&](int i) { return f.origin.y() + i * f.spacing_y; };  // as sample() computes them
   const double reach2 = reach * reach;
+  const double slack2 = reach2 * (1.0 + kTileSlack) + kTileSlack;  // reach^2 with the tiles' margin
+  // Every cell under the cube lies at least as far below the point as the
+  // cube's highest tile: the rows and columns beyond the ball's cut at that
+  // height meet nothing (a wheel above a fine field: most of the cube's),
+  // and the cells' own tests decide the rest.
+  {
+    double top = -std::numeric_limits<double>::infinity();
+    for (int tr = r0 / kTileCells; tr <= r1 / kTileCells; ++tr) {
+      for (int tc = c0 / kTileCells; tc <= c1 / kTileCells; ++tc) top = std::max(top, tileTop(tr, tc));
+    }
+    const double dz = std::max(0.0, point.z() - top);
+    const double rest = slack2 - dz * dz;
+    if (rest < 0.0) return;
+    const double half = std::sqrt(rest) * (1.0 + kChordSlack) + kChordSlack;
+    int cut0, cut1;
+    cellSpan(point.x() - half, point.x() + half, f.origin.x(), f.spacing_x, f.cols - 1, cut0, cut1);
+    c0 = std::max(c0, cut0), c1 = std::min(c1, cut1);
+    cellSpan(point.y() - half, point.y() + half, f.origin.y(), f.spacing_y, f.rows - 1, cut0, cut1);
+    r0 = std::max(r0, cut0), r1 = std::min(r1, cut1);
+    if (c0 > c1 || r0 > r1) return;
+  }
   const auto cells_per_row = static_cast<std::size_t>(f.cols - 1);
   // Each tile is tested once for the rows it spans: the answers of a tile
   // row's first 64 tiles from c0 on are kept in two masks.
@@ -241,7 +262,6 @@ void CompactHeightfield::walkRuns(const Eigen::Vector3d& point, double reach, Ru
     from = static_cast<int>(std::clamp(u0, static_cast<double>(lo), static_cast<double>(hi) + 1.0));
     to = static_cast<int>(std::clamp(u1, static_cast<double>(lo) - 1.0, static_cast<double>(hi)));
   };
-  const double slack2 = reach2 * (1.0 + kTileSlack) + kTileSlack;  // reach^2 with the tiles' margin
   double row_dz = 0.0;  // the point's height above the current tile row's highest tile (m), or 0
   for (int r = r0; r <= r1; ++r) {
     const double dy = std::max({0.0, y(r) - point.y(), point.y() - y(r + 1)});

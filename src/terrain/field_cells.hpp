@@ -35,15 +35,18 @@ void forEachCellNear(const Heightfield& f, int r, int lo, int hi, PieceId first,
   const double* below = f.heights.data() + static_cast<std::size_t>(r) * f.cols;
   const double* above = below + f.cols;
   double left = std::max(below[lo], above[lo]);
+  double x_left = x(lo);  // a cell's right side is the next one's left, the same sum
   PieceId id = first;
   for (int c = lo; c <= hi; ++c) {
     const double right = std::max(below[c + 1], above[c + 1]);
     const double top = f.origin.z() + std::max(left, right);
-    left = right;
+    const double x_right = x(c + 1);
+    const double x0 = x_left;
+    left = right, x_left = x_right;
     if (f.isHole(r, c)) continue;
     const PieceId cell_first = id;
     id += 2;
-    const double dx = std::max({0.0, x(c) - point.x(), point.x() - x(c + 1)});
+    const double dx = std::max({0.0, x0 - point.x(), point.x() - x_right});
     const double dz = std::max(0.0, point.z() - top);
     if (dx * dx + dy * dy + dz * dz <= slack2) visit(c, cell_first);
   }
