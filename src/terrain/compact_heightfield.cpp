@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <utility>
 
@@ -12,6 +13,15 @@ namespace wtc::detail {
 namespace {
 // A tile's test takes a cell's margin (kCellSlack, field_cells.hpp): far above rounding.
 constexpr double kTileSlack = kCellSlack;
+
+// std::floor(v) without the library call (a wheel's walk takes a few dozen
+// a step): exact below 2^52 in size, where a double's truncation to an
+// integer is; std::floor beyond and for a NaN.
+double floorOf(double v) {
+  if (!(std::abs(v) < 0x1p52)) return std::floor(v);
+  const auto t = static_cast<double>(static_cast<std::int64_t>(v));  // toward zero
+  return t > v ? t - 1.0 : t;
+}
 }  // namespace
 
 CompactHeightfield::CompactHeightfield(Heightfield field) : field_(std::move(field)) {
@@ -79,10 +89,6 @@ void CompactHeightfield::makeTiles() {
   tile_top_.shrink_to_fit();
 }
 
-double CompactHeightfield::tileTop(int tile_row, int tile_col) const {
-  return field_.origin.z() + static_cast<double>(tile_top_[static_cast<std::size_t>(tile_row) * tile_cols_ + tile_col]);
-}
-
 bool CompactHeightfield::tileBeyond(int tile_row, int tile_col, const Eigen::Vector3d& point, double reach2) const {
   const Heightfield& f = field_;
   const int c0 = tile_col * kTileCells, c1 = std::min(c0 + kTileCells, f.cols - 1);
@@ -144,8 +150,8 @@ namespace {
 // guesses; the comparisons on x(i) decide. Empty when first > last.
 void cellSpan(double lo, double hi, double origin, double spacing, int cells, int& first, int& last) {
   const auto x = [&](int i) { return origin + i * spacing; };
-  const double guess_lo = std::floor((lo - origin) / spacing);
-  const double guess_hi = std::floor((hi - origin) / spacing);
+  const double guess_lo = floorOf((lo - origin) / spacing);
+  const double guess_hi = floorOf((hi - origin) / spacing);
   first = static_cast<int>(std::clamp(guess_lo, 0.0, static_cast<double>(cells - 1)));
   last = static_cast<int>(std::clamp(guess_hi, 0.0, static_cast<double>(cells - 1)));
   while (first > 0 && x(first) >= lo) --first;           // cell first - 1 may still reach lo
@@ -257,8 +263,8 @@ void CompactHeightfield::walkRuns(const Eigen::Vector3d& point, double reach, Ru
   // cell of margin holds its rounding.)
   const double per_x = 1.0 / f.spacing_x, u = (point.x() - f.origin.x()) * per_x;
   const auto span = [&](double half, int lo, int hi, int& from, int& to) {
-    const double u0 = std::floor(u - half * per_x) - 1.0;
-    const double u1 = std::floor(u + half * per_x) + 1.0;
+    const double u0 = floorOf(u - half * per_x) - 1.0;
+    const double u1 = floorOf(u + half * per_x) + 1.0;
     from = static_cast<int>(std::clamp(u0, static_cast<double>(lo), static_cast<double>(hi) + 1.0));
     to = static_cast<int>(std::clamp(u1, static_cast<double>(lo) - 1.0, static_cast<double>(hi)));
   };
@@ -329,11 +335,12 @@ void CompactHeightfield::within(const Eigen::Vector3d& point, double reach, Piec
   walkRuns(point, reach, [&](int r, int lo, int hi, std::size_t k) {
     // The cell's box (both pieces' union) first: one test turns both
     // pieces away; their own boxes decide the rest.
-    forEachCellNear(field_, r, lo, hi, first + static_cast<PieceId>(k), point, reach, [&](int c, PieceId id) {
-      for (int t = 0; t < 2; ++t) {
-        if (prismBoxWithin(field_, r, c, t, base_z_, point, reach)) out.push_back(id + t);
-      }
-    });
+    forEachCellNear(field_, r, lo, hi, first + static_cast<PieceId>(k), point, reach,
+                    [&](int c, PieceId id, double /*x0*/, double /*x1*/) {
+                      for (int t = 0; t < 2; ++t) {
+                        if (prismBoxWithin(field_, r, c, t, base_z_, point, reach)) out.push_back(id + t);
+                      }
+                    });
   });
 }
 

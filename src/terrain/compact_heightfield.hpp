@@ -70,8 +70,6 @@ class CompactHeightfield final : public FormedPieces {
   static constexpr std::size_t kBlockCells = 64;
   // Cells along a tile's side.
   static constexpr int kTileCells = 8;
-  // True when no piece of tile (tile_row, tile_col) has a box within
-  // `reach2` (m^2, the reach squared) of `point`.
   // The cells whose pieces' boxes may meet `box` (cellSpan along x and y);
   // false when none can (a box below the base, or with a NaN).
   bool cellsUnder(const Aabb& box, int& c0, int& c1, int& r0, int& r1) const;
@@ -83,9 +81,14 @@ class CompactHeightfield final : public FormedPieces {
   // first ground cell.
   template <typename Run>
   void walkRuns(const Eigen::Vector3d& point, double reach, Run&& run) const;
+  // True when no piece of tile (tile_row, tile_col) has a box within
+  // `reach2` (m^2, the reach squared) of `point`.
   bool tileBeyond(int tile_row, int tile_col, const Eigen::Vector3d& point, double reach2) const;
   // The tile's highest sample (m, world), rounded up.
-  double tileTop(int tile_row, int tile_col) const;
+  double tileTop(int tile_row, int tile_col) const {
+    return field_.origin.z() +
+           static_cast<double>(tile_top_[static_cast<std::size_t>(tile_row) * tile_cols_ + tile_col]);
+  }
 
   // The cell (row-major index) piece k lies on.
   std::size_t cellOf(std::size_t k) const;

@@ -1,6 +1,9 @@
 #include "field_body_algorithm.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <new>
+#include <utility>
 
 #include <BulletCollision/CollisionShapes/btTriangleShape.h>
 
@@ -12,6 +15,10 @@ namespace {
 // Margin of the body's box test (m): far above the rounding of the
 // transforms and of GJK's answer near the threshold, far below a cell.
 constexpr btScalar kBoxTestSlackM = 1e-6;
+// Margin of the rows' clip before the cells' own box test (m): far above
+// the rounding of a cell's interval on an axis, which the cell test then
+// decides exactly.
+constexpr btScalar kRowClipSlackM = 1e-6;
 
 // Each triangle of a tile that Bullet's box test lets by: the body's own box,
 // then Bullet's convex-triangle collision as btConvexTriangleCallback runs it
@@ -49,6 +56,55 @@ class TriangleCallback final : public btTriangleCallback {
 
   const btVector3& aabbMin() const { return aabb_min_; }
   const btVector3& aabbMax() const { return aabb_max_; }
+
+  // FieldTile::walkTriangles's row filter: the cells of a row whose box
+  // (x0 + i step .. x0 + (i + 1) step, y0 .. y1, z0 .. z1, the tile's frame)
+  // meets the body's own box on each of the body's axes, with a cell more
+  // each way than computed. A cell's corners lie in its box, so cellNear
+  // passes no cell left out here. On axis k a cell's box spans m_k +- e_k,
+  // its centre m_k = A_k + B_k i linear in i.
+  void narrowRow(btScalar x0, btScalar step, btScalar y0, btScalar y1, btScalar z0, btScalar z1, int& from,
+                 int& to) const {
+    const btMatrix3x3& basis = tile_in_body_.getBasis();
+    const btScalar xc = x0 + 0.5 * step, yc = 0.5 * (y0 + y1), zc = 0.5 * (z0 + z1);
+    for (int k = 0; k < 3 && from < to; ++k) {
+      const btVector3& axis = basis[k];
+      const btScalar a = axis.dot(btVector3(xc, yc, zc)) + tile_in_body_.getOrigin()[k], b = axis[0] * step;
+      const btScalar e = 0.5 * (btFabs(axis[0]) * step + btFabs(axis[1]) * (y1 - y0) + btFabs(axis[2]) * (z1 - z0));
+      const btScalar lo = box_min_[k] - e - kRowClipSlackM, hi = box_max_[k] + e + kRowClipSlackM;
+      // A cell's width of the row's length this axis hardly turns: the
+      // cells all pass or all fail it.
+      if (btFabs(b) * (to - from) < kRowClipSlackM) {
+        const btScalar at = a + b * from;
+        if (at < lo || at > hi) from = to;
+        continue;
+      }
+      btScalar first = (lo - a) / b, last = (hi - a) / b;
+      if (b < 0.0) std::swap(first, last);
+      if (first > to || last < from) {
+        from = to;
+        continue;
+      }
+      from = std::max(from, static_cast<int>(std::floor(first)) - 1);
+      to = std::min(to, static_cast<int>(std::ceil(last)) + 2);
+    }
+  }
+
+  // Whether a cell whose corners (the tile's frame) are `corners` may hold a
+  // triangle that the body's own box lets by: beyond the box on one of its
+  // axes, each of the cell's triangles is too (processTriangle's test, on
+  // the same transformed corners).
+  bool cellNear(const btVector3* corners) const {
+    btVector3 low = tile_in_body_ * corners[0], high = low;
+    for (int i = 1; i < 4; ++i) {
+      const btVector3 p = tile_in_body_ * corners[i];
+      low.setMin(p), high.setMax(p);
+    }
+    for (int k = 0; k < 3; ++k) {
+      if (low[k] > box_max_[k] || high[k] < box_min_[k]) return false;
+    }
+    return true;
+  }
 
   void processTriangle(btVector3* triangle, int part, int index) override {
     if (!TestTriangleAgainstAabb2(triangle, aabb_min_, aabb_max_)) return;
@@ -151,8 +207,9 @@ void FieldBodyAlgorithm::processCollision(const btCollisionObjectWrapper* body0,
   result->setPersistentManifold(manifold_);
   TriangleCallback each(convex, tile, m_dispatcher, manifold_, dispatch_info, result);
   manifold_->setBodies(convex->getCollisionObject(), tile->getCollisionObject());
-  static_cast<const btConcaveShape*>(tile->getCollisionShape())
-      ->processAllTriangles(&each, each.aabbMin(), each.aabbMax());
+  // The tile's cells under the body's box in the tile's frame, as Bullet
+  // walks them, less those beyond the body's own box.
+  static_cast<const FieldTile*>(tile->getCollisionShape())->walkTriangles(&each, each.aabbMin(), each.aabbMax(), each);
   result->refreshContactPoints();
 }
 
