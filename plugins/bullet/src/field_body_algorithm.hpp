@@ -13,7 +13,9 @@
 // more than the contact breaking threshold is farther from the body than
 // any contact Bullet keeps (btManifoldResult::addContactPoint drops a point
 // deeper than that), so leaving it out changes no contact. Every other
-// triangle goes through what Bullet does, in Bullet's order.
+// triangle goes through what Bullet does, in Bullet's order. The tile's cells
+// are walked as Bullet walks them (FieldTile::walkTriangles), less the rows'
+// cells and the cells that the same box leaves out whole.
 #include <BulletCollision/CollisionDispatch/btActivatingCollisionAlgorithm.h>
 #include <btBulletCollisionCommon.h>
 
