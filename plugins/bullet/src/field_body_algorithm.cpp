@@ -81,10 +81,14 @@ class TriangleCallback final : public btTriangleCallback {
       }
       btScalar first = (lo - a) / b, last = (hi - a) / b;
       if (b < 0.0) std::swap(first, last);
+      if (!std::isfinite(first) || !std::isfinite(last)) continue;  // a body off the scale: no clip
       if (first > to || last < from) {
         from = to;
         continue;
       }
+      // Within a cell of the row's ends before the cast (a far body's are
+      // far beyond an int).
+      first = std::max(first, static_cast<btScalar>(from - 1)), last = std::min(last, static_cast<btScalar>(to + 1));
       from = std::max(from, static_cast<int>(std::floor(first)) - 1);
       to = std::min(to, static_cast<int>(std::ceil(last)) + 2);
     }
