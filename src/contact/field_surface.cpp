@@ -41,12 +41,10 @@ Cell acrossEdge(const Cell& x, int edge) {
   return {x.row, x.col - 1, 0};                 // p10 p00: the previous cell's (p11, p01)
 }
 
-// The six triangles around a sample (i, j): cell (i + row, j + col), half t.
-struct Around {
-  int row, col, t;
-};
-constexpr std::array<Around, 6> kAroundSample = {
-    {{0, 0, 0}, {0, 0, 1}, {0, -1, 0}, {-1, -1, 0}, {-1, -1, 1}, {-1, 0, 1}}};
+// The six triangles around sample (i, j).
+std::array<Cell, 6> aroundSample(int i, int j) {
+  return {{{i, j, 0}, {i, j, 1}, {i, j - 1, 0}, {i - 1, j - 1, 0}, {i - 1, j - 1, 1}, {i - 1, j, 1}}};
+}
 
 // Cell (r, c) or one of its eight neighbours is a hole or beyond the field:
 // its prisms' walls may be ground. Every other wall is a neighbour's too,
@@ -115,36 +113,29 @@ bool surfaceLocalMinima(const Terrain& terrain, std::span<const Run> runs, const
     const std::size_t first_point = scratch.points.size();
     for (const Run& run : own) {
       const int r = run.row;
-      // The row's two lines of samples, as Heightfield::sample computes them.
-      const double y0 = f.origin.y() + r * f.spacing_y, y1 = f.origin.y() + (r + 1) * f.spacing_y;
-      const double* below = f.heights.data() + static_cast<std::size_t>(r) * f.cols;
-      const double* above = below + f.cols;
-      const bool edge_row = r == 0 || r + 2 >= f.rows;  // exposed()'s rows
-      forEachCellNear(
-          f, r, run.first_col, run.last_col, run.first_piece, o, reach,
-          [&](int c, PieceId cell_id, double x0, double x1) {
-            const Eigen::Vector3d p00(x0, y0, f.origin.z() + below[c]), p01(x1, y0, f.origin.z() + below[c + 1]);
-            const Eigen::Vector3d p10(x0, y1, f.origin.z() + above[c]), p11(x1, y1, f.origin.z() + above[c + 1]);
-            const std::array<TriangleClosestPoint, 2> q = {closestOnTriangle(o, p00, p01, p11),
-                                                           closestOnTriangle(o, p00, p11, p10)};
-            scratch.triangles += 2;
-            SurfaceSlot& s = slot(r, c);
-            s.stamp = stamp;
-            const bool walls = edge_row || exposed(f, r, c);
-            s.exposed = walls;
-            for (int t = 0; t < 2; ++t) {
-              const double d = (q[t].point - o).norm();
-              s.distance[t] = d;
-              if (walls) {
-                // A prism with ground walls: queried as a prism when its box
-                // comes within the reach (Terrain::within's test).
-                if (prismBoxWithin(f, r, c, t, base_z, o, reach)) prisms.push_back(cell_id + t);
-              } else if (d < reach) {
-                scratch.points.push_back({q[t].point, d, &f, base_z, cell_id + t, r, c, static_cast<std::uint8_t>(t),
-                                          static_cast<std::uint8_t>(q[t].feature)});
-              }
-            }
-          });
+      forEachCellNear(f, r, run.first_col, run.last_col, run.first_piece, o, reach, [&](int c, PieceId cell_id) {
+        const Eigen::Vector3d p00 = f.sample(r, c), p01 = f.sample(r, c + 1);
+        const Eigen::Vector3d p10 = f.sample(r + 1, c), p11 = f.sample(r + 1, c + 1);
+        const std::array<TriangleClosestPoint, 2> q = {closestOnTriangle(o, p00, p01, p11),
+                                                       closestOnTriangle(o, p00, p11, p10)};
+        scratch.triangles += 2;
+        SurfaceSlot& s = slot(r, c);
+        s.stamp = stamp;
+        const bool walls = exposed(f, r, c);
+        s.exposed = walls;
+        for (int t = 0; t < 2; ++t) {
+          const double d = (q[t].point - o).norm();
+          s.distance[t] = d;
+          if (walls) {
+            // A prism with ground walls: queried as a prism when its box
+            // comes within the reach (Terrain::within's test).
+            if (prismBoxWithin(f, r, c, t, base_z, o, reach)) prisms.push_back(cell_id + t);
+          } else if (d < reach) {
+            scratch.points.push_back({q[t].point, d, &f, base_z, cell_id + t, r, c, static_cast<std::uint8_t>(t),
+                                      static_cast<std::uint8_t>(q[t].feature)});
+          }
+        }
+      });
     }
 
     // A triangle's slot, none beyond the reach (a cell not tested).
@@ -187,8 +178,7 @@ bool surfaceLocalMinima(const Terrain& terrain, std::span<const Run> runs, const
         default: {
           const int corner = a.feature - static_cast<int>(TriangleFeature::kVertexA);
           const std::array<int, 2> s = cornerSample(self, corner);
-          for (const Around& k : kAroundSample) {
-            const Cell n{s[0] + k.row, s[1] + k.col, k.t};
+          for (const Cell& n : aroundSample(s[0], s[1])) {
             if ((n.row != self.row || n.col != self.col || n.t != self.t) && beats(n)) {
               dominated = true;
               break;

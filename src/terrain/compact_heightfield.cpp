@@ -335,12 +335,11 @@ void CompactHeightfield::within(const Eigen::Vector3d& point, double reach, Piec
   walkRuns(point, reach, [&](int r, int lo, int hi, std::size_t k) {
     // The cell's box (both pieces' union) first: one test turns both
     // pieces away; their own boxes decide the rest.
-    forEachCellNear(field_, r, lo, hi, first + static_cast<PieceId>(k), point, reach,
-                    [&](int c, PieceId id, double /*x0*/, double /*x1*/) {
-                      for (int t = 0; t < 2; ++t) {
-                        if (prismBoxWithin(field_, r, c, t, base_z_, point, reach)) out.push_back(id + t);
-                      }
-                    });
+    forEachCellNear(field_, r, lo, hi, first + static_cast<PieceId>(k), point, reach, [&](int c, PieceId id) {
+      for (int t = 0; t < 2; ++t) {
+        if (prismBoxWithin(field_, r, c, t, base_z_, point, reach)) out.push_back(id + t);
+      }
+    });
   });
 }
 

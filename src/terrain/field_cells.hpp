@@ -5,7 +5,6 @@
 // read from a run of Terrain::withinSurfaces.
 #include <algorithm>
 #include <cstddef>
-#include <cstdint>
 
 #include <Eigen/Core>
 
@@ -19,11 +18,10 @@ namespace wtc::detail {
 /// rounding; the pieces' own boxes (or distances) decide what it lets by.
 inline constexpr double kCellSlack = 1e-9;
 
-/// visit(c, id, x0, x1) for each ground cell (r, c), lo <= c <= hi, whose
-/// box (its two prisms' union up to its highest sample) comes within `reach`
-/// (m) of `point`, with kCellSlack's margin; `id` is the cell's first prism,
-/// counted on from `first`, the first ground cell's, over the ground cells;
-/// x0 and x1 (m) are the cell's sides, as Heightfield::sample computes them.
+/// visit(c, id) for each ground cell (r, c), lo <= c <= hi, whose box (its
+/// two prisms' union up to its highest sample) comes within `reach` (m) of
+/// `point`, with kCellSlack's margin; `id` is the cell's first prism,
+/// counted on from `first`, the first ground cell's, over the ground cells.
 template <typename Visit>
 void forEachCellNear(const Heightfield& f, int r, int lo, int hi, PieceId first, const Eigen::Vector3d& point,
                      double reach, Visit&& visit) {
@@ -38,9 +36,6 @@ void forEachCellNear(const Heightfield& f, int r, int lo, int hi, PieceId first,
   const double* above = below + f.cols;
   double left = std::max(below[lo], above[lo]);
   double x_left = x(lo);  // a cell's right side is the next one's left, the same sum
-  // The row's hole flags, none when the field has no hole (Heightfield::isHole).
-  const std::uint8_t* holes =
-      f.cell_holes.empty() ? nullptr : f.cell_holes.data() + static_cast<std::size_t>(r) * (f.cols - 1);
   PieceId id = first;
   for (int c = lo; c <= hi; ++c) {
     const double right = std::max(below[c + 1], above[c + 1]);
@@ -48,12 +43,12 @@ void forEachCellNear(const Heightfield& f, int r, int lo, int hi, PieceId first,
     const double x_right = x(c + 1);
     const double x0 = x_left;
     left = right, x_left = x_right;
-    if (holes != nullptr && holes[c] != 0) continue;
+    if (f.isHole(r, c)) continue;
     const PieceId cell_first = id;
     id += 2;
     const double dx = std::max({0.0, x0 - point.x(), point.x() - x_right});
     const double dz = std::max(0.0, point.z() - top);
-    if (dx * dx + dy * dy + dz * dz <= slack2) visit(c, cell_first, x0, x_right);
+    if (dx * dx + dy * dy + dz * dz <= slack2) visit(c, cell_first);
   }
 }
 

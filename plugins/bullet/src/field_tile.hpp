@@ -35,7 +35,8 @@ class FieldTile final : public btHeightfieldTerrainShape {
   // tile's layout (z up, each cell split along p00-p11, no other
   // subdivision, Bullet's winding): the same triangles with the same
   // vertices, bit for bit, in the same order, to `callback`, the samples read
-  // here rather than through getVertex's virtual call. `filter` may leave
+  // without a virtual call (the class is final; Bullet's getVertex makes
+  // one a corner). `filter` may leave
   // cells out first, as long as it leaves out only cells neither of whose
   // triangles the callback would take:
   //   filter.narrowRow(x0, step, y0, y1, z0, z1, from, to) narrows the
@@ -67,8 +68,8 @@ class FieldTile final : public btHeightfieldTerrainShape {
     const Range up(aabb_min[2], aabb_max[2]);
     // getVertex(x, y), as Bullet computes it.
     const auto vertex = [&](int x, int y) {
-      const btScalar height = field_.heights[static_cast<std::size_t>(row0_ + y) * field_.cols + (col0_ + x)];
-      return btVector3((-m_width / btScalar(2.0)) + x, (-m_length / btScalar(2.0)) + y, height - m_localOrigin.getZ()) *
+      return btVector3((-m_width / btScalar(2.0)) + x, (-m_length / btScalar(2.0)) + y,
+                       getRawHeightFieldValue(x, y) - m_localOrigin.getZ()) *
              m_localScaling;
     };
     const btScalar x0 = (-m_width / btScalar(2.0)) * m_localScaling[0], step = m_localScaling[0];
