@@ -68,12 +68,30 @@ bool above(const Terrain::CompactField& compact, const Eigen::Vector3d& o, doubl
   return !surface || o.z() > *surface + tie;
 }
 
+// The two triangles of cell (r, c) answered for the centre `o`.
+std::array<TriangleClosestPoint, 2> answerCell(const Heightfield& f, int r, int c, const Eigen::Vector3d& o) {
+  const Eigen::Vector3d p00 = f.sample(r, c), p01 = f.sample(r, c + 1);
+  const Eigen::Vector3d p10 = f.sample(r + 1, c), p11 = f.sample(r + 1, c + 1);
+  return {closestOnTriangle(o, p00, p01, p11), closestOnTriangle(o, p00, p11, p10)};
+}
+
+// The first prism of cell (r, c) if a run of `passed` (row-major) holds it.
+std::optional<PieceId> passedCell(std::span<const Run> passed, int r, int c) {
+  auto run = std::lower_bound(passed.begin(), passed.end(), r, [](const Run& x, int row) { return x.row < row; });
+  for (; run != passed.end() && run->row == r; ++run) {
+    if (run->first_col <= c && c <= run->last_col) return run->first_piece + 2 * (c - run->first_col);
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 bool surfaceLocalMinima(const Terrain& terrain, std::span<const Run> runs, const Eigen::Vector3d& o, double reach,
                         double tie, SurfaceScratch& scratch, std::vector<PieceId>& prisms,
                         std::vector<SurfacePoint>& touches) {
   scratch.points.clear();
+  scratch.passed.clear();
+  scratch.centre = o;
   scratch.triangles = 0;
   for (std::size_t begin = 0; begin < runs.size();) {
     const int part = runs[begin].part;
@@ -110,18 +128,30 @@ bool surfaceLocalMinima(const Terrain& terrain, std::span<const Run> runs, const
 
     // Each run's cells: the cell's box, then its two triangles.
     const double base_z = compact.bounds.min.z();
-    const std::size_t first_point = scratch.points.size();
+    const std::size_t first_point = scratch.points.size(), first_passed = scratch.passed.size();
     for (const Run& run : own) {
+      if (run.passed) {  // no minimum there: answered when asked
+        scratch.passed.push_back(run);
+        continue;
+      }
       const int r = run.row;
       forEachCellNear(f, r, run.first_col, run.last_col, run.first_piece, o, reach, [&](int c, PieceId cell_id) {
-        const Eigen::Vector3d p00 = f.sample(r, c), p01 = f.sample(r, c + 1);
-        const Eigen::Vector3d p10 = f.sample(r + 1, c), p11 = f.sample(r + 1, c + 1);
-        const std::array<TriangleClosestPoint, 2> q = {closestOnTriangle(o, p00, p01, p11),
-                                                       closestOnTriangle(o, p00, p11, p10)};
+        const bool walls = exposed(f, r, c);
+        if (!walls && cellPasses(f, r, c, o)) {  // as a passed run's: joined to the last one it follows
+          if (scratch.passed.size() > first_passed) {
+            Run& last = scratch.passed.back();
+            if (last.row == r && last.last_col + 1 == c) {
+              last.last_col = c;
+              return;
+            }
+          }
+          scratch.passed.push_back({cell_id, part, r, c, c, true});
+          return;
+        }
+        const std::array<TriangleClosestPoint, 2> q = answerCell(f, r, c, o);
         scratch.triangles += 2;
         SurfaceSlot& s = slot(r, c);
         s.stamp = stamp;
-        const bool walls = exposed(f, r, c);
         s.exposed = walls;
         for (int t = 0; t < 2; ++t) {
           const double d = (q[t].point - o).norm();
@@ -138,10 +168,24 @@ bool surfaceLocalMinima(const Terrain& terrain, std::span<const Run> runs, const
       });
     }
 
-    // A triangle's slot, none beyond the reach (a cell not tested).
+    // A triangle's slot, none beyond the reach (a cell not tested). A
+    // passed cell is tested, and answered, when first asked: with the same
+    // test, on the same sums, as a searched one.
+    const std::span<const Run> passed = std::span<const Run>(scratch.passed).subspan(first_passed);
     const auto tested = [&](const Cell& n) -> const SurfaceSlot* {
-      const SurfaceSlot& s = slot(n.row, n.col);
-      return s.stamp == stamp ? &s : nullptr;
+      SurfaceSlot& s = slot(n.row, n.col);
+      if (s.stamp == stamp) return &s;
+      const std::optional<PieceId> id = passedCell(passed, n.row, n.col);
+      if (!id) return nullptr;
+      bool near = false;
+      forEachCellNear(f, n.row, n.col, n.col, *id, o, reach, [&](int, PieceId) { near = true; });
+      if (!near) return nullptr;
+      const std::array<TriangleClosestPoint, 2> q = answerCell(f, n.row, n.col, o);
+      scratch.triangles += 2;
+      s.stamp = stamp;
+      s.exposed = false;
+      for (int t = 0; t < 2; ++t) s.distance[t] = (q[t].point - o).norm();
+      return &s;
     };
     for (std::size_t k = first_point; k < scratch.points.size(); ++k) {
       SurfacePoint& a = scratch.points[k];
@@ -192,6 +236,74 @@ bool surfaceLocalMinima(const Terrain& terrain, std::span<const Run> runs, const
     }
   }
   return true;
+}
+
+void passedShadows(const Terrain& terrain, const SurfaceScratch& scratch, std::span<const WheelContact> contacts,
+                   std::span<const std::uint8_t> uncovered, double radius, double gap, std::vector<SurfacePoint>& out) {
+  const Eigen::Vector3d& o = scratch.centre;
+  // A contact b reads a shadow's prism through its plane bound at b's
+  // ground point, less the gap (`outside`, m): a cut below b's patch
+  // sqrt(2 r Z_b) from a shadow no farther from O than b (plus the gap),
+  // coverage at or below 0, a real edge's clearance below Z_b (the last
+  // two only when no other contact covers b). Beside a cell by `beside`
+  // (m) that bound is at least beside * per_beside (prismPlaneBound), and
+  // no triangle of a box lies nearer to O than the box (`nearest`, asked
+  // only when needed).
+  double per_beside = 0.0;
+  const auto matters = [&](double x0, double x1, double y0, double y1, const auto& nearest) {
+    double near = -1.0;
+    for (std::size_t k = 0; k < contacts.size(); ++k) {
+      const WheelContact& b = contacts[k];
+      const Eigen::Vector3d& p = b.ground_point;
+      const double outside = std::max({x0 - p.x(), p.x() - x1, y0 - p.y(), p.y() - y1}) * per_beside - gap;
+      if (uncovered[k] != 0 && outside < b.deflection) return true;
+      if (outside < std::sqrt(2.0 * radius * b.deflection)) {
+        if (near < 0.0) near = nearest();
+        if (near <= b.signed_distance + gap) return true;
+      }
+    }
+    return false;
+  };
+  int part = -1;
+  const Heightfield* field = nullptr;
+  double base_z = 0.0;
+  for (const Run& run : scratch.passed) {
+    if (run.part != part) {
+      part = run.part;
+      const Terrain::CompactField compact = terrain.compactField(static_cast<std::size_t>(part));
+      field = compact.field, base_z = compact.bounds.min.z();
+      const double sx = field->spacing_x, sy = field->spacing_y;
+      per_beside = std::min(sx, sy) / (std::sqrt(sx * sx + sy * sy) + std::max(sx, sy));
+    }
+    const Heightfield& f = *field;
+    const auto x = [&](int i) { return f.origin.x() + i * f.spacing_x; };  // as sample() computes them
+    const auto y = [&](int i) { return f.origin.y() + i * f.spacing_y; };
+    const int r = run.row;
+    // The distance from O of the box of cells lo ... hi.
+    const auto box = [&](int lo, int hi) {
+      return [&f, &o, &x, &y, r, lo, hi] {
+        double top = f.height(r, lo);
+        for (int c = lo; c <= hi + 1; ++c) top = std::max({top, f.height(r, c), f.height(r + 1, c)});
+        const double dx = std::max({0.0, x(lo) - o.x(), o.x() - x(hi + 1)});
+        const double dy = std::max({0.0, y(r) - o.y(), o.y() - y(r + 1)});
+        const double dz = std::max(0.0, o.z() - (f.origin.z() + top));
+        return std::sqrt(dx * dx + dy * dy + dz * dz);
+      };
+    };
+    if (!matters(x(run.first_col), x(run.last_col + 1), y(r), y(r + 1), box(run.first_col, run.last_col))) continue;
+    for (int c = run.first_col; c <= run.last_col; ++c) {
+      if (!matters(x(c), x(c + 1), y(r), y(r + 1), box(c, c))) continue;
+      const std::array<TriangleClosestPoint, 2> q = answerCell(f, r, c, o);
+      const PieceId id = run.first_piece + 2 * (c - run.first_col);
+      for (int t = 0; t < 2; ++t) {
+        const double d = (q[t].point - o).norm();
+        if (d < radius) {  // a cell beyond the reach has none
+          out.push_back({q[t].point, d, &f, base_z, id + t, r, c, static_cast<std::uint8_t>(t),
+                         static_cast<std::uint8_t>(q[t].feature)});
+        }
+      }
+    }
+  }
 }
 
 double prismPlaneBound(const SurfacePoint& s, const Eigen::Vector3d& p, double enough) {

@@ -56,6 +56,15 @@ bool surfaceLocalMinima(const Terrain& terrain, std::span<const Terrain::Surface
                         const Eigen::Vector3d& centre, double reach, double tie, SurfaceScratch& scratch,
                         std::vector<PieceId>& prisms, std::vector<SurfacePoint>& touches);
 
+/// The seam rule's shadows on the cells the last search passed
+/// (scratch.passed, for scratch.centre): the triangles nearer than `radius`
+/// (m) of each passed cell that could change a share the rule gives
+/// `contacts` (WheelContactFinder::applySeamRule, with its `gap`, m),
+/// appended to `out`. uncovered[k]: no other contact covers contact k's
+/// ground point (only then does a shadow's coverage or clearance count).
+void passedShadows(const Terrain& terrain, const SurfaceScratch& scratch, std::span<const WheelContact> contacts,
+                   std::span<const std::uint8_t> uncovered, double radius, double gap, std::vector<SurfacePoint>& out);
+
 /// The plane bound (ConvexPolyhedron::planeBound, m) at `p` of the prism
 /// whose top is `s`'s triangle, from the field's samples; any value above
 /// `enough` (m) once the base and the walls pass it.

@@ -26,8 +26,10 @@ WheelContactFinder::WheelContactFinder() {
   shares_.reserve(kReservedCandidates);
   rank_.reserve(kReservedCandidates);
   through_edge_.reserve(kReservedCandidates);
+  uncovered_.reserve(kReservedCandidates);
   surface_runs_.reserve(kReservedCandidates);
   surface_.points.reserve(kReservedCandidates);
+  surface_.passed.reserve(kReservedCandidates);
   shadows_.reserve(kReservedCandidates);
   touches_.reserve(kReservedCandidates);
   exits_.reserve(kReservedCandidates);
@@ -67,6 +69,7 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
   candidates_.clear();
   touches_.clear();
   surface_.points.clear();  // no shadows but this call's
+  surface_.passed.clear();
   const double gap = tolerance::kSeamGapRelative * r;
   bool per_prism = !(options.field_surface && options.seam_rule);
   if (!per_prism) {
@@ -83,6 +86,7 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
         candidates_.clear();
         touches_.clear();
         surface_.points.clear();
+        surface_.passed.clear();
       }
     }
   }
@@ -275,6 +279,18 @@ void WheelContactFinder::applySeamRule(double gap, double radius) {
   shadows_.clear();
   for (const detail::SurfacePoint& s : surface_.points) {
     if (!s.minimum && s.distance < radius) shadows_.push_back(s);
+  }
+  // The cells the search passed: only those that could change a share.
+  // A contact another contact covers reads no shadow's coverage, nor
+  // (covered, it is no real edge) a shadow's clearance.
+  if (!surface_.passed.empty()) {
+    uncovered_.assign(contacts_.size(), 1);
+    for (std::size_t b = 0; b < contacts_.size(); ++b) {
+      for (std::size_t a = 0; a < contacts_.size() && uncovered_[b]; ++a) {
+        if (a != b && contact_pieces_[a]->planeBound(contacts_[b].ground_point) - gap <= 0.0) uncovered_[b] = 0;
+      }
+    }
+    detail::passedShadows(*terrain_, surface_, contacts_, uncovered_, radius, gap, shadows_);
   }
   const double tie = gap;  // shadowNearer's
   auto share = [&](std::size_t at) {

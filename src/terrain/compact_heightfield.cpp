@@ -22,6 +22,19 @@ double floorOf(double v) {
   const auto t = static_cast<double>(static_cast<std::int64_t>(v));  // toward zero
   return t > v ? t - 1.0 : t;
 }
+
+// A float at or below (down) or at or above (up) `v`.
+float floatDown(double v) {
+  float f = static_cast<float>(v);
+  if (static_cast<double>(f) > v) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+  return f;
+}
+float floatUp(double v) {
+  float f = static_cast<float>(v);
+  if (static_cast<double>(f) < v) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+  return f;
+}
+
 }  // namespace
 
 CompactHeightfield::CompactHeightfield(Heightfield field) : field_(std::move(field)) {
@@ -74,9 +87,7 @@ void CompactHeightfield::makeTiles() {
                    -std::numeric_limits<float>::infinity());
   for (int r = 0; r < field_.rows; ++r) {
     for (int c = 0; c < field_.cols; ++c) {
-      const double h = field_.height(r, c);
-      float up = static_cast<float>(h);
-      if (static_cast<double>(up) < h) up = std::nextafter(up, std::numeric_limits<float>::infinity());
+      const float up = floatUp(field_.height(r, c));
       // A sample on a tile's side belongs to the tiles on both sides of it.
       for (int tr = std::max(0, (r - 1) / kTileCells); tr <= std::min(tile_rows - 1, r / kTileCells); ++tr) {
         for (int tc = std::max(0, (c - 1) / kTileCells); tc <= std::min(tile_cols_ - 1, c / kTileCells); ++tc) {
@@ -87,6 +98,44 @@ void CompactHeightfield::makeTiles() {
     }
   }
   tile_top_.shrink_to_fit();
+  makeTileFalls();
+}
+
+void CompactHeightfield::makeTileFalls() {
+  const Heightfield& f = field_;
+  const int cells_x = f.cols - 1, cells_y = f.rows - 1;
+  const int tile_rows = (cells_y + kTileCells - 1) / kTileCells;
+  tile_fall_.assign(tile_top_.size(), {0.0f, std::numeric_limits<float>::infinity()});
+  for (int tr = 0; tr < tile_rows; ++tr) {
+    for (int tc = 0; tc < tile_cols_; ++tc) {
+      const int r0 = tr * kTileCells, r1 = std::min(r0 + kTileCells, cells_y) - 1;  // the tile's cells
+      const int c0 = tc * kTileCells, c1 = std::min(c0 + kTileCells, cells_x) - 1;
+      // Each cell a ground cell away from the field's edge, its neighbours
+      // ground too (field_surface.cpp's exposed()).
+      if (r0 < 1 || c0 < 1 || r1 + 2 >= f.rows || c1 + 2 >= f.cols) continue;
+      bool holes = false;
+      for (int r = r0 - 1; r <= r1 + 1 && !holes; ++r) {
+        for (int c = c0 - 1; c <= c1 + 1 && !holes; ++c) holes = f.isHole(r, c);
+      }
+      if (holes) continue;
+      // The samples of the tile's cells and their neighbours.
+      double low = f.height(r0 - 1, c0 - 1), along_x = 0.0, along_y = 0.0;
+      for (int i = r0 - 1; i <= r1 + 2; ++i) {
+        for (int j = c0 - 1; j <= c1 + 2; ++j) {
+          const double h = f.height(i, j);
+          low = std::min(low, h);
+          if (j <= c1 + 1) along_x = std::max(along_x, std::abs(f.height(i, j + 1) - h));
+          if (i <= r1 + 1) along_y = std::max(along_y, std::abs(f.height(i + 1, j) - h));
+        }
+      }
+      // A triangle's gradient takes one difference along each axis
+      // (p01 - p00 and p11 - p01, or p11 - p10 and p10 - p00).
+      const double gx = along_x / f.spacing_x, gy = along_y / f.spacing_y;
+      tile_fall_[static_cast<std::size_t>(tr) * tile_cols_ + tc] = {floatDown(low),
+                                                                    floatUp(std::sqrt(gx * gx + gy * gy))};
+    }
+  }
+  tile_fall_.shrink_to_fit();
 }
 
 bool CompactHeightfield::tileBeyond(int tile_row, int tile_col, const Eigen::Vector3d& point, double reach2) const {
@@ -210,8 +259,8 @@ std::array<double, 2> CompactHeightfield::pieceTops(int r, int c) const {
   return {prismTop(field_, r, c, 0), prismTop(field_, r, c, 1)};
 }
 
-template <typename Run>
-void CompactHeightfield::walkRuns(const Eigen::Vector3d& point, double reach, Run&& run) const {
+template <typename Run, typename Passes>
+void CompactHeightfield::walkRuns(const Eigen::Vector3d& point, double reach, Run&& run, Passes&& passes) const {
   const Heightfield& f = field_;
   const Aabb cube{point.array() - reach, point.array() + reach};
   // overlapping()'s tests on the cube, then each box's distance.
@@ -245,7 +294,7 @@ void CompactHeightfield::walkRuns(const Eigen::Vector3d& point, double reach, Ru
   // row's first 64 tiles from c0 on are kept in two masks.
   const int first_tile = c0 / kTileCells;
   int tile_row = -1;
-  std::uint64_t asked = 0, beyond = 0;
+  std::uint64_t asked = 0, beyond = 0, asked_pass = 0, passing = 0;
   const auto tileSkipped = [&](int tc) {
     const int bit = tc - first_tile;
     if (bit >= 64) return tileBeyond(tile_row, tc, point, reach2);
@@ -255,6 +304,16 @@ void CompactHeightfield::walkRuns(const Eigen::Vector3d& point, double reach, Ru
       if (tileBeyond(tile_row, tc, point, reach2)) beyond |= mask;
     }
     return (beyond & mask) != 0;
+  };
+  const auto tilePasses = [&](int tc) {
+    const int bit = tc - first_tile;
+    if (bit >= 64) return passes(tile_row, tc);
+    const std::uint64_t mask = std::uint64_t{1} << bit;
+    if ((asked_pass & mask) == 0) {
+      asked_pass |= mask;
+      if (passes(tile_row, tc)) passing |= mask;
+    }
+    return (passing & mask) != 0;
   };
   // The cells along x that a chord of half-width `half` about the point may
   // meet, within [lo, hi]: a guess one cell wide of the division's, as each
@@ -273,7 +332,7 @@ void CompactHeightfield::walkRuns(const Eigen::Vector3d& point, double reach, Ru
     const double dy = std::max({0.0, y(r) - point.y(), point.y() - y(r + 1)});
     if (dy * dy > reach2) continue;
     if (r / kTileCells != tile_row) {
-      tile_row = r / kTileCells, asked = 0, beyond = 0;
+      tile_row = r / kTileCells, asked = 0, beyond = 0, asked_pass = 0, passing = 0;
       // A tile row whose tiles on the disc all lie beyond the reach is
       // passed at once (on a fine field most of the disc's rows).
       const int last = std::min(r1, (tile_row + 1) * kTileCells - 1);
@@ -318,13 +377,20 @@ void CompactHeightfield::walkRuns(const Eigen::Vector3d& point, double reach, Ru
         c = next;
         continue;
       }
+      // A tile whose cells all pass goes whole (the caller tests a cell
+      // when it asks for it).
+      if (tilePasses(tile)) {
+        run(r, c, tile_end, piecesBefore(row + c), true);
+        c = next;
+        continue;
+      }
       int lo, hi;
       span(std::sqrt(rest), c, tile_end, lo, hi);
       if (lo > hi) {
         c = next;
         continue;
       }
-      run(r, lo, hi, piecesBefore(row + lo));
+      run(r, lo, hi, piecesBefore(row + lo), false);
       c = next;
     }
   }
@@ -332,29 +398,96 @@ void CompactHeightfield::walkRuns(const Eigen::Vector3d& point, double reach, Ru
 
 void CompactHeightfield::within(const Eigen::Vector3d& point, double reach, PieceId first,
                                 std::vector<PieceId>& out) const {
-  walkRuns(point, reach, [&](int r, int lo, int hi, std::size_t k) {
-    // The cell's box (both pieces' union) first: one test turns both
-    // pieces away; their own boxes decide the rest.
-    forEachCellNear(field_, r, lo, hi, first + static_cast<PieceId>(k), point, reach, [&](int c, PieceId id) {
-      for (int t = 0; t < 2; ++t) {
-        if (prismBoxWithin(field_, r, c, t, base_z_, point, reach)) out.push_back(id + t);
-      }
-    });
-  });
+  walkRuns(
+      point, reach,
+      [&](int r, int lo, int hi, std::size_t k, bool) {
+        // The cell's box (both pieces' union) first: one test turns both
+        // pieces away; their own boxes decide the rest.
+        forEachCellNear(field_, r, lo, hi, first + static_cast<PieceId>(k), point, reach, [&](int c, PieceId id) {
+          for (int t = 0; t < 2; ++t) {
+            if (prismBoxWithin(field_, r, c, t, base_z_, point, reach)) out.push_back(id + t);
+          }
+        });
+      },
+      [](int, int) { return false; });
 }
 
 bool CompactHeightfield::surfaceWithin(const Eigen::Vector3d& point, double reach, PieceId first, int part,
                                        std::vector<SurfaceRun>& runs) const {
-  walkRuns(point, reach, [&](int r, int lo, int hi, std::size_t k) {
-    runs.push_back({first + static_cast<PieceId>(k), part, r, lo, hi});
-  });
+  walkRuns(
+      point, reach,
+      [&](int r, int lo, int hi, std::size_t k, bool passed) {
+        const PieceId id = first + static_cast<PieceId>(k);
+        if (passed) {
+          runs.push_back({id, part, r, lo, hi, true});
+        } else {
+          splitRun(point, reach, r, lo, hi, id, part, runs);
+        }
+      },
+      [&](int tile_row, int tile_col) {
+        // The tile's rectangle lies farther than fallingFrom() from the
+        // point's vertical: all its cells pass.
+        const Heightfield& f = field_;
+        const double far = fallingFrom(point, tile_row, tile_col);
+        const int c0 = tile_col * kTileCells, c1 = std::min(c0 + kTileCells, f.cols - 1);
+        const int r0 = tile_row * kTileCells, r1 = std::min(r0 + kTileCells, f.rows - 1);
+        const double dx =
+            std::max({0.0, f.origin.x() + c0 * f.spacing_x - point.x(), point.x() - (f.origin.x() + c1 * f.spacing_x)});
+        const double dy =
+            std::max({0.0, f.origin.y() + r0 * f.spacing_y - point.y(), point.y() - (f.origin.y() + r1 * f.spacing_y)});
+        return dx * dx + dy * dy > far * far;
+      });
   return true;
+}
+
+double CompactHeightfield::fallingFrom(const Eigen::Vector3d& point, int tile_row, int tile_col) const {
+  const TileFall& fall = tile_fall_[static_cast<std::size_t>(tile_row) * tile_cols_ + tile_col];
+  const double slope = fall.slope;
+  if (!(slope < std::numeric_limits<double>::infinity())) return slope;  // none passes (a hole or the edge near)
+  // The ring's samples lie in the tiles around (a passing tile is never on
+  // the field's edge: they all exist), each tile's top holding its sides'.
+  double high = -std::numeric_limits<double>::infinity();
+  for (int tr = tile_row - 1; tr <= tile_row + 1; ++tr) {
+    for (int tc = tile_col - 1; tc <= tile_col + 1; ++tc) high = std::max(high, tileTop(tr, tc));
+  }
+  const double height = std::max(std::abs(point.z() - (field_.origin.z() + fall.low)), std::abs(point.z() - high));
+  return kFallMargin * height * slope + kFallMarginM;
+}
+
+void CompactHeightfield::splitRun(const Eigen::Vector3d& point, double reach, int r, int lo, int hi, PieceId id,
+                                  int part, std::vector<SurfaceRun>& runs) const {
+  const Heightfield& f = field_;
+  // The cells farther than `far` (m) from the point's vertical pass (the
+  // note on kFallMargin, field_cells.hpp); those within it, a cell wider each side, are
+  // searched: [a, b], none when a > b. On rough ground (no cell within
+  // the reach passes) the run is searched whole at once.
+  const double far = fallingFrom(point, r / kTileCells, lo / kTileCells);
+  if (!(far < reach)) {
+    runs.push_back({id, part, r, lo, hi});
+    return;
+  }
+  const double dy =
+      std::max({0.0, f.origin.y() + r * f.spacing_y - point.y(), point.y() - (f.origin.y() + (r + 1) * f.spacing_y)});
+  int a = hi + 1, b = hi;
+  if (dy <= far) {
+    const double u = (point.x() - f.origin.x()) / f.spacing_x, half = std::sqrt(far * far - dy * dy) / f.spacing_x;
+    a = static_cast<int>(std::clamp(floorOf(u - half) - 1.0, static_cast<double>(lo), static_cast<double>(hi) + 1.0));
+    b = static_cast<int>(std::clamp(floorOf(u + half) + 1.0, static_cast<double>(lo) - 1.0, static_cast<double>(hi)));
+  }
+  if (a > b) {
+    runs.push_back({id, part, r, lo, hi, true});
+    return;
+  }
+  // No holes in the tile: a cell's pieces follow the previous cell's.
+  if (a > lo) runs.push_back({id, part, r, lo, a - 1, true});
+  runs.push_back({id + 2 * (a - lo), part, r, a, b});
+  if (b < hi) runs.push_back({id + 2 * (b + 1 - lo), part, r, b + 1, hi, true});
 }
 
 std::size_t CompactHeightfield::memoryBytes() const {
   return sizeof(*this) + field_.heights.capacity() * sizeof(double) + tile_top_.capacity() * sizeof(float) +
-         field_.cell_materials.capacity() * sizeof(MaterialId) + field_.cell_holes.capacity() +
-         ground_before_.capacity() * sizeof(std::uint32_t);
+         tile_fall_.capacity() * sizeof(TileFall) + field_.cell_materials.capacity() * sizeof(MaterialId) +
+         field_.cell_holes.capacity() + ground_before_.capacity() * sizeof(std::uint32_t);
 }
 
 }  // namespace wtc::detail

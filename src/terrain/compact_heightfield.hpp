@@ -21,7 +21,11 @@
 // Tiles. within() (a wheel's search) skips the cells of a tile of
 // kTileCells x kTileCells cells at once when the tile's highest sample
 // (kept in single precision, rounded up: 4 bytes a tile, 1/16 of a byte a
-// cell) puts all of them beyond the reach.
+// cell) puts all of them beyond the reach. surfaceWithin() passes the
+// cells of a tile on which the distance from the wheel centre can have no
+// local minimum (SurfaceRun::passed), from the tile's lowest sample and
+// steepest slope, its ring of neighbouring cells included, and the tops of
+// the tiles around (TileFall: 8 bytes a tile more, 1/8 of a byte a cell).
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -76,14 +80,33 @@ class CompactHeightfield final : public FormedPieces {
   // The tops (m) of cell (r, c)'s two pieces, as their boxes have them.
   std::array<double, 2> pieceTops(int r, int c) const;
   void makeTiles();
-  // within()'s walk: run(r, lo, hi, k) for each run of cells (r, lo ...
-  // hi) that may hold a piece within the reach, k the first piece of its
-  // first ground cell.
-  template <typename Run>
-  void walkRuns(const Eigen::Vector3d& point, double reach, Run&& run) const;
+  // within()'s walk: run(r, lo, hi, k, passed) for each run of cells (r,
+  // lo ... hi) that may hold a piece within the reach, k the first piece of
+  // its first ground cell. A tile for which passes(tile_row, tile_col)
+  // holds comes whole, passed = true, not narrowed to the reach.
+  template <typename Run, typename Passes>
+  void walkRuns(const Eigen::Vector3d& point, double reach, Run&& run, Passes&& passes) const;
   // True when no piece of tile (tile_row, tile_col) has a box within
   // `reach2` (m^2, the reach squared) of `point`.
   bool tileBeyond(int tile_row, int tile_col, const Eigen::Vector3d& point, double reach2) const;
+  // A tile's samples, its cells' neighbours' included: the lowest (m,
+  // above the field's origin, rounded down) and a bound on the slope
+  // |grad h| of every triangle among them (rounded up), or an infinite
+  // slope when a cell of the tile has a hole or the field's edge for a
+  // neighbour (its walls may be ground). Their highest is at most the
+  // highest of the 3 x 3 tiles' tops around.
+  struct TileFall {
+    float low = 0.0f, slope = 0.0f;
+  };
+  void makeTileFalls();
+  // The distance (m) from `point`'s vertical beyond which the cells of
+  // tile (tile_row, tile_col) pass (kFallMargin, field_cells.hpp); infinite
+  // where none can.
+  double fallingFrom(const Eigen::Vector3d& point, int tile_row, int tile_col) const;
+  // surfaceWithin()'s run (r, lo ... hi) of first piece `id`, within one
+  // tile, split into the cells it passes and those it searches.
+  void splitRun(const Eigen::Vector3d& point, double reach, int r, int lo, int hi, PieceId id, int part,
+                std::vector<SurfaceRun>& runs) const;
   // The tile's highest sample (m, world), rounded up.
   double tileTop(int tile_row, int tile_col) const {
     return field_.origin.z() +
@@ -105,6 +128,7 @@ class CompactHeightfield final : public FormedPieces {
   // samples on its four sides included), float rounded up (m, above the
   // field's origin).
   std::vector<float> tile_top_;
+  std::vector<TileFall> tile_fall_;  // row-major over the tiles, as tile_top_
   int tile_cols_ = 0;
   double base_z_ = 0.0;
   Aabb bounds_;

@@ -70,9 +70,12 @@ struct SurfaceSlot {
   bool exposed = false;  ///< Its prisms are queried as prisms.
 };
 /// The finder's scratch for a field's surface: the triangles within the
-/// reach, and a window of slots over the cells searched.
+/// reach, the runs of cells passed (no minimum on them: answered only when
+/// asked), and a window of slots over the cells searched.
 struct SurfaceScratch {
   std::vector<SurfacePoint> points;
+  std::vector<Terrain::SurfaceRun> passed;
+  Eigen::Vector3d centre{Eigen::Vector3d::Zero()};  ///< Of the last search (m).
   std::vector<SurfaceSlot> window;
   std::uint32_t stamp = 0;
   std::size_t triangles = 0;  ///< Answered in closed form by the last search.
@@ -204,6 +207,7 @@ class WheelContactFinder {
   std::vector<double> shares_;
   std::vector<std::size_t> rank_;  // the seam rule's order: contacts_ indices, nearest first
   std::vector<double> through_edge_;  // per contact of this call: groundThroughEdge's answer, or kNotMeasured
+  std::vector<std::uint8_t> uncovered_;  // per contact of this call: no other contact covers its ground point
   // The piece of each of this call's contacts (contacts_ order: stored, or
   // formed and kept in formed_), and the pieces formed for this call's
   // candidates (compact parts'), kept for the next call. Held by

@@ -214,6 +214,12 @@ class Terrain {
     PieceId first_piece = 0;
     std::int32_t part = 0;
     std::int32_t row = 0, first_col = 0, last_col = 0;
+    /// No local minimum of the distance from the point lies on these
+    /// cells: from each of their points the distance falls away along the
+    /// surface, onto a triangle of a neighbouring cell that is strictly
+    /// nearer. They are ground cells, none of them or their neighbours a
+    /// hole or on the field's edge.
+    bool passed = false;
   };
   /// within(), but a compact heightfield's pieces come as runs of cells
   /// (row-major within each part, parts in id order) that hold every
