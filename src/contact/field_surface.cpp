@@ -68,8 +68,10 @@ bool above(const Terrain::CompactField& compact, const Eigen::Vector3d& o, doubl
   return !surface || o.z() > *surface + tie;
 }
 
-// The two triangles of cell (r, c) answered for the centre `o`.
-std::array<TriangleClosestPoint, 2> answerCell(const Heightfield& f, int r, int c, const Eigen::Vector3d& o) {
+// The two triangles of cell (r, c) answered for the centre `o` (inlined:
+// a search answers dozens a step).
+[[gnu::always_inline]] inline std::array<TriangleClosestPoint, 2> answerCell(const Heightfield& f, int r, int c,
+                                                                             const Eigen::Vector3d& o) {
   const Eigen::Vector3d p00 = f.sample(r, c), p01 = f.sample(r, c + 1);
   const Eigen::Vector3d p10 = f.sample(r + 1, c), p11 = f.sample(r + 1, c + 1);
   return {closestOnTriangle(o, p00, p01, p11), closestOnTriangle(o, p00, p11, p10)};
@@ -82,6 +84,22 @@ std::optional<PieceId> passedCell(std::span<const Run> passed, int r, int c) {
     if (run->first_col <= c && c <= run->last_col) return run->first_piece + 2 * (c - run->first_col);
   }
   return std::nullopt;
+}
+
+// A cell of `passed` tested as a searched cell is (its box within the
+// reach, the same sums) and answered into `slot`; false when no run holds
+// it or it lies beyond the reach. Out of line: most searches ask none.
+[[gnu::noinline]] bool testPassed(const Heightfield& f, std::span<const Run> passed, int r, int c,
+                                  const Eigen::Vector3d& o, double reach, SurfaceSlot& slot) {
+  const std::optional<PieceId> id = passedCell(passed, r, c);
+  if (!id) return false;
+  bool near = false;
+  forEachCellNear(f, r, c, c, *id, o, reach, [&](int, PieceId) { near = true; });
+  if (!near) return false;
+  const std::array<TriangleClosestPoint, 2> q = answerCell(f, r, c, o);
+  slot.exposed = false;
+  for (int t = 0; t < 2; ++t) slot.distance[t] = (q[t].point - o).norm();
+  return true;
 }
 
 }  // namespace
@@ -136,22 +154,11 @@ bool surfaceLocalMinima(const Terrain& terrain, std::span<const Run> runs, const
       }
       const int r = run.row;
       forEachCellNear(f, r, run.first_col, run.last_col, run.first_piece, o, reach, [&](int c, PieceId cell_id) {
-        const bool walls = exposed(f, r, c);
-        if (!walls && cellPasses(f, r, c, o)) {  // as a passed run's: joined to the last one it follows
-          if (scratch.passed.size() > first_passed) {
-            Run& last = scratch.passed.back();
-            if (last.row == r && last.last_col + 1 == c) {
-              last.last_col = c;
-              return;
-            }
-          }
-          scratch.passed.push_back({cell_id, part, r, c, c, true});
-          return;
-        }
         const std::array<TriangleClosestPoint, 2> q = answerCell(f, r, c, o);
         scratch.triangles += 2;
         SurfaceSlot& s = slot(r, c);
         s.stamp = stamp;
+        const bool walls = exposed(f, r, c);
         s.exposed = walls;
         for (int t = 0; t < 2; ++t) {
           const double d = (q[t].point - o).norm();
@@ -175,16 +182,9 @@ bool surfaceLocalMinima(const Terrain& terrain, std::span<const Run> runs, const
     const auto tested = [&](const Cell& n) -> const SurfaceSlot* {
       SurfaceSlot& s = slot(n.row, n.col);
       if (s.stamp == stamp) return &s;
-      const std::optional<PieceId> id = passedCell(passed, n.row, n.col);
-      if (!id) return nullptr;
-      bool near = false;
-      forEachCellNear(f, n.row, n.col, n.col, *id, o, reach, [&](int, PieceId) { near = true; });
-      if (!near) return nullptr;
-      const std::array<TriangleClosestPoint, 2> q = answerCell(f, n.row, n.col, o);
-      scratch.triangles += 2;
+      if (passed.empty() || !testPassed(f, passed, n.row, n.col, o, reach, s)) return nullptr;
       s.stamp = stamp;
-      s.exposed = false;
-      for (int t = 0; t < 2; ++t) s.distance[t] = (q[t].point - o).norm();
+      scratch.triangles += 2;
       return &s;
     };
     for (std::size_t k = first_point; k < scratch.points.size(); ++k) {

@@ -259,8 +259,8 @@ std::array<double, 2> CompactHeightfield::pieceTops(int r, int c) const {
   return {prismTop(field_, r, c, 0), prismTop(field_, r, c, 1)};
 }
 
-template <typename Run, typename Passes>
-void CompactHeightfield::walkRuns(const Eigen::Vector3d& point, double reach, Run&& run, Passes&& passes) const {
+template <typename Run, typename Falls>
+void CompactHeightfield::walkRuns(const Eigen::Vector3d& point, double reach, Run&& run, Falls&& falls) const {
   const Heightfield& f = field_;
   const Aabb cube{point.array() - reach, point.array() + reach};
   // overlapping()'s tests on the cube, then each box's distance.
@@ -294,7 +294,8 @@ void CompactHeightfield::walkRuns(const Eigen::Vector3d& point, double reach, Ru
   // row's first 64 tiles from c0 on are kept in two masks.
   const int first_tile = c0 / kTileCells;
   int tile_row = -1;
-  std::uint64_t asked = 0, beyond = 0, asked_pass = 0, passing = 0;
+  std::uint64_t asked = 0, beyond = 0, asked_fall = 0;
+  std::array<double, 64> fall{};  // falls() of the tile row's first 64 tiles, as asked_fall marks
   const auto tileSkipped = [&](int tc) {
     const int bit = tc - first_tile;
     if (bit >= 64) return tileBeyond(tile_row, tc, point, reach2);
@@ -305,15 +306,15 @@ void CompactHeightfield::walkRuns(const Eigen::Vector3d& point, double reach, Ru
     }
     return (beyond & mask) != 0;
   };
-  const auto tilePasses = [&](int tc) {
+  const auto tileFalls = [&](int tc) {
     const int bit = tc - first_tile;
-    if (bit >= 64) return passes(tile_row, tc);
+    if (bit >= 64) return falls(tile_row, tc);
     const std::uint64_t mask = std::uint64_t{1} << bit;
-    if ((asked_pass & mask) == 0) {
-      asked_pass |= mask;
-      if (passes(tile_row, tc)) passing |= mask;
+    if ((asked_fall & mask) == 0) {
+      asked_fall |= mask;
+      fall[static_cast<std::size_t>(bit)] = falls(tile_row, tc);
     }
-    return (passing & mask) != 0;
+    return fall[static_cast<std::size_t>(bit)];
   };
   // The cells along x that a chord of half-width `half` about the point may
   // meet, within [lo, hi]: a guess one cell wide of the division's, as each
@@ -332,7 +333,7 @@ void CompactHeightfield::walkRuns(const Eigen::Vector3d& point, double reach, Ru
     const double dy = std::max({0.0, y(r) - point.y(), point.y() - y(r + 1)});
     if (dy * dy > reach2) continue;
     if (r / kTileCells != tile_row) {
-      tile_row = r / kTileCells, asked = 0, beyond = 0, asked_pass = 0, passing = 0;
+      tile_row = r / kTileCells, asked = 0, beyond = 0, asked_fall = 0;
       // A tile row whose tiles on the disc all lie beyond the reach is
       // passed at once (on a fine field most of the disc's rows).
       const int last = std::min(r1, (tile_row + 1) * kTileCells - 1);
@@ -379,10 +380,18 @@ void CompactHeightfield::walkRuns(const Eigen::Vector3d& point, double reach, Ru
       }
       // A tile whose cells all pass goes whole (the caller tests a cell
       // when it asks for it).
-      if (tilePasses(tile)) {
-        run(r, c, tile_end, piecesBefore(row + c), true);
-        c = next;
-        continue;
+      const double far = tileFalls(tile);
+      if (far < reach) {
+        const double tile_x0 = f.origin.x() + tile * kTileCells * f.spacing_x;
+        const double tile_x1 = f.origin.x() + std::min((tile + 1) * kTileCells, f.cols - 1) * f.spacing_x;
+        const double tile_y0 = y(tile_row * kTileCells), tile_y1 = y(std::min((tile_row + 1) * kTileCells, f.rows - 1));
+        const double dx = std::max({0.0, tile_x0 - point.x(), point.x() - tile_x1});
+        const double dy_tile = std::max({0.0, tile_y0 - point.y(), point.y() - tile_y1});
+        if (dx * dx + dy_tile * dy_tile > far * far) {
+          run(r, c, tile_end, piecesBefore(row + c), far, true);
+          c = next;
+          continue;
+        }
       }
       int lo, hi;
       span(std::sqrt(rest), c, tile_end, lo, hi);
@@ -390,7 +399,7 @@ void CompactHeightfield::walkRuns(const Eigen::Vector3d& point, double reach, Ru
         c = next;
         continue;
       }
-      run(r, lo, hi, piecesBefore(row + lo), false);
+      run(r, lo, hi, piecesBefore(row + lo), far, false);
       c = next;
     }
   }
@@ -400,7 +409,7 @@ void CompactHeightfield::within(const Eigen::Vector3d& point, double reach, Piec
                                 std::vector<PieceId>& out) const {
   walkRuns(
       point, reach,
-      [&](int r, int lo, int hi, std::size_t k, bool) {
+      [&](int r, int lo, int hi, std::size_t k, double, bool) {
         // The cell's box (both pieces' union) first: one test turns both
         // pieces away; their own boxes decide the rest.
         forEachCellNear(field_, r, lo, hi, first + static_cast<PieceId>(k), point, reach, [&](int c, PieceId id) {
@@ -409,63 +418,61 @@ void CompactHeightfield::within(const Eigen::Vector3d& point, double reach, Piec
           }
         });
       },
-      [](int, int) { return false; });
+      [](int, int) { return std::numeric_limits<double>::infinity(); });
 }
 
 bool CompactHeightfield::surfaceWithin(const Eigen::Vector3d& point, double reach, PieceId first, int part,
                                        std::vector<SurfaceRun>& runs) const {
+  const Heightfield& f = field_;
   walkRuns(
       point, reach,
-      [&](int r, int lo, int hi, std::size_t k, bool passed) {
+      [&](int r, int lo, int hi, std::size_t k, double far, bool passed) {
         const PieceId id = first + static_cast<PieceId>(k);
-        if (passed) {
-          runs.push_back({id, part, r, lo, hi, true});
+        if (passed || !(far < std::numeric_limits<double>::infinity())) {  // passed whole, or searched whole
+          runs.push_back({id, part, r, lo, hi, passed});
         } else {
-          splitRun(point, reach, r, lo, hi, id, part, runs);
+          splitRun(point, far, r, lo, hi, id, part, runs);
         }
       },
       [&](int tile_row, int tile_col) {
-        // The tile's rectangle lies farther than fallingFrom() from the
-        // point's vertical: all its cells pass.
-        const Heightfield& f = field_;
-        const double far = fallingFrom(point, tile_row, tile_col);
+        // fallingFrom(), or infinite when no cell of the tile can pass (its
+        // farthest corner is within it): rough ground asks no more.
         const int c0 = tile_col * kTileCells, c1 = std::min(c0 + kTileCells, f.cols - 1);
         const int r0 = tile_row * kTileCells, r1 = std::min(r0 + kTileCells, f.rows - 1);
-        const double dx =
-            std::max({0.0, f.origin.x() + c0 * f.spacing_x - point.x(), point.x() - (f.origin.x() + c1 * f.spacing_x)});
-        const double dy =
-            std::max({0.0, f.origin.y() + r0 * f.spacing_y - point.y(), point.y() - (f.origin.y() + r1 * f.spacing_y)});
-        return dx * dx + dy * dy > far * far;
+        const double fx = std::max(std::abs(point.x() - (f.origin.x() + c0 * f.spacing_x)),
+                                   std::abs(point.x() - (f.origin.x() + c1 * f.spacing_x)));
+        const double fy = std::max(std::abs(point.y() - (f.origin.y() + r0 * f.spacing_y)),
+                                   std::abs(point.y() - (f.origin.y() + r1 * f.spacing_y)));
+        const double far = fallingFrom(point, tile_row, tile_col, fx * fx + fy * fy);
+        return far * far < fx * fx + fy * fy ? far : std::numeric_limits<double>::infinity();
       });
   return true;
 }
 
-double CompactHeightfield::fallingFrom(const Eigen::Vector3d& point, int tile_row, int tile_col) const {
+double CompactHeightfield::fallingFrom(const Eigen::Vector3d& point, int tile_row, int tile_col, double enough2) const {
   const TileFall& fall = tile_fall_[static_cast<std::size_t>(tile_row) * tile_cols_ + tile_col];
   const double slope = fall.slope;
   if (!(slope < std::numeric_limits<double>::infinity())) return slope;  // none passes (a hole or the edge near)
+  // From the lowest sample alone, a lower bound: rough ground stops here.
+  const double low = field_.origin.z() + fall.low;
+  const double least = kFallMargin * std::abs(point.z() - low) * slope + kFallMarginM;
+  if (least * least >= enough2) return least;
   // The ring's samples lie in the tiles around (a passing tile is never on
   // the field's edge: they all exist), each tile's top holding its sides'.
   double high = -std::numeric_limits<double>::infinity();
   for (int tr = tile_row - 1; tr <= tile_row + 1; ++tr) {
     for (int tc = tile_col - 1; tc <= tile_col + 1; ++tc) high = std::max(high, tileTop(tr, tc));
   }
-  const double height = std::max(std::abs(point.z() - (field_.origin.z() + fall.low)), std::abs(point.z() - high));
+  const double height = std::max(std::abs(point.z() - low), std::abs(point.z() - high));
   return kFallMargin * height * slope + kFallMarginM;
 }
 
-void CompactHeightfield::splitRun(const Eigen::Vector3d& point, double reach, int r, int lo, int hi, PieceId id,
-                                  int part, std::vector<SurfaceRun>& runs) const {
+void CompactHeightfield::splitRun(const Eigen::Vector3d& point, double far, int r, int lo, int hi, PieceId id, int part,
+                                  std::vector<SurfaceRun>& runs) const {
   const Heightfield& f = field_;
-  // The cells farther than `far` (m) from the point's vertical pass (the
-  // note on kFallMargin, field_cells.hpp); those within it, a cell wider each side, are
-  // searched: [a, b], none when a > b. On rough ground (no cell within
-  // the reach passes) the run is searched whole at once.
-  const double far = fallingFrom(point, r / kTileCells, lo / kTileCells);
-  if (!(far < reach)) {
-    runs.push_back({id, part, r, lo, hi});
-    return;
-  }
+  // The cells farther than `far` (m) from the point's vertical pass
+  // (fallingFrom()); those within it, a cell wider each side, are
+  // searched: [a, b], none when a > b.
   const double dy =
       std::max({0.0, f.origin.y() + r * f.spacing_y - point.y(), point.y() - (f.origin.y() + (r + 1) * f.spacing_y)});
   int a = hi + 1, b = hi;

@@ -80,12 +80,14 @@ class CompactHeightfield final : public FormedPieces {
   // The tops (m) of cell (r, c)'s two pieces, as their boxes have them.
   std::array<double, 2> pieceTops(int r, int c) const;
   void makeTiles();
-  // within()'s walk: run(r, lo, hi, k, passed) for each run of cells (r,
-  // lo ... hi) that may hold a piece within the reach, k the first piece of
-  // its first ground cell. A tile for which passes(tile_row, tile_col)
-  // holds comes whole, passed = true, not narrowed to the reach.
-  template <typename Run, typename Passes>
-  void walkRuns(const Eigen::Vector3d& point, double reach, Run&& run, Passes&& passes) const;
+  // within()'s walk: run(r, lo, hi, k, far, passed) for each run of cells
+  // (r, lo ... hi) that may hold a piece within the reach, k the first
+  // piece of its first ground cell, far = falls(tile_row, tile_col) of its
+  // tile (m: its cells beyond that from the point's vertical pass; asked
+  // once a tile). A tile wholly beyond it comes whole, passed = true, not
+  // narrowed to the reach.
+  template <typename Run, typename Falls>
+  void walkRuns(const Eigen::Vector3d& point, double reach, Run&& run, Falls&& falls) const;
   // True when no piece of tile (tile_row, tile_col) has a box within
   // `reach2` (m^2, the reach squared) of `point`.
   bool tileBeyond(int tile_row, int tile_col, const Eigen::Vector3d& point, double reach2) const;
@@ -101,11 +103,12 @@ class CompactHeightfield final : public FormedPieces {
   void makeTileFalls();
   // The distance (m) from `point`'s vertical beyond which the cells of
   // tile (tile_row, tile_col) pass (kFallMargin, field_cells.hpp); infinite
-  // where none can.
-  double fallingFrom(const Eigen::Vector3d& point, int tile_row, int tile_col) const;
+  // where none can. A lower bound of it once its square is `enough2` (m^2).
+  double fallingFrom(const Eigen::Vector3d& point, int tile_row, int tile_col, double enough2) const;
   // surfaceWithin()'s run (r, lo ... hi) of first piece `id`, within one
-  // tile, split into the cells it passes and those it searches.
-  void splitRun(const Eigen::Vector3d& point, double reach, int r, int lo, int hi, PieceId id, int part,
+  // tile whose cells pass beyond `far` (m, fallingFrom(), finite), split
+  // into the cells it passes and those it searches.
+  void splitRun(const Eigen::Vector3d& point, double far, int r, int lo, int hi, PieceId id, int part,
                 std::vector<SurfaceRun>& runs) const;
   // The tile's highest sample (m, world), rounded up.
   double tileTop(int tile_row, int tile_col) const {

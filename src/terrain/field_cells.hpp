@@ -4,7 +4,6 @@
 // meeting with the field as one surface (src/contact/field_surface.cpp) both
 // read from a run of Terrain::withinSurfaces.
 #include <algorithm>
-#include <cmath>
 #include <cstddef>
 
 #include <Eigen/Core>
@@ -68,41 +67,11 @@ void forEachCellNear(const Heightfield& f, int r, int lo, int hi, PieceId first,
 // (src/contact/field_surface.cpp).
 //
 // A cell passes where rho > kFallMargin |H| |g| + kFallMarginM, with |H|
-// and |g| bounded over the samples of the 3 x 3 cells (a tile's bounds,
-// CompactHeightfield::TileFall, or the cell's own, cellPasses): with that
-// margin the nearer neighbour is nearer by far more than roundoff.
+// and |g| bounded over the samples of the 3 x 3 cells around it (by its
+// tile's, CompactHeightfield::TileFall): with that margin the nearer
+// neighbour is nearer by far more than roundoff.
 inline constexpr double kFallMargin = 2.0;    // on |H| |g|
 inline constexpr double kFallMarginM = 1e-6;  // on rho (m)
-
-/// Whether ground cell (r, c), none of its eight neighbours a hole or
-/// beyond the field, passes for `point` (above), from the 4 x 4 samples of
-/// the cells around it. A sloped block fails at its first rows.
-inline bool cellPasses(const Heightfield& f, int r, int c, const Eigen::Vector3d& point) {
-  const double dx = std::max({0.0, f.origin.x() + c * f.spacing_x - point.x(),
-                              point.x() - (f.origin.x() + (c + 1) * f.spacing_x)});  // as sample() has them
-  const double dy =
-      std::max({0.0, f.origin.y() + r * f.spacing_y - point.y(), point.y() - (f.origin.y() + (r + 1) * f.spacing_y)});
-  const double rho = std::sqrt(dx * dx + dy * dy) - kFallMarginM;
-  if (!(rho > 0.0)) return false;  // the point's vertical on or next to the cell
-  // (kFallMargin |H| |g|)^2 < rho^2, |g|^2 <= (along_x / sx)^2 + (along_y / sy)^2: a
-  // triangle's gradient takes one sample difference along each axis.
-  const double limit = rho * rho / (kFallMargin * kFallMargin);
-  const double per_x2 = 1.0 / (f.spacing_x * f.spacing_x), per_y2 = 1.0 / (f.spacing_y * f.spacing_y);
-  const double oz = point.z() - f.origin.z();  // in the samples' frame
-  const auto cols = static_cast<std::size_t>(f.cols);
-  const double* row = f.heights.data() + static_cast<std::size_t>(r - 1) * cols + static_cast<std::size_t>(c - 1);
-  double low = row[0], high = row[0], along_x = 0.0, along_y = 0.0;
-  for (int i = 0; i < 4; ++i, row += cols) {
-    for (int j = 0; j < 4; ++j) {
-      low = std::min(low, row[j]), high = std::max(high, row[j]);
-      if (j < 3) along_x = std::max(along_x, std::abs(row[j + 1] - row[j]));
-      if (i < 3) along_y = std::max(along_y, std::abs(row[j + cols] - row[j]));
-    }
-    const double h = std::max(std::abs(oz - low), std::abs(oz - high));
-    if (!(h * h * (along_x * along_x * per_x2 + along_y * along_y * per_y2) < limit)) return false;  // only grows
-  }
-  return true;
-}
 
 /// The top of prism t of cell (r, c): its triangle's highest corner, the
 /// corners' z as sample() computes them; t = 0 (p00, p01, p11), 1 (p00, p11, p10).

@@ -7,12 +7,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <random>
 #include <span>
 #include <vector>
 
+#include "geometry/triangle_closest_point.hpp"
 #include "wtc/contact/wheel_contact.hpp"
 #include "wtc/terrain/heightfield.hpp"
 #include "wtc/terrain/terrain.hpp"
@@ -76,44 +78,58 @@ bool onARoundedSeam(const Terrain& terrain, std::span<const WheelContact> touchi
   return false;
 }
 
-TEST(FieldSurfaceTest, MeetsAFineFieldAtThePrismsContactsWithinAMillimetre) {
-  const Terrain terrain = fineTerrain();
+// How a surface's answers along a path compared with the prisms'.
+struct PathAgreement {
+  int steps = 0, same_load = 0, two_faces = 0, on_surface = 0, rounded = 0;
+  double worst_load = 0.0;
+  std::size_t triangles = 0;  // answered by the surface, all steps
+  std::size_t prisms = 0;     // within the reach (the prisms' candidates), all steps
+};
+
+// Along the field from x0 to x1, 7 mm a step, the centre bobbing so that it
+// sinks 0-24 mm into `ground`: every contact of the surface is one of the
+// prisms', at the same point, with the same deflection, and the same share
+// but where the prisms' answer rounded a seam into a real edge.
+template <typename Ground>
+PathAgreement meetAlongPath(const Terrain& terrain, Ground&& ground, double x0, double x1) {
   const WheelGeometry wheel{.free_radius = 0.19, .tread_width = 0.12};
   ContactOptions per_prism, every_piece;
   per_prism.field_surface = false;
   every_piece.field_surface = false, every_piece.seam_rule = false;
   WheelContactFinder surface, prisms, pieces;
-  int steps = 0, same_load = 0, two_faces = 0, on_surface = 0, rounded = 0;
-  double worst_load = 0.0;
-  // Along the field, over the crack and onto the kerb, 7 mm a step, the
-  // centre bobbing so that it sinks 0-24 mm into the relief.
-  for (double x = 0.2; x < 2.2; x += 0.007, ++steps) {
+  PathAgreement agreement;
+  PathAgreement& a = agreement;
+  for (double x = x0; x < x1; x += 0.007, ++a.steps) {
     const double y = 0.1 * std::sin(3.0 * x);
-    const WheelPose pose{.center = {x, y, relief(x, y) + 0.19 - 0.012 * (1.0 + std::sin(11.0 * x))},
+    const WheelPose pose{.center = {x, y, ground(x, y) + 0.19 - 0.012 * (1.0 + std::sin(11.0 * x))},
                          .axle = {0.03, 1.0, 0.05}};
-    const auto a = prisms.find(terrain, wheel, pose, per_prism);
-    const std::vector<WheelContact> expected(a.begin(), a.end());
+    const auto found = prisms.find(terrain, wheel, pose, per_prism);
+    const std::vector<WheelContact> expected(found.begin(), found.end());
+    a.prisms += prisms.counts().candidates;
     const auto b = surface.find(terrain, wheel, pose);
-    on_surface += surface.counts().surface > 0;
-    two_faces += b.size() >= 2;
+    a.on_surface += surface.counts().surface > 0;
+    a.triangles += surface.counts().surface;
+    a.two_faces += b.size() >= 2;
     // Every contact of the surface is one of the prisms', at the same point
     // (of two triangles tied on one edge's point the lower id, where GJK
     // may have put a rounding nearer the other), and the prisms' are all
     // there: within the seam gap of the same points.
-    ASSERT_EQ(b.size(), expected.size()) << "x " << x;
+    EXPECT_EQ(b.size(), expected.size()) << "x " << x;
+    if (b.size() != expected.size()) return agreement;
     bool shares_agree = true;
     for (const WheelContact& got : b) {
       const auto match = std::find_if(expected.begin(), expected.end(), [&](const WheelContact& c) {
         return (c.ground_point - got.ground_point).norm() < 1e-6;
       });
-      ASSERT_NE(match, expected.end()) << "x " << x << ": piece " << got.piece << " is no prism's contact";
+      EXPECT_NE(match, expected.end()) << "x " << x << ": piece " << got.piece << " is no prism's contact";
+      if (match == expected.end()) return agreement;
       EXPECT_NEAR(got.deflection, match->deflection, 1e-9) << "x " << x;
       EXPECT_LT((got.e - match->e).norm(), 1e-6) << "x " << x;
       shares_agree = shares_agree && std::abs(got.load_share - match->load_share) < 1e-9;
     }
     const double difference = std::abs(carried(b) - carried(expected));
     if (shares_agree) {
-      ++same_load;
+      ++a.same_load;
       EXPECT_LT(difference, 1e-9) << "x " << x;
     } else {
       // Only where the prisms' answer rounded a seam into a real edge.
@@ -123,15 +139,136 @@ TEST(FieldSurfaceTest, MeetsAFineFieldAtThePrismsContactsWithinAMillimetre) {
       for (const WheelContact& c : expected)
         explained = explained || onARoundedSeam(terrain, touching, c.piece, c.ground_point);
       EXPECT_TRUE(explained) << "x " << x << ": the shares differ by " << difference << " m of deflection";
-      ++rounded;
+      ++a.rounded;
     }
-    worst_load = std::max(worst_load, difference);
-    if (::testing::Test::HasFailure()) FAIL() << "x " << x;
+    a.worst_load = std::max(a.worst_load, difference);
+    if (::testing::Test::HasFailure()) return agreement;
   }
-  EXPECT_GT(same_load, 0.97 * steps);  // the same load, to roundoff, almost everywhere
-  EXPECT_GT(two_faces, 20);            // the kerb's edge and the crack's lips kept their own
-  EXPECT_GT(on_surface, 0.8 * steps);  // answered as a surface most of the way
-  EXPECT_LT(worst_load, 1e-3) << rounded << " steps' prisms rounded a seam";  // a millimetre at worst
+  return agreement;
+}
+
+TEST(FieldSurfaceTest, MeetsAFineFieldAtThePrismsContactsWithinAMillimetre) {
+  const Terrain terrain = fineTerrain();
+  // Over the crack and onto the kerb.
+  const PathAgreement a = meetAlongPath(terrain, relief, 0.2, 2.2);
+  ASSERT_FALSE(::testing::Test::HasFailure());
+  EXPECT_GT(a.same_load, 0.97 * a.steps);  // the same load, to roundoff, almost everywhere
+  EXPECT_GT(a.two_faces, 20);              // the kerb's edge and the crack's lips kept their own
+  EXPECT_GT(a.on_surface, 0.8 * a.steps);  // answered as a surface most of the way
+  EXPECT_LT(a.worst_load, 1e-3) << a.rounded << " steps' prisms rounded a seam";  // a millimetre at worst
+}
+
+// Built ground sampled at 1 cm: flat, a 4 % ramp, a flat top with a 2 cm
+// crack (holes) across part of it, a 5 cm kerb, and a patch of 3 mm
+// roughness: where the distance from a wheel centre has no local minimum
+// the search passes the cells (SurfaceRun::passed).
+constexpr double kRampX = 0.5, kRampEndX = 1.0, kRampRise = 0.02, kBuiltKerbX = 1.5, kRoughX = 1.9;
+
+double builtGround(double x, double y) {
+  double z = std::clamp((x - kRampX) / (kRampEndX - kRampX), 0.0, 1.0) * kRampRise;
+  if (x >= kBuiltKerbX) z += kKerbM;
+  if (x >= kRoughX) z += 0.003 * std::sin(90.0 * x) * std::sin(81.0 * y);
+  return z;
+}
+
+Terrain builtTerrain() {
+  Heightfield f;
+  f.cols = 241, f.rows = 81;  // 2.4 m x 0.8 m
+  f.spacing_x = f.spacing_y = kSpacing;
+  f.origin = {0.0, -0.4, 0.0};
+  f.base_depth = 0.3;
+  f.heights.resize(static_cast<std::size_t>(f.rows) * f.cols);
+  for (int r = 0; r < f.rows; ++r)
+    for (int c = 0; c < f.cols; ++c)
+      f.heights[static_cast<std::size_t>(r) * f.cols + c] = builtGround(c * kSpacing, -0.4 + r * kSpacing);
+  f.cell_holes.assign(static_cast<std::size_t>(f.rows - 1) * (f.cols - 1), 0);
+  for (int r = 27; r < 53; ++r)
+    for (int c = 120; c < 122; ++c) f.cell_holes[static_cast<std::size_t>(r) * (f.cols - 1) + c] = 1;
+  TerrainBuilder builder;
+  const MaterialId material = builder.addMaterial({});
+  addCompactHeightfield(builder, std::move(f), material);
+  return std::move(builder).build();
+}
+
+TEST(FieldSurfaceTest, PassesTheCellsWithoutAMinimumAndMeetsThePrismsContacts) {
+  const Terrain terrain = builtTerrain();
+  // The flat and the ramp: of the triangles within the reach the surface
+  // answers those near the centre's vertical (a few on the flat, more on
+  // the ramp).
+  const PathAgreement flat = meetAlongPath(terrain, builtGround, 0.2, 1.1);
+  ASSERT_FALSE(::testing::Test::HasFailure());
+  EXPECT_EQ(flat.same_load, flat.steps);
+  EXPECT_LT(flat.triangles * 8, flat.prisms) << flat.triangles << " of " << flat.prisms;
+  // Over the crack, the kerb and the rough patch.
+  const PathAgreement rest = meetAlongPath(terrain, builtGround, 1.1, 2.2);
+  ASSERT_FALSE(::testing::Test::HasFailure());
+  EXPECT_GT(rest.same_load, 0.97 * rest.steps);
+  EXPECT_GT(rest.two_faces, 10);
+  EXPECT_LT(rest.worst_load, 1e-3);
+}
+
+// SurfaceRun::passed's claim, checked by brute force: each triangle of a
+// passed cell has its closest point to the centre on a neighbouring
+// triangle (one that holds that point) whose own closest point is strictly
+// nearer, so no minimum is lost by passing it. Random centres over the
+// built ground and the rough one; passed cells must be found on both.
+TEST(FieldSurfaceTest, NoPassedCellHoldsALocalMinimum) {
+  int passed_cells = 0;
+  for (const bool built : {true, false}) {
+    const Terrain terrain = built ? builtTerrain() : fineTerrain();
+    const Heightfield& f = *terrain.compactField(0).field;
+    const auto ground = [&](double x, double y) { return built ? builtGround(x, y) : relief(x, y); };
+    // Triangle t of cell (r, c): its corners, closestOnTriangle's a, b, c.
+    const auto corners = [&](int r, int c, int t) -> std::array<Eigen::Vector3d, 3> {
+      if (t == 0) return {f.sample(r, c), f.sample(r, c + 1), f.sample(r + 1, c + 1)};
+      return {f.sample(r, c), f.sample(r + 1, c + 1), f.sample(r + 1, c)};
+    };
+    // Whether triangle `x` holds `q` (seen from above, to a nanometre).
+    const auto holds = [](const std::array<Eigen::Vector3d, 3>& x, const Eigen::Vector3d& q) {
+      for (int i = 0; i < 3; ++i) {
+        const Eigen::Vector3d& a = x[i];
+        const Eigen::Vector3d& b = x[(i + 1) % 3];
+        const double cross = (b.x() - a.x()) * (q.y() - a.y()) - (b.y() - a.y()) * (q.x() - a.x());
+        if (cross < -1e-9 * (b - a).head<2>().norm()) return false;  // counter-clockwise seen from above
+      }
+      return true;
+    };
+    std::mt19937 gen(11);
+    std::uniform_real_distribution<double> along(0.1, 2.3), across(-0.3, 0.3), above(0.1, 0.19);
+    std::vector<PieceId> others;
+    std::vector<Terrain::SurfaceRun> runs;
+    for (int trial = 0; trial < 400; ++trial) {
+      const double x = along(gen), y = across(gen);
+      const Eigen::Vector3d o(x, y, ground(x, y) + above(gen));
+      others.clear(), runs.clear();
+      terrain.withinSurfaces(o, 0.19, others, runs);
+      for (const Terrain::SurfaceRun& run : runs) {
+        if (!run.passed) continue;
+        for (int c = run.first_col; c <= run.last_col; ++c, ++passed_cells) {
+          for (int t = 0; t < 2; ++t) {
+            const std::array<Eigen::Vector3d, 3> own = corners(run.row, c, t);
+            const Eigen::Vector3d q = detail::closestOnTriangle(o, own[0], own[1], own[2]).point;
+            const double d = (q - o).norm();
+            bool nearer = false;
+            for (int rr = run.row - 1; rr <= run.row + 1 && !nearer; ++rr) {
+              for (int cc = c - 1; cc <= c + 1 && !nearer; ++cc) {
+                for (int tt = 0; tt < 2 && !nearer; ++tt) {
+                  if (rr == run.row && cc == c && tt == t) continue;
+                  const std::array<Eigen::Vector3d, 3> other = corners(rr, cc, tt);
+                  if (!holds(other, q)) continue;
+                  const Eigen::Vector3d p = detail::closestOnTriangle(o, other[0], other[1], other[2]).point;
+                  nearer = (p - o).norm() < d;
+                }
+              }
+            }
+            ASSERT_TRUE(nearer) << "trial " << trial << ": cell (" << run.row << ", " << c << ") triangle " << t
+                                << " holds a minimum " << d << " m from " << o.transpose();
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(passed_cells, 10000);
 }
 
 // A wheel over a grid point of a flat field, its centre up to a micrometre
