@@ -30,7 +30,11 @@
 // The cells come as runs along rows (Terrain::withinSurfaces); each cell's
 // box is tested first (most of a disc's cells lie below the reach), and the
 // two distances of each cell tested are kept in a window over the runs'
-// cells, where a triangle finds its neighbours'.
+// cells, where a triangle finds its neighbours'. A passed run
+// (SurfaceRun::passed: cells where the distance falls away everywhere,
+// src/terrain/field_cells.hpp) holds no minimum: its cells are tested and
+// answered only when a neighbour's test asks for them, and the seam rule
+// asks for those that could change a share (passedShadows).
 #include <cstdint>
 #include <limits>
 #include <span>
