@@ -31,7 +31,10 @@ double relief(double x, double y) {
          (x >= kKerbX ? kKerbM : 0.0);
 }
 
-Heightfield fineField() {
+// `ground` sampled at 1 cm over 2.4 m x 0.8 m, with a 2 cm crack (holes)
+// across the middle third from column `crack`, as one compact field.
+template <typename Ground>
+Terrain sampledTerrain(Ground&& ground, int crack) {
   Heightfield f;
   f.cols = 241, f.rows = 81;  // 2.4 m x 0.8 m
   f.spacing_x = f.spacing_y = kSpacing;
@@ -40,19 +43,17 @@ Heightfield fineField() {
   f.heights.resize(static_cast<std::size_t>(f.rows) * f.cols);
   for (int r = 0; r < f.rows; ++r)
     for (int c = 0; c < f.cols; ++c)
-      f.heights[static_cast<std::size_t>(r) * f.cols + c] = relief(c * kSpacing, -0.4 + r * kSpacing);
+      f.heights[static_cast<std::size_t>(r) * f.cols + c] = ground(c * kSpacing, -0.4 + r * kSpacing);
   f.cell_holes.assign(static_cast<std::size_t>(f.rows - 1) * (f.cols - 1), 0);
   for (int r = 27; r < 53; ++r)
-    for (int c = 90; c < 92; ++c) f.cell_holes[static_cast<std::size_t>(r) * (f.cols - 1) + c] = 1;
-  return f;
-}
-
-Terrain fineTerrain() {
+    for (int c = crack; c < crack + 2; ++c) f.cell_holes[static_cast<std::size_t>(r) * (f.cols - 1) + c] = 1;
   TerrainBuilder builder;
   const MaterialId material = builder.addMaterial({});
-  addCompactHeightfield(builder, fineField(), material);
+  addCompactHeightfield(builder, std::move(f), material);
   return std::move(builder).build();
 }
+
+Terrain fineTerrain() { return sampledTerrain(relief, static_cast<int>(std::lround(kCrackX / kSpacing))); }
 
 // The load the contacts carry, as deflection: sum of share x Z (m).
 double carried(std::span<const WheelContact> contacts) {
@@ -171,24 +172,7 @@ double builtGround(double x, double y) {
   return z;
 }
 
-Terrain builtTerrain() {
-  Heightfield f;
-  f.cols = 241, f.rows = 81;  // 2.4 m x 0.8 m
-  f.spacing_x = f.spacing_y = kSpacing;
-  f.origin = {0.0, -0.4, 0.0};
-  f.base_depth = 0.3;
-  f.heights.resize(static_cast<std::size_t>(f.rows) * f.cols);
-  for (int r = 0; r < f.rows; ++r)
-    for (int c = 0; c < f.cols; ++c)
-      f.heights[static_cast<std::size_t>(r) * f.cols + c] = builtGround(c * kSpacing, -0.4 + r * kSpacing);
-  f.cell_holes.assign(static_cast<std::size_t>(f.rows - 1) * (f.cols - 1), 0);
-  for (int r = 27; r < 53; ++r)
-    for (int c = 120; c < 122; ++c) f.cell_holes[static_cast<std::size_t>(r) * (f.cols - 1) + c] = 1;
-  TerrainBuilder builder;
-  const MaterialId material = builder.addMaterial({});
-  addCompactHeightfield(builder, std::move(f), material);
-  return std::move(builder).build();
-}
+Terrain builtTerrain() { return sampledTerrain(builtGround, 120); }
 
 TEST(FieldSurfaceTest, PassesTheCellsWithoutAMinimumAndMeetsThePrismsContacts) {
   const Terrain terrain = builtTerrain();
