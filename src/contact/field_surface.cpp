@@ -246,16 +246,16 @@ void passedShadows(const Terrain& terrain, const SurfaceScratch& scratch, std::s
   // sqrt(2 r Z_b) from a shadow no farther from O than b (plus the gap),
   // coverage at or below 0, a real edge's clearance below Z_b (the last
   // two only when no other contact covers b). Beside a cell by `beside`
-  // (m) that bound is at least beside * per_beside (prismPlaneBound), and
+  // (m) that bound is at least besideBound(beside), and
   // no triangle of a box lies nearer to O than the box (`nearest`, asked
   // only when needed).
-  double per_beside = 0.0;
+  const Heightfield* field = nullptr;
   const auto matters = [&](double x0, double x1, double y0, double y1, const auto& nearest) {
     double near = -1.0;
     for (std::size_t k = 0; k < contacts.size(); ++k) {
       const WheelContact& b = contacts[k];
       const Eigen::Vector3d& p = b.ground_point;
-      const double outside = std::max({x0 - p.x(), p.x() - x1, y0 - p.y(), p.y() - y1}) * per_beside - gap;
+      const double outside = besideBound(*field, std::max({x0 - p.x(), p.x() - x1, y0 - p.y(), p.y() - y1})) - gap;
       if (uncovered[k] != 0 && outside < b.deflection) return true;
       if (outside < std::sqrt(2.0 * radius * b.deflection)) {
         if (near < 0.0) near = nearest();
@@ -265,15 +265,12 @@ void passedShadows(const Terrain& terrain, const SurfaceScratch& scratch, std::s
     return false;
   };
   int part = -1;
-  const Heightfield* field = nullptr;
   double base_z = 0.0;
   for (const Run& run : scratch.passed) {
     if (run.part != part) {
       part = run.part;
       const Terrain::CompactField compact = terrain.compactField(static_cast<std::size_t>(part));
       field = compact.field, base_z = compact.bounds.min.z();
-      const double sx = field->spacing_x, sy = field->spacing_y;
-      per_beside = std::min(sx, sy) / (std::sqrt(sx * sx + sy * sy) + std::max(sx, sy));
     }
     const Heightfield& f = *field;
     const auto x = [&](int i) { return f.origin.x() + i * f.spacing_x; };  // as sample() computes them
@@ -315,11 +312,9 @@ double prismPlaneBound(const SurfacePoint& s, const Eigen::Vector3d& p, double e
   // spans, and the diagonal; the triangle counter-clockwise seen from
   // above, each wall's normal the edge's direction turned clockwise).
   const double length = std::sqrt(f.spacing_x * f.spacing_x + f.spacing_y * f.spacing_y);  // the diagonal's (m)
-  // Beside the cell by `beside` (m), one wall stands at least
-  // beside min(sx, sy) / (length + max(sx, sy)) off the point.
   const double beside = std::max({x0 - p.x(), dx - f.spacing_x, y0 - p.y(), dy - f.spacing_y});
   if (beside * std::min(f.spacing_x, f.spacing_y) > enough * (length + std::max(f.spacing_x, f.spacing_y))) {
-    return beside * std::min(f.spacing_x, f.spacing_y) / (length + std::max(f.spacing_x, f.spacing_y));
+    return besideBound(f, beside);
   }
   const double diagonal = (f.spacing_y * dx - f.spacing_x * dy) / length;
   double bound = s.base_z - p.z();

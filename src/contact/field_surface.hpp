@@ -35,6 +35,8 @@
 // src/terrain/field_cells.hpp) holds no minimum: its cells are tested and
 // answered only when a neighbour's test asks for them, and the seam rule
 // asks for those that could change a share (passedShadows).
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <span>
@@ -43,6 +45,7 @@
 #include <Eigen/Core>
 
 #include "wtc/contact/wheel_contact.hpp"
+#include "wtc/terrain/heightfield.hpp"
 #include "wtc/terrain/terrain.hpp"
 
 namespace wtc::detail {
@@ -74,6 +77,15 @@ void passedShadows(const Terrain& terrain, const SurfaceScratch& scratch, std::s
 /// `enough` (m) once the base and the walls pass it.
 double prismPlaneBound(const SurfacePoint& s, const Eigen::Vector3d& p,
                        double enough = std::numeric_limits<double>::infinity());
+
+/// The least plane bound (m) of a prism of field `f` at a point `beside`
+/// (m) beside its cell (the largest of the point's distances out past the
+/// cell's four sides): one wall stands at least
+/// beside min(sx, sy) / (diagonal + max(sx, sy)) off the point.
+inline double besideBound(const Heightfield& f, double beside) {
+  const double length = std::sqrt(f.spacing_x * f.spacing_x + f.spacing_y * f.spacing_y);  // the diagonal's (m)
+  return beside * std::min(f.spacing_x, f.spacing_y) / (length + std::max(f.spacing_x, f.spacing_y));
+}
 
 /// Cells of the largest window of distances a search keeps (24 bytes a
 /// cell): a 0.19 m wheel on a 1 mm field spans 145,000.

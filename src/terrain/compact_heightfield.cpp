@@ -139,13 +139,9 @@ void CompactHeightfield::makeTileFalls() {
 }
 
 bool CompactHeightfield::tileBeyond(int tile_row, int tile_col, const Eigen::Vector3d& point, double reach2) const {
-  const Heightfield& f = field_;
-  const int c0 = tile_col * kTileCells, c1 = std::min(c0 + kTileCells, f.cols - 1);
-  const int r0 = tile_row * kTileCells, r1 = std::min(r0 + kTileCells, f.rows - 1);
-  const double dx =
-      std::max({0.0, f.origin.x() + c0 * f.spacing_x - point.x(), point.x() - (f.origin.x() + c1 * f.spacing_x)});
-  const double dy =
-      std::max({0.0, f.origin.y() + r0 * f.spacing_y - point.y(), point.y() - (f.origin.y() + r1 * f.spacing_y)});
+  const TileSides t = tileSides(tile_row, tile_col);
+  const double dx = std::max({0.0, t.x0 - point.x(), point.x() - t.x1});
+  const double dy = std::max({0.0, t.y0 - point.y(), point.y() - t.y1});
   const double dz = std::max(
       0.0, point.z() - tileTop(tile_row, tile_col));  // the pieces reach down to the base, below the point's ball
   // Beyond with a margin far above the rounding of these sums: the cells'
@@ -294,7 +290,7 @@ void CompactHeightfield::walkRuns(const Eigen::Vector3d& point, double reach, Ru
   // row's first 64 tiles from c0 on are kept in two masks.
   const int first_tile = c0 / kTileCells;
   int tile_row = -1;
-  std::uint64_t asked = 0, beyond = 0, asked_fall = 0;
+  std::uint64_t asked = 0, beyond = 0, asked_fall = 0, whole = 0;
   std::array<double, 64> fall{};  // falls() of the tile row's first 64 tiles, as asked_fall marks
   const auto tileSkipped = [&](int tc) {
     const int bit = tc - first_tile;
@@ -306,14 +302,30 @@ void CompactHeightfield::walkRuns(const Eigen::Vector3d& point, double reach, Ru
     }
     return (beyond & mask) != 0;
   };
-  const auto tileFalls = [&](int tc) {
+  // A tile's falls(), and whether the whole tile lies beyond it (its cells
+  // all pass): asked once a tile.
+  const auto passesWhole = [&](int tc, double far) {
+    if (!(far < reach)) return false;
+    const TileSides t = tileSides(tile_row, tc);
+    const double dx = std::max({0.0, t.x0 - point.x(), point.x() - t.x1});
+    const double dy_tile = std::max({0.0, t.y0 - point.y(), point.y() - t.y1});
+    return dx * dx + dy_tile * dy_tile > far * far;
+  };
+  const auto tileFalls = [&](int tc, bool& passes) {
     const int bit = tc - first_tile;
-    if (bit >= 64) return falls(tile_row, tc);
+    if (bit >= 64) {
+      const double far = falls(tile_row, tc);
+      passes = passesWhole(tc, far);
+      return far;
+    }
     const std::uint64_t mask = std::uint64_t{1} << bit;
     if ((asked_fall & mask) == 0) {
       asked_fall |= mask;
-      fall[static_cast<std::size_t>(bit)] = falls(tile_row, tc);
+      const double far = falls(tile_row, tc);
+      fall[static_cast<std::size_t>(bit)] = far;
+      if (passesWhole(tc, far)) whole |= mask;
     }
+    passes = (whole & mask) != 0;
     return fall[static_cast<std::size_t>(bit)];
   };
   // The cells along x that a chord of half-width `half` about the point may
@@ -333,7 +345,7 @@ void CompactHeightfield::walkRuns(const Eigen::Vector3d& point, double reach, Ru
     const double dy = std::max({0.0, y(r) - point.y(), point.y() - y(r + 1)});
     if (dy * dy > reach2) continue;
     if (r / kTileCells != tile_row) {
-      tile_row = r / kTileCells, asked = 0, beyond = 0, asked_fall = 0;
+      tile_row = r / kTileCells, asked = 0, beyond = 0, asked_fall = 0, whole = 0;
       // A tile row whose tiles on the disc all lie beyond the reach is
       // passed at once (on a fine field most of the disc's rows).
       const int last = std::min(r1, (tile_row + 1) * kTileCells - 1);
@@ -380,18 +392,12 @@ void CompactHeightfield::walkRuns(const Eigen::Vector3d& point, double reach, Ru
       }
       // A tile whose cells all pass goes whole (the caller tests a cell
       // when it asks for it).
-      const double far = tileFalls(tile);
-      if (far < reach) {
-        const double tile_x0 = f.origin.x() + tile * kTileCells * f.spacing_x;
-        const double tile_x1 = f.origin.x() + std::min((tile + 1) * kTileCells, f.cols - 1) * f.spacing_x;
-        const double tile_y0 = y(tile_row * kTileCells), tile_y1 = y(std::min((tile_row + 1) * kTileCells, f.rows - 1));
-        const double dx = std::max({0.0, tile_x0 - point.x(), point.x() - tile_x1});
-        const double dy_tile = std::max({0.0, tile_y0 - point.y(), point.y() - tile_y1});
-        if (dx * dx + dy_tile * dy_tile > far * far) {
-          run(r, c, tile_end, piecesBefore(row + c), far, true);
-          c = next;
-          continue;
-        }
+      bool passes = false;
+      const double far = tileFalls(tile, passes);
+      if (passes) {
+        run(r, c, tile_end, piecesBefore(row + c), far, true);
+        c = next;
+        continue;
       }
       int lo, hi;
       span(std::sqrt(rest), c, tile_end, lo, hi);
@@ -423,7 +429,6 @@ void CompactHeightfield::within(const Eigen::Vector3d& point, double reach, Piec
 
 bool CompactHeightfield::surfaceWithin(const Eigen::Vector3d& point, double reach, PieceId first, int part,
                                        std::vector<SurfaceRun>& runs) const {
-  const Heightfield& f = field_;
   walkRuns(
       point, reach,
       [&](int r, int lo, int hi, std::size_t k, double far, bool passed) {
@@ -437,12 +442,9 @@ bool CompactHeightfield::surfaceWithin(const Eigen::Vector3d& point, double reac
       [&](int tile_row, int tile_col) {
         // fallingFrom(), or infinite when no cell of the tile can pass (its
         // farthest corner is within it): rough ground asks no more.
-        const int c0 = tile_col * kTileCells, c1 = std::min(c0 + kTileCells, f.cols - 1);
-        const int r0 = tile_row * kTileCells, r1 = std::min(r0 + kTileCells, f.rows - 1);
-        const double fx = std::max(std::abs(point.x() - (f.origin.x() + c0 * f.spacing_x)),
-                                   std::abs(point.x() - (f.origin.x() + c1 * f.spacing_x)));
-        const double fy = std::max(std::abs(point.y() - (f.origin.y() + r0 * f.spacing_y)),
-                                   std::abs(point.y() - (f.origin.y() + r1 * f.spacing_y)));
+        const TileSides t = tileSides(tile_row, tile_col);
+        const double fx = std::max(std::abs(point.x() - t.x0), std::abs(point.x() - t.x1));
+        const double fy = std::max(std::abs(point.y() - t.y0), std::abs(point.y() - t.y1));
         const double far = fallingFrom(point, tile_row, tile_col, fx * fx + fy * fy);
         return far * far < fx * fx + fy * fy ? far : std::numeric_limits<double>::infinity();
       });

@@ -26,6 +26,7 @@
 // local minimum (SurfaceRun::passed), from the tile's lowest sample and
 // steepest slope, its ring of neighbouring cells included, and the tops of
 // the tiles around (TileFall: 8 bytes a tile more, 1/8 of a byte a cell).
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -88,6 +89,17 @@ class CompactHeightfield final : public FormedPieces {
   // narrowed to the reach.
   template <typename Run, typename Falls>
   void walkRuns(const Eigen::Vector3d& point, double reach, Run&& run, Falls&& falls) const;
+  // A tile's sides (m), as Heightfield::sample computes the lines.
+  struct TileSides {
+    double x0, x1, y0, y1;
+  };
+  TileSides tileSides(int tile_row, int tile_col) const {
+    const Heightfield& f = field_;
+    const int c0 = tile_col * kTileCells, c1 = std::min(c0 + kTileCells, f.cols - 1);
+    const int r0 = tile_row * kTileCells, r1 = std::min(r0 + kTileCells, f.rows - 1);
+    return {f.origin.x() + c0 * f.spacing_x, f.origin.x() + c1 * f.spacing_x, f.origin.y() + r0 * f.spacing_y,
+            f.origin.y() + r1 * f.spacing_y};
+  }
   // True when no piece of tile (tile_row, tile_col) has a box within
   // `reach2` (m^2, the reach squared) of `point`.
   bool tileBeyond(int tile_row, int tile_col, const Eigen::Vector3d& point, double reach2) const;
