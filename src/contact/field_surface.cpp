@@ -303,6 +303,45 @@ void passedShadows(const Terrain& terrain, const SurfaceScratch& scratch, std::s
   }
 }
 
+bool runsKeep(const Terrain& terrain, double runs_reach) {
+  if (terrain.compactFieldCount() != 1) return false;
+  const Heightfield* f = terrain.compactField(0).field;
+  if (f == nullptr) return true;  // a mesh: no runs
+  // A reach's cube spans at most 2 reach / spacing + 1 cells a side, and
+  // a cell more each side at most: the largest window a search may open.
+  const double side = 2.0 * runs_reach / std::min(f->spacing_x, f->spacing_y) + 3.0;
+  return side * side <= static_cast<double>(kMaxSurfaceWindowCells);
+}
+
+bool narrowRuns(const Terrain& terrain, std::vector<Run>& runs, const Eigen::Vector3d& centre, double runs_reach) {
+  if (std::any_of(runs.begin(), runs.end(), [](const Run& run) { return run.passed; })) return false;
+  std::size_t out = 0;
+  for (const Run& run : runs) {
+    const Heightfield& f = *terrain.compactField(static_cast<std::size_t>(run.part)).field;
+    Run narrowed = run;
+    narrowed.first_col = run.last_col + 1;
+    forEachCellNear(f, run.row, run.first_col, run.last_col, run.first_piece, centre, runs_reach,
+                    [&](int c, PieceId id) {
+                      if (c < narrowed.first_col) narrowed.first_col = c, narrowed.first_piece = id;
+                      narrowed.last_col = c;
+                    });
+    if (narrowed.first_col <= narrowed.last_col) runs[out++] = narrowed;
+  }
+  runs.resize(out);
+  return true;
+}
+
+bool runsHold(const Eigen::Vector3d& runs_centre, double runs_reach, const Eigen::Vector3d& centre, double reach) {
+  // A cell the search keeps lies within reach' = sqrt(reach^2 (1 + s) + s)
+  // of the centre (forEachCellNear, s = kCellSlack), so within reach' + m
+  // of runs_centre when the centre has moved m: narrowRuns kept it if that
+  // is at most runs_reach, less the roundoff of the distances (relative to
+  // the coordinates' size).
+  const double reach_tested = std::sqrt(reach * reach * (1.0 + kCellSlack) + kCellSlack);
+  const double roundoff = 1e-12 * (1.0 + runs_centre.cwiseAbs().maxCoeff() + runs_reach);
+  return (centre - runs_centre).norm() <= runs_reach - reach_tested - roundoff;
+}
+
 double prismPlaneBound(const SurfacePoint& s, const Eigen::Vector3d& p, double enough) {
   const Heightfield& f = *s.field;
   const int r = s.row, c = s.col;

@@ -87,6 +87,27 @@ inline double besideBound(const Heightfield& f, double beside) {
   return beside * std::min(f.spacing_x, f.spacing_y) / (length + std::max(f.spacing_x, f.spacing_y));
 }
 
+/// Whether a wheel may keep its runs for `runs_reach` (m) on `terrain`
+/// (WheelContactFinder): it has one compact part, and the part's cells are
+/// not too fine for the search's window (kMaxSurfaceWindowCells) to hold
+/// every cell that reach may span, so that no search ever hands the centre
+/// to the prisms for the window's size, whichever runs it reads.
+bool runsKeep(const Terrain& terrain, double runs_reach);
+
+/// A rolling wheel's runs (WheelContactFinder): `runs`, from
+/// Terrain::surfaceRuns for a wider reach `runs_reach` (m) about `centre`,
+/// narrowed to the cells whose boxes come within that reach (the search's
+/// cell test, forEachCellNear); false, the runs left as they were, when one
+/// of them is passed (whether a cell passes depends on the centre).
+bool narrowRuns(const Terrain& terrain, std::vector<Terrain::SurfaceRun>& runs, const Eigen::Vector3d& centre,
+                double runs_reach);
+
+/// Whether narrowRuns's runs for `runs_centre` and `runs_reach` (m) hold
+/// every cell whose box comes within `reach` (m) of `centre`, as the
+/// search's cell test decides: the centre has moved less than the reach
+/// has room for, its test's margin and roundoff included.
+bool runsHold(const Eigen::Vector3d& runs_centre, double runs_reach, const Eigen::Vector3d& centre, double reach);
+
 /// Cells of the largest window of distances a search keeps (24 bytes a
 /// cell): a 0.19 m wheel on a 1 mm field spans 145,000.
 inline constexpr std::size_t kMaxSurfaceWindowCells = std::size_t{1} << 18;

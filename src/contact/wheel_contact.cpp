@@ -52,6 +52,16 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
   const Eigen::Vector3d& o = pose.center;
   terrain_ = &terrain;
   radius_ = r;
+  if (terrain.serial() != terrain_serial_) {  // another terrain: nothing kept holds for it
+    terrain_serial_ = terrain.serial();
+    caches_.clear();
+    exits_.clear();
+    for (auto& [id, dropped] : formed_) spare_.push_back(std::move(dropped));
+    formed_.clear();
+    has_previous_ = false;
+    runs_reach_ = 0.0;
+    keep_runs_ = true;
+  }
 
   caps_.clear();
 
@@ -76,8 +86,7 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
     // A compact heightfield as one surface: its triangles in closed form,
     // a candidate only where the distance to it has a local minimum (or
     // on an exposed cell, as a prism).
-    surface_runs_.clear();
-    terrain.withinSurfaces(o, cap_reach, candidates_, surface_runs_);
+    readSurfaceRuns(terrain, o, cap_reach);
     if (!surface_runs_.empty()) {
       if (detail::surfaceLocalMinima(terrain, surface_runs_, o, cap_reach, gap, surface_, candidates_, touches_)) {
         for (const detail::SurfacePoint& touch : touches_) candidates_.push_back(touch.id);
@@ -224,6 +233,46 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
   caps_last_ = !caps_.empty();
   counts_.contacts = contacts_.size();
   return contacts_;
+}
+
+// A rolling wheel on the terrain's one compact heightfield walks its cells
+// for a reach wider by kRunsMarginRelative r_f, about a point half that
+// margin ahead of it (along its last move), and reads the cells found again
+// while its centre stays within the margin: a step then tests those cells,
+// not the walk's. The search decides each cell by its own test, so the
+// answer is the same whichever runs hold the cell. Runs with a passed cell
+// hold for their centre alone (a cell passes or not by where the centre
+// is); with several compact parts each call walks them as they are.
+void WheelContactFinder::readSurfaceRuns(const Terrain& terrain, const Eigen::Vector3d& o, double reach) {
+  if (runs_reach_ > 0.0 && detail::runsHold(runs_centre_, runs_reach_, o, reach)) {
+    terrain.withinBesideSurfaces(o, reach, candidates_);
+    return;
+  }
+  surface_runs_.clear();
+  runs_reach_ = 0.0;
+  const double margin = kRunsMarginRelative * radius_;
+  const Eigen::Vector3d moved = has_previous_ ? Eigen::Vector3d(o - previous_centre_) : Eigen::Vector3d::Zero();
+  const double step = moved.norm();
+  const Eigen::Vector3d ahead = step > 0.0 && step < margin ? Eigen::Vector3d(o + (0.5 * margin / step) * moved) : o;
+  // (The margin holds the cell test's own below a micrometre's reach.)
+  if (keep_runs_ && detail::runsKeep(terrain, reach + margin) && detail::runsHold(ahead, reach + margin, o, reach)) {
+    terrain.withinBesideSurfaces(o, reach, candidates_);
+    terrain.surfaceRuns(ahead, reach + margin, surface_runs_);
+    if (detail::narrowRuns(terrain, surface_runs_, ahead, reach + margin)) {
+      runs_centre_ = ahead, runs_reach_ = reach + margin;
+      return;
+    }
+    // A passed cell: passed for the point ahead, walked again for the centre.
+    surface_runs_.clear();
+    terrain.surfaceRuns(o, reach, surface_runs_);
+    keep_runs_ = false;
+    return;
+  }
+  terrain.withinSurfaces(o, reach, candidates_, surface_runs_);
+  // Where cells pass, each call walks anew; once none does, the wheel
+  // keeps its runs again.
+  keep_runs_ = std::none_of(surface_runs_.begin(), surface_runs_.end(),
+                            [](const Terrain::SurfaceRun& run) { return run.passed; });
 }
 
 // The centre is inside the piece: it leaves by the face it came in through.

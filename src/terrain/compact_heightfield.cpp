@@ -427,7 +427,7 @@ void CompactHeightfield::within(const Eigen::Vector3d& point, double reach, Piec
       [](int, int) { return std::numeric_limits<double>::infinity(); });
 }
 
-bool CompactHeightfield::surfaceWithin(const Eigen::Vector3d& point, double reach, PieceId first, int part,
+void CompactHeightfield::surfaceWithin(const Eigen::Vector3d& point, double reach, PieceId first, int part,
                                        std::vector<SurfaceRun>& runs) const {
   walkRuns(
       point, reach,
@@ -448,7 +448,6 @@ bool CompactHeightfield::surfaceWithin(const Eigen::Vector3d& point, double reac
         const double far = fallingFrom(point, tile_row, tile_col, fx * fx + fy * fy);
         return far * far < fx * fx + fy * fy ? far : std::numeric_limits<double>::infinity();
       });
-  return true;
 }
 
 double CompactHeightfield::fallingFrom(const Eigen::Vector3d& point, int tile_row, int tile_col, double enough2) const {

@@ -57,7 +57,8 @@ class CompactHeightfield final : public FormedPieces {
   /// within()'s cells as runs along rows, before each cell's own test: the
   /// rows of the disc, less the tiles beyond the reach, each row's run in a
   /// tile narrowed by the tile's highest sample.
-  bool surfaceWithin(const Eigen::Vector3d& point, double reach, PieceId first, int part,
+  bool isSurface() const override { return true; }
+  void surfaceWithin(const Eigen::Vector3d& point, double reach, PieceId first, int part,
                      std::vector<SurfaceRun>& runs) const override;
   /// The union of all pieces' bounds.
   const Aabb& bounds() const override { return bounds_; }

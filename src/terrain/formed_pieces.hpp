@@ -55,13 +55,13 @@ class FormedPieces {
   /// (Terrain::within). By default overlapping() on the cube, then the
   /// distance.
   virtual void within(const Eigen::Vector3d& point, double reach, PieceId first, std::vector<PieceId>& out) const;
-  /// A heightfield's within(): runs of its cells (Terrain::withinSurfaces),
-  /// `part` their compact part; false, with nothing appended, for a part
-  /// without a surface (a mesh).
-  virtual bool surfaceWithin(const Eigen::Vector3d& /*point*/, double /*reach*/, PieceId /*first*/, int /*part*/,
-                             std::vector<SurfaceRun>& /*runs*/) const {
-    return false;
-  }
+  /// Whether the part is met as one surface (a heightfield): its
+  /// within() comes as surfaceWithin()'s runs.
+  virtual bool isSurface() const { return false; }
+  /// A surface's within() (isSurface()): runs of its cells
+  /// (Terrain::withinSurfaces), `part` their compact part.
+  virtual void surfaceWithin(const Eigen::Vector3d& /*point*/, double /*reach*/, PieceId /*first*/, int /*part*/,
+                             std::vector<SurfaceRun>& /*runs*/) const {}
   /// The union of all pieces' bounds.
   virtual const Aabb& bounds() const = 0;
   /// The geometry (bytes).

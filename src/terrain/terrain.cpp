@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <iterator>
@@ -213,6 +214,8 @@ Terrain TerrainBuilder::build() && {
   terrain.fields_ = std::move(fields_);
   terrain.field_prisms_ = std::move(field_prisms_);
   terrain.piece_count_ = next_id_;
+  static std::atomic<std::uint64_t> builds{0};
+  terrain.serial_ = ++builds;
   std::vector<const detail::PendingPrisms*> pending;
   for (const auto& p : pending_) pending.push_back(p.get());
   terrain.buildIndex(pending);
@@ -227,6 +230,7 @@ Terrain::Terrain(const Terrain& other)
       fields_(other.fields_),
       field_prisms_(other.field_prisms_),
       piece_count_(other.piece_count_),
+      serial_(other.serial_),
       tree_(other.tree_),
       leaves_(other.leaves_),
       bounds_(other.bounds_) {
@@ -406,18 +410,36 @@ void Terrain::within(const Eigen::Vector3d& point, double reach, std::vector<Pie
 void Terrain::withinSurfaces(const Eigen::Vector3d& point, double reach, std::vector<PieceId>& out,
                              std::vector<SurfaceRun>& runs) const {
   const detail::BoxTreeBall ball{point, reach};
-  collect({point.array() - reach, point.array() + reach}, &ball, out, &runs);
+  collect({point.array() - reach, point.array() + reach}, &ball, out, Surfaces::kAsRuns, &runs);
+}
+
+void Terrain::surfaceRuns(const Eigen::Vector3d& point, double reach, std::vector<SurfaceRun>& runs) const {
+  const Aabb cube{point.array() - reach, point.array() + reach};
+  for (std::size_t part = 0; part < fields_.size(); ++part) {
+    const Field& f = fields_[part];
+    if (f.formed->isSurface() && f.formed->bounds().overlaps(cube)) {
+      f.formed->surfaceWithin(point, reach, f.first, static_cast<int>(part), runs);
+    }
+  }
+}
+
+void Terrain::withinBesideSurfaces(const Eigen::Vector3d& point, double reach, std::vector<PieceId>& out) const {
+  const detail::BoxTreeBall ball{point, reach};
+  collect({point.array() - reach, point.array() + reach}, &ball, out, Surfaces::kSkipped);
 }
 
 // overlapping() and within(): `box` holds `ball` when there is one.
-void Terrain::collect(const Aabb& box, const detail::BoxTreeBall* ball, std::vector<PieceId>& out,
+void Terrain::collect(const Aabb& box, const detail::BoxTreeBall* ball, std::vector<PieceId>& out, Surfaces surfaces,
                       std::vector<SurfaceRun>* runs) const {
   // Each compact part is its own index; its bounds spare a part far away
   // the walk (a box with a NaN overlaps no bounds).
   for (std::size_t part = 0; part < fields_.size(); ++part) {
     const Field& f = fields_[part];
     if (!f.formed->bounds().overlaps(box)) continue;
-    if (runs != nullptr && f.formed->surfaceWithin(ball->centre, ball->radius, f.first, static_cast<int>(part), *runs)) {
+    if (surfaces != Surfaces::kAsPieces && f.formed->isSurface()) {
+      if (surfaces == Surfaces::kAsRuns) {
+        f.formed->surfaceWithin(ball->centre, ball->radius, f.first, static_cast<int>(part), *runs);
+      }
       continue;
     }
     if (ball != nullptr) {

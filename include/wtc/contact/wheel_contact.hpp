@@ -175,6 +175,14 @@ class WheelContactFinder {
   std::span<const WheelContact> capContacts() const { return caps_; }
 
  private:
+  // The compact heightfields' runs about centre `o` for `reach` (m) into
+  // surface_runs_, and the other pieces within the reach into candidates_:
+  // a rolling wheel's kept runs when they hold, else walked anew.
+  void readSurfaceRuns(const Terrain& terrain, const Eigen::Vector3d& o, double reach);
+  // The margin (relative to r_f) a wheel's runs are walked wider by, to be
+  // read again while the centre moves less: a rolling wheel moves 1-5 mm a
+  // step, a fine field's cells are 1-5 cm (docs/terrain.md measures it).
+  static constexpr double kRunsMarginRelative = 0.02;
   // The seam rule's parts; a contact is named by its index in contacts_
   // (and contact_pieces_), before the rule erases any.
   void applySeamRule(double gap, double radius);
@@ -224,6 +232,17 @@ class WheelContactFinder {
   bool has_previous_ = false;
   bool caps_last_ = false;  // the last call saw the ground at a cap
   std::vector<std::pair<PieceId, Eigen::Vector3d>> exits_, next_exits_;
+  // What the calls keep (the pieces formed, the caches, the exits, the
+  // runs) holds for the terrain of this serial (Terrain::serial).
+  std::uint64_t terrain_serial_ = 0;
+  // A rolling wheel's walk (issue 53): surface_runs_ hold the cells of the
+  // terrain's one compact heightfield whose boxes came within runs_reach_
+  // (m) of runs_centre_ (none passed), read again while the centre stays
+  // near enough (detail::runsHold); 0 when they hold for this call only.
+  // keep_runs_: the last walk passed no cell, so the next is walked to be kept.
+  Eigen::Vector3d runs_centre_{Eigen::Vector3d::Zero()};
+  double runs_reach_ = 0.0;
+  bool keep_runs_ = true;
 };
 
 }  // namespace wtc

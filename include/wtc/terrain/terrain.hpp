@@ -123,6 +123,11 @@ class Terrain {
 
   /// Pieces, stored and formed (ids 0 ... pieceCount() - 1).
   std::size_t pieceCount() const { return piece_count_; }
+  /// Which build this terrain is: a number of its own for each
+  /// TerrainBuilder::build() (0 for an empty terrain), kept by its copies,
+  /// which hold the same pieces. What a contact finder keeps from one call
+  /// to the next is kept for one serial.
+  std::uint64_t serial() const { return serial_; }
   /// Stored piece `id`. Throws InvalidInputError for a formed one (use the
   /// overload with a scratch).
   const ConvexPolyhedron& piece(PieceId id) const { return fields_.empty() ? pieces_[id] : storedPiece(id); }
@@ -228,6 +233,13 @@ class Terrain {
   /// wtc/contact/wheel_contact.hpp). Pieces of other parts go to `out`.
   void withinSurfaces(const Eigen::Vector3d& point, double reach, std::vector<PieceId>& out,
                       std::vector<SurfaceRun>& runs) const;
+  /// withinSurfaces() in two halves: the pieces it appends to `out` (the
+  /// stored pieces and those of parts not met as a surface), and the runs
+  /// it appends to `runs`. A rolling wheel walks the runs for a wider reach
+  /// about a point of its own and reads them again while it moves less
+  /// than the difference (WheelContactFinder).
+  void withinBesideSurfaces(const Eigen::Vector3d& point, double reach, std::vector<PieceId>& out) const;
+  void surfaceRuns(const Eigen::Vector3d& point, double reach, std::vector<SurfaceRun>& runs) const;
 
   /// Memory (bytes) of the pieces (stored pieces, and compact parts'
   /// samples, vertices and triangles) and of the index (the stored pieces'
@@ -239,8 +251,11 @@ class Terrain {
   friend class TerrainBuilder;
   using Field = TerrainBuilder::Field;
   const ConvexPolyhedron& storedPiece(PieceId id) const;
+  // The compact parts met as surfaces: as pieces (within, overlapping),
+  // as runs (withinSurfaces), or not at all (withinBesideSurfaces).
+  enum class Surfaces { kAsPieces, kAsRuns, kSkipped };
   void collect(const Aabb& box, const detail::BoxTreeBall* ball, std::vector<PieceId>& out,
-               std::vector<SurfaceRun>* runs = nullptr) const;
+               Surfaces surfaces = Surfaces::kAsPieces, std::vector<SurfaceRun>* runs = nullptr) const;
   // The compact part holding piece `id`; null for a stored piece or no piece.
   const Field* formedField(PieceId id) const;
   MaterialId fieldAwareMaterialId(PieceId id) const;
@@ -259,6 +274,7 @@ class Terrain {
   std::vector<Field> fields_;
   std::vector<PieceRange> field_prisms_;  // addHeightfield's stored prisms, in id order
   std::size_t piece_count_ = 0;
+  std::uint64_t serial_ = 0;
   std::shared_ptr<const detail::BoxTree> tree_;  // over the stored pieces; null when there are none
   std::vector<detail::PieceLeaf> leaves_;        // the stored pieces in tree order
   Aabb bounds_;
