@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <tuple>
 
@@ -136,7 +137,7 @@ bool surfaceLocalMinima(const Terrain& terrain, std::span<const Run> runs, const
     const std::size_t slots = static_cast<std::size_t>(r_max - r_min + 3) * width;
     if (scratch.window.size() < slots) scratch.window.resize(slots);
     if (++scratch.stamp == 0) {  // wrapped: no slot may look current
-      for (SurfaceSlot& slot : scratch.window) slot.stamp = 0;
+      for (SurfaceSlot& slot : scratch.window) slot.stamp = 0, slot.vertex_stamp = 0;
       scratch.stamp = 1;
     }
     const std::uint32_t stamp = scratch.stamp;
@@ -187,6 +188,34 @@ bool surfaceLocalMinima(const Terrain& terrain, std::span<const Run> runs, const
       scratch.triangles += 2;
       return &s;
     };
+    // Of the six triangles around sample (i, j), in id order (i - 1, j - 1,
+    // 0), (i - 1, j - 1, 1), (i - 1, j, 1), (i, j - 1, 0), (i, j, 0), (i,
+    // j, 1), the one first in the order (distance, id) among those tested,
+    // or kExposedAround when one is exposed; once a sample, however many
+    // triangles have their closest point there (most of a rough patch's
+    // do). Without passed runs only: a passed cell is answered when a
+    // triangle's own test asks for it, and only then.
+    constexpr std::uint8_t kExposedAround = 0xff;
+    const auto firstAround = [&](int i, int j) {
+      SurfaceSlot& v = slot(i, j);
+      if (v.vertex_stamp == stamp) return v.vertex_first;
+      const SurfaceSlot* below = &v - width;
+      const std::array<const SurfaceSlot*, 6> cell{below - 1, below - 1, below, &v - 1, &v, &v};
+      constexpr std::array<int, 6> half{0, 1, 1, 0, 0, 1};
+      std::uint8_t first = kExposedAround;
+      double nearest = std::numeric_limits<double>::infinity();
+      for (std::uint8_t k = 0; k < 6; ++k) {
+        if (cell[k]->stamp != stamp) continue;
+        if (cell[k]->exposed) {
+          first = kExposedAround;
+          break;
+        }
+        const double d = cell[k]->distance[half[k]];
+        if (d < nearest) nearest = d, first = k;
+      }
+      v.vertex_stamp = stamp, v.vertex_first = first;
+      return first;
+    };
     for (std::size_t k = first_point; k < scratch.points.size(); ++k) {
       SurfacePoint& a = scratch.points[k];
       const Cell self{a.row, a.col, a.triangle};
@@ -222,6 +251,15 @@ bool surfaceLocalMinima(const Terrain& terrain, std::span<const Run> runs, const
         default: {
           const int corner = a.feature - static_cast<int>(TriangleFeature::kVertexA);
           const std::array<int, 2> s = cornerSample(self, corner);
+          if (passed.empty()) {
+            // The strict order's first of the six, unless one is exposed.
+            const std::uint8_t first = firstAround(s[0], s[1]);
+            if (first != kExposedAround) {
+              const int own = self.row < s[0] ? (self.col < s[1] ? self.t : 2) : (self.col < s[1] ? 3 : 4 + self.t);
+              dominated = first != own;
+              break;
+            }
+          }
           for (const Cell& n : aroundSample(s[0], s[1])) {
             if ((n.row != self.row || n.col != self.col || n.t != self.t) && beats(n)) {
               dominated = true;
@@ -313,33 +351,42 @@ bool runsKeep(const Terrain& terrain, double runs_reach) {
   return side * side <= static_cast<double>(kMaxSurfaceWindowCells);
 }
 
-bool narrowRuns(const Terrain& terrain, std::vector<Run>& runs, const Eigen::Vector3d& centre, double runs_reach) {
+bool narrowRuns(const Terrain& terrain, std::vector<Run>& runs, const RunsRoom& room) {
   if (std::any_of(runs.begin(), runs.end(), [](const Run& run) { return run.passed; })) return false;
+  // A centre p in the room is within `across` of its centre horizontally
+  // and above its floor: a box's distance from p is at least
+  // max(0, horizontal - across) and max(0, floor - top) along the two
+  // axes, so a cell the search keeps for p (forEachCellNear) passes this
+  // test, which keeps a margin far above the roundoff of either.
+  const Eigen::Vector3d& a = room.centre;
+  const double floor = a.z() - room.down;
+  const double slack2 = (room.reach * room.reach * (1.0 + kCellSlack) + kCellSlack) * (1.0 + kCellSlack);
   std::size_t out = 0;
   for (const Run& run : runs) {
     const Heightfield& f = *terrain.compactField(static_cast<std::size_t>(run.part)).field;
+    const double dy = rowDistance(f, run.row, a.y());
     Run narrowed = run;
     narrowed.first_col = run.last_col + 1;
-    forEachCellNear(f, run.row, run.first_col, run.last_col, run.first_piece, centre, runs_reach,
-                    [&](int c, PieceId id) {
-                      if (c < narrowed.first_col) narrowed.first_col = c, narrowed.first_piece = id;
-                      narrowed.last_col = c;
-                    });
+    forEachCellBox(f, run.row, run.first_col, run.last_col, run.first_piece,
+                   [&](int c, PieceId id, double x0, double x1, double top) {
+                     const double dx = std::max({0.0, x0 - a.x(), a.x() - x1});
+                     const double h = std::max(0.0, std::sqrt(dx * dx + dy * dy) - room.across);
+                     const double v = std::max(0.0, floor - top);
+                     if (h * h + v * v > slack2) return;
+                     if (c < narrowed.first_col) narrowed.first_col = c, narrowed.first_piece = id;
+                     narrowed.last_col = c;
+                   });
     if (narrowed.first_col <= narrowed.last_col) runs[out++] = narrowed;
   }
   runs.resize(out);
   return true;
 }
 
-bool runsHold(const Eigen::Vector3d& runs_centre, double runs_reach, const Eigen::Vector3d& centre, double reach) {
-  // A cell the search keeps lies within reach' = sqrt(reach^2 (1 + s) + s)
-  // of the centre (forEachCellNear, s = kCellSlack), so within reach' + m
-  // of runs_centre when the centre has moved m: narrowRuns kept it if that
-  // is at most runs_reach, less the roundoff of the distances (relative to
-  // the coordinates' size).
-  const double reach_tested = std::sqrt(reach * reach * (1.0 + kCellSlack) + kCellSlack);
-  const double roundoff = 1e-12 * (1.0 + runs_centre.cwiseAbs().maxCoeff() + runs_reach);
-  return (centre - runs_centre).norm() <= runs_reach - reach_tested - roundoff;
+bool runsHold(const RunsRoom& room, const Eigen::Vector3d& centre, double reach) {
+  const Eigen::Vector3d& a = room.centre;
+  const double roundoff = 1e-12 * (1.0 + a.cwiseAbs().maxCoeff() + room.reach);
+  return reach <= room.reach && (centre - a).head<2>().norm() <= room.across - roundoff &&
+         centre.z() >= a.z() - room.down + roundoff;
 }
 
 double prismPlaneBound(const SurfacePoint& s, const Eigen::Vector3d& p, double enough) {

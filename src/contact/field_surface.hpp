@@ -95,20 +95,19 @@ inline double besideBound(const Heightfield& f, double beside) {
 bool runsKeep(const Terrain& terrain, double runs_reach);
 
 /// A rolling wheel's runs (WheelContactFinder): `runs`, from
-/// Terrain::surfaceRuns for a wider reach `runs_reach` (m) about `centre`,
-/// narrowed to the cells whose boxes come within that reach (the search's
-/// cell test, forEachCellNear); false, the runs left as they were, when one
-/// of them is passed (whether a cell passes depends on the centre).
-bool narrowRuns(const Terrain& terrain, std::vector<Terrain::SurfaceRun>& runs, const Eigen::Vector3d& centre,
-                double runs_reach);
+/// Terrain::surfaceRuns about room.centre for room.reach plus the room's
+/// diagonal, narrowed to the cells whose boxes come within room.reach of
+/// some point of the room (horizontally within room.across, vertically
+/// from room.down below to any height); false, the runs left as they were,
+/// when one of them is passed (whether a cell passes depends on the centre).
+bool narrowRuns(const Terrain& terrain, std::vector<Terrain::SurfaceRun>& runs, const RunsRoom& room);
 
-/// Whether narrowRuns's runs for `runs_centre` and `runs_reach` (m) hold
-/// every cell whose box comes within `reach` (m) of `centre`, as the
-/// search's cell test decides: the centre has moved less than the reach
-/// has room for, its test's margin and roundoff included.
-bool runsHold(const Eigen::Vector3d& runs_centre, double runs_reach, const Eigen::Vector3d& centre, double reach);
+/// Whether narrowRuns's runs for `room` hold every cell whose box comes
+/// within `reach` (m) of `centre`, as the search's cell test decides: the
+/// centre is in the room, by more than roundoff, and the reach no wider.
+bool runsHold(const RunsRoom& room, const Eigen::Vector3d& centre, double reach);
 
-/// Cells of the largest window of distances a search keeps (24 bytes a
+/// Cells of the largest window of distances a search keeps (32 bytes a
 /// cell): a 0.19 m wheel on a 1 mm field spans 145,000.
 inline constexpr std::size_t kMaxSurfaceWindowCells = std::size_t{1} << 18;
 

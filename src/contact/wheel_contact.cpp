@@ -59,7 +59,7 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
     for (auto& [id, dropped] : formed_) spare_.push_back(std::move(dropped));
     formed_.clear();
     has_previous_ = false;
-    runs_reach_ = 0.0;
+    runs_room_.reach = 0.0;
     keep_runs_ = true;
   }
 
@@ -235,34 +235,36 @@ std::span<const WheelContact> WheelContactFinder::find(const Terrain& terrain, c
   return contacts_;
 }
 
-// A rolling wheel on the terrain's one compact heightfield walks its cells
-// for a reach wider by kRunsMarginRelative r_f, about a point half that
-// margin ahead of it (along its last move), and reads the cells found again
-// while its centre stays within the margin: a step then tests those cells,
-// not the walk's. The search decides each cell by its own test, so the
-// answer is the same whichever runs hold the cell. Runs with a passed cell
-// hold for their centre alone (a cell passes or not by where the centre
-// is); with several compact parts each call walks them as they are.
+// A rolling wheel on the terrain's one compact heightfield keeps the cells
+// within its reach from anywhere in a room about a point ahead of it (along
+// its last move, half the room's width; RunsRoom) and reads them again
+// while its centre stays in the room: a step then tests those cells, not
+// the walk's. The search decides each cell by its own test, so the answer
+// is the same whichever runs hold the cell. Runs with a passed cell hold
+// for their centre alone (a cell passes or not by where the centre is);
+// with several compact parts each call walks them as they are.
 void WheelContactFinder::readSurfaceRuns(const Terrain& terrain, const Eigen::Vector3d& o, double reach) {
-  if (runs_reach_ > 0.0 && detail::runsHold(runs_centre_, runs_reach_, o, reach)) {
+  if (runs_room_.reach > 0.0 && detail::runsHold(runs_room_, o, reach)) {
     terrain.withinBesideSurfaces(o, reach, candidates_);
     return;
   }
   surface_runs_.clear();
-  runs_reach_ = 0.0;
-  const double margin = kRunsMarginRelative * radius_;
-  const Eigen::Vector3d moved = has_previous_ ? Eigen::Vector3d(o - previous_centre_) : Eigen::Vector3d::Zero();
+  runs_room_.reach = 0.0;
+  detail::RunsRoom room{o, kRunsAcrossRelative * radius_, kRunsDownRelative * radius_, reach};
+  const Eigen::Vector3d moved(o.x() - previous_centre_.x(), o.y() - previous_centre_.y(), 0.0);
   const double step = moved.norm();
-  const Eigen::Vector3d ahead = step > 0.0 && step < margin ? Eigen::Vector3d(o + (0.5 * margin / step) * moved) : o;
-  // (The margin holds the cell test's own below a micrometre's reach.)
-  if (keep_runs_ && detail::runsKeep(terrain, reach + margin) && detail::runsHold(ahead, reach + margin, o, reach)) {
+  if (has_previous_ && step > 0.0 && step < room.across) room.centre += (0.5 * room.across / step) * moved;
+  const double walk = reach + std::hypot(room.across, room.down);  // from the room's centre to its floor's rim
+  // (The room holds the centre by more than the cell test's own margin
+  // unless the reach is under a micrometre.)
+  if (keep_runs_ && detail::runsKeep(terrain, walk) && detail::runsHold(room, o, reach)) {
     terrain.withinBesideSurfaces(o, reach, candidates_);
-    terrain.surfaceRuns(ahead, reach + margin, surface_runs_);
-    if (detail::narrowRuns(terrain, surface_runs_, ahead, reach + margin)) {
-      runs_centre_ = ahead, runs_reach_ = reach + margin;
+    terrain.surfaceRuns(room.centre, walk, surface_runs_);
+    if (detail::narrowRuns(terrain, surface_runs_, room)) {
+      runs_room_ = room;
       return;
     }
-    // A passed cell: passed for the point ahead, walked again for the centre.
+    // A passed cell: passed for the room's centre, walked again for the centre.
     surface_runs_.clear();
     terrain.surfaceRuns(o, reach, surface_runs_);
     keep_runs_ = false;
@@ -324,10 +326,12 @@ void WheelContactFinder::applySeamRule(double gap, double radius) {
     return a.signed_distance < b.signed_distance || (a.signed_distance == b.signed_distance && a.piece < b.piece);
   });
   // The field surfaces' touching triangles that are no contact (in no
-  // order: each contact reads them once, a sort cost more).
+  // order: each contact reads them once, a sort cost more), by their place
+  // in surface_.points.
   shadows_.clear();
-  for (const detail::SurfacePoint& s : surface_.points) {
-    if (!s.minimum && s.distance < radius) shadows_.push_back(s);
+  for (std::size_t k = 0; k < surface_.points.size(); ++k) {
+    const detail::SurfacePoint& s = surface_.points[k];
+    if (!s.minimum && s.distance < radius) shadows_.push_back(k);
   }
   // The cells the search passed: only those that could change a share.
   // A contact another contact covers reads no shadow's coverage, nor
@@ -339,7 +343,10 @@ void WheelContactFinder::applySeamRule(double gap, double radius) {
         if (a != b && contact_pieces_[a]->planeBound(contacts_[b].ground_point) - gap <= 0.0) uncovered_[b] = 0;
       }
     }
-    detail::passedShadows(*terrain_, surface_, contacts_, uncovered_, radius, gap, shadows_);
+    // (Appended to the searched points: passedShadows reads none of them.)
+    const std::size_t searched = surface_.points.size();
+    detail::passedShadows(*terrain_, surface_, contacts_, uncovered_, radius, gap, surface_.points);
+    for (std::size_t k = searched; k < surface_.points.size(); ++k) shadows_.push_back(k);
   }
   const double tie = gap;  // shadowNearer's
   auto share = [&](std::size_t at) {
@@ -367,7 +374,8 @@ void WheelContactFinder::applySeamRule(double gap, double radius) {
     }
     // A field surface's nearer triangles that are no contact cut B as
     // their prisms did (they stand on no real edge: nothing passes through).
-    for (const detail::SurfacePoint& s : shadows_) {
+    for (const std::size_t k : shadows_) {
+      const detail::SurfacePoint& s = surface_.points[k];
       if (covered && least == 0.0) break;
       if (s.distance > b.signed_distance + tie || !shadowNearer(s, b)) continue;
       // Beyond the patch a shadow cuts nothing (and covers nothing).
@@ -381,7 +389,8 @@ void WheelContactFinder::applySeamRule(double gap, double radius) {
     for (std::size_t q = at + 1; q < rank_.size() && !covered; ++q) {
       covered = contact_pieces_[rank_[q]]->planeBound(b.ground_point) - gap <= 0.0;
     }
-    for (const detail::SurfacePoint& s : shadows_) {
+    for (const std::size_t k : shadows_) {
+      const detail::SurfacePoint& s = surface_.points[k];
       if (covered) break;
       if (shadowNearer(s, b)) continue;
       covered = detail::prismPlaneBound(s, b.ground_point, gap) - gap <= 0.0;
@@ -434,7 +443,8 @@ double WheelContactFinder::realEdgeClearance(std::size_t b, double gap) {
     if (outside < clear) outside = queryPoint(other, edge.ground_point).signed_distance - gap;
     clear = std::min(clear, outside);
   }
-  for (const detail::SurfacePoint& s : shadows_) {
+  for (const std::size_t k : shadows_) {
+    const detail::SurfacePoint& s = surface_.points[k];
     double outside = detail::prismPlaneBound(s, edge.ground_point) - gap;
     if (outside < clear) outside = shadowDistance(s, edge.ground_point) - gap;
     clear = std::min(clear, outside);
@@ -447,7 +457,7 @@ bool WheelContactFinder::shadowNearer(const detail::SurfacePoint& s, const Wheel
   // found (field_surface.hpp); but an exposed prism's contact (GJK's) keeps
   // a point it shares with a shadow to within roundoff.
   const double tie = tolerance::kSeamGapRelative * radius_;
-  if (!onSurface(b.piece) && std::abs(s.distance - b.signed_distance) <= tie &&
+  if (std::abs(s.distance - b.signed_distance) <= tie && !onSurface(b.piece) &&
       (s.point - b.ground_point).norm() <= tie) {
     return false;
   }
@@ -487,7 +497,8 @@ double WheelContactFinder::groundThroughEdge(std::size_t a, double gap) {
       return through;  // covered: a seam's or a crease's edge
     }
   }
-  for (const detail::SurfacePoint& s : shadows_) {
+  for (const std::size_t k : shadows_) {
+    const detail::SurfacePoint& s = surface_.points[k];
     if (detail::prismPlaneBound(s, edge.ground_point, gap) - gap <= 0.0) {
       return through;
     }

@@ -18,17 +18,14 @@ namespace wtc::detail {
 /// rounding; the pieces' own boxes (or distances) decide what it lets by.
 inline constexpr double kCellSlack = 1e-9;
 
-/// visit(c, id) for each ground cell (r, c), lo <= c <= hi, whose box (its
-/// two prisms' union up to its highest sample) comes within `reach` (m) of
-/// `point`, with kCellSlack's margin; `id` is the cell's first prism,
-/// counted on from `first`, the first ground cell's, over the ground cells.
+/// visit(c, id, x0, x1, top) for each ground cell (r, c), lo <= c <= hi:
+/// `id` its first prism, counted on from `first`, the first ground cell's,
+/// over the ground cells; x0, x1 (m) its sides along x as sample() computes
+/// them, `top` (m) its box's top (its two prisms' union up to its highest
+/// sample).
 template <typename Visit>
-void forEachCellNear(const Heightfield& f, int r, int lo, int hi, PieceId first, const Eigen::Vector3d& point,
-                     double reach, Visit&& visit) {
+void forEachCellBox(const Heightfield& f, int r, int lo, int hi, PieceId first, Visit&& visit) {
   const auto x = [&](int i) { return f.origin.x() + i * f.spacing_x; };  // as sample() computes them
-  const auto y = [&](int i) { return f.origin.y() + i * f.spacing_y; };
-  const double slack2 = reach * reach * (1.0 + kCellSlack) + kCellSlack;
-  const double dy = std::max({0.0, y(r) - point.y(), point.y() - y(r + 1)});
   // The samples on the row's two lines, and the higher of each column's
   // pair: a cell's top is the higher of its two columns' (origin.z + h
   // rounds monotonically in h, so the highest sample gives the highest top).
@@ -46,10 +43,29 @@ void forEachCellNear(const Heightfield& f, int r, int lo, int hi, PieceId first,
     if (f.isHole(r, c)) continue;
     const PieceId cell_first = id;
     id += 2;
-    const double dx = std::max({0.0, x0 - point.x(), point.x() - x_right});
-    const double dz = std::max(0.0, point.z() - top);
-    if (dx * dx + dy * dy + dz * dz <= slack2) visit(c, cell_first);
+    visit(c, cell_first, x0, x_right, top);
   }
+}
+
+/// The distance (m) along y from `y` to row r's cells, as sample() computes
+/// the row's lines.
+inline double rowDistance(const Heightfield& f, int r, double y) {
+  return std::max({0.0, f.origin.y() + r * f.spacing_y - y, y - (f.origin.y() + (r + 1) * f.spacing_y)});
+}
+
+/// visit(c, id) for each ground cell (r, c), lo <= c <= hi, whose box
+/// comes within `reach` (m) of `point`, with kCellSlack's margin
+/// (forEachCellBox's cells and ids).
+template <typename Visit>
+void forEachCellNear(const Heightfield& f, int r, int lo, int hi, PieceId first, const Eigen::Vector3d& point,
+                     double reach, Visit&& visit) {
+  const double slack2 = reach * reach * (1.0 + kCellSlack) + kCellSlack;
+  const double dy = rowDistance(f, r, point.y());
+  forEachCellBox(f, r, lo, hi, first, [&](int c, PieceId id, double x0, double x1, double top) {
+    const double dx = std::max({0.0, x0 - point.x(), point.x() - x1});
+    const double dz = std::max(0.0, point.z() - top);
+    if (dx * dx + dy * dy + dz * dz <= slack2) visit(c, id);
+  });
 }
 
 // Where the distance from a point O falls away (SurfaceRun::passed). At a

@@ -14,7 +14,9 @@
 #include <span>
 #include <vector>
 
+#include "contact/field_surface.hpp"
 #include "geometry/triangle_closest_point.hpp"
+#include "terrain/field_cells.hpp"
 #include "wtc/contact/wheel_contact.hpp"
 #include "wtc/terrain/heightfield.hpp"
 #include "wtc/terrain/terrain.hpp"
@@ -32,9 +34,9 @@ double relief(double x, double y) {
 }
 
 // `ground` sampled at 1 cm over 2.4 m x 0.8 m, with a 2 cm crack (holes)
-// across the middle third from column `crack`, as one compact field.
+// across the middle third from column `crack`.
 template <typename Ground>
-Terrain sampledTerrain(Ground&& ground, int crack) {
+Heightfield sampledField(Ground&& ground, int crack) {
   Heightfield f;
   f.cols = 241, f.rows = 81;  // 2.4 m x 0.8 m
   f.spacing_x = f.spacing_y = kSpacing;
@@ -47,9 +49,15 @@ Terrain sampledTerrain(Ground&& ground, int crack) {
   f.cell_holes.assign(static_cast<std::size_t>(f.rows - 1) * (f.cols - 1), 0);
   for (int r = 27; r < 53; ++r)
     for (int c = crack; c < crack + 2; ++c) f.cell_holes[static_cast<std::size_t>(r) * (f.cols - 1) + c] = 1;
+  return f;
+}
+
+// sampledField as one compact field.
+template <typename Ground>
+Terrain sampledTerrain(Ground&& ground, int crack) {
   TerrainBuilder builder;
   const MaterialId material = builder.addMaterial({});
-  addCompactHeightfield(builder, std::move(f), material);
+  addCompactHeightfield(builder, sampledField(ground, crack), material);
   return std::move(builder).build();
 }
 
@@ -347,6 +355,104 @@ TEST(FieldSurfaceTest, RunsHoldEveryPieceWithinTheReach) {
       ASSERT_TRUE(std::binary_search(in_runs.begin(), in_runs.end(), id)) << "trial " << trial << ", piece " << id;
     }
   }
+}
+
+// The cells of `runs` (row, column) whose boxes come within `reach` of `p`
+// by the search's own test, sorted.
+std::vector<std::array<int, 2>> cellsNear(const Heightfield& f, std::span<const Terrain::SurfaceRun> runs,
+                                          const Eigen::Vector3d& p, double reach) {
+  std::vector<std::array<int, 2>> cells;
+  for (const Terrain::SurfaceRun& run : runs) {
+    detail::forEachCellNear(f, run.row, run.first_col, run.last_col, run.first_piece, p, reach, [&](int c, PieceId) {
+      cells.push_back({run.row, c});
+    });
+  }
+  std::sort(cells.begin(), cells.end());
+  return cells;
+}
+
+TEST(FieldSurfaceTest, KeptRunsHoldEveryCellTheSearchTestsFromAnywhereInTheirRoom) {
+  const Terrain terrain = fineTerrain();
+  const Heightfield& f = *terrain.compactField(0).field;
+  std::mt19937 gen(11);
+  std::uniform_real_distribution<double> along(0.1, 2.3), across(-0.3, 0.3), unit(-1.0, 1.0), share(0.0, 1.0);
+  std::vector<PieceId> others;
+  std::vector<Terrain::SurfaceRun> kept, walked;
+  int held = 0, kept_cells = 0, tested_cells = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const double x = along(gen), y = across(gen);
+    const double reach = 0.05 + 0.25 * share(gen);
+    // A room about a point 0-6 mm below a wheel resting on the ground.
+    detail::RunsRoom room{
+        {x, y, relief(x, y) + reach - 0.006 * share(gen)}, 0.05 * share(gen), 0.02 * share(gen), reach};
+    kept.clear();
+    terrain.surfaceRuns(room.centre, reach + std::hypot(room.across, room.down), kept);
+    if (!detail::narrowRuns(terrain, kept, room)) continue;  // a passed cell: kept for no room
+    // A centre near the room's floor and rim, where a cell the room misses
+    // would show, in the room or just outside it (which runsHold turns away).
+    const double angle = 3.14159 * unit(gen), out = 1.0 + 0.3 * unit(gen), below = 1.0 + 0.3 * unit(gen);
+    const Eigen::Vector3d p = room.centre + Eigen::Vector3d(out * room.across * std::cos(angle),
+                                                            out * room.across * std::sin(angle), -below * room.down);
+    const double r = reach * (1.0 - 0.01 * share(gen));
+    if (!detail::runsHold(room, p, r)) continue;
+    ++held;
+    others.clear(), walked.clear();
+    terrain.withinSurfaces(p, r, others, walked);
+    const std::vector<std::array<int, 2>> expected = cellsNear(f, walked, p, r);
+    const std::vector<std::array<int, 2>> got = cellsNear(f, kept, p, r);
+    ASSERT_EQ(got, expected) << "trial " << trial;
+    for (const Terrain::SurfaceRun& run : kept) kept_cells += run.last_col - run.first_col + 1;
+    tested_cells += static_cast<int>(expected.size());
+  }
+  // Many rooms hold, and the kept cells are not the whole disc.
+  EXPECT_GT(held, 500);
+  EXPECT_GT(tested_cells, 10000);
+  EXPECT_LT(kept_cells, 8 * tested_cells);
+}
+
+// The field of fineTerrain and a second, far away (added after it: the
+// first's pieces keep their ids): a wheel on it walks anew every call.
+Terrain fineTerrainAndAnother() {
+  TerrainBuilder builder;
+  const MaterialId material = builder.addMaterial({});
+  addCompactHeightfield(builder, sampledField(relief, static_cast<int>(std::lround(kCrackX / kSpacing))), material);
+  Heightfield far;
+  far.cols = far.rows = 3;
+  far.spacing_x = far.spacing_y = 0.5;
+  far.origin = {20.0, 20.0, 0.0};
+  far.heights.assign(9, 0.0);
+  addCompactHeightfield(builder, std::move(far), material);
+  return std::move(builder).build();
+}
+
+TEST(FieldSurfaceTest, AWheelKeepingItsRunsMeetsTheGroundAsOneWalkingAnewEachCall) {
+  const Terrain one = fineTerrain(), two = fineTerrainAndAnother();
+  const WheelGeometry wheel{.free_radius = 0.19, .tread_width = 0.12};
+  WheelContactFinder keeping, walking;
+  // Rolling 1-8 mm a step, bobbing 0-24 mm into the ground (down as well
+  // as up), over the crack's exposed cells and the kerb, with a jump back.
+  int steps = 0, touched = 0;
+  double x = 0.3;
+  for (int k = 0; k < 700; ++k, ++steps) {
+    x += k == 400 ? -0.5 : 0.001 * (4.5 + 3.5 * std::sin(0.07 * k));
+    const double y = 0.1 * std::sin(3.0 * x);
+    const WheelPose pose{.center = {x, y, relief(x, y) + 0.19 - 0.012 * (1.0 + std::sin(23.0 * x))},
+                         .axle = {0.03, 1.0, 0.05}};
+    const auto a = keeping.find(one, wheel, pose);
+    const std::vector<WheelContact> got(a.begin(), a.end());
+    const auto b = walking.find(two, wheel, pose);
+    touched += !got.empty();
+    ASSERT_EQ(got.size(), b.size()) << "x " << x;
+    for (std::size_t i = 0; i < got.size(); ++i) {
+      EXPECT_EQ(got[i].piece, b[i].piece) << "x " << x;
+      EXPECT_EQ(got[i].ground_point, b[i].ground_point) << "x " << x;
+      EXPECT_EQ(got[i].deflection, b[i].deflection) << "x " << x;
+      EXPECT_EQ(got[i].load_share, b[i].load_share) << "x " << x;
+    }
+    ASSERT_EQ(keeping.counts().surface, walking.counts().surface) << "x " << x;
+    if (::testing::Test::HasFailure()) return;
+  }
+  EXPECT_GT(touched, steps / 2);
 }
 
 }  // namespace

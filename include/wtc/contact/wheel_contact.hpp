@@ -63,11 +63,22 @@ struct SurfacePoint {
   bool minimum = false;  ///< A local minimum: a contact.
 };
 /// A cell's two triangles' distances from the wheel centre (m), valid in
-/// the search numbered `stamp`.
+/// the search numbered `stamp`; and which of the six triangles around its
+/// first sample comes first in the search's order, valid in the search
+/// numbered `vertex_stamp`.
 struct SurfaceSlot {
   double distance[2] = {0.0, 0.0};
-  std::uint32_t stamp = 0;
+  std::uint32_t stamp = 0, vertex_stamp = 0;
   bool exposed = false;  ///< Its prisms are queried as prisms.
+  std::uint8_t vertex_first = 0;
+};
+/// Where a rolling wheel's centre may go while the runs it keeps hold
+/// (src/contact/field_surface.hpp, runsHold): within `across` (m) of
+/// `centre` horizontally and no more than `down` (m) below it, with a reach
+/// of at most `reach` (m). `reach` is 0 when no runs are kept.
+struct RunsRoom {
+  Eigen::Vector3d centre{Eigen::Vector3d::Zero()};
+  double across = 0.0, down = 0.0, reach = 0.0;
 };
 /// The finder's scratch for a field's surface: the triangles within the
 /// reach, the runs of cells passed (no minimum on them: answered only when
@@ -179,10 +190,12 @@ class WheelContactFinder {
   // surface_runs_, and the other pieces within the reach into candidates_:
   // a rolling wheel's kept runs when they hold, else walked anew.
   void readSurfaceRuns(const Terrain& terrain, const Eigen::Vector3d& o, double reach);
-  // The margin (relative to r_f) a wheel's runs are walked wider by, to be
-  // read again while the centre moves less: a rolling wheel moves 1-5 mm a
-  // step, a fine field's cells are 1-5 cm (docs/terrain.md measures it).
-  static constexpr double kRunsMarginRelative = 0.02;
+  // The room (relative to r_f) a wheel's kept runs give its centre,
+  // across and down (RunsRoom): a rolling wheel moves 1-5 mm a step, a
+  // little of it down; each millimetre of room down widens the cells kept
+  // as much as several across (docs/terrain.md measures both).
+  static constexpr double kRunsAcrossRelative = 0.03;
+  static constexpr double kRunsDownRelative = 0.003;
   // The seam rule's parts; a contact is named by its index in contacts_
   // (and contact_pieces_), before the rule erases any.
   void applySeamRule(double gap, double radius);
@@ -206,7 +219,8 @@ class WheelContactFinder {
   // reach, and the local minima among them.
   std::vector<Terrain::SurfaceRun> surface_runs_;
   detail::SurfaceScratch surface_;
-  std::vector<detail::SurfacePoint> touches_, shadows_;
+  std::vector<detail::SurfacePoint> touches_;
+  std::vector<std::size_t> shadows_;                  // the seam rule's shadows: their places in surface_.points
   const Terrain* terrain_ = nullptr;                  // of this call, for a shadow's exact distance
   std::optional<ConvexPolyhedron> shadow_piece_;      // a shadow prism formed for it
   ContactSearchCounts counts_;
@@ -236,12 +250,12 @@ class WheelContactFinder {
   // runs) holds for the terrain of this serial (Terrain::serial).
   std::uint64_t terrain_serial_ = 0;
   // A rolling wheel's walk (issue 53): surface_runs_ hold the cells of the
-  // terrain's one compact heightfield whose boxes came within runs_reach_
-  // (m) of runs_centre_ (none passed), read again while the centre stays
-  // near enough (detail::runsHold); 0 when they hold for this call only.
-  // keep_runs_: the last walk passed no cell, so the next is walked to be kept.
-  Eigen::Vector3d runs_centre_{Eigen::Vector3d::Zero()};
-  double runs_reach_ = 0.0;
+  // terrain's one compact heightfield whose boxes come within the reach of
+  // some point of runs_room_ (none passed), read again while the centre
+  // stays in the room (detail::runsHold); its reach is 0 when they hold for
+  // this call only. keep_runs_: the last walk passed no cell, so the next
+  // is walked to be kept.
+  detail::RunsRoom runs_room_;
   bool keep_runs_ = true;
 };
 
