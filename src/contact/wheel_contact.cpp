@@ -250,25 +250,27 @@ void WheelContactFinder::readSurfaceRuns(const Terrain& terrain, const Eigen::Ve
   }
   surface_runs_.clear();
   runs_room_.reach = 0.0;
-  detail::RunsRoom room{o, kRunsAcrossRelative * radius_, kRunsDownRelative * radius_, reach};
-  const Eigen::Vector3d moved(o.x() - previous_centre_.x(), o.y() - previous_centre_.y(), 0.0);
-  const double step = moved.norm();
-  if (has_previous_ && step > 0.0 && step < room.across) room.centre += (0.5 * room.across / step) * moved;
-  const double walk = reach + std::hypot(room.across, room.down);  // from the room's centre to its floor's rim
-  // (The room holds the centre by more than the cell test's own margin
-  // unless the reach is under a micrometre.)
-  if (keep_runs_ && detail::runsKeep(terrain, walk) && detail::runsHold(room, o, reach)) {
-    terrain.withinBesideSurfaces(o, reach, candidates_);
-    terrain.surfaceRuns(room.centre, walk, surface_runs_);
-    if (detail::narrowRuns(terrain, surface_runs_, room)) {
-      runs_room_ = room;
+  if (keep_runs_ && terrain.compactFieldCount() == 1) {
+    detail::RunsRoom room{o, kRunsAcrossRelative * radius_, kRunsDownRelative * radius_, reach};
+    const Eigen::Vector3d moved(o.x() - previous_centre_.x(), o.y() - previous_centre_.y(), 0.0);
+    const double step = moved.norm();
+    if (has_previous_ && step > 0.0 && step < room.across) room.centre += (0.5 * room.across / step) * moved;
+    const double walk = reach + std::hypot(room.across, room.down);  // from the room's centre to its floor's rim
+    // (The room holds the centre by more than the cell test's own margin
+    // unless the reach is under a micrometre.)
+    if (detail::runsKeep(terrain, walk) && detail::runsHold(room, o, reach)) {
+      terrain.withinBesideSurfaces(o, reach, candidates_);
+      terrain.surfaceRuns(room.centre, walk, surface_runs_);
+      if (detail::narrowRuns(terrain, surface_runs_, room)) {
+        runs_room_ = room;
+        return;
+      }
+      // A passed cell: passed for the room's centre, walked again for the centre.
+      surface_runs_.clear();
+      terrain.surfaceRuns(o, reach, surface_runs_);
+      keep_runs_ = false;
       return;
     }
-    // A passed cell: passed for the room's centre, walked again for the centre.
-    surface_runs_.clear();
-    terrain.surfaceRuns(o, reach, surface_runs_);
-    keep_runs_ = false;
-    return;
   }
   terrain.withinSurfaces(o, reach, candidates_, surface_runs_);
   // Where cells pass, each call walks anew; once none does, the wheel
