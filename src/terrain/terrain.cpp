@@ -409,8 +409,8 @@ void Terrain::within(const Eigen::Vector3d& point, double reach, std::vector<Pie
 
 void Terrain::withinSurfaces(const Eigen::Vector3d& point, double reach, std::vector<PieceId>& out,
                              std::vector<SurfaceRun>& runs) const {
-  const detail::BoxTreeBall ball{point, reach};
-  collect({point.array() - reach, point.array() + reach}, &ball, out, Surfaces::kAsRuns, &runs);
+  withinBesideSurfaces(point, reach, out);
+  surfaceRuns(point, reach, runs);
 }
 
 void Terrain::surfaceRuns(const Eigen::Vector3d& point, double reach, std::vector<SurfaceRun>& runs) const {
@@ -425,23 +425,18 @@ void Terrain::surfaceRuns(const Eigen::Vector3d& point, double reach, std::vecto
 
 void Terrain::withinBesideSurfaces(const Eigen::Vector3d& point, double reach, std::vector<PieceId>& out) const {
   const detail::BoxTreeBall ball{point, reach};
-  collect({point.array() - reach, point.array() + reach}, &ball, out, Surfaces::kSkipped);
+  collect({point.array() - reach, point.array() + reach}, &ball, out, /*skip_surfaces=*/true);
 }
 
 // overlapping() and within(): `box` holds `ball` when there is one.
-void Terrain::collect(const Aabb& box, const detail::BoxTreeBall* ball, std::vector<PieceId>& out, Surfaces surfaces,
-                      std::vector<SurfaceRun>* runs) const {
+void Terrain::collect(const Aabb& box, const detail::BoxTreeBall* ball, std::vector<PieceId>& out,
+                      bool skip_surfaces) const {
   // Each compact part is its own index; its bounds spare a part far away
   // the walk (a box with a NaN overlaps no bounds).
   for (std::size_t part = 0; part < fields_.size(); ++part) {
     const Field& f = fields_[part];
     if (!f.formed->bounds().overlaps(box)) continue;
-    if (surfaces != Surfaces::kAsPieces && f.formed->isSurface()) {
-      if (surfaces == Surfaces::kAsRuns) {
-        f.formed->surfaceWithin(ball->centre, ball->radius, f.first, static_cast<int>(part), *runs);
-      }
-      continue;
-    }
+    if (skip_surfaces && f.formed->isSurface()) continue;  // surfaceRuns' part
     if (ball != nullptr) {
       f.formed->within(ball->centre, ball->radius, f.first, out);
     } else {

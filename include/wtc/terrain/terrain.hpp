@@ -251,11 +251,10 @@ class Terrain {
   friend class TerrainBuilder;
   using Field = TerrainBuilder::Field;
   const ConvexPolyhedron& storedPiece(PieceId id) const;
-  // The compact parts met as surfaces: as pieces (within, overlapping),
-  // as runs (withinSurfaces), or not at all (withinBesideSurfaces).
-  enum class Surfaces { kAsPieces, kAsRuns, kSkipped };
+  // skip_surfaces: the compact parts met as surfaces are left to
+  // surfaceRuns (withinBesideSurfaces), not given as pieces.
   void collect(const Aabb& box, const detail::BoxTreeBall* ball, std::vector<PieceId>& out,
-               Surfaces surfaces = Surfaces::kAsPieces, std::vector<SurfaceRun>* runs = nullptr) const;
+               bool skip_surfaces = false) const;
   // The compact part holding piece `id`; null for a stored piece or no piece.
   const Field* formedField(PieceId id) const;
   MaterialId fieldAwareMaterialId(PieceId id) const;
