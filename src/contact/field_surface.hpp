@@ -78,6 +78,34 @@ void passedShadows(const Terrain& terrain, const SurfaceScratch& scratch, std::s
 double prismPlaneBound(const SurfacePoint& s, const Eigen::Vector3d& p,
                        double enough = std::numeric_limits<double>::infinity());
 
+/// Whether the prism of one of `shadows` (places in `points`) that
+/// `consider` accepts covers `p`: its plane bound (prismPlaneBound) at p is
+/// within `gap` (m). An "or", the same in any order, so the shadows on the
+/// cells around p's come first: a prism that covers p stands there, and
+/// most points asked about (a minimum at a sample) have one; the rest only
+/// when none of those does.
+template <typename Consider>
+bool shadowsCover(std::span<const SurfacePoint> points, std::span<const std::size_t> shadows, const Eigen::Vector3d& p,
+                  double gap, Consider&& consider) {
+  const Heightfield* field = nullptr;
+  double row = 0.0, col = 0.0;  // p's place on `field`, in cells
+  const auto around = [&](const SurfacePoint& s) {
+    if (s.field != field) {
+      field = s.field;
+      col = (p.x() - field->origin.x()) / field->spacing_x, row = (p.y() - field->origin.y()) / field->spacing_y;
+    }
+    return std::abs(col - (s.col + 0.5)) < 1.5 && std::abs(row - (s.row + 0.5)) < 1.5;
+  };
+  for (const bool first : {true, false}) {
+    for (const std::size_t k : shadows) {
+      const SurfacePoint& s = points[k];
+      if (around(s) != first || !consider(s)) continue;
+      if (prismPlaneBound(s, p, gap) - gap <= 0.0) return true;
+    }
+  }
+  return false;
+}
+
 /// The least plane bound (m) of a prism of field `f` at a point `beside`
 /// (m) beside its cell (the largest of the point's distances out past the
 /// cell's four sides): one wall stands at least

@@ -391,12 +391,8 @@ void WheelContactFinder::applySeamRule(double gap, double radius) {
     for (std::size_t q = at + 1; q < rank_.size() && !covered; ++q) {
       covered = contact_pieces_[rank_[q]]->planeBound(b.ground_point) - gap <= 0.0;
     }
-    for (const std::size_t k : shadows_) {
-      const detail::SurfacePoint& s = surface_.points[k];
-      if (covered) break;
-      if (shadowNearer(s, b)) continue;
-      covered = detail::prismPlaneBound(s, b.ground_point, gap) - gap <= 0.0;
-    }
+    covered = covered || detail::shadowsCover(surface_.points, shadows_, b.ground_point, gap,
+                                              [&](const detail::SurfacePoint& s) { return !shadowNearer(s, b); });
     return !covered && onAnEdge(kb, gap) ? std::max(least, realEdgeClearance(kb, gap) / b.deflection) : least;
   };
   // Decide on the unfiltered set, then erase: the rule is symmetric in order.
@@ -499,11 +495,9 @@ double WheelContactFinder::groundThroughEdge(std::size_t a, double gap) {
       return through;  // covered: a seam's or a crease's edge
     }
   }
-  for (const std::size_t k : shadows_) {
-    const detail::SurfacePoint& s = surface_.points[k];
-    if (detail::prismPlaneBound(s, edge.ground_point, gap) - gap <= 0.0) {
-      return through;
-    }
+  if (detail::shadowsCover(surface_.points, shadows_, edge.ground_point, gap,
+                           [](const detail::SurfacePoint&) { return true; })) {
+    return through;
   }
   through = edge.deflection - std::max(0.0, realEdgeClearance(a, gap));
   return through;

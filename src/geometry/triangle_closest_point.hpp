@@ -22,8 +22,9 @@ struct TriangleClosestPoint {
   TriangleFeature feature = TriangleFeature::kFace;
 };
 
-inline TriangleClosestPoint closestOnTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
-                                              const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+[[gnu::always_inline]] inline TriangleClosestPoint closestOnTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+                                                                     const Eigen::Vector3d& b,
+                                                                     const Eigen::Vector3d& c) {
   using F = TriangleFeature;
   const Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
   const double d1 = ab.dot(ap), d2 = ac.dot(ap);
