@@ -20,7 +20,7 @@ namespace {
 constexpr double kMarginM = 0.5;          // ground beyond what the run needs, each way (m)
 constexpr double kPieceThicknessM = 0.5;  // every piece's thickness (m)
 constexpr double kRunsOnFactor = 1.5;     // a search run lasts this many times its nominal travel time
-constexpr double kAxleTolM = 1e-6;
+constexpr double kSameLengthTolM = 1e-6;  // lengths closer than this are one (a lift, a track's half width; m)
 constexpr double kTiltSettleS = 1.0;   // a tilt table's level start: the vehicle settles (s)
 constexpr double kTiltPastTopS = 0.5;  // the run goes on past the table's top (s): a tip at the top is seen
 
@@ -57,7 +57,7 @@ Extent extent(const EventVehicle& v) {
   return e;
 }
 
-std::string num(double v) {
+std::string sceneNumber(double v) {
   std::ostringstream out;
   out.precision(10);
   out << v;
@@ -124,11 +124,13 @@ std::string ground(const Material& g) {
   std::string soil;
   if (g.soil) {
     soil = ", soil: {name: " + g.soil->name;
-    for (const SoilField& f : soilFields()) soil += ", " + std::string(f.name) + ": " + num((*g.soil).*f.member);
+    for (const SoilField& f : soilFields())
+      soil += ", " + std::string(f.name) + ": " + sceneNumber((*g.soil).*f.member);
     soil += "}";
   }
-  return "terrain:\n  materials:\n    ground: {mu_max: " + num(g.mu_max) + ", s1: " + num(g.s1) + ", s2: " + num(g.s2) +
-         ", rolling_resistance: " + num(g.rolling_resistance) + soil + "}\n  pieces:\n";
+  return "terrain:\n  materials:\n    ground: {mu_max: " + sceneNumber(g.mu_max) + ", s1: " + sceneNumber(g.s1) +
+         ", s2: " + sceneNumber(g.s2) + ", rolling_resistance: " + sceneNumber(g.rolling_resistance) + soil +
+         "}\n  pieces:\n";
 }
 
 // How far the vehicle frame must rise for its lowest wheel to stand on the
@@ -139,7 +141,7 @@ std::string ground(const Material& g) {
 double groundLift(const EventVehicle& v) {
   double lift = 0.0;
   for (const WheelInfo& w : v.statics.wheels) lift = std::max(lift, w.radius_m - w.position.z());
-  return lift > kAxleTolM ? lift : 0.0;
+  return lift > kSameLengthTolM ? lift : 0.0;
 }
 
 std::string placement(const EventVehicle& v, Eigen::Vector3d t, const Eigen::Matrix3d& R,
@@ -149,9 +151,9 @@ std::string placement(const EventVehicle& v, Eigen::Vector3d t, const Eigen::Mat
   Eigen::Vector3d axis = aa.axis();
   double degrees = aa.angle() * 180.0 / std::numbers::pi;
   if (std::abs(degrees) < 1e-12) axis = Eigen::Vector3d::UnitZ();
-  return "vehicle: {file: '" + v.file.string() + "', translation: [" + num(t.x()) + ", " + num(t.y()) + ", " +
-         num(t.z()) + "], rotation: {axis: [" + num(axis.x()) + ", " + num(axis.y()) + ", " + num(axis.z()) +
-         "], degrees: " + num(degrees) + "}" + extra + "}\n";
+  return "vehicle: {file: '" + v.file.string() + "', translation: [" + sceneNumber(t.x()) + ", " + sceneNumber(t.y()) +
+         ", " + sceneNumber(t.z()) + "], rotation: {axis: [" + sceneNumber(axis.x()) + ", " + sceneNumber(axis.y()) +
+         ", " + sceneNumber(axis.z()) + "], degrees: " + sceneNumber(degrees) + "}" + extra + "}\n";
 }
 
 // `text` inside single quotes in YAML: a quote doubled.
@@ -165,15 +167,17 @@ std::string head(const EventVehicle& v, const std::string& event, double value, 
                  double duration, const Material& ground) {
   return "# A mobility event's trial, written by wtc-mobility (docs/mobility.md): replay it with wtc-sim.\n"
          "name: " +
-         sceneName(v, event, value) + "\ndescription: '" + quoted(description) + "'\nduration: " + num(duration) +
-         "\neffects: [full" + (ground.soil ? ", soft_soil" : "") + "]\noutput: {rate_hz: 100}\n";
+         sceneName(v, event, value) + "\ndescription: '" + quoted(description) +
+         "'\nduration: " + sceneNumber(duration) + "\neffects: [full" + (ground.soil ? ", soft_soil" : "") +
+         "]\noutput: {rate_hz: 100}\n";
 }
 
 // A flat slab around the vehicle's path from x0 to x1 (m).
 std::string slab(double x0, double x1, double half_width) {
   const double length = x1 - x0 + 2.0 * kMarginM, width = 2.0 * (half_width + kMarginM) + 4.0;
-  return "    - {type: slab, material: ground, size: [" + num(length) + ", " + num(width) +
-         "], thickness: " + num(kPieceThicknessM) + ", translation: [" + num(0.5 * (x0 + x1)) + ", 0, 0]}\n";
+  return "    - {type: slab, material: ground, size: [" + sceneNumber(length) + ", " + sceneNumber(width) +
+         "], thickness: " + sceneNumber(kPieceThicknessM) + ", translation: [" + sceneNumber(0.5 * (x0 + x1)) +
+         ", 0, 0]}\n";
 }
 
 // A duration that is a whole number of 0.1 s (so any dt dividing 0.1 s divides it).
@@ -212,7 +216,7 @@ bool isSkidSteered(const VehicleStatics& v) {
   if (!v.allDriven() || v.roots.size() != 1) return false;
   const double half = std::abs(v.wheels.front().position.y());
   return std::all_of(v.wheels.begin(), v.wheels.end(),
-                     [&](const WheelInfo& w) { return std::abs(std::abs(w.position.y()) - half) < kAxleTolM; });
+                     [&](const WheelInfo& w) { return std::abs(std::abs(w.position.y()) - half) < kSameLengthTolM; });
 }
 
 std::string eventScene(const EventVehicle& v, const std::string& event, double value, const MobilitySettings& s) {
@@ -237,38 +241,42 @@ std::string eventScene(const EventVehicle& v, const std::string& event, double v
     // rolling without slip (a short vehicle's run is long: the settings' duration is the robot's climb).
     const double reach = own ? 0.0 : speed * (duration - 0.5 * kEventRampS) - approach - far + kMarginM;
     const double beyond = std::max(length + 2.0 + travel, reach);
-    text = head(v, event, value,
-                step ? "The tallest step: a ledge of " + num(value) + " m, " +
-                           (own ? "the vehicle's climbing controller" : "plain drive forward") + " at " + num(speed) +
-                           " m/s."
-                     : "The widest gap: " + num(value) + " m, plain drive forward at " + num(speed) + " m/s.",
-                duration, s.ground);
+    text = head(
+        v, event, value,
+        step ? "The tallest step: a ledge of " + sceneNumber(value) + " m, " +
+                   (own ? "the vehicle's climbing controller" : "plain drive forward") + " at " + sceneNumber(speed) +
+                   " m/s."
+             : "The widest gap: " + sceneNumber(value) + " m, plain drive forward at " + sceneNumber(speed) + " m/s.",
+        duration, s.ground);
     text += ground(s.ground);
     if (step) {
-      text += "    - {type: ledge, material: ground, height: " + num(value) +
-              ", approach_length: " + num(approach + length + 2.0 * kMarginM) + ", top_length: " + num(beyond) +
-              ", width: " + num(2.0 * e.half_width + 2.0) + ", thickness: " + num(kPieceThicknessM) + "}\n";
+      text += "    - {type: ledge, material: ground, height: " + sceneNumber(value) +
+              ", approach_length: " + sceneNumber(approach + length + 2.0 * kMarginM) +
+              ", top_length: " + sceneNumber(beyond) + ", width: " + sceneNumber(2.0 * e.half_width + 2.0) +
+              ", thickness: " + sceneNumber(kPieceThicknessM) + "}\n";
     } else {
       // Two boxes, top faces at z = 0, `value` apart: nothing under the gap.
       const double near_len = approach + length + 2.0 * kMarginM, far_len = beyond;
       const double w = 2.0 * e.half_width + 2.0, depth = 1.0;
-      text += "    - {type: box, material: ground, size: [" + num(near_len) + ", " + num(w) + ", " + num(depth) +
-              "], translation: [" + num(-0.5 * near_len) + ", 0, " + num(-0.5 * depth) + "]}\n";
-      text += "    - {type: box, material: ground, size: [" + num(far_len) + ", " + num(w) + ", " + num(depth) +
-              "], translation: [" + num(value + 0.5 * far_len) + ", 0, " + num(-0.5 * depth) + "]}\n";
+      text += "    - {type: box, material: ground, size: [" + sceneNumber(near_len) + ", " + sceneNumber(w) + ", " +
+              sceneNumber(depth) + "], translation: [" + sceneNumber(-0.5 * near_len) + ", 0, " +
+              sceneNumber(-0.5 * depth) + "]}\n";
+      text += "    - {type: box, material: ground, size: [" + sceneNumber(far_len) + ", " + sceneNumber(w) + ", " +
+              sceneNumber(depth) + "], translation: [" + sceneNumber(value + 0.5 * far_len) + ", 0, " +
+              sceneNumber(-0.5 * depth) + "]}\n";
     }
     text += placement(v, Eigen::Vector3d(-approach - e.front, 0.0, 0.0), I);
     if (own) {
-      text += "controller: {type: climb, approach_speed: " + num(speed) + "}\n";
+      text += "controller: {type: climb, approach_speed: " + sceneNumber(speed) + "}\n";
     } else {
-      text += schedule(v, "[[0, 0], [" + num(kEventRampS) + ", " + num(speed / r) + "]]");
+      text += schedule(v, "[[0, 0], [" + sceneNumber(kEventRampS) + ", " + sceneNumber(speed / r) + "]]");
     }
     // The climbing controller stops once on top: every wheel's centre above the top (equal radii, as the
     // controller's robot has); a plain drive keeps driving: the rearmost wheel past the face (the far edge).
     if (own) {
-      text += "success: {min_wheel_height: " + num(value + e.r_min - 0.01) + ", max_tilt_deg: 45}\n";
+      text += "success: {min_wheel_height: " + sceneNumber(value + e.r_min - 0.01) + ", max_tilt_deg: 45}\n";
     } else {
-      text += "success: {min_advance: " + num(approach + length + far + 0.1) + ", max_tilt_deg: 45}\n";
+      text += "success: {min_advance: " + sceneNumber(approach + length + far + 0.1) + ", max_tilt_deg: 45}\n";
     }
     return text;
   }
@@ -282,17 +290,18 @@ std::string eventScene(const EventVehicle& v, const std::string& event, double v
     const double duration = roundDuration(kTiltSettleS + top / tilt.rate_deg_s + kTiltPastTopS);
     text = head(v, event, value,
                 std::string(side ? "Across a tilt table" : "Up a tilt table") + ", wheels held: the table turns at " +
-                    num(tilt.rate_deg_s) + " deg/s to " + num(top) + " deg; the angle where it tips or slides.",
+                    sceneNumber(tilt.rate_deg_s) + " deg/s to " + sceneNumber(top) +
+                    " deg; the angle where it tips or slides.",
                 duration, s.ground);
     text += ground(s.ground);
     const double reach = std::max({e.front, -e.rear, e.half_width}) + kMarginM;
-    text += "    - {type: slab, material: ground, size: [" + num(2.0 * reach + 2.0) + ", " + num(2.0 * reach + 2.0) +
-            "], thickness: " + num(kPieceThicknessM) + "}\n";
+    text += "    - {type: slab, material: ground, size: [" + sceneNumber(2.0 * reach + 2.0) + ", " +
+            sceneNumber(2.0 * reach + 2.0) + "], thickness: " + sceneNumber(kPieceThicknessM) + "}\n";
     const Eigen::Matrix3d R = side ? I : Eigen::Matrix3d(Eigen::AngleAxisd(std::numbers::pi, Eigen::Vector3d::UnitZ()));
     text += placement(v, Eigen::Vector3d::Zero(), R);
     text += schedule(v, "[[0, 0]]");
-    text += "tilt_table: {axis: " + std::string(side ? "x" : "y") + ", rate_deg_s: " + num(tilt.rate_deg_s) +
-            ", start_s: " + num(kTiltSettleS) + ", slide_m: " + num(tilt.slide_m) + "}\n";
+    text += "tilt_table: {axis: " + std::string(side ? "x" : "y") + ", rate_deg_s: " + sceneNumber(tilt.rate_deg_s) +
+            ", start_s: " + sceneNumber(kTiltSettleS) + ", slide_m: " + sceneNumber(tilt.slide_m) + "}\n";
     text += "success: {max_tilt_deg: 90}\n";
     return text;
   }
@@ -316,22 +325,24 @@ std::string eventScene(const EventVehicle& v, const std::string& event, double v
     const std::string what = grade
                                  ? "The steepest grade climbed from rest: "
                                  : (side ? "Parked across a slope, wheels held: " : "Parked up a grade, wheels held: ");
-    text = head(v, event, value, what + num(value) + " deg.", duration, s.ground);
+    text = head(v, event, value, what + sceneNumber(value) + " deg.", duration, s.ground);
     text += ground(s.ground);
-    text += "    - {type: incline, material: ground, degrees: " + num(value) + ", length: " + num(slope_length) +
-            ", width: " + num(2.0 * (side ? length : e.half_width) + 4.0) + ", thickness: " + num(kPieceThicknessM) +
-            "}\n";
+    text += "    - {type: incline, material: ground, degrees: " + sceneNumber(value) +
+            ", length: " + sceneNumber(slope_length) +
+            ", width: " + sceneNumber(2.0 * (side ? length : e.half_width) + 4.0) +
+            ", thickness: " + sceneNumber(kPieceThicknessM) + "}\n";
     text += placement(v, Eigen::Vector3d(x_s, 0.0, x_s * std::tan(theta)), R);
     if (grade) {
-      text += schedule(v, "[[0, 0], [" + num(kEventRampS) + ", " + num(s.grade.wheel_rate_radps) + "]]");
       text +=
-          "success: {min_advance: " + num(progress * std::cos(theta)) + ", max_tilt_deg: " + num(value + 30.0) + "}\n";
+          schedule(v, "[[0, 0], [" + sceneNumber(kEventRampS) + ", " + sceneNumber(s.grade.wheel_rate_radps) + "]]");
+      text += "success: {min_advance: " + sceneNumber(progress * std::cos(theta)) +
+              ", max_tilt_deg: " + sceneNumber(value + 30.0) + "}\n";
     } else {
       text += schedule(v, "[[0, 0]]");
-      text +=
-          "success: {max_final_speed: " + num(side ? s.side_slope.max_final_speed_mps : s.parked.max_final_speed_mps) +
-          ", max_distance: " + num(side ? s.side_slope.max_slide_m : s.parked.max_slide_m) +
-          ", max_tilt_deg: " + num(value + (side ? s.side_slope.max_tilt_deg : 30.0)) + "}\n";
+      text += "success: {max_final_speed: " +
+              sceneNumber(side ? s.side_slope.max_final_speed_mps : s.parked.max_final_speed_mps) +
+              ", max_distance: " + sceneNumber(side ? s.side_slope.max_slide_m : s.parked.max_slide_m) +
+              ", max_tilt_deg: " + sceneNumber(value + (side ? s.side_slope.max_tilt_deg : 30.0)) + "}\n";
     }
     return text;
   }
@@ -345,14 +356,14 @@ std::string eventScene(const EventVehicle& v, const std::string& event, double v
         roundDuration(event == "drawbar" ? s.drawbar.settle_s + s.drawbar.mean_s
                                          : (event == "coast" ? s.coast.duration_s : s.braking.duration_s));
     const double travel = speed * duration + 1.0;
-    text =
-        head(v, event, value,
-             event == "drawbar" ? "Drawbar pull at driving slip " + num(value) + ", anchor at " + num(speed) + " m/s."
-                                : (event == "coast" ? "Coast-down from " + num(speed) + " m/s, drives off."
-                                                    : "Locked-wheel stop from " + num(speed) + " m/s."),
-             duration, s.ground);
+    text = head(v, event, value,
+                event == "drawbar" ? "Drawbar pull at driving slip " + sceneNumber(value) + ", anchor at " +
+                                         sceneNumber(speed) + " m/s."
+                                   : (event == "coast" ? "Coast-down from " + sceneNumber(speed) + " m/s, drives off."
+                                                       : "Locked-wheel stop from " + sceneNumber(speed) + " m/s."),
+                duration, s.ground);
     text += ground(s.ground) + slab(e.rear - kMarginM, e.front + travel, e.half_width);
-    text += placement(v, Eigen::Vector3d::Zero(), I, ", velocity: [" + num(speed) + ", 0, 0]");
+    text += placement(v, Eigen::Vector3d::Zero(), I, ", velocity: [" + sceneNumber(speed) + ", 0, 0]");
     if (event == "drawbar") {
       // The wheels at omega = V / (r_f (1 - i)) from the start, the anchor on a spring k = (k/W) W with
       // damping ratio zeta (c = 2 zeta sqrt(k m)), at ground level below the first body's centre of mass:
@@ -362,9 +373,10 @@ std::string eventScene(const EventVehicle& v, const std::string& event, double v
       const double c = 2.0 * s.drawbar.damping_ratio * std::sqrt(k * v.statics.mass_kg);
       const vehicle::Body& first = v.description.bodies.front();
       const Eigen::Vector3d p = first.pose.translation();
-      text += schedule(v, "[[0, " + num(speed / (r * (1.0 - value))) + "]]");
-      text += "drawbar: {body: " + first.name + ", point: [" + num(p.x()) + ", " + num(p.y()) + ", 0" +
-              "], speed: " + num(speed) + ", stiffness: " + num(k) + ", damping: " + num(c) + "}\n";
+      text += schedule(v, "[[0, " + sceneNumber(speed / (r * (1.0 - value))) + "]]");
+      text += "drawbar: {body: " + first.name + ", point: [" + sceneNumber(p.x()) + ", " + sceneNumber(p.y()) + ", 0" +
+              "], speed: " + sceneNumber(speed) + ", stiffness: " + sceneNumber(k) + ", damping: " + sceneNumber(c) +
+              "}\n";
     } else if (event == "coast") {
       text += onlyOthersHeld(v);
     } else {
@@ -379,19 +391,19 @@ std::string eventScene(const EventVehicle& v, const std::string& event, double v
     }
     const double duration = roundDuration(s.turn.duration_s);
     text = head(v, event, value,
-                "Turning in place: left wheels at -" + num(s.turn.wheel_rate_radps) + " rad/s, right at +" +
-                    num(s.turn.wheel_rate_radps) + " rad/s.",
+                "Turning in place: left wheels at -" + sceneNumber(s.turn.wheel_rate_radps) + " rad/s, right at +" +
+                    sceneNumber(s.turn.wheel_rate_radps) + " rad/s.",
                 duration, s.ground);
     text += ground(s.ground) + slab(-length - 2.0, length + 2.0, length + 2.0);
     text += placement(v, Eigen::Vector3d::Zero(), I);
     std::vector<std::string> left, right;
     for (const WheelInfo& w : v.statics.wheels) (w.position.y() > 0.0 ? left : right).push_back(w.name);
-    const std::string ramp = "[[0, 0], [" + num(kEventRampS) + ", ";
+    const std::string ramp = "[[0, 0], [" + sceneNumber(kEventRampS) + ", ";
     text += "controller:\n  type: schedule\n  schedules:\n";
-    text +=
-        "    - {drives: " + list(left) + ", mode: velocity, points: " + ramp + num(-s.turn.wheel_rate_radps) + "]]}\n";
-    text +=
-        "    - {drives: " + list(right) + ", mode: velocity, points: " + ramp + num(s.turn.wheel_rate_radps) + "]]}\n";
+    text += "    - {drives: " + list(left) + ", mode: velocity, points: " + ramp +
+            sceneNumber(-s.turn.wheel_rate_radps) + "]]}\n";
+    text += "    - {drives: " + list(right) + ", mode: velocity, points: " + ramp +
+            sceneNumber(s.turn.wheel_rate_radps) + "]]}\n";
     if (!otherDrives(v).empty()) {
       text += "    - {drives: " + list(otherDrives(v)) + ", mode: position, points: [[0, 0]]}\n";
     }

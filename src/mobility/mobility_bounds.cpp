@@ -9,6 +9,7 @@
 #include <numbers>
 #include <set>
 
+#include "short_number.hpp"
 #include "wtc/base/constants.hpp"
 #include "wtc/tyre/traction_law.hpp"
 #include "wtc/tyre/wheel_soil.hpp"
@@ -16,17 +17,10 @@
 namespace wtc::mobility {
 namespace {
 
-constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 constexpr double kSearchTopRad = 60.0 / kDegPerRad;  // the planar statics' grades are searched below this
 constexpr int kBisections = 80;                      // halvings of an interval: to double precision
 constexpr double kAxleTolM = 1e-6;                   // wheels within this in x share an axle (m)
 constexpr double kMinTurnSpeedMps = 1e-3;            // the slip ratio's floor speed in the turn's balance
-
-std::string num(double v, int digits = 4) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.*g", digits, v);
-  return text;
-}
 
 // The root of f in [lo, hi], f(lo) and f(hi) of opposite signs (else an end).
 template <class F>
@@ -59,7 +53,7 @@ Bound grade(const VehicleStatics& v, const Material& g, double peak) {
   std::string note;
   if (v.allDriven()) {
     traction = std::atan(peak);
-    note = "all wheels driven: tan theta = peak of mu " + num(peak);
+    note = "all wheels driven: tan theta = peak of mu " + shortNumber(peak);
   } else {
     const double k = g.rolling_resistance * r0;
     const auto need = [&](double theta) {
@@ -69,7 +63,7 @@ Bound grade(const VehicleStatics& v, const Material& g, double peak) {
     };
     traction = bisect(need, 0.0, kSearchTopRad);
     const Loads n = wheelLoads(v, traction, 0.0, k);
-    note = "driven wheels carry " + num(n.driven_N) + " N there, free " + num(n.free_N) + " N" +
+    note = "driven wheels carry " + shortNumber(n.driven_N) + " N there, free " + shortNumber(n.free_N) + " N" +
            (n.lifted.empty() ? "" : " (" + n.lifted.front() + (n.lifted.size() > 1 ? ", ..." : "") + " lifted)");
   }
   // sum T_max = r_f (W sin + f_r (r0/r_f) W cos) for one radius of driven wheel.
@@ -86,10 +80,10 @@ Bound grade(const VehicleStatics& v, const Material& g, double peak) {
   Bound b;
   b.value = std::min({traction, by_torque, tip}) * kDegPerRad;
   b.governs = traction <= by_torque && traction <= tip ? "traction" : (by_torque <= tip ? "drive torque" : "tip-over");
-  b.detail = "traction " + num(traction * kDegPerRad) + " deg (" + note + "), drive torque " +
-             (kt < std::hypot(1.0, a) ? num(by_torque * kDegPerRad) + " deg" : "any grade") +
-             " (sum T_max / (r_f W) = " + num(kt) + ")" +
-             (v.roots.size() == 1 ? ", tip-over " + num(tip * kDegPerRad) + " deg" : "");
+  b.detail = "traction " + shortNumber(traction * kDegPerRad) + " deg (" + note + "), drive torque " +
+             (kt < std::hypot(1.0, a) ? shortNumber(by_torque * kDegPerRad) + " deg" : "any grade") +
+             " (sum T_max / (r_f W) = " + shortNumber(kt) + ")" +
+             (v.roots.size() == 1 ? ", tip-over " + shortNumber(tip * kDegPerRad) + " deg" : "");
   return b;
 }
 
@@ -98,7 +92,7 @@ Bound parked(const VehicleStatics& v, double peak) {
   b.governs = "the peak of mu at the held wheels";
   if (v.allDriven()) {
     b.value = std::atan(peak) * kDegPerRad;
-    b.detail = "every wheel held: tan theta = " + num(peak);
+    b.detail = "every wheel held: tan theta = " + shortNumber(peak);
     return b;
   }
   const auto hold = [&](double theta) {
@@ -108,8 +102,9 @@ Bound parked(const VehicleStatics& v, double peak) {
   const double theta = bisect(hold, 0.0, kSearchTopRad);
   const Loads n = wheelLoads(v, theta);
   b.value = theta * kDegPerRad;
-  b.detail = "held (driven) wheels carry " + num(n.driven_N) + " N: " + num(peak) + " N_held = W sin theta" +
-             (n.lifted.empty() ? "" : " (" + n.lifted.front() + " lifted)") + "; free wheels hold nothing at rest";
+  b.detail = "held (driven) wheels carry " + shortNumber(n.driven_N) + " N: " + shortNumber(peak) +
+             " N_held = W sin theta" + (n.lifted.empty() ? "" : " (" + n.lifted.front() + " lifted)") +
+             "; free wheels hold nothing at rest";
   return b;
 }
 
@@ -140,14 +135,14 @@ void stepAndGap(const VehicleStatics& v, const Material& g, double peak, Bound& 
     const double width = 2.0 * std::sqrt(h * (2.0 * w.radius_m - h));
     if (h < step.value) {
       step.value = h;
-      step.governs = "friction at the edge of the axle at x = " + num(x) + " m (" + w.name + ")";
+      step.governs = "friction at the edge of the axle at x = " + shortNumber(x) + " m (" + w.name + ")";
     }
     if (width < gap.value) {
       gap.value = width;
-      gap.governs = "the far edge as a step for the axle at x = " + num(x) + " m";
+      gap.governs = "the far edge as a step for the axle at x = " + shortNumber(x) + " m";
     }
-    step.detail += (step.detail.empty() ? "" : "; ") + std::string("x = ") + num(x) + ": L " + num(load) + " N, P " +
-                   num(push) + " N, h <= " + num(h) + " m";
+    step.detail += (step.detail.empty() ? "" : "; ") + std::string("x = ") + shortNumber(x) + ": L " +
+                   shortNumber(load) + " N, P " + shortNumber(push) + " N, h <= " + shortNumber(h) + " m";
   }
   // A rigid three-axle all-wheel drive lifts its middle axle as soon as the front rises a few tyre
   // deflections: front and rear carry W/2, P/L = mu, alpha <= 2 phi.
@@ -156,7 +151,7 @@ void stepAndGap(const VehicleStatics& v, const Material& g, double peak, Bound& 
     step.lower = stepHeight(r, 2.0 * phi);
     const double h = *step.lower;
     gap.lower = 2.0 * std::sqrt(h * (2.0 * r - h));
-    step.detail += "; rigid, middle axle hanging: h <= " + num(*step.lower) + " m";
+    step.detail += "; rigid, middle axle hanging: h <= " + shortNumber(*step.lower) + " m";
   }
 }
 
@@ -168,7 +163,7 @@ void sideSlope(const VehicleStatics& v, double peak, VehicleBounds& out) {
     if (!v.wheels[i].caster) lateral += n0.normal_N[i];
   }
   double slide = std::atan(peak * lateral / weight);
-  std::string slide_note = "the side-resisting wheels carry " + num(100.0 * lateral / weight) + " % of W";
+  std::string slide_note = "the side-resisting wheels carry " + shortNumber(100.0 * lateral / weight) + " % of W";
   if (v.hitch) {
     // The towed body resists sideways at one axle: its yaw balance about it puts H = G_b (x_cb - x_m) /
     // (x_h - x_m) on the hitch; the tug carries G_a + H at its axle, and H's yaw moment about that axle as
@@ -200,9 +195,10 @@ void sideSlope(const VehicleStatics& v, double peak, VehicleBounds& out) {
       const double couple_kg = share * b.mass_kg * (xd - xh) / (2.0 * half);
       const double tan_tug = peak * n_tug / (std::hypot(lateral_kg, couple_kg) * kGravityMps2);
       slide = std::atan(std::min(tan_tug, tan_main));
-      slide_note = "the hitch carries " + num(share) + " of the towed body's side load; the tug's wheels slide at " +
-                   num(std::atan(tan_tug) * kDegPerRad) + " deg, the towed body's at " +
-                   num(std::atan(tan_main) * kDegPerRad) + " deg";
+      slide_note = "the hitch carries " + shortNumber(share) +
+                   " of the towed body's side load; the tug's wheels slide at " +
+                   shortNumber(std::atan(tan_tug) * kDegPerRad) + " deg, the towed body's at " +
+                   shortNumber(std::atan(tan_main) * kDegPerRad) + " deg";
     }
   }
   // Tipping about the downhill contacts: atan(half-width of the support at the centre of mass / its height).
@@ -228,15 +224,15 @@ void sideSlope(const VehicleStatics& v, double peak, VehicleBounds& out) {
     const double angle = std::atan2(half, r.com.z());
     if (angle < tip) {
       tip = angle;
-      tip_note = "half-width " + num(half) + " m at the centre of mass, " + num(r.com.z()) + " m high";
+      tip_note = "half-width " + shortNumber(half) + " m at the centre of mass, " + shortNumber(r.com.z()) + " m high";
     }
   }
   out.side_slide_deg = slide * kDegPerRad;
   out.side_tip_deg = tip * kDegPerRad;
   out.side_slope_deg.value = std::min(slide, tip) * kDegPerRad;
   out.side_slope_deg.governs = slide <= tip ? "sliding" : "tipping";
-  out.side_slope_deg.detail = "slides at " + num(slide * kDegPerRad) + " deg (" + slide_note + "), tips at " +
-                              num(tip * kDegPerRad) + " deg (" + tip_note + ")";
+  out.side_slope_deg.detail = "slides at " + shortNumber(slide * kDegPerRad) + " deg (" + slide_note + "), tips at " +
+                              shortNumber(tip * kDegPerRad) + " deg (" + tip_note + ")";
 }
 
 std::optional<Bound> turn(const VehicleStatics& v, const Material& g, const TurnSettings& t, double& moment) {
@@ -268,8 +264,8 @@ std::optional<Bound> turn(const VehicleStatics& v, const Material& g, const Turn
   Bound b;
   b.value = bisect(yaw, 1e-6, rate * r / half);
   b.governs = "the slip law's direction at the sliding wheels";
-  b.detail = "sum mu N_i d_i = " + num(moment) + " N m to drag the wheels around; yaw balance at wheel rates +-" +
-             num(rate) + " rad/s";
+  b.detail = "sum mu N_i d_i = " + shortNumber(moment) +
+             " N m to drag the wheels around; yaw balance at wheel rates +-" + shortNumber(rate) + " rad/s";
   return b;
 }
 
@@ -304,8 +300,8 @@ Bound soilGrade(const VehicleStatics& v, const Soil& soil, const GradeSettings& 
   const double slip_max = 1.0 - s.min_progress_m / travel;
   if (!(slip_max > 0.0)) {
     b.governs = "the drives' rate";
-    b.detail =
-        "the wheels roll " + num(travel) + " m in the run, less than min_progress " + num(s.min_progress_m) + " m";
+    b.detail = "the wheels roll " + shortNumber(travel) + " m in the run, less than min_progress " +
+               shortNumber(s.min_progress_m) + " m";
     return b;
   }
   // Sum DP - W sin theta at slip i, or nullopt where a drive's torque is past its limit.
@@ -337,10 +333,10 @@ Bound soilGrade(const VehicleStatics& v, const Soil& soil, const GradeSettings& 
   const double slip = slipOn(traction), tip = tipGrade(v);
   b.value = std::min(traction, tip) * kDegPerRad;
   b.governs = tip < traction ? "tip-over" : (slip < slip_max ? "drive torque on " : "the pull of ") + soil.name;
-  b.detail = "sum DP(N_k(theta), i) = W sin theta at i = " + num(slip) + " (i_max " + num(slip_max) +
-             ": min_progress " + num(s.min_progress_m) + " m of " + num(travel) +
-             " m of rim travel): " + num(traction * kDegPerRad) + " deg" +
-             (v.roots.size() == 1 ? ", tip-over " + num(tip * kDegPerRad) + " deg" : "");
+  b.detail = "sum DP(N_k(theta), i) = W sin theta at i = " + shortNumber(slip) + " (i_max " + shortNumber(slip_max) +
+             ": min_progress " + shortNumber(s.min_progress_m) + " m of " + shortNumber(travel) +
+             " m of rim travel): " + shortNumber(traction * kDegPerRad) + " deg" +
+             (v.roots.size() == 1 ? ", tip-over " + shortNumber(tip * kDegPerRad) + " deg" : "");
   return b;
 }
 
@@ -417,8 +413,8 @@ VehicleBounds computeBounds(const VehicleStatics& v, const MobilitySettings& set
   }
   out.coast_mps2.value = resist / (v.mass_kg + inertia);
   out.coast_mps2.governs = "rolling resistance with the wheels' inertia";
-  out.coast_mps2.detail =
-      "sum f_r N r0/r_f = " + num(resist) + " N over m + sum I/r^2 = " + num(v.mass_kg + inertia) + " kg";
+  out.coast_mps2.detail = "sum f_r N r0/r_f = " + shortNumber(resist) +
+                          " N over m + sum I/r^2 = " + shortNumber(v.mass_kg + inertia) + " kg";
 
   // Locked stop from V: every wheel at mu(1) (all driven); else the driven wheels locked, the rest
   // rolling, with the deceleration's load transfer (iterated).
@@ -437,7 +433,7 @@ VehicleBounds computeBounds(const VehicleStatics& v, const MobilitySettings& set
   }
   out.braking_m.value = speed * speed / (2.0 * decel);
   out.braking_m.governs = v.allDriven() ? "mu(1) at every wheel" : "mu(1) at the locked (driven) wheels";
-  out.braking_m.detail = "deceleration " + num(decel) + " m/s^2, mu(1) = " + num(mu1, 6);
+  out.braking_m.detail = "deceleration " + shortNumber(decel) + " m/s^2, mu(1) = " + shortNumber(mu1, 6);
   // Pitch-over: at that deceleration the loads' moment about the leading
   // locked wheels tips the vehicle (the wheels behind lift and it goes over
   // them: m a h > m g l, l the centre of mass's lead over those wheels, h its

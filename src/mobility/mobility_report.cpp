@@ -5,16 +5,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "short_number.hpp"
 #include "wtc/base/error.hpp"
 
 namespace wtc::mobility {
 namespace {
-
-std::string num(double v, int digits = 4) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.*g", digits, v);
-  return text;
-}
 
 // measured / bound - 1, as a signed percentage, or "".
 std::string against(const EventResult& r) {
@@ -32,11 +27,11 @@ std::string reportTable(const MobilityOutcome& outcome) {
       "|---|---|---|---|---|---|---|---|\n";
   for (const EventResult& r : outcome.results) {
     const std::string unit = r.unit.empty() ? "" : " " + r.unit;
-    std::string bound = num(r.bound) + unit;
-    if (r.bound_lower) bound = num(*r.bound_lower) + "–" + num(r.bound) + unit;
+    std::string bound = shortNumber(r.bound) + unit;
+    if (r.bound_lower) bound = shortNumber(*r.bound_lower) + "–" + shortNumber(r.bound) + unit;
     if (r.governs.empty()) bound = "—";
-    std::string measured = r.measured ? num(*r.measured) + unit : "—";
-    if (r.torque_coefficient) measured += " (ΣT/(r W) " + num(*r.torque_coefficient) + ")";
+    std::string measured = r.measured ? shortNumber(*r.measured) + unit : "—";
+    if (r.torque_coefficient) measured += " (ΣT/(r W) " + shortNumber(*r.torque_coefficient) + ")";
     std::string how = r.note;
     if (!r.trials.empty()) how = std::to_string(r.trials.size()) + " runs; " + how;
     t += "| " + r.quantity + " | " + r.engine + " | " + r.mode + " | " + measured + " | " + bound + " | " + against(r) +
@@ -81,9 +76,9 @@ void writeReport(const EventVehicle& v, const MobilitySettings& s, const Mobilit
   if (!md) throw InvalidInputError("wtc::mobility::writeReport: cannot write " + (out / "report.md").string());
   md << "# Mobility events: " << v.description.name << "\n\n"
      << "`" << command << "`\n\n"
-     << "Vehicle " << v.file.string() << ": " << num(v.statics.mass_kg) << " kg. Ground: mu_max "
-     << num(s.ground.mu_max) << ", s1 " << num(s.ground.s1) << ", s2 " << num(s.ground.s2) << ", f_r "
-     << num(s.ground.rolling_resistance)
+     << "Vehicle " << v.file.string() << ": " << shortNumber(v.statics.mass_kg) << " kg. Ground: mu_max "
+     << shortNumber(s.ground.mu_max) << ", s1 " << shortNumber(s.ground.s1) << ", s2 " << shortNumber(s.ground.s2)
+     << ", f_r " << shortNumber(s.ground.rolling_resistance)
      << (s.ground.soil ? "; soft soil " + s.ground.soil->name + " (soft_soil: docs/soft-soil.md)" : std::string())
      << ".\n\n"
      << (outcome.pending_jobs ? "**Incomplete**: " + std::to_string(outcome.pending_jobs) +

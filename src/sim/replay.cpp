@@ -5,6 +5,7 @@
 #include <fstream>
 #include <limits>
 
+#include "replay_mm.hpp"
 #include "wtc/base/error.hpp"
 #include "wtc/base/tolerances.hpp"
 #include "wtc/geometry/convex_polyhedron.hpp"
@@ -15,11 +16,8 @@
 namespace wtc::sim {
 namespace {
 
-constexpr double kMmPerM = 1000.0;
 constexpr double kQuaternionScale = 1e4;
 constexpr double kSinkageScale = 1e4;  // 0.1 mm a unit
-
-long long mm(double metres) { return std::llround(metres * kMmPerM); }
 
 std::string quoted(const std::string& s) {
   std::string out = "\"";
@@ -68,24 +66,24 @@ void writeTerrain(std::ostream& out, const ReplayTerrain& terrain) {
 void writeShape(std::ostream& out, const vehicle::Shape& s) {
   switch (s.kind) {
     case vehicle::Shape::Kind::kBox:
-      out << ",\"kind\":\"box\",\"size\":[" << mm(s.box_size.x()) << ',' << mm(s.box_size.y()) << ','
-          << mm(s.box_size.z()) << ']';
+      out << ",\"kind\":\"box\",\"size\":[" << replayMm(s.box_size.x()) << ',' << replayMm(s.box_size.y()) << ','
+          << replayMm(s.box_size.z()) << ']';
       break;
     case vehicle::Shape::Kind::kCylinder: {
       const Eigen::Vector3d a = Eigen::Vector3d::Unit(s.cylinder_axis);
-      out << ",\"kind\":\"cylinder\",\"radius\":" << mm(s.radius) << ",\"width\":" << mm(s.length) << ",\"axis\":["
-          << a.x() << ',' << a.y() << ',' << a.z() << ']';
+      out << ",\"kind\":\"cylinder\",\"radius\":" << replayMm(s.radius) << ",\"width\":" << replayMm(s.length)
+          << ",\"axis\":[" << a.x() << ',' << a.y() << ',' << a.z() << ']';
       break;
     }
     case vehicle::Shape::Kind::kSphere:
-      out << ",\"kind\":\"sphere\",\"radius\":" << mm(s.radius);
+      out << ",\"kind\":\"sphere\",\"radius\":" << replayMm(s.radius);
       break;
     case vehicle::Shape::Kind::kHull: {
       const ConvexPolyhedron hull = ConvexPolyhedron::fromPoints(s.hull_vertices);
       out << ",\"kind\":\"hull\",\"positions\":[";
       for (int v = 0; v < hull.vertexCount(); ++v) {
         const Eigen::Vector3d p = hull.vertex(v);
-        out << (v ? "," : "") << mm(p.x()) << ',' << mm(p.y()) << ',' << mm(p.z());
+        out << (v ? "," : "") << replayMm(p.x()) << ',' << replayMm(p.y()) << ',' << replayMm(p.z());
       }
       out << "],\"indices\":[";
       bool first = true;
@@ -112,8 +110,8 @@ void writeBodies(std::ostream& out, const vehicle::VehicleDescription& v) {
     out << (i ? "," : "") << "{\"name\":" << quoted(b.name);
     if (b.wheel) {
       const Eigen::Vector3d& a = b.wheel->axle;
-      out << ",\"kind\":\"wheel\",\"radius\":" << mm(b.wheel->geometry.free_radius)
-          << ",\"width\":" << mm(b.wheel->geometry.tread_width) << ",\"axis\":[" << a.x() << ',' << a.y() << ','
+      out << ",\"kind\":\"wheel\",\"radius\":" << replayMm(b.wheel->geometry.free_radius)
+          << ",\"width\":" << replayMm(b.wheel->geometry.tread_width) << ",\"axis\":[" << a.x() << ',' << a.y() << ','
           << a.z() << ']';
     } else if (!b.compound.empty()) {
       // Each part at its pose in the body's frame: [x, y, z] (mm) and the
@@ -123,8 +121,8 @@ void writeBodies(std::ostream& out, const vehicle::VehicleDescription& v) {
         const vehicle::ShapePart& part = b.compound[k];
         const Eigen::Vector3d& p = part.pose_BS.translation();
         const Eigen::Quaterniond q(part.pose_BS.linear());
-        out << (k ? "," : "") << "{\"position\":[" << mm(p.x()) << ',' << mm(p.y()) << ',' << mm(p.z())
-            << "],\"quaternion\":[" << std::llround(q.w() * kQuaternionScale) << ','
+        out << (k ? "," : "") << "{\"position\":[" << replayMm(p.x()) << ',' << replayMm(p.y()) << ','
+            << replayMm(p.z()) << "],\"quaternion\":[" << std::llround(q.w() * kQuaternionScale) << ','
             << std::llround(q.x() * kQuaternionScale) << ',' << std::llround(q.y() * kQuaternionScale) << ','
             << std::llround(q.z() * kQuaternionScale) << ']';
         writeShape(out, part.shape);
@@ -159,12 +157,12 @@ void Replay::keepSoil(const Run& run) {
   if (memory == nullptr) return;
   std::vector<long long> update{static_cast<long long>(times_ms_.size()) - 1};
   memory->forEachTouchedNode([&](double x, double y, const SoilMemory& m) {
-    const long long x_mm = mm(x), y_mm = mm(y), sinkage = std::llround(m.plastic_sinkage * kSinkageScale);
+    const long long x_mm = replayMm(x), y_mm = replayMm(y), sinkage = std::llround(m.plastic_sinkage * kSinkageScale);
     const std::uint64_t key =
         static_cast<std::uint64_t>(static_cast<std::uint32_t>(x_mm)) << 32 | static_cast<std::uint32_t>(y_mm);
     const auto [shown, first] = soil_shown_.try_emplace(key, ShownNode{soil_nodes_.size() / 3, 0});
     if (first) {
-      soil_nodes_.insert(soil_nodes_.end(), {x_mm, y_mm, mm(terrainTopAt(*scene_.terrain, x, y).value_or(0.0))});
+      soil_nodes_.insert(soil_nodes_.end(), {x_mm, y_mm, replayMm(terrainTopAt(*scene_.terrain, x, y).value_or(0.0))});
     } else if (shown->second.sinkage == sinkage) {
       return;
     }
@@ -192,16 +190,16 @@ void Replay::observe(const Run& run) {
   for (const vehicle::BodyKinematics& k : run.state().bodies) {
     const Eigen::Vector3d& p = k.pose.translation();
     const Eigen::Quaterniond q(k.pose.linear());
-    poses_.insert(poses_.end(), {mm(p.x()), mm(p.y()), mm(p.z()), std::llround(q.w() * kQuaternionScale),
-                                 std::llround(q.x() * kQuaternionScale), std::llround(q.y() * kQuaternionScale),
-                                 std::llround(q.z() * kQuaternionScale)});
+    poses_.insert(poses_.end(), {replayMm(p.x()), replayMm(p.y()), replayMm(p.z()),
+                                 std::llround(q.w() * kQuaternionScale), std::llround(q.x() * kQuaternionScale),
+                                 std::llround(q.y() * kQuaternionScale), std::llround(q.z() * kQuaternionScale)});
   }
   std::vector<long long>& c = contacts_.emplace_back();
   for (const int w : scene_.vehicle.wheels()) {
     for (const ContactForce& f : run.wheelForces(w).contacts) {
       const Eigen::Vector3d& p = f.contact.point;
-      c.insert(c.end(), {mm(p.x()), mm(p.y()), mm(p.z()), std::llround(f.force.x()), std::llround(f.force.y()),
-                         std::llround(f.force.z())});
+      c.insert(c.end(), {replayMm(p.x()), replayMm(p.y()), replayMm(p.z()), std::llround(f.force.x()),
+                         std::llround(f.force.y()), std::llround(f.force.z())});
     }
   }
   if (soil_spacing_ > 0.0 && (end || reached(run.time(), next_soil_))) {
@@ -216,7 +214,7 @@ Aabb Replay::pathBounds() const {
   for (std::size_t k = 0; k + 7 <= poses_.size(); k += 7) {
     box.include(Eigen::Vector3d(static_cast<double>(poses_[k]), static_cast<double>(poses_[k + 1]),
                                 static_cast<double>(poses_[k + 2])) /
-                kMmPerM);
+                kReplayMmPerM);
   }
   return box;
 }
@@ -239,7 +237,7 @@ void Replay::write(const std::filesystem::path& path, const RunSummary& summary)
   out << ",\"contacts\":";
   writeArrays(out, contacts_);
   if (soil_spacing_ > 0.0) {
-    out << ",\"soil\":{\"spacing\":" << mm(soil_spacing_) << ",\"nodes\":";
+    out << ",\"soil\":{\"spacing\":" << replayMm(soil_spacing_) << ",\"nodes\":";
     writeArray(out, soil_nodes_);
     out << ",\"updates\":";
     writeArrays(out, soil_updates_);

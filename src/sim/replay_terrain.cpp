@@ -6,20 +6,18 @@
 #include <limits>
 #include <optional>
 
+#include "replay_mm.hpp"
 #include "wtc/base/error.hpp"
 #include "wtc/base/tolerances.hpp"
 
 namespace wtc::sim {
 namespace {
 
-constexpr double kMmPerM = 1000.0;
 // Faces whose outward normal's z is below this look down: left out.
 constexpr double kDownFacingNz = -0.7;
 // A formed piece is the prism of a heightfield's or a mesh's triangle: two
 // triangles and three quads, so at most 8 triangles drawn.
 constexpr long long kFormedPieceMaxTriangles = 8;
-
-long long mm(double metres) { return std::llround(metres * kMmPerM); }
 
 // The triangles appendPiece draws of `piece`.
 long long drawnTriangles(const ConvexPolyhedron& piece) {
@@ -51,7 +49,7 @@ void appendPiece(const ConvexPolyhedron& piece, ReplayTerrain& out) {
   const auto base = static_cast<long long>(out.positions.size() / 3);
   for (int v = 0; v < piece.vertexCount(); ++v) {
     const Eigen::Vector3d p = piece.vertex(v);
-    out.positions.insert(out.positions.end(), {mm(p.x()), mm(p.y()), mm(p.z())});
+    out.positions.insert(out.positions.end(), {replayMm(p.x()), replayMm(p.y()), replayMm(p.z())});
   }
   for (int f = 0; f < piece.faceCount(); ++f) {
     if (piece.faceNormal(f).z() < kDownFacingNz) continue;
@@ -120,7 +118,7 @@ void appendGrid(const Terrain& terrain, long long max_triangles, ReplayTerrain& 
           highestTop(terrain, x, y, out.region.min.z(), out.region.max.z(), near, scratch);
       if (!top) continue;
       vertex[j * (nx + 1) + i] = static_cast<long long>(out.positions.size() / 3);
-      out.positions.insert(out.positions.end(), {mm(x), mm(y), mm(*top)});
+      out.positions.insert(out.positions.end(), {replayMm(x), replayMm(y), replayMm(*top)});
     }
   }
   // Cell (i, j): corners a (i, j), b (i + 1, j), c (i + 1, j + 1), d (i, j + 1),

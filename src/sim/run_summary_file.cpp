@@ -2,17 +2,15 @@
 
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <numbers>
 #include <optional>
 #include <set>
 
 #include "io/atomic_file.hpp"
+#include "wtc/base/constants.hpp"
 #include "wtc/base/error.hpp"
 
 namespace wtc::sim {
 namespace {
-
-constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 
 std::string engineText(const sim::Scene& scene) { return scene.engine.engine; }
 

@@ -23,7 +23,6 @@
 namespace wtc::sim {
 namespace {
 
-constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 // The bounds on a joint's error through a scene (warned above).
 // A wheel's peak slip ratio counts only while its centre moves at least
 // this fast (m/s): below, s = |V_s| / max(V_t, eps) is eps's figure, not

@@ -5,14 +5,14 @@
 #include <cstdio>
 #include <limits>
 #include <map>
-#include <numbers>
 #include <set>
 
 #include <Eigen/Core>
 
-#include "series.hpp"
-#include "wtc/base/error.hpp"
 #include "io/atomic_file.hpp"
+#include "series.hpp"
+#include "wtc/base/constants.hpp"
+#include "wtc/base/error.hpp"
 #include "wtc/sim/run_summary_file.hpp"
 #include "wtc/study/study_runner.hpp"
 
@@ -21,8 +21,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using detail::Series;
-
-constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 
 // bodies.csv: t, then the first body's x y z (Recorder).
 constexpr std::size_t kFirstBodyX = 1;

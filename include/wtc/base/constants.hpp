@@ -1,7 +1,11 @@
 #pragma once
 // Physical constants and the bounds of a description, with units, in one
 // place (the constants of whole-vehicle runs: wtc/sim/sim_constants.hpp).
+#include <numbers>
+
 namespace wtc {
+/// Degrees in a radian: what a report in degrees multiplies an angle by.
+inline constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 
 /// Gravitational acceleration used by every scene, test and benchmark
 /// (m/s^2), along -z of the world.

@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 
+#include "wtc/base/constants.hpp"
 #include "wtc/base/error.hpp"
 
 namespace wtc::vehicle {
@@ -56,7 +57,6 @@ constexpr double kStepClearanceM = 0.0;
 constexpr double kFrontLoadN = 20.0;
 // The rear arm counts as level within this (rad).
 constexpr double kLevelRad = 0.05;
-constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 
 double clampRate(double rate, double max) { return std::clamp(rate, -max, max); }
 
