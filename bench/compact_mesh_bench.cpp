@@ -102,7 +102,7 @@ void bulletMeshContacts(benchmark::State& state, bool cold) {
   runBulletCylinder(state, ground.object, boxes);
 }
 
-const bool kRegistered = [] {
+const bool kMeshRunsRegistered = [] {
   for (long cells : {10'000L, 100'000L, 1'000'000L, 10'000'000L}) {
     const std::string tail = join("/", std::to_string(cells));
     const bool stored_too = cells <= 1'000'000L;  // 10^7 cells stored: about 52 GB

@@ -122,7 +122,7 @@ void contactsFcl(benchmark::State& state, bool cold) {
   state.counters["contacts_per_query"] = static_cast<double>(found) / static_cast<double>(queries);
 }
 
-const bool kRegistered = [] {
+const bool kEngineRunsRegistered = [] {
   for (const long cells : kFieldCells) {
     const std::string tail = join("/", std::to_string(cells));
     benchmark::RegisterBenchmark(join("Build/bullet", tail).c_str(), buildBullet)

@@ -13,10 +13,10 @@
 # GCC 12), which is what keeps the suite within CI's budget on two cores.
 # The test files themselves are built with ASan only and no debug
 # information (tests/CMakeLists.txt, WTC_SANITIZED_CHILD). Every target is
-# a unity build here, the libraries too (the test files are everywhere): a
+# a unity build here, as in the main build by default (CMakeLists.txt): a
 # translation unit per batch of 8 files compiles the headers they share
-# once (docs/development.md measures it). The main build keeps a
-# translation unit per file, for a developer's rebuild of one.
+# once (docs/development.md measures it). The flag is the default's; it is
+# named here so that this build stays unity whatever the default becomes.
 #   cmake -DSOURCE_DIR=<repo> -DBUILD_DIR=<dir> -DCXX=<g++> -P run_sanitized_suite.cmake
 set(flags "-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer")
 execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${BUILD_DIR} -DCMAKE_CXX_COMPILER=${CXX}

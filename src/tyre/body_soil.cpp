@@ -17,6 +17,12 @@ namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kPi = 3.14159265358979323846;
 
+}  // namespace
+
+// (Named, not in the anonymous namespace: BodyOnSoil::Scratch, a member
+// of a class with linkage, holds it.)
+namespace detail {
+
 // A convex solid met by vertical lines: each face n . x <= d as a bound on
 // z along the line through (x, y). A face turned up (n_z > 0) bounds it
 // from above, z <= c - a x - b y with (a, b, c) = (n_x, n_y, d) / n_z; one
@@ -63,6 +69,11 @@ struct VerticalSolid {
     return lo <= hi;
   }
 };
+
+}  // namespace detail
+using detail::VerticalSolid;
+
+namespace {
 
 bool finite(const BodySoilMotion& m) {
   return m.pose.matrix().allFinite() && m.velocity.allFinite() && m.angular_velocity.allFinite();

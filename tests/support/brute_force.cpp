@@ -50,11 +50,19 @@ Vec closestOnTriangle(const Vec& p, const Vec& a, const Vec& b, const Vec& c) {
   return best;
 }
 
-struct Face {
+}  // namespace
+
+// Named, not in the anonymous namespace: BruteForceOracle::Faces, a member of
+// a class with linkage, holds it.
+struct OracleFace {
   std::vector<Vec> vertices;  // relative to the reference point
   Vec normal;                 // unit, outward (Newell)
   Real offset = 0;            // max over the face's vertices of normal . v
 };
+
+namespace {
+
+using Face = OracleFace;
 
 struct Nearest {
   Vec point = Vec::Zero();
