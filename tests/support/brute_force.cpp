@@ -62,8 +62,6 @@ struct OracleFace {
 
 namespace {
 
-using Face = OracleFace;
-
 struct Nearest {
   Vec point = Vec::Zero();
   Real distance2 = std::numeric_limits<Real>::infinity();
@@ -71,7 +69,7 @@ struct Nearest {
 };
 
 // The closest point over every fan triangle of every face.
-Nearest nearestOnSurface(const std::vector<Face>& faces, const Vec& q) {
+Nearest nearestOnSurface(const std::vector<OracleFace>& faces, const Vec& q) {
   Nearest nearest;
   for (std::size_t f = 0; f < faces.size(); ++f) {
     const std::vector<Vec>& v = faces[f].vertices;
@@ -94,7 +92,7 @@ struct BruteForceOracle::Faces {
   // the piece's own machinery.
   Vec reference;
   bool flat = false;
-  std::vector<Face> faces;
+  std::vector<OracleFace> faces;
 };
 
 BruteForceOracle::BruteForceOracle(const ConvexPolyhedron& poly) : faces_(std::make_unique<Faces>()) {
@@ -102,7 +100,7 @@ BruteForceOracle::BruteForceOracle(const ConvexPolyhedron& poly) : faces_(std::m
   faces_->flat = poly.isFlat();
   faces_->faces.resize(poly.faceCount());
   for (int f = 0; f < poly.faceCount(); ++f) {
-    Face& face = faces_->faces[f];
+    OracleFace& face = faces_->faces[f];
     for (const std::int32_t i : poly.faceVertices(f)) {
       face.vertices.push_back(poly.vertex(i).cast<Real>() - faces_->reference);
     }
@@ -124,7 +122,7 @@ BruteForceOracle::BruteForceOracle(BruteForceOracle&&) noexcept = default;
 BruteForceOracle& BruteForceOracle::operator=(BruteForceOracle&&) noexcept = default;
 
 BruteForceResult BruteForceOracle::query(const Eigen::Vector3d& p) const {
-  const std::vector<Face>& faces = faces_->faces;
+  const std::vector<OracleFace>& faces = faces_->faces;
   const Vec q = p.cast<Real>() - faces_->reference;
   BruteForceResult result;
   if (!faces_->flat) {
