@@ -1,0 +1,146 @@
+#!/usr/bin/env python3
+"""What a rolling wheel's search on a fine field must find (issue 53, item 2).
+
+The spacing bench's rolling wheel (bench/field_spacing_bench.cpp: its surface,
+r_f 0.19 m, the deepest contact 2 mm deep, y = 0.5 m, x from 0.5 to 2.5 m),
+counted here by brute force on every triangle near the wheel, per step:
+
+- the triangles within the reach (their closest point nearer than r_f), the
+  searched cells' triangles a contact can come from;
+- the local minima of the distance, by the search's own rule (a triangle's
+  closest point, compared with the triangles that hold it too, in the strict
+  order (distance, row, column, half); src/contact/field_surface.hpp);
+- the features (samples, edges, faces) that pass the first-order test of a
+  minimum with no closed form: moving off the feature into any triangle that
+  holds it brings nothing nearer, (q - o).u >= 0;
+- the triangles no farther than the farthest minimum: the seam rule's
+  shadows that could cut a contact.
+
+The wheel's centre is placed as the bench places it (2 mm into the surface's
+triangles), so the counts are the bench's up to its path's 1 mm steps.
+
+    bench/field_minima_census.py [--cells 0.05,0.02,0.01] [--step 0.02]
+"""
+import argparse
+
+import numpy as np
+
+R = 0.19  # r_f (m)
+DEPTH = 0.002  # the deepest contact's deflection (m)
+REACH_CELLS_M = 0.21  # the patch of samples searched around the centre (m a side from it)
+SLACK = 1e-9  # the first-order tests' margin, relative
+
+
+def surface(x, y):
+    """bench/field_spacing_bench.cpp's surface: bench_field.hpp's relief and a 4 mm roughness."""
+    relief = 0.05 * np.sin(0.7 * x) * np.cos(0.9 * y) + 0.02 * np.sin(2.3 * x + 1.1 * y)
+    return relief + 0.004 * np.sin(90.0 * x) * np.sin(0.9 * 90.0 * y)
+
+
+def closest_on_triangles(p, a, b, c):
+    """Ericson's closest point (Real-Time Collision Detection, 5.1.5) for n triangles at once:
+    the points and the features (0 face, 1-3 vertex a-c, 4 edge ab, 5 bc, 6 ca)."""
+    ab, ac, ap = b - a, c - a, p - a
+    d1, d2 = (ab * ap).sum(1), (ac * ap).sum(1)
+    bp = p - b
+    d3, d4 = (ab * bp).sum(1), (ac * bp).sum(1)
+    cp = p - c
+    d5, d6 = (ab * cp).sum(1), (ac * cp).sum(1)
+    vc, vb, va = d1 * d4 - d3 * d2, d5 * d2 - d1 * d6, d3 * d6 - d5 * d4
+    q = np.zeros_like(a)
+    feature = np.full(len(a), -1)
+
+    def put(mask, value, code):
+        mask = mask & (feature < 0)
+        q[mask] = value[mask]
+        feature[mask] = code
+
+    with np.errstate(divide="ignore", invalid="ignore"):
+        put((d1 <= 0) & (d2 <= 0), a, 1)
+        put((d3 >= 0) & (d4 <= d3), b, 2)
+        put((vc <= 0) & (d1 >= 0) & (d3 <= 0), a + (d1 / (d1 - d3))[:, None] * ab, 4)
+        put((d6 >= 0) & (d5 <= d6), c, 3)
+        put((vb <= 0) & (d2 >= 0) & (d6 <= 0), a + (d2 / (d2 - d6))[:, None] * ac, 6)
+        put((va <= 0) & (d4 - d3 >= 0) & (d5 - d6 >= 0), b + ((d4 - d3) / ((d4 - d3) + (d5 - d6)))[:, None] * (c - b), 5)
+        denom = 1.0 / (va + vb + vc)
+        put(np.ones(len(a), bool), a + ab * (vb * denom)[:, None] + ac * (vc * denom)[:, None], 0)
+    return q, feature
+
+
+def census(spacing, x):
+    y = 0.5
+    n = int(np.ceil(REACH_CELLS_M / spacing))
+    c0, r0, m = int(np.floor(x / spacing)) - n, int(np.floor(y / spacing)) - n, 2 * n + 2
+    cols, rows = np.meshgrid(np.arange(c0, c0 + m + 1), np.arange(r0, r0 + m + 1))
+    p = np.stack([cols * spacing, rows * spacing, surface(cols * spacing, rows * spacing)], -1)  # samples
+    a, b0, c, b1 = p[:-1, :-1].reshape(-1, 3), p[:-1, 1:].reshape(-1, 3), p[1:, 1:].reshape(-1, 3), p[1:, :-1].reshape(-1, 3)
+    # The centre 2 mm into the nearest triangle (a few Newton steps along z).
+    z = surface(x, y) + R - DEPTH
+    for _ in range(10):
+        o = np.array([x, y, z])
+        q0, f0 = closest_on_triangles(o, a, b0, c)  # half 0: (p00, p01, p11)
+        q1, f1 = closest_on_triangles(o, a, c, b1)  # half 1: (p00, p11, p10)
+        d0, d1 = np.linalg.norm(q0 - o, axis=1), np.linalg.norm(q1 - o, axis=1)
+        miss = (R - DEPTH) - min(d0.min(), d1.min())
+        z += miss
+        if abs(miss) < 1e-12:
+            break
+    dist = np.stack([d0.reshape(m, m), d1.reshape(m, m)], -1)
+    feat = np.stack([f0.reshape(m, m), f1.reshape(m, m)], -1)
+
+    def d_of(i, j, t):
+        return dist[i, j, t] if 0 <= i < m and 0 <= j < m else np.inf
+
+    minima = []
+    for i, j, t in zip(*np.nonzero(dist < R)):
+        key, f = (dist[i, j, t], i, j, t), feat[i, j, t]
+        if f == 0:
+            rivals = []
+        elif f >= 4:  # across the edge
+            rivals = [[(i - 1, j, 1), (i, j + 1, 1), (i, j, 1)], [(i, j, 0), (i + 1, j, 0), (i, j - 1, 0)]][t][f - 4:f - 3]
+        else:  # around the vertex
+            si, sj = [[(i, j), (i, j + 1), (i + 1, j + 1)], [(i, j), (i + 1, j + 1), (i + 1, j)]][t][f - 1]
+            rivals = [(si, sj, 0), (si, sj, 1), (si, sj - 1, 0), (si - 1, sj - 1, 0), (si - 1, sj - 1, 1), (si - 1, sj, 1)]
+        if not any(n != (i, j, t) and (d_of(*n), *n) < key for n in rivals):
+            minima.append(key)
+
+    def away(w, u):
+        return w @ u >= -SLACK * np.linalg.norm(w) * np.linalg.norm(u)
+
+    candidates = 0
+    for i in range(1, m):
+        for j in range(1, m):
+            v = p[i, j]
+            w = v - o
+            around = [p[i, j + 1], p[i + 1, j + 1], p[i + 1, j], p[i, j - 1], p[i - 1, j - 1], p[i - 1, j]]
+            if w @ w < R * R and all(away(w, s - v) for s in around):
+                candidates += 1
+            # The edges from it, with their faces' third corners.
+            for end, third1, third2 in ((p[i, j + 1], p[i + 1, j + 1], p[i - 1, j]),
+                                        (p[i + 1, j], p[i + 1, j + 1], p[i, j - 1]),
+                                        (p[i + 1, j + 1], p[i, j + 1], p[i + 1, j])):
+                e = end - v
+                t = -(w @ e) / (e @ e)
+                qe = w + t * e
+                if 0.0 < t < 1.0 and qe @ qe < R * R and away(qe, third1 - v) and away(qe, third2 - v):
+                    candidates += 1
+    faces = int(((feat == 0) & (dist < R)).sum())  # a face's closest point is its foot: a minimum
+    farthest = max(k[0] for k in minima)
+    return (int((dist < R).sum()), len(minima), candidates + faces, int((dist <= farthest).sum()))
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--cells", default="0.05,0.02,0.01", help="cell sizes (m)")
+    parser.add_argument("--step", type=float, default=0.02, help="the census's step along the path (m)")
+    args = parser.parse_args()
+    print("| cell | triangles within the reach | local minima | features passing the test | triangles no farther than the farthest minimum |")
+    print("|---|---|---|---|---|")
+    for spacing in (float(s) for s in args.cells.split(",")):
+        rows = np.array([census(spacing, x) for x in np.arange(0.5, 2.5, args.step)], float)
+        mean = rows.mean(0)
+        print(f"| {spacing * 100:g} cm | {mean[0]:.1f} | {mean[1]:.2f} | {mean[2]:.2f} | {mean[3]:.1f} |")
+
+
+if __name__ == "__main__":
+    main()
