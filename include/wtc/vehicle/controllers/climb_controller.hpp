@@ -90,7 +90,7 @@ class ClimbController final : public Controller {
   double touch_time_ = -1.0;                       // first face contact (s)
   double fold_limit_time_ = -1.0;
   double edge_z_ = 0.0;  // the top edge, measured (world z, m)
-  double climbed_time_ = -1.0, stop_time_ = -1.0;
+  double climbed_time_ = -1.0;  // every wheel first on the top (s)
   double max_front_pitch_ = 0.0, max_rear_pitch_ = 0.0, max_middle_pitch_ = 0.0;
   double heading_ = 0.0;  // yaw held after squaring up (rad)
   std::string failure_;
