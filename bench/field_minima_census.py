@@ -13,6 +13,9 @@ counted here by brute force on every triangle near the wheel, per step:
 - the features (samples, edges, faces) that pass the first-order test of a
   minimum with no closed form: moving off the feature into any triangle that
   holds it brings nothing nearer, (q - o).u >= 0;
+- the edges with the centre's foot inside them and within the reach, where
+  a sweep that shares each edge's sums between its two samples would have
+  more than a sign to test;
 - the triangles no farther than the farthest minimum: the seam rule's
   shadows that could cut a contact.
 
@@ -107,7 +110,7 @@ def census(spacing, x):
     def away(w, u):
         return w @ u >= -SLACK * np.linalg.norm(w) * np.linalg.norm(u)
 
-    candidates = 0
+    candidates = edges_inside = 0
     for i in range(1, m):
         for j in range(1, m):
             v = p[i, j]
@@ -122,11 +125,14 @@ def census(spacing, x):
                 e = end - v
                 t = -(w @ e) / (e @ e)
                 qe = w + t * e
-                if 0.0 < t < 1.0 and qe @ qe < R * R and away(qe, third1 - v) and away(qe, third2 - v):
+                if not (0.0 < t < 1.0 and qe @ qe < R * R):
+                    continue
+                edges_inside += 1
+                if away(qe, third1 - v) and away(qe, third2 - v):
                     candidates += 1
     faces = int(((feat == 0) & (dist < R)).sum())  # a face's closest point is its foot: a minimum
     farthest = max(k[0] for k in minima)
-    return (int((dist < R).sum()), len(minima), candidates + faces, int((dist <= farthest).sum()))
+    return (int((dist < R).sum()), len(minima), candidates + faces, edges_inside, int((dist <= farthest).sum()))
 
 
 def main():
@@ -134,12 +140,13 @@ def main():
     parser.add_argument("--cells", default="0.05,0.02,0.01", help="cell sizes (m)")
     parser.add_argument("--step", type=float, default=0.02, help="the census's step along the path (m)")
     args = parser.parse_args()
-    print("| cell | triangles within the reach | local minima | features passing the test | triangles no farther than the farthest minimum |")
-    print("|---|---|---|---|---|")
+    print("| cell | triangles within the reach | local minima | features passing the test "
+          "| edges with the foot inside | triangles no farther than the farthest minimum |")
+    print("|---|---|---|---|---|---|")
     for spacing in (float(s) for s in args.cells.split(",")):
         rows = np.array([census(spacing, x) for x in np.arange(0.5, 2.5, args.step)], float)
         mean = rows.mean(0)
-        print(f"| {spacing * 100:g} cm | {mean[0]:.1f} | {mean[1]:.2f} | {mean[2]:.2f} | {mean[3]:.1f} |")
+        print(f"| {spacing * 100:g} cm | {mean[0]:.1f} | {mean[1]:.2f} | {mean[2]:.2f} | {mean[3]:.2f} | {mean[4]:.1f} |")
 
 
 if __name__ == "__main__":
