@@ -13,9 +13,9 @@
 # GCC 12), which is what keeps the suite within CI's budget on two cores.
 # The test files themselves are built with ASan only and no debug
 # information (tests/CMakeLists.txt, WTC_SANITIZED_CHILD). Every target is
-# a unity build here, as in the main build by default (CMakeLists.txt): a
-# translation unit per batch of 8 files compiles the headers they share
-# once (docs/development.md measures it). The flag is the default's; it is
+# a unity build here, as in the main build by default
+# (cmake/WtcUnityBuild.cmake): a translation unit per batch of 8 files
+# compiles the headers they share once (docs/development.md measures it). The flag is the default's; it is
 # named here so that this build stays unity whatever the default becomes.
 #   cmake -DSOURCE_DIR=<repo> -DBUILD_DIR=<dir> -DCXX=<g++> -P run_sanitized_suite.cmake
 set(flags "-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer")
