@@ -20,9 +20,14 @@
 // The surface: bench_field.hpp's relief (5 cm and 2 cm waves, slopes under
 // 5 deg) with a 4 mm roughness of 7 cm wavelength on top, which the fine
 // fields resolve and the 50 cm field samples as a few millimetres of noise.
-// The field is 3 m x 1 m; the wheel (r_f 0.19 m, w 0.12 m, the robot's)
-// rolls 2 m along its middle at 1 mm a step, its deepest contact 2 mm deep
-// in the sampled pieces (restingCentre), turning 5 % faster than rolling.
+// The field is 3 m x 1 m and a border of 0.5 m all round; the wheel (r_f
+// 0.19 m, w 0.12 m, the robot's) rolls 2 m along the middle of the 3 m x 1 m
+// at 1 mm a step, its deepest contact 2 mm deep in the sampled pieces
+// (restingCentre), turning 5 % faster than rolling. The border keeps every
+// cell the wheel meets off the field's edge by a cell at every spacing, 50 cm
+// too: a cell within one of the edge has walls that are ground and is met as
+// a prism (field_surface.hpp), so without it every 50 cm cell of the 1 m
+// wide field went to GJK and the runs compared two different searches.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -46,7 +51,8 @@ constexpr double kStepSeconds = 1e-3;                  // h (s)
 constexpr double kStepM = 0.001;                       // advance per step (m): 1 m/s
 constexpr double kSlip = 0.05;                         // tread speed / rolling speed - 1
 constexpr double kDepthM = 0.002;                      // the deepest contact's deflection (m)
-constexpr double kFieldXM = 3.0, kFieldYM = 1.0;       // the field's extent (m)
+constexpr double kFieldXM = 3.0, kFieldYM = 1.0;       // the field's extent, without its border (m)
+constexpr double kBorderM = 0.5;                       // the border all round (m): a 50 cm cell and more
 constexpr double kPathStartM = 0.5, kPathEndM = 2.5;   // the wheel's path along x, at y = kFieldYM / 2 (m)
 constexpr double kRoughM = 0.004, kRoughPerM = 90.0;   // roughness: amplitude (m), wavenumber (rad/m)
 constexpr int kSpacingsMm[] = {500, 50, 20, 10};        // the fields' cells (mm)
@@ -74,13 +80,15 @@ wtc::WheelDescription robotWheel() {
 
 Scenario makeScenario(bool compact, double spacing) {
   wtc::Heightfield field;
-  field.cols = static_cast<int>(std::lround(kFieldXM / spacing)) + 1;
-  field.rows = static_cast<int>(std::lround(kFieldYM / spacing)) + 1;
+  field.cols = static_cast<int>(std::lround((kFieldXM + 2.0 * kBorderM) / spacing)) + 1;
+  field.rows = static_cast<int>(std::lround((kFieldYM + 2.0 * kBorderM) / spacing)) + 1;
   field.spacing_x = field.spacing_y = spacing;
+  field.origin = Vector3d(-kBorderM, -kBorderM, 0.0);
   field.heights.resize(static_cast<std::size_t>(field.rows) * field.cols);
   for (int r = 0; r < field.rows; ++r)
     for (int c = 0; c < field.cols; ++c)
-      field.heights[static_cast<std::size_t>(r) * field.cols + c] = surface(c * spacing, r * spacing);
+      field.heights[static_cast<std::size_t>(r) * field.cols + c] =
+          surface(field.origin.x() + c * spacing, field.origin.y() + r * spacing);
   wtc::TerrainBuilder builder;
   const wtc::MaterialId material = builder.addMaterial({});
   if (compact) {
@@ -112,7 +120,7 @@ Scenario makeScenario(bool compact, double spacing) {
   return s;
 }
 
-// One scenario at a time: the 1 cm field's stored prisms are 60,000 pieces.
+// One scenario at a time: the 1 cm field's stored prisms are 160,000 pieces.
 const Scenario& scenario(bool compact, int spacing_mm) {
   static std::unique_ptr<Scenario> s;
   static bool made_compact = false;
@@ -160,6 +168,12 @@ void fieldSearch(benchmark::State& state, bool compact, int spacing_mm, bool fie
     benchmark::DoNotOptimize(finder.find(s.terrain, wheel, s.path[k].pose, options).data());
     totals.add(finder.counts());
     k = k + 1 == s.path.size() ? 0 : k + 1;
+  }
+  if (compact && field_surface && totals.queried > 0.0) {
+    // The runs compare one search at every spacing: a compact cell queried
+    // as a prism means the wheel came within a cell of the field's edge.
+    state.SkipWithError("the wheel met a cell at the field's edge, answered as a prism: widen kBorderM");
+    return;
   }
   totals.report(state, wtc::bench::allocationCount() - allocations);
 }
