@@ -17,7 +17,13 @@ counted here by brute force on every triangle near the wheel, per step:
   a sweep that shares each edge's sums between its two samples would have
   more than a sign to test;
 - the triangles no farther than the farthest minimum: the seam rule's
-  shadows that could cut a contact.
+  shadows that could cut a contact;
+- the cells with a triangle within the reach, and those of them that a bound
+  per cell cannot clear: a minimum at q needs p = (q - O)_xy / (O_z - q_z)
+  in the convex hull of the gradients of the triangles that hold q (on a
+  face, p is its gradient), so a cell whose box of p (over its extent and
+  heights) misses the box of the gradients of the 3 x 3 cells around it holds
+  none. (Each minimum's cell is checked to be kept: the bound is a bound.)
 
 The wheel's centre is placed as the bench places it (2 mm into the surface's
 triangles), so the counts are the bench's up to its path's 1 mm steps.
@@ -132,7 +138,38 @@ def census(spacing, x):
                     candidates += 1
     faces = int(((feat == 0) & (dist < R)).sum())  # a face's closest point is its foot: a minimum
     farthest = max(k[0] for k in minima)
-    return (int((dist < R).sum()), len(minima), candidates + faces, edges_inside, int((dist <= farthest).sum()))
+    within, kept = gradient_box_cells(p, o, dist, spacing, [(k[1], k[2]) for k in minima])
+    return (int((dist < R).sum()), len(minima), candidates + faces, edges_inside, int((dist <= farthest).sum()),
+            within, kept)
+
+
+def gradient_box_cells(p, o, dist, spacing, minima_cells):
+    """The inner cells with a triangle within the reach, and those of them whose box of required
+    gradients (q - O)_xy / (O_z - q_z) meets the box of their 3 x 3 cells' triangle gradients."""
+    h, m = p[..., 2], dist.shape[0]
+    gx0, gy0 = (h[:-1, 1:] - h[:-1, :-1]) / spacing, (h[1:, 1:] - h[:-1, 1:]) / spacing  # (p00, p01, p11)
+    gx1, gy1 = (h[1:, 1:] - h[1:, :-1]) / spacing, (h[1:, :-1] - h[:-1, :-1]) / spacing  # (p00, p11, p10)
+
+    def ring(v, pick):  # over each inner cell's 3 x 3 cells
+        out = v[1:-1, 1:-1]
+        for di in (-1, 0, 1):
+            for dj in (-1, 0, 1):
+                out = pick(out, v[1 + di:m - 1 + di, 1 + dj:m - 1 + dj])
+        return out
+
+    g = [ring(np.minimum(gx0, gx1), np.minimum), ring(np.maximum(gx0, gx1), np.maximum),
+         ring(np.minimum(gy0, gy1), np.minimum), ring(np.maximum(gy0, gy1), np.maximum)]
+    corners = np.stack([h[:-1, :-1], h[:-1, 1:], h[1:, 1:], h[1:, :-1]], -1)[1:-1, 1:-1]
+    below = [o[2] - corners.max(-1), o[2] - corners.min(-1)]  # O_z - q_z over the cell, both > 0
+    kept = np.ones_like(below[0], bool)
+    for axis, (lo, hi) in enumerate(((g[0], g[1]), (g[2], g[3]))):
+        near = p[1:-2, 1:-2, axis] - o[axis]
+        ends = np.stack([e / b for e in (near, near + spacing) for b in below], -1)
+        kept &= (ends.min(-1) <= hi) & (ends.max(-1) >= lo)
+    within = (dist[1:-1, 1:-1] < R).any(-1)
+    for i, j in minima_cells:
+        assert 1 <= i < m - 1 and 1 <= j < m - 1 and kept[i - 1, j - 1], "a minimum's cell was cleared"
+    return int(within.sum()), int((within & kept).sum())
 
 
 def main():
@@ -141,12 +178,14 @@ def main():
     parser.add_argument("--step", type=float, default=0.02, help="the census's step along the path (m)")
     args = parser.parse_args()
     print("| cell | triangles within the reach | local minima | features passing the test "
-          "| edges with the foot inside | triangles no farther than the farthest minimum |")
-    print("|---|---|---|---|---|---|")
+          "| edges with the foot inside | triangles no farther than the farthest minimum "
+          "| cells within the reach | cells the gradient box keeps |")
+    print("|---|---|---|---|---|---|---|---|")
     for spacing in (float(s) for s in args.cells.split(",")):
         rows = np.array([census(spacing, x) for x in np.arange(0.5, 2.5, args.step)], float)
         mean = rows.mean(0)
-        print(f"| {spacing * 100:g} cm | {mean[0]:.1f} | {mean[1]:.2f} | {mean[2]:.2f} | {mean[3]:.2f} | {mean[4]:.1f} |")
+        print(f"| {spacing * 100:g} cm | {mean[0]:.1f} | {mean[1]:.2f} | {mean[2]:.2f} | {mean[3]:.2f} | {mean[4]:.1f} "
+              f"| {mean[5]:.1f} | {mean[6]:.1f} |")
 
 
 if __name__ == "__main__":
