@@ -15,8 +15,9 @@
 # information (tests/CMakeLists.txt, WTC_SANITIZED_CHILD). Every target is
 # a unity build here, as in the main build by default
 # (cmake/WtcUnityBuild.cmake): a translation unit per batch of 8 files
-# compiles the headers they share once (docs/development.md measures it). The flag is the default's; it is
-# named here so that this build stays unity whatever the default becomes.
+# compiles the headers they share once (docs/development.md measures it).
+# The flag is the default's; it is named here so that this build stays
+# unity whatever the default becomes.
 #   cmake -DSOURCE_DIR=<repo> -DBUILD_DIR=<dir> -DCXX=<g++> -P run_sanitized_suite.cmake
 set(flags "-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer")
 execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${BUILD_DIR} -DCMAKE_CXX_COMPILER=${CXX}
