@@ -48,6 +48,13 @@ std::string mmOrDeg(double v, int digits) {
   return text;
 }
 
+}  // namespace
+
+// (Named, not in the anonymous namespace: SceneRun::State, a member of a
+// class with linkage, holds both watches, and GCC warns of that
+// (-Wsubobject-linkage) once this file is not its unity batch's main file.)
+namespace detail {
+
 // The first unstable tyre-spring step of each wheel, read from its state
 // after each step (WheelState::firstUnstableStep, the one channel the
 // summary's count comes from too), said as it happens (RunOptions::warn)
@@ -116,6 +123,12 @@ class BoundsWatch {
   const char* where_ = "";
   std::string left_;
 };
+
+}  // namespace detail
+using detail::BoundsWatch;
+using detail::UnstableSpringWatch;
+
+namespace {
 
 // A number for a failed criterion's line: 4 significant digits.
 std::string shortNumber(double v) {
