@@ -5,8 +5,8 @@
 //   build/bench/wtc_bench_spacing --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 //
 // Runs (one item = one wheel step, h = 1 ms, the wheel 1 mm further on):
-//   FieldSearch/<storage>/<spacing_mm>  WheelContactFinder::find alone.
-//   FieldStep/<storage>/<spacing_mm>    TyreModel::step, full effects: search and forces.
+//   FieldSearch/<storage>/<spacing_mm>[/<ground>]  WheelContactFinder::find alone.
+//   FieldStep/<storage>/<spacing_mm>[/<ground>]    TyreModel::step, full effects: search and forces.
 // <storage>: prisms (addHeightfield: every prism stored) or compact
 // (addCompactHeightfield: the samples, met as one surface, closed-form
 // triangles and a contact per local minimum), or compact_per_prism (the same
@@ -17,9 +17,12 @@
 // of a surface), contacts (after the seam rule and the tread filter), surface
 // (a surface's triangles answered in closed form), allocs_per_step.
 //
-// The surface: bench_field.hpp's relief (5 cm and 2 cm waves, slopes under
-// 5 deg) with a 4 mm roughness of 7 cm wavelength on top, which the fine
-// fields resolve and the 50 cm field samples as a few millimetres of noise.
+// The surface (no <ground>): bench_field.hpp's relief (5 cm and 2 cm waves,
+// slopes under 5 deg) with a 4 mm roughness of 7 cm wavelength on top, which
+// the fine fields resolve and the 50 cm field samples as a few millimetres
+// of noise. <ground> smooth: the relief alone; flat: a level plane (compact
+// storage only): what a spacing costs where the ground is smooth at the
+// scale of the cells.
 // The field is 3 m x 1 m and a border of 0.5 m all round; the wheel (r_f
 // 0.19 m, w 0.12 m, the robot's) rolls 2 m along the middle of the 3 m x 1 m
 // at 1 mm a step, its deepest contact 2 mm deep in the sampled pieces
@@ -33,6 +36,7 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <wtc/terrain/heightfield.hpp>
@@ -58,8 +62,13 @@ constexpr double kRoughM = 0.004, kRoughPerM = 90.0;   // roughness: amplitude (
 constexpr int kSpacingsMm[] = {500, 50, 20, 10};        // the fields' cells (mm)
 const Vector3d kAxle = Vector3d::UnitY();
 
-double surface(double x, double y) {
-  return wtc::bench::relief(x, y) + kRoughM * std::sin(kRoughPerM * x) * std::sin(0.9 * kRoughPerM * y);
+enum class Ground { kRough, kSmooth, kFlat };
+
+double surface(Ground ground, double x, double y) {
+  if (ground == Ground::kFlat) return 0.0;
+  const double relief = wtc::bench::relief(x, y);
+  if (ground == Ground::kSmooth) return relief;
+  return relief + kRoughM * std::sin(kRoughPerM * x) * std::sin(0.9 * kRoughPerM * y);
 }
 
 struct PathPoint {
@@ -78,7 +87,7 @@ wtc::WheelDescription robotWheel() {
   return wheel;
 }
 
-Scenario makeScenario(bool compact, double spacing) {
+Scenario makeScenario(Ground ground, bool compact, double spacing) {
   wtc::Heightfield field;
   field.cols = static_cast<int>(std::lround((kFieldXM + 2.0 * kBorderM) / spacing)) + 1;
   field.rows = static_cast<int>(std::lround((kFieldYM + 2.0 * kBorderM) / spacing)) + 1;
@@ -88,7 +97,7 @@ Scenario makeScenario(bool compact, double spacing) {
   for (int r = 0; r < field.rows; ++r)
     for (int c = 0; c < field.cols; ++c)
       field.heights[static_cast<std::size_t>(r) * field.cols + c] =
-          surface(field.origin.x() + c * spacing, field.origin.y() + r * spacing);
+          surface(ground, field.origin.x() + c * spacing, field.origin.y() + r * spacing);
   wtc::TerrainBuilder builder;
   const wtc::MaterialId material = builder.addMaterial({});
   if (compact) {
@@ -105,7 +114,7 @@ Scenario makeScenario(bool compact, double spacing) {
   const double y = 0.5 * kFieldYM;
   std::vector<Vector3d> centres;
   for (double x = kPathStartM; x < kPathEndM; x += kStepM) {
-    const double guess = surface(x, y) + wheel.geometry.free_radius - kDepthM;
+    const double guess = surface(ground, x, y) + wheel.geometry.free_radius - kDepthM;
     centres.push_back(
         wtc::bench::restingCentre(s.terrain, finder, wheel.geometry, kAxle, options, x, y, guess, kDepthM).centre);
   }
@@ -121,14 +130,15 @@ Scenario makeScenario(bool compact, double spacing) {
 }
 
 // One scenario at a time: the 1 cm field's stored prisms are 160,000 pieces.
-const Scenario& scenario(bool compact, int spacing_mm) {
+const Scenario& scenario(Ground ground, bool compact, int spacing_mm) {
   static std::unique_ptr<Scenario> s;
+  static Ground made_ground = Ground::kRough;
   static bool made_compact = false;
   static int made_mm = 0;
-  if (!s || made_compact != compact || made_mm != spacing_mm) {
+  if (!s || made_ground != ground || made_compact != compact || made_mm != spacing_mm) {
     s.reset();
-    s = std::make_unique<Scenario>(makeScenario(compact, spacing_mm * 1e-3));
-    made_compact = compact, made_mm = spacing_mm;
+    s = std::make_unique<Scenario>(makeScenario(ground, compact, spacing_mm * 1e-3));
+    made_ground = ground, made_compact = compact, made_mm = spacing_mm;
   }
   return *s;
 }
@@ -154,8 +164,8 @@ struct Totals {
   }
 };
 
-void fieldSearch(benchmark::State& state, bool compact, int spacing_mm, bool field_surface) {
-  const Scenario& s = scenario(compact, spacing_mm);
+void fieldSearch(benchmark::State& state, Ground ground, bool compact, int spacing_mm, bool field_surface) {
+  const Scenario& s = scenario(ground, compact, spacing_mm);
   const wtc::WheelGeometry wheel = robotWheel().geometry;
   wtc::ContactOptions options = wtc::TyreModel(wtc::EffectSet::full()).contactOptions();
   options.field_surface = field_surface;
@@ -178,8 +188,8 @@ void fieldSearch(benchmark::State& state, bool compact, int spacing_mm, bool fie
   totals.report(state, wtc::bench::allocationCount() - allocations);
 }
 
-void fieldStep(benchmark::State& state, bool compact, int spacing_mm) {
-  const Scenario& s = scenario(compact, spacing_mm);
+void fieldStep(benchmark::State& state, Ground ground, bool compact, int spacing_mm) {
+  const Scenario& s = scenario(ground, compact, spacing_mm);
   const wtc::TyreModel model(wtc::EffectSet::full());
   const wtc::WheelDescription wheel = robotWheel();
   wtc::WheelState wheel_state;
@@ -211,12 +221,19 @@ const bool kRegistered = [] {
   for (const bool compact : {false, true}) {
     for (const int mm : kSpacingsMm) {
       const std::string tail = std::string(compact ? "compact/" : "prisms/") + std::to_string(mm);
-      benchmark::RegisterBenchmark(("FieldSearch/" + tail).c_str(), fieldSearch, compact, mm, true);
-      benchmark::RegisterBenchmark(("FieldStep/" + tail).c_str(), fieldStep, compact, mm);
+      benchmark::RegisterBenchmark(("FieldSearch/" + tail).c_str(), fieldSearch, Ground::kRough, compact, mm, true);
+      benchmark::RegisterBenchmark(("FieldStep/" + tail).c_str(), fieldStep, Ground::kRough, compact, mm);
       if (compact) {  // the field's prisms one by one, as before its surface (issue 53)
         benchmark::RegisterBenchmark(("FieldSearch/compact_per_prism/" + std::to_string(mm)).c_str(), fieldSearch,
-                                     compact, mm, false);
+                                     Ground::kRough, compact, mm, false);
       }
+    }
+  }
+  for (const auto& [ground, name] : {std::pair{Ground::kSmooth, "smooth"}, std::pair{Ground::kFlat, "flat"}}) {
+    for (const int mm : kSpacingsMm) {
+      const std::string tail = "compact/" + std::to_string(mm) + "/" + name;
+      benchmark::RegisterBenchmark(("FieldSearch/" + tail).c_str(), fieldSearch, ground, true, mm, true);
+      benchmark::RegisterBenchmark(("FieldStep/" + tail).c_str(), fieldStep, ground, true, mm);
     }
   }
   return true;

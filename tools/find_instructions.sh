@@ -4,12 +4,20 @@
 # the search and the forces): two callgrind runs of different length, the
 # difference of the function's inclusive count over the difference of its
 # calls, so the scenario's set-up cancels.
-# Usage: tools/find_instructions.sh <wtc_bench_spacing> <mm> [compact|prisms] [find|step]
+# Usage: tools/find_instructions.sh <wtc_bench_spacing> <mm> [compact|prisms] [find|step] [rough|smooth|flat]
+# (the ground: rough, the default, is the bench's rough surface; smooth and
+# flat, compact storage only, its relief alone and a level plane)
 set -e
 bench=$1
 mm=$2
 storage=${3:-compact}
 what=${4:-find}
+ground=${5:-rough}
+case $ground in
+  rough) name=$mm ;;
+  smooth|flat) name=$mm/$ground ;;
+  *) echo "$0: the fifth argument is rough, smooth or flat, not '$ground'" >&2; exit 2 ;;
+esac
 case $what in
   find) run=FieldSearch toggle='*fieldSearch*' function='WheelContactFinder::find(' ;;
   step) run=FieldStep toggle='*fieldStep*' function='TyreModel::step(' ;;
@@ -19,7 +27,7 @@ out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 for t in 0.01 0.3; do
   valgrind --tool=callgrind --callgrind-out-file="$out/$t" --toggle-collect="$toggle" "$bench" \
-    --benchmark_filter="$run/$storage/$mm\$" --benchmark_min_time=$t >/dev/null 2>&1
+    --benchmark_filter="$run/$storage/$name\$" --benchmark_min_time=$t >/dev/null 2>&1
 done
 # The function's inclusive count, and its calls (the counts on its
 # callers' lines, just above it in the caller tree).
@@ -34,4 +42,4 @@ calls() {
 }
 i1=$(inclusive "$out/0.01"); i2=$(inclusive "$out/0.3")
 c1=$(calls "$out/0.01"); c2=$(calls "$out/0.3")
-echo "$run/$storage/$mm: $(( (i2 - i1) / (c2 - c1) )) instructions a $what ($(( c2 - c1 )) calls)"
+echo "$run/$storage/$name: $(( (i2 - i1) / (c2 - c1) )) instructions a $what ($(( c2 - c1 )) calls)"
