@@ -218,22 +218,22 @@ void fieldStep(benchmark::State& state, Ground ground, bool compact, int spacing
 }
 
 const bool kRegistered = [] {
-  for (const bool compact : {false, true}) {
-    for (const int mm : kSpacingsMm) {
-      const std::string tail = std::string(compact ? "compact/" : "prisms/") + std::to_string(mm);
-      benchmark::RegisterBenchmark(("FieldSearch/" + tail).c_str(), fieldSearch, Ground::kRough, compact, mm, true);
-      benchmark::RegisterBenchmark(("FieldStep/" + tail).c_str(), fieldStep, Ground::kRough, compact, mm);
-      if (compact) {  // the field's prisms one by one, as before its surface (issue 53)
-        benchmark::RegisterBenchmark(("FieldSearch/compact_per_prism/" + std::to_string(mm)).c_str(), fieldSearch,
-                                     Ground::kRough, compact, mm, false);
+  // The rough ground's runs carry no ground in their names, and only it is
+  // also run on stored prisms and prism by prism (the answer the surface
+  // reproduces, issue 53).
+  for (const auto& [ground, name] :
+       {std::pair{Ground::kRough, ""}, std::pair{Ground::kSmooth, "/smooth"}, std::pair{Ground::kFlat, "/flat"}}) {
+    for (const bool compact : {false, true}) {
+      if (!compact && ground != Ground::kRough) continue;
+      for (const int mm : kSpacingsMm) {
+        const std::string tail = std::string(compact ? "compact/" : "prisms/") + std::to_string(mm) + name;
+        benchmark::RegisterBenchmark(("FieldSearch/" + tail).c_str(), fieldSearch, ground, compact, mm, true);
+        benchmark::RegisterBenchmark(("FieldStep/" + tail).c_str(), fieldStep, ground, compact, mm);
+        if (compact && ground == Ground::kRough) {
+          benchmark::RegisterBenchmark(("FieldSearch/compact_per_prism/" + std::to_string(mm)).c_str(), fieldSearch,
+                                       ground, compact, mm, false);
+        }
       }
-    }
-  }
-  for (const auto& [ground, name] : {std::pair{Ground::kSmooth, "smooth"}, std::pair{Ground::kFlat, "flat"}}) {
-    for (const int mm : kSpacingsMm) {
-      const std::string tail = "compact/" + std::to_string(mm) + "/" + name;
-      benchmark::RegisterBenchmark(("FieldSearch/" + tail).c_str(), fieldSearch, ground, true, mm, true);
-      benchmark::RegisterBenchmark(("FieldStep/" + tail).c_str(), fieldStep, ground, true, mm);
     }
   }
   return true;

@@ -15,7 +15,9 @@ what=${4:-find}
 ground=${5:-rough}
 case $ground in
   rough) name=$mm ;;
-  smooth|flat) name=$mm/$ground ;;
+  smooth|flat)
+    [ "$storage" = compact ] || { echo "$0: the $ground ground is run on compact storage only, not '$storage'" >&2; exit 2; }
+    name=$mm/$ground ;;
   *) echo "$0: the fifth argument is rough, smooth or flat, not '$ground'" >&2; exit 2 ;;
 esac
 case $what in
